@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages rodnet needs; does nothing when all are
+# present. Safe to run any number of times.
+set -euo pipefail
+
+packages=(
+  build-essential cmake     # compiler and build system
+  libdeal.ii-dev            # deal.II 9.4 with Trilinos 13.2, MPI, Debug + Release
+  libeigen3-dev             # small dense algebra in the kernels
+  libgtest-dev              # the ctest programs
+  numdiff                   # tolerant comparison of numeric outputs
+  gnuplot-nox               # PNG plots of probes and benchmark charts
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
+    || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all packages present"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Quick start 2: set up, build, and pass every test: the whole suite against
+# deal.II's Release library, then the unit tests against its Debug library
+# (libdeal.ii.g.so), where deal.II's internal checks are active.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+jobs=$(nproc)
+
+cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release
+cmake --build build/release -j "$jobs"
+(cd build/release && ctest --output-on-failure -j "$jobs")
+
+cmake -S . -B build/debug -DCMAKE_BUILD_TYPE=Debug -DRODNET_BUILD_BENCHMARKS=OFF
+cmake --build build/debug -j "$jobs"
+(cd build/debug && ctest --output-on-failure -j "$jobs" -L unit)
