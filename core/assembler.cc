@@ -1,0 +1,206 @@
+// Assembly of the total potential energy of a RodModel, its gradient and
+// its Hessian: for every stencil, element kernel (strains and their
+// derivatives) -> material (energy, stress, tangent) -> chain rule ->
+// constraints -> global Trilinos objects.
+#include <deal.II/base/work_stream.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <core/rod_model.h>
+
+#include <atomic>
+#include <exception>
+#include <mutex>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// What one stencil contributes; filled by a worker thread, added to
+    /// the global objects by the (serial) copier.
+    struct LocalContribution
+    {
+      dealii::FullMatrix<double>    matrix;
+      dealii::Vector<double>        vector;
+      std::vector<global_dof_index> dofs;
+      double                        energy = 0;
+    };
+
+    struct Scratch
+    {
+      HingeStrains  hinge;
+      StretchStrain stretch;
+    };
+
+    /// Copies an Eigen gradient/Hessian pair into the copy data.
+    template <int n>
+    void
+    store(const Eigen::Matrix<double, n, 1> &gradient,
+          const Eigen::Matrix<double, n, n> *hessian,
+          LocalContribution                 &copy)
+    {
+      copy.vector.reinit(n);
+      for (int i = 0; i < n; ++i)
+        copy.vector[i] = gradient[i];
+      if (hessian != nullptr)
+        {
+          copy.matrix.reinit(n, n);
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+              copy.matrix(i, j) = (*hessian)(i, j);
+        }
+    }
+  } // namespace
+
+  double
+  RodModel::assemble(const VectorType &u,
+                     const double      load_factor,
+                     VectorType       *residual,
+                     MatrixType       *tangent,
+                     const bool        apply_constraints) const
+  {
+    const dealii::AffineConstraints<double> &constraints =
+      apply_constraints ? homogeneous_constraints : no_constraints;
+    if (residual != nullptr)
+      *residual = 0;
+    if (tangent != nullptr)
+      *tangent = 0;
+    const bool with_gradient = residual != nullptr || tangent != nullptr;
+    const bool with_hessian  = tangent != nullptr;
+
+    double             energy = 0;
+    std::exception_ptr failure;
+    std::mutex         failure_mutex;
+
+    // Kernels throw, e.g., where a tangent flipped; the first exception is
+    // rethrown after the loop so that the caller can cut the step.
+    auto guarded = [&](auto &&work) {
+      try
+        {
+          work();
+        }
+      catch (...)
+        {
+          std::lock_guard<std::mutex> lock(failure_mutex);
+          if (!failure)
+            failure = std::current_exception();
+        }
+    };
+
+    auto copier = [&](const LocalContribution &copy) {
+      energy += copy.energy;
+      if (!with_gradient || copy.dofs.empty())
+        return;
+      if (with_hessian && residual != nullptr)
+        constraints.distribute_local_to_global(copy.matrix, copy.vector,
+                                               copy.dofs, *tangent, *residual);
+      else if (with_hessian)
+        constraints.distribute_local_to_global(copy.matrix, copy.dofs,
+                                               *tangent);
+      else
+        constraints.distribute_local_to_global(copy.vector, copy.dofs,
+                                               *residual);
+    };
+
+    const auto &hinges = layout_->hinges();
+    dealii::WorkStream::run(
+      hinges.begin(),
+      hinges.end(),
+      [&](const std::vector<HingeStencil>::const_iterator &it,
+          Scratch                                         &scratch,
+          LocalContribution                               &copy) {
+        copy.dofs.clear();
+        copy.energy = 0;
+        guarded([&] {
+          const unsigned int   h   = it - hinges.begin();
+          const HingeKernel   &k   = *kernels[it->rod];
+          const HingeReference &ref = configuration_->hinge_reference(h);
+          const HingeVector    x   = configuration_->hinge_dofs(u, *it);
+          const double         l   = configuration_->voronoi_length(h);
+          if (!with_gradient)
+            {
+              copy.energy =
+                materials[it->rod]->hinge_energy(k.strains(x, ref), l).energy;
+              return;
+            }
+          k.evaluate(x, ref, scratch.hinge, with_hessian);
+          const MaterialResponse<3> w =
+            materials[it->rod]->hinge_energy(scratch.hinge.kappa, l);
+          copy.energy = w.energy;
+          const HingeVector gradient =
+            scratch.hinge.gradient.transpose() * w.stress;
+          HingeMatrix hessian;
+          if (with_hessian)
+            {
+              // Elastic part J^T C J and geometric part sum_k s_k d2kappa_k
+              // (Korner et al. eq. 4.5).
+              hessian = scratch.hinge.gradient.transpose() * w.tangent *
+                        scratch.hinge.gradient;
+              for (unsigned int c = 0; c < 3; ++c)
+                hessian += w.stress[c] * scratch.hinge.hessian[c];
+            }
+          store<n_hinge_dofs>(gradient, with_hessian ? &hessian : nullptr,
+                              copy);
+          copy.dofs.assign(it->dofs.begin(), it->dofs.end());
+        });
+      },
+      copier,
+      Scratch(),
+      LocalContribution());
+
+    const auto &segments = layout_->segments();
+    dealii::WorkStream::run(
+      segments.begin(),
+      segments.end(),
+      [&](const std::vector<SegmentStencil>::const_iterator &it,
+          Scratch                                           &scratch,
+          LocalContribution                                 &copy) {
+        copy.dofs.clear();
+        copy.energy = 0;
+        guarded([&] {
+          const double l0 = configuration_->rest_length(it->cell);
+          evaluate_stretch(configuration_->segment_dofs(u, *it), l0,
+                           scratch.stretch, with_hessian);
+          const MaterialResponse<1> w =
+            materials[it->rod]->segment_energy(scratch.stretch.strain, l0);
+          copy.energy = w.energy;
+          if (!with_gradient)
+            return;
+          const SegmentVector gradient = w.stress[0] * scratch.stretch.gradient;
+          SegmentMatrix       hessian;
+          if (with_hessian)
+            hessian = w.tangent(0, 0) * scratch.stretch.gradient *
+                        scratch.stretch.gradient.transpose() +
+                      w.stress[0] * scratch.stretch.hessian;
+          store<n_segment_dofs>(gradient, with_hessian ? &hessian : nullptr,
+                                copy);
+          copy.dofs.assign(it->dofs.begin(), it->dofs.end());
+        });
+      },
+      copier,
+      Scratch(),
+      LocalContribution());
+
+    if (failure)
+      std::rethrow_exception(failure);
+
+    // Dead loads: potential -lambda f.x, with x = X + u; the constant
+    // f.X does not change any derivative and is dropped.
+    energy -= load_factor * (f_ext * u);
+    if (residual != nullptr)
+      {
+        residual->compress(dealii::VectorOperation::add);
+        residual->add(-load_factor, f_ext);
+        constraints.set_zero(*residual);
+      }
+    if (tangent != nullptr)
+      tangent->compress(dealii::VectorOperation::add);
+    return energy;
+  }
+
+  double
+  RodModel::elastic_energy(const VectorType &u) const
+  {
+    return assemble(u, 0.0, nullptr, nullptr) ;
+  }
+} // namespace rodnet

@@ -1,0 +1,143 @@
+#include <core/configuration.h>
+#include <elements/parallel_transport.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace rodnet
+{
+  Configuration::Configuration(
+    const RodNetwork                      &network_,
+    const DofLayout                       &layout_,
+    const std::vector<const HingeKernel *> &rod_kernels)
+    : network(&network_)
+    , layout(&layout_)
+  {
+    const unsigned int n_cells = network->triangulation().n_active_cells();
+    rest_lengths.resize(n_cells);
+    frames.resize(n_cells);
+    twist_at_reference.assign(n_cells, 0.0);
+    for (unsigned int v = 0; v < network->n_vertices(); ++v)
+      undeformed.push_back(network->vertex(v));
+    segment_index.resize(n_cells);
+    for (unsigned int s = 0; s < layout->segments().size(); ++s)
+      segment_index[layout->segments()[s].cell] = s;
+
+    const auto &rods = network->rods();
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      {
+        const Rod &rod = rods[r];
+        for (unsigned int j = 0; j < rod.segments.size(); ++j)
+          {
+            const unsigned int cell = rod.segments[j];
+            const Vector3      e =
+              undeformed[rod.vertices[(j + 1) % rod.vertices.size()]] -
+              undeformed[rod.vertices[j]];
+            rest_lengths[cell] = e.norm();
+            const Vector3 t    = e / rest_lengths[cell];
+            Vector3       d1   = rod.director_hint - rod.director_hint.dot(t) * t;
+            if (!(d1.norm() > 1e-8 * rod.director_hint.norm()))
+              throw std::invalid_argument(
+                "rod " + std::to_string(r) + ", segment " + std::to_string(j) +
+                ": the director d1 hint is parallel to the segment; choose "
+                "another \"Director d1\"");
+            d1.normalize();
+            Matrix3 R;
+            R.col(0)    = d1;
+            R.col(1)    = t.cross(d1);
+            R.col(2)    = t;
+            frames[cell] = Quaternion(R).normalized();
+          }
+      }
+
+    for (const HingeStencil &h : layout->hinges())
+      {
+        kernels.push_back(rod_kernels[h.rod]);
+        voronoi_lengths.push_back(
+          0.5 * (rest_lengths[h.segment_prev] + rest_lengths[h.segment_next]));
+        HingeReference ref;
+        ref.frame_prev = frames[h.segment_prev];
+        ref.frame_next = frames[h.segment_next];
+        hinge_refs.push_back(ref);
+      }
+
+    // The reference twist of kernels that track it is that of the
+    // undeformed configuration, which has zero displacement.
+    dealii::TrilinosWrappers::MPI::Vector zero(
+      dealii::complete_index_set(layout->n_dofs()), MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < hinge_refs.size(); ++i)
+      hinge_refs[i].twist =
+        kernels[i]->strains(hinge_dofs(zero, layout->hinges()[i]),
+                            hinge_refs[i])[2];
+  }
+
+  Vector3
+  Configuration::position(const dealii::TrilinosWrappers::MPI::Vector &u,
+                          const unsigned int                           v) const
+  {
+    return undeformed[v] + Vector3(u[layout->vertex_dof(v, 0)],
+                                   u[layout->vertex_dof(v, 1)],
+                                   u[layout->vertex_dof(v, 2)]);
+  }
+
+  HingeVector
+  Configuration::hinge_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+                            const HingeStencil &hinge) const
+  {
+    HingeVector local;
+    for (unsigned int b = 0; b < 3; ++b)
+      local.segment<3>(4 * b) = position(u, hinge.vertices[b]);
+    // Twist increments are measured from the reference (Korner eq. 2.8).
+    local[3] = u[hinge.dofs[3]] - twist_at_reference[hinge.segment_prev];
+    local[7] = u[hinge.dofs[7]] - twist_at_reference[hinge.segment_next];
+    return local;
+  }
+
+  SegmentVector
+  Configuration::segment_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+                              const SegmentStencil &segment) const
+  {
+    SegmentVector local;
+    local.head<3>() = position(u, segment.vertices[0]);
+    local.tail<3>() = position(u, segment.vertices[1]);
+    return local;
+  }
+
+  Quaternion
+  Configuration::director_frame(const dealii::TrilinosWrappers::MPI::Vector &u,
+                                const unsigned int cell) const
+  {
+    const SegmentStencil &s = layout->segments()[segment_index[cell]];
+    const Vector3 t = (position(u, s.vertices[1]) - position(u, s.vertices[0]))
+                        .normalized();
+    return current_director_frame(frames[cell], t,
+                                  u[layout->twist_dof(cell)] -
+                                    twist_at_reference[cell]);
+  }
+
+  void
+  Configuration::reset_reference(const dealii::TrilinosWrappers::MPI::Vector &u)
+  {
+    // Strains of the kernels that track a reference twist must be read
+    // before the frames change.
+    std::vector<double> twists(hinge_refs.size());
+    for (unsigned int i = 0; i < hinge_refs.size(); ++i)
+      twists[i] = kernels[i]->strains(hinge_dofs(u, layout->hinges()[i]),
+                                      hinge_refs[i])[2];
+
+    std::vector<Quaternion> new_frames(frames.size());
+    for (unsigned int cell = 0; cell < frames.size(); ++cell)
+      new_frames[cell] = director_frame(u, cell);
+    frames = new_frames;
+    for (unsigned int cell = 0; cell < frames.size(); ++cell)
+      twist_at_reference[cell] = u[layout->twist_dof(cell)];
+
+    for (unsigned int i = 0; i < hinge_refs.size(); ++i)
+      {
+        const HingeStencil &h = layout->hinges()[i];
+        hinge_refs[i].frame_prev = frames[h.segment_prev];
+        hinge_refs[i].frame_next = frames[h.segment_next];
+        hinge_refs[i].twist      = twists[i];
+      }
+  }
+} // namespace rodnet

@@ -1,0 +1,93 @@
+#ifndef RODNET_CORE_CONFIGURATION_H
+#define RODNET_CORE_CONFIGURATION_H
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <core/dof_layout.h>
+#include <core/rod_network.h>
+#include <elements/hinge_kernel.h>
+
+#include <vector>
+
+namespace rodnet
+{
+  /**
+   * Undeformed and reference data of a rod network (Korner et al. 2021,
+   * section 2c): undeformed segment lengths, and per segment the reference
+   * director frame D^j with the value of its twist DoF at the reference, per
+   * hinge the reference twist of the kernels that track it. The current
+   * configuration is the DoF vector (vertex displacements, twist angles).
+   * The reference is reset to the current configuration after every
+   * converged step, so that no tangent turns by 180 degrees within a step.
+   */
+  class Configuration
+  {
+  public:
+    /**
+     * Undeformed lengths and frames: d3 along each segment, d1 the rod's
+     * director hint made orthogonal to it. Throws, naming rod and segment,
+     * where the hint is parallel to a segment.
+     */
+    Configuration(const RodNetwork                             &network,
+                  const DofLayout                              &layout,
+                  const std::vector<const HingeKernel *>        &rod_kernels);
+
+    /// Current position of vertex @p v for the DoF vector @p u.
+    Vector3
+    position(const dealii::TrilinosWrappers::MPI::Vector &u,
+             unsigned int                                 v) const;
+
+    /// Local DoF vector of a hinge as its kernel expects it.
+    HingeVector
+    hinge_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+               const HingeStencil                          &hinge) const;
+
+    /// Local DoF vector of a segment, (x_j, x_{j+1}).
+    SegmentVector
+    segment_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+                 const SegmentStencil                        &segment) const;
+
+    /// Reference data of hinge number @p h.
+    const HingeReference &
+    hinge_reference(unsigned int h) const
+    {
+      return hinge_refs[h];
+    }
+
+    /// Current director frame of the segment on cell @p cell.
+    Quaternion
+    director_frame(const dealii::TrilinosWrappers::MPI::Vector &u,
+                   unsigned int                                 cell) const;
+
+    double
+    rest_length(unsigned int cell) const
+    {
+      return rest_lengths[cell];
+    }
+
+    /// Undeformed Voronoi length of hinge @p h (mean of its segments).
+    double
+    voronoi_length(unsigned int h) const
+    {
+      return voronoi_lengths[h];
+    }
+
+    /// Makes the configuration @p u the new reference (Korner et al. 2c).
+    void
+    reset_reference(const dealii::TrilinosWrappers::MPI::Vector &u);
+
+  private:
+    const RodNetwork                  *network;
+    const DofLayout                   *layout;
+    std::vector<const HingeKernel *>   kernels; ///< per hinge
+    std::vector<double>                rest_lengths;
+    std::vector<double>                voronoi_lengths;
+    std::vector<Quaternion>            frames;         ///< D^j per cell
+    std::vector<double>                twist_at_reference;
+    std::vector<HingeReference>        hinge_refs;
+    std::vector<Vector3>               undeformed;     ///< per vertex
+    std::vector<unsigned int>          segment_index;  ///< per cell
+  };
+} // namespace rodnet
+
+#endif

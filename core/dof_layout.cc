@@ -1,0 +1,100 @@
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_q.h>
+
+#include <core/dof_layout.h>
+
+namespace rodnet
+{
+  DofLayout::DofLayout(const RodNetwork &network)
+    : fe(dealii::FE_Q<1, 3>(1), 3, dealii::FE_DGQ<1, 3>(0), 1)
+    , handler(network.triangulation())
+  {
+    handler.distribute_dofs(fe);
+
+    constexpr auto invalid = dealii::numbers::invalid_dof_index;
+    vertex_dofs.assign(network.n_vertices(), {{invalid, invalid, invalid}});
+    twist_dofs.assign(network.triangulation().n_active_cells(), invalid);
+
+    std::vector<global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const unsigned int component = fe.system_to_component_index(i).first;
+            if (component < 3)
+              vertex_dofs[cell->vertex_index(i / fe.n_dofs_per_vertex())]
+                         [component] = cell_dofs[i];
+            else
+              twist_dofs[cell->active_cell_index()] = cell_dofs[i];
+          }
+      }
+
+    const auto &rods = network.rods();
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      {
+        const Rod         &rod = rods[r];
+        const unsigned int n   = rod.vertices.size();
+        for (unsigned int j = 0; j < rod.segments.size(); ++j)
+          {
+            SegmentStencil s;
+            s.rod  = r;
+            s.cell = rod.segments[j];
+            s.vertices = {{rod.vertices[j], rod.vertices[(j + 1) % n]}};
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                s.dofs[c]     = vertex_dofs[rod.vertices[j]][c];
+                s.dofs[3 + c] = vertex_dofs[rod.vertices[(j + 1) % n]][c];
+              }
+            segment_list.push_back(s);
+          }
+        // Hinge i sits at vertex i between segments i-1 and i; a closed rod
+        // also has one at its first vertex.
+        const unsigned int first = rod.closed ? 0 : 1;
+        const unsigned int last  = rod.closed ? n : n - 1;
+        for (unsigned int i = first; i < last; ++i)
+          {
+            const unsigned int prev_segment = (i + rod.segments.size() - 1) %
+                                              rod.segments.size();
+            HingeStencil h;
+            h.rod          = r;
+            h.vertices     = {{rod.vertices[(i + n - 1) % n],
+                               rod.vertices[i % n],
+                               rod.vertices[(i + 1) % n]}};
+            h.segment_prev = rod.segments[prev_segment];
+            h.segment_next = rod.segments[i % rod.segments.size()];
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                h.dofs[c]     = vertex_dofs[h.vertices[0]][c];
+                h.dofs[4 + c] = vertex_dofs[h.vertices[1]][c];
+                h.dofs[8 + c] = vertex_dofs[h.vertices[2]][c];
+              }
+            h.dofs[3] = twist_dofs[h.segment_prev];
+            h.dofs[7] = twist_dofs[h.segment_next];
+            hinge_list.push_back(h);
+          }
+      }
+  }
+
+  void
+  DofLayout::make_sparsity_pattern(
+    dealii::DynamicSparsityPattern         &dsp,
+    const dealii::AffineConstraints<double> &constraints) const
+  {
+    std::vector<global_dof_index> dofs;
+    for (const HingeStencil &h : hinge_list)
+      {
+        dofs.assign(h.dofs.begin(), h.dofs.end());
+        constraints.add_entries_local_to_global(dofs, dsp, false);
+      }
+    for (const SegmentStencil &s : segment_list)
+      {
+        dofs.assign(s.dofs.begin(), s.dofs.end());
+        constraints.add_entries_local_to_global(dofs, dsp, false);
+      }
+    // Twist DoFs of segments without any hinge (a one-segment rod) still
+    // need their diagonal entry.
+    for (global_dof_index i = 0; i < handler.n_dofs(); ++i)
+      dsp.add(i, i);
+  }
+} // namespace rodnet

@@ -1,0 +1,199 @@
+#ifndef RODNET_CORE_ROD_MODEL_H
+#define RODNET_CORE_ROD_MODEL_H
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <core/configuration.h>
+#include <core/dof_layout.h>
+#include <core/rod_network.h>
+#include <elements/hinge_kernel.h>
+#include <materials/rod_material.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+  using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+  /// A named set of fixed DoFs whose reaction force can be probed.
+  struct Support
+  {
+    std::string                   name;
+    std::vector<unsigned int>     vertices;
+    /// Fixed position components per vertex (same order as vertices).
+    std::vector<std::array<bool, 3>> fixed;
+  };
+
+  /**
+   * A rod network with materials, supports and dead loads: the object a
+   * driver or a user's deal.II program works with. It owns the DoF layout,
+   * the configuration (undeformed and reference data) and the current DoF
+   * vector, and evaluates the total potential energy
+   *   Phi(u) = sum_hinges W + sum_segments W - lambda f . x
+   * with its gradient (the residual) and Hessian (the tangent).
+   *
+   * Usage: construct, add supports and loads, call finalize(), then
+   * assemble / solve (see StaticSolver) and reset_reference() after each
+   * converged step.
+   */
+  class RodModel
+  {
+  public:
+    /**
+     * @p materials holds one material per rod of @p network (shared
+     * pointers: rods may share one). Hinge kernels are created from the
+     * rods' kernel names.
+     */
+    RodModel(std::unique_ptr<RodNetwork>                     network,
+             std::vector<std::shared_ptr<const RodMaterial>> materials);
+
+    /// @name Supports (before finalize())
+    /// @{
+    /// Clamp by fixing the first (or last) two vertices and the end twist
+    /// (Korner et al. section 5a).
+    void
+    clamp_end(const std::string &name, unsigned int rod, bool at_start);
+
+    /// Fixes the masked position components of @p vertex; their value
+    /// moves with the load factor to @p displacement (at load factor 1).
+    void
+    fix_components(const std::string         &name,
+                   unsigned int               vertex,
+                   const std::array<bool, 3> &mask,
+                   const Vector3             &displacement = Vector3::Zero());
+    /// @}
+
+    /// @name Dead loads at load factor 1 (before finalize())
+    /// @{
+    void
+    add_point_force(unsigned int vertex, const Vector3 &force);
+
+    /// Force per unit undeformed length on rod @p rod, lumped to the
+    /// vertices by their Voronoi lengths.
+    void
+    add_distributed_force(unsigned int rod, const Vector3 &force_per_length);
+    /// @}
+
+    /// Builds constraints, sparsity pattern, matrices and vectors.
+    void
+    finalize();
+
+    /**
+     * Energy at DoF vector @p u and load factor @p load_factor; adds the
+     * gradient into @p residual and the Hessian into @p tangent where they
+     * are not null (both are zeroed first). With @p apply_constraints the
+     * rows and columns of fixed DoFs are eliminated (Newton increments are
+     * zero there); without, the residual holds the reaction forces there.
+     * Thread-parallel over stencils.
+     */
+    double
+    assemble(const VectorType &u,
+             double            load_factor,
+             VectorType       *residual,
+             MatrixType       *tangent,
+             bool              apply_constraints = true) const;
+
+    /// Elastic energy alone (no load potential) at @p u.
+    double
+    elastic_energy(const VectorType &u) const;
+
+    /// Sets the fixed DoFs of @p u to their values at @p load_factor.
+    void
+    apply_boundary_values(VectorType &u, double load_factor) const;
+
+    /// Makes @p u the reference configuration.
+    void
+    reset_reference(const VectorType &u)
+    {
+      configuration_->reset_reference(u);
+    }
+
+    /// Reaction force of support @p s at the converged @p u.
+    Vector3
+    reaction(const Support &s, const VectorType &u, double load_factor) const;
+
+    /// A zero vector with the model's layout.
+    VectorType
+    create_vector() const;
+
+    /// A matrix with the model's sparsity pattern.
+    void
+    initialize_matrix(MatrixType &matrix) const;
+
+    const RodNetwork &
+    network() const
+    {
+      return *network_;
+    }
+    const DofLayout &
+    layout() const
+    {
+      return *layout_;
+    }
+    const Configuration &
+    configuration() const
+    {
+      return *configuration_;
+    }
+    Configuration &
+    configuration()
+    {
+      return *configuration_;
+    }
+    const dealii::AffineConstraints<double> &
+    constraints() const
+    {
+      return homogeneous_constraints;
+    }
+    const std::vector<Support> &
+    supports() const
+    {
+      return support_list;
+    }
+    const Support &
+    support(const std::string &name) const;
+    const HingeKernel &
+    hinge_kernel(unsigned int rod) const
+    {
+      return *kernels[rod];
+    }
+    const RodMaterial &
+    material(unsigned int rod) const
+    {
+      return *materials[rod];
+    }
+    /// External force vector at load factor 1.
+    const VectorType &
+    external_force() const
+    {
+      return f_ext;
+    }
+
+  private:
+    std::unique_ptr<RodNetwork>                     network_;
+    std::vector<std::shared_ptr<const RodMaterial>> materials;
+    std::vector<std::unique_ptr<HingeKernel>>       kernels;
+    std::unique_ptr<DofLayout>                      layout_;
+    std::unique_ptr<Configuration>                  configuration_;
+    std::vector<Support>                            support_list;
+    /// Fixed DoF -> prescribed value at load factor 1.
+    std::map<global_dof_index, double>              fixed_dofs;
+    dealii::AffineConstraints<double>               homogeneous_constraints;
+    dealii::AffineConstraints<double>               no_constraints;
+    std::vector<std::pair<unsigned int, Vector3>>   point_forces;
+    std::vector<std::pair<unsigned int, Vector3>>   distributed_forces;
+    VectorType                                      f_ext;
+    dealii::TrilinosWrappers::SparsityPattern       sparsity;
+    bool                                            finalized = false;
+  };
+} // namespace rodnet
+
+#endif

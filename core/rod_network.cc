@@ -1,0 +1,117 @@
+#include <deal.II/grid/tria.h>
+
+#include <core/rod_network.h>
+
+#include <sstream>
+#include <stdexcept>
+
+namespace rodnet
+{
+  RodNetwork::RodNetwork() = default;
+
+  namespace
+  {
+    std::string
+    describe(const Vector3 &p)
+    {
+      std::ostringstream s;
+      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+      return s.str();
+    }
+  } // namespace
+
+  void
+  RodNetwork::add_rod(const std::vector<Vector3> &rod_points,
+                      const bool                  closed,
+                      const Vector3              &director_hint,
+                      const std::string          &hinge_kernel)
+  {
+    const unsigned int rod_index = rod_list.size();
+    const unsigned int n         = rod_points.size();
+    if (n < (closed ? 3u : 2u))
+      throw std::invalid_argument(
+        "rod " + std::to_string(rod_index) + " has " + std::to_string(n) +
+        " vertices; an open rod needs at least 2, a closed one at least 3");
+    for (const Vector3 &p : rod_points)
+      if (!p.allFinite())
+        throw std::invalid_argument("rod " + std::to_string(rod_index) +
+                                    " has a non-finite vertex " + describe(p));
+
+    // A length scale for the coincidence test: the rod's bounding box.
+    double extent = 0;
+    for (const Vector3 &p : rod_points)
+      extent = std::max(extent, (p - rod_points[0]).norm());
+    const double tolerance = 1e-12 * std::max(extent, 1e-300);
+
+    const unsigned int n_segments = closed ? n : n - 1;
+    for (unsigned int j = 0; j < n_segments; ++j)
+      if ((rod_points[(j + 1) % n] - rod_points[j]).norm() <= tolerance)
+        throw std::invalid_argument(
+          "rod " + std::to_string(rod_index) + ": zero-length segment " +
+          std::to_string(j) + " between vertices " + std::to_string(j) +
+          " and " + std::to_string((j + 1) % n) + " at " +
+          describe(rod_points[j]));
+    // Coincident but not consecutive vertices would make two segments
+    // meet at a point that the mesh does not know as shared.
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int k = i + 2; k < n; ++k)
+        if ((rod_points[i] - rod_points[k]).norm() <= tolerance &&
+            !(closed && i == 0 && k == n - 1))
+          throw std::invalid_argument(
+            "rod " + std::to_string(rod_index) + ": vertices " +
+            std::to_string(i) + " and " + std::to_string(k) +
+            " coincide at " + describe(rod_points[i]));
+
+    Rod rod;
+    rod.closed        = closed;
+    rod.director_hint = director_hint;
+    rod.hinge_kernel  = hinge_kernel;
+    for (const Vector3 &p : rod_points)
+      {
+        rod.vertices.push_back(points.size());
+        points.push_back(p);
+      }
+    rod_list.push_back(rod);
+  }
+
+  void
+  RodNetwork::create_triangulation()
+  {
+    if (tria.n_cells() > 0)
+      throw std::logic_error("RodNetwork::create_triangulation called twice");
+    if (rod_list.empty())
+      throw std::invalid_argument("the scene defines no rod");
+
+    std::vector<dealii::Point<3>>    vertices(points.size());
+    std::vector<dealii::CellData<1>> cells;
+    for (unsigned int v = 0; v < points.size(); ++v)
+      vertices[v] = dealii::Point<3>(points[v][0], points[v][1], points[v][2]);
+    for (Rod &rod : rod_list)
+      {
+        const unsigned int n          = rod.vertices.size();
+        const unsigned int n_segments = rod.closed ? n : n - 1;
+        for (unsigned int j = 0; j < n_segments; ++j)
+          {
+            dealii::CellData<1> cell;
+            cell.vertices = {rod.vertices[j], rod.vertices[(j + 1) % n]};
+            cell.material_id = 0;
+            rod.segments.push_back(cells.size());
+            cells.push_back(cell);
+          }
+      }
+    tria.create_triangulation(vertices, cells, dealii::SubCellData());
+
+    // The kernels rely on cells running along their rod.
+    for (const Rod &rod : rod_list)
+      for (unsigned int j = 0; j < rod.segments.size(); ++j)
+        {
+          const dealii::TriaActiveIterator<dealii::CellAccessor<1, 3>> c(
+            &tria, 0, rod.segments[j]);
+          if (c->vertex_index(0) != rod.vertices[j] ||
+              c->vertex_index(1) != rod.vertices[(j + 1) % rod.vertices.size()])
+            throw std::logic_error(
+              "internal error: the triangulation reordered the vertices of a "
+              "segment");
+        }
+  }
+} // namespace rodnet

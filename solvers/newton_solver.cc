@@ -1,0 +1,199 @@
+#include <solvers/newton_solver.h>
+
+#include <Epetra_Vector.h>
+#include <NOX.H>
+#include <NOX_Epetra_Group.H>
+#include <NOX_Epetra_Interface_Jacobian.H>
+#include <NOX_Epetra_Interface_Required.H>
+#include <NOX_Epetra_LinearSystem_Amesos.H>
+#include <NOX_Epetra_Vector.H>
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    using VectorType = NewtonSolver::VectorType;
+    using MatrixType = NewtonSolver::MatrixType;
+
+    /// NOX's view of the problem. Copies between NOX's Epetra_Vector and the
+    /// deal.II vector (which holds an Epetra_FEVector) on every call; the
+    /// copies are cheap beside an assembly.
+    class NoxInterface : public NOX::Epetra::Interface::Required,
+                         public NOX::Epetra::Interface::Jacobian
+    {
+    public:
+      NoxInterface(const NewtonSolver::Problem &problem,
+                   const VectorType            &layout,
+                   MatrixType                  &tangent)
+        : problem(problem)
+        , x(layout)
+        , r(layout)
+        , tangent(tangent)
+      {}
+
+      bool
+      computeF(const Epetra_Vector &x_in,
+               Epetra_Vector       &f,
+               const FillType) override
+      {
+        try
+          {
+            copy_in(x_in);
+            problem.residual(x, r);
+            const Epetra_MultiVector &rv = r.trilinos_vector();
+            for (int i = 0; i < f.MyLength(); ++i)
+              f[i] = rv[0][i];
+            return true;
+          }
+        catch (const std::exception &e)
+          {
+            record(e.what());
+            return false;
+          }
+      }
+
+      bool
+      computeJacobian(const Epetra_Vector &x_in, Epetra_Operator &) override
+      {
+        try
+          {
+            copy_in(x_in);
+            problem.tangent(x, tangent);
+            return true;
+          }
+        catch (const std::exception &e)
+          {
+            record(e.what());
+            return false;
+          }
+      }
+
+      std::string failure;
+
+    private:
+      void
+      copy_in(const Epetra_Vector &x_in)
+      {
+        Epetra_MultiVector &xv = x.trilinos_vector();
+        for (int i = 0; i < x_in.MyLength(); ++i)
+          xv[0][i] = x_in[i];
+      }
+
+      void
+      record(const std::string &what)
+      {
+        if (failure.empty())
+          failure = what;
+      }
+
+      const NewtonSolver::Problem &problem;
+      VectorType                   x;
+      VectorType                   r;
+      MatrixType                  &tangent;
+    };
+
+    std::string
+    nox_line_search_name(const std::string &name)
+    {
+      if (name == "backtrack")
+        return "Backtrack";
+      if (name == "polynomial")
+        return "Polynomial";
+      if (name == "full step")
+        return "Full Step";
+      throw std::invalid_argument("unknown line search \"" + name +
+                                  "\"; known: backtrack, polynomial, full step");
+    }
+  } // namespace
+
+  NewtonSolver::NewtonSolver(const Parameters &parameters)
+    : parameters(parameters)
+  {
+    nox_line_search_name(parameters.line_search);
+  }
+
+  NewtonSolver::Result
+  NewtonSolver::solve(const Problem &problem,
+                      VectorType    &x,
+                      MatrixType    &tangent) const
+  {
+    using Teuchos::RCP;
+    using Teuchos::rcp;
+
+    auto nox_parameters = rcp(new Teuchos::ParameterList);
+    nox_parameters->set("Nonlinear Solver", "Line Search Based");
+    Teuchos::ParameterList &printing = nox_parameters->sublist("Printing");
+    printing.set("Output Information", NOX::Utils::Error);
+    Teuchos::ParameterList &search = nox_parameters->sublist("Line Search");
+    search.set("Method", nox_line_search_name(parameters.line_search));
+    Teuchos::ParameterList &direction = nox_parameters->sublist("Direction");
+    direction.set("Method", "Newton");
+    Teuchos::ParameterList &linear =
+      direction.sublist("Newton").sublist("Linear Solver");
+    linear.set("Amesos Solver", "Amesos_Klu");
+
+    auto interface = rcp(new NoxInterface(problem, x, tangent));
+    RCP<NOX::Epetra::Interface::Required> required = interface;
+    RCP<NOX::Epetra::Interface::Jacobian> jacobian = interface;
+    RCP<Epetra_Operator>                  jacobian_operator = rcp(
+      const_cast<Epetra_CrsMatrix *>(&tangent.trilinos_matrix()), false);
+
+    Epetra_Vector x_view(View, x.trilinos_vector(), 0);
+    NOX::Epetra::Vector initial_guess(x_view, NOX::DeepCopy);
+    auto linear_system = rcp(new NOX::Epetra::LinearSystemAmesos(
+      printing, linear, required, jacobian, jacobian_operator, initial_guess));
+    auto group = rcp(new NOX::Epetra::Group(printing, required, initial_guess,
+                                            linear_system));
+
+    auto converged =
+      rcp(new NOX::StatusTest::NormF(parameters.tolerance,
+                                     NOX::StatusTest::NormF::Unscaled));
+    auto max_iterations =
+      rcp(new NOX::StatusTest::MaxIters(parameters.max_iterations));
+    auto finite = rcp(new NOX::StatusTest::FiniteValue);
+    auto status = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+    status->addStatusTest(finite);
+    status->addStatusTest(converged);
+    status->addStatusTest(max_iterations);
+
+    RCP<NOX::Solver::Generic> solver =
+      NOX::Solver::buildSolver(group, status, nox_parameters);
+    const NOX::StatusTest::StatusType outcome = solver->solve();
+
+    const auto &final_group =
+      dynamic_cast<const NOX::Epetra::Group &>(solver->getSolutionGroup());
+    const Epetra_Vector &final_x =
+      dynamic_cast<const NOX::Epetra::Vector &>(final_group.getX())
+        .getEpetraVector();
+    for (int i = 0; i < final_x.MyLength(); ++i)
+      x_view[i] = final_x[i];
+
+    Result result;
+    result.iterations    = solver->getNumIterations();
+    result.residual_norm = final_group.isF() ? final_group.getNormF() : NAN;
+    result.converged = outcome == NOX::StatusTest::Converged &&
+                       std::isfinite(result.residual_norm);
+    if (!result.converged)
+      {
+        if (!interface->failure.empty())
+          result.failure = interface->failure;
+        else if (!std::isfinite(result.residual_norm))
+          result.failure = "the residual is not finite";
+        else if (result.iterations >= parameters.max_iterations)
+          result.failure = "no convergence in " +
+                           std::to_string(parameters.max_iterations) +
+                           " iterations (residual " +
+                           std::to_string(result.residual_norm) + ")";
+        else
+          result.failure = "the line search failed (residual " +
+                           std::to_string(result.residual_norm) + ")";
+      }
+    return result;
+  }
+} // namespace rodnet

@@ -1,0 +1,66 @@
+#ifndef RODNET_SOLVERS_NEWTON_SOLVER_H
+#define RODNET_SOLVERS_NEWTON_SOLVER_H
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <functional>
+#include <string>
+
+namespace rodnet
+{
+  /**
+   * Newton's method with a line search, run by Trilinos NOX ("Line Search
+   * Based" solver, NOX::Epetra::Group) on deal.II's Trilinos vectors and
+   * matrix, with linear solves by Amesos KLU. deal.II 9.4 has no NOX
+   * wrapper; this is the thin interface between the two.
+   */
+  class NewtonSolver
+  {
+  public:
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+    using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+    struct Parameters
+    {
+      /// Converged when |residual|_2 <= tolerance (an absolute force).
+      double       tolerance      = 1e-10;
+      unsigned int max_iterations = 25;
+      /// "backtrack", "polynomial" or "full step".
+      std::string  line_search = "backtrack";
+    };
+
+    /// Outcome of one solve.
+    struct Result
+    {
+      bool         converged = false;
+      unsigned int iterations = 0;
+      double       residual_norm = 0;
+      /// Why it failed (empty on success).
+      std::string  failure;
+    };
+
+    /// The nonlinear problem: residual and tangent at a given state. Both
+    /// may throw (e.g. ParallelTransportSingular): the solve then fails.
+    struct Problem
+    {
+      std::function<void(const VectorType &x, VectorType &residual)> residual;
+      std::function<void(const VectorType &x, MatrixType &tangent)>  tangent;
+    };
+
+    explicit NewtonSolver(const Parameters &parameters);
+
+    /**
+     * Solves residual(x) = 0 from the initial guess @p x, which holds the
+     * solution on return if converged (and the last iterate otherwise).
+     * @p tangent must have the sparsity of the problem's Jacobian.
+     */
+    Result
+    solve(const Problem &problem, VectorType &x, MatrixType &tangent) const;
+
+  private:
+    Parameters parameters;
+  };
+} // namespace rodnet
+
+#endif
