@@ -57,7 +57,8 @@ namespace rodnet
                      const double      load_factor,
                      VectorType       *residual,
                      MatrixType       *tangent,
-                     const bool        apply_constraints) const
+                     const bool        apply_constraints,
+                     const VectorType *extra_force) const
   {
     const dealii::AffineConstraints<double> &constraints =
       apply_constraints ? homogeneous_constraints : no_constraints;
@@ -187,10 +188,14 @@ namespace rodnet
     // Dead loads: potential -lambda f.x, with x = X + u; the constant
     // f.X does not change any derivative and is dropped.
     energy -= load_factor * (f_ext * u);
+    if (extra_force != nullptr)
+      energy -= *extra_force * u;
     if (residual != nullptr)
       {
         residual->compress(dealii::VectorOperation::add);
         residual->add(-load_factor, f_ext);
+        if (extra_force != nullptr)
+          residual->add(-1.0, *extra_force);
         constraints.set_zero(*residual);
       }
     if (tangent != nullptr)

@@ -127,7 +127,7 @@ namespace rodnet
 
     std::vector<Quaternion> new_frames(frames.size());
     for (unsigned int cell = 0; cell < frames.size(); ++cell)
-      new_frames[cell] = director_frame(u, cell);
+      new_frames[cell] = director_frame(u, cell).normalized();
     frames = new_frames;
     for (unsigned int cell = 0; cell < frames.size(); ++cell)
       twist_at_reference[cell] = u[layout->twist_dof(cell)];

@@ -166,6 +166,14 @@ namespace rodnet
               }
           }
     f_ext.compress(dealii::VectorOperation::insert);
+
+    Vector3 low = network_->vertex(0), high = low;
+    for (unsigned int v = 0; v < network_->n_vertices(); ++v)
+      {
+        low  = low.cwiseMin(network_->vertex(v));
+        high = high.cwiseMax(network_->vertex(v));
+      }
+    length    = (high - low).norm();
     finalized = true;
   }
 

@@ -92,6 +92,8 @@ namespace rodnet
      * are not null (both are zeroed first). With @p apply_constraints the
      * rows and columns of fixed DoFs are eliminated (Newton increments are
      * zero there); without, the residual holds the reaction forces there.
+     * A non-null @p extra_force is a further dead force, not scaled by the
+     * load factor (solvers use it to push a state off an unstable branch).
      * Thread-parallel over stencils.
      */
     double
@@ -99,7 +101,8 @@ namespace rodnet
              double            load_factor,
              VectorType       *residual,
              MatrixType       *tangent,
-             bool              apply_constraints = true) const;
+             bool              apply_constraints = true,
+             const VectorType *extra_force       = nullptr) const;
 
     /// Elastic energy alone (no load potential) at @p u.
     double
@@ -170,6 +173,13 @@ namespace rodnet
     {
       return *materials[rod];
     }
+    /// Diagonal of the bounding box of the undeformed network (m).
+    double
+    length_scale() const
+    {
+      return length;
+    }
+
     /// External force vector at load factor 1.
     const VectorType &
     external_force() const
@@ -192,6 +202,7 @@ namespace rodnet
     std::vector<std::pair<unsigned int, Vector3>>   distributed_forces;
     VectorType                                      f_ext;
     dealii::TrilinosWrappers::SparsityPattern       sparsity;
+    double                                          length = 0;
     bool                                            finalized = false;
   };
 } // namespace rodnet

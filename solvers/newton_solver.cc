@@ -11,6 +11,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <stdexcept>
 
@@ -129,7 +130,11 @@ namespace rodnet
     auto nox_parameters = rcp(new Teuchos::ParameterList);
     nox_parameters->set("Nonlinear Solver", "Line Search Based");
     Teuchos::ParameterList &printing = nox_parameters->sublist("Printing");
-    printing.set("Output Information", NOX::Utils::Error);
+    // RODNET_NOX_DEBUG in the environment prints NOX's iteration history.
+    printing.set("Output Information",
+                 std::getenv("RODNET_NOX_DEBUG") != nullptr ?
+                   NOX::Utils::OuterIteration + NOX::Utils::Error :
+                   NOX::Utils::Error);
     Teuchos::ParameterList &search = nox_parameters->sublist("Line Search");
     search.set("Method", nox_line_search_name(parameters.line_search));
     Teuchos::ParameterList &direction = nox_parameters->sublist("Direction");

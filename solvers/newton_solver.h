@@ -27,7 +27,7 @@ namespace rodnet
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 25;
       /// "backtrack", "polynomial" or "full step".
-      std::string  line_search = "backtrack";
+      std::string  line_search = "full step";
     };
 
     /// Outcome of one solve.

@@ -22,6 +22,14 @@ namespace rodnet
   lowest_eigenvalues(const dealii::TrilinosWrappers::SparseMatrix &tangent,
                      const dealii::AffineConstraints<double>      &constraints,
                      unsigned int                                  n = 1);
+  /**
+   * The lowest eigenvalue of the constrained tangent and its eigenvector,
+   * unit in the Euclidean norm, over all DoFs (zero at constrained ones).
+   * Same limits as lowest_eigenvalues().
+   */
+  std::pair<double, std::vector<double>>
+  lowest_eigenpair(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                   const dealii::AffineConstraints<double>      &constraints);
 } // namespace rodnet
 
 #endif

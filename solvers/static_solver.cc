@@ -4,6 +4,8 @@
 #include <solvers/static_solver.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 
 namespace rodnet
@@ -21,25 +23,29 @@ namespace rodnet
   }
 
   NewtonSolver::Result
-  StaticSolver::solve_at(VectorType &u, const double load_factor)
+  StaticSolver::solve_at(VectorType       &u,
+                         const double      load_factor,
+                         const VectorType *extra_force)
   {
     model.apply_boundary_values(u, load_factor);
     NewtonSolver::Problem problem;
     problem.residual = [&](const VectorType &x, VectorType &r) {
-      model.assemble(x, load_factor, &r, nullptr);
+      model.assemble(x, load_factor, &r, nullptr, true, extra_force);
     };
     problem.tangent = [&](const VectorType &x, MatrixType &k) {
-      model.assemble(x, load_factor, nullptr, &k);
+      model.assemble(x, load_factor, nullptr, &k, true, extra_force);
     };
 
     // The force scale of the step: the applied load, or the out-of-balance
     // force of the first iterate (displacement-driven steps).
     VectorType r = model.create_vector();
     double     scale = load_factor * model.external_force().l2_norm();
+    double     floor = 0;
     try
       {
-        model.assemble(u, load_factor, &r, nullptr);
+        model.assemble(u, load_factor, &r, &tangent, true, extra_force);
         scale = std::max(scale, r.l2_norm());
+        floor = roundoff_floor();
       }
     catch (const std::exception &e)
       {
@@ -48,10 +54,25 @@ namespace rodnet
         return failed;
       }
     NewtonSolver::Parameters newton = parameters.newton;
-    newton.tolerance =
-      std::max(parameters.relative_tolerance * scale,
-               std::numeric_limits<double>::min());
+    newton.tolerance = std::max({parameters.relative_tolerance * scale,
+                                 floor,
+                                 std::numeric_limits<double>::min()});
     return NewtonSolver(newton).solve(problem, u, tangent);
+  }
+
+  double
+  StaticSolver::roundoff_floor() const
+  {
+    // Internal forces are differences of stiffness times positions: an
+    // axial force EA (|e|/l - 1) carries the rounding error of the
+    // positions, eps |x|, times EA / l, the scale of the tangent's diagonal.
+    // Summed over the DoFs, no residual norm below this is meaningful.
+    double max_diagonal = 0;
+    for (unsigned int i = 0; i < tangent.m(); ++i)
+      if (!model.constraints().is_constrained(i))
+        max_diagonal = std::max(max_diagonal, std::abs(tangent.diag_element(i)));
+    return std::numeric_limits<double>::epsilon() * max_diagonal *
+           model.length_scale() * std::sqrt(double(tangent.m()));
   }
 
   double
@@ -77,10 +98,36 @@ namespace rodnet
     while (lambda < 1.0 - 1e-12)
       {
         dealii::Timer timer;
-        step                  = std::min(step, 1.0 - lambda);
-        const double target   = lambda + step;
+        // Cut steps never skip a point of the nominal grid k / n_steps, so
+        // that outputs land on the loads the scene asked for.
+        const double next_grid =
+          (std::floor(lambda / nominal + 1e-9) + 1) * nominal;
+        step                = std::min(step, std::min(next_grid, 1.0) - lambda);
+        const double target = lambda + step;
         VectorType   trial    = u;
-        const NewtonSolver::Result result = solve_at(trial, target);
+        NewtonSolver::Result result = solve_at(trial, target);
+        if (!result.converged && parameters.branch_switch_amplitude > 0)
+          {
+            // Past a bifurcation the Newton step from the previous state
+            // (whose tangent is nearly singular there) diverges; start
+            // instead from the previous state displaced along its buckling
+            // mode.
+            VectorType     start = u;
+            double         mu    = std::nan("");
+            const Configuration previous_configuration = model.configuration();
+            if (solve_along_mode(start, lambda, target,
+                                 std::numeric_limits<double>::max(), mu))
+              {
+                trial  = start;
+                result = NewtonSolver::Result{true, 0, 0, ""};
+                model.configuration() = previous_configuration;
+                if (log != nullptr)
+                  *log << "  step to load factor " << target
+                       << " converged from the buckling mode" << std::endl;
+              }
+            else
+              model.configuration() = previous_configuration;
+          }
         if (!result.converged)
           {
             if (log != nullptr)
@@ -107,17 +154,41 @@ namespace rodnet
         info.iterations    = result.iterations;
         info.residual_norm = result.residual_norm;
         if (parameters.track_lowest_eigenvalue ||
-            parameters.find_critical_load)
+            parameters.find_critical_load ||
+            parameters.branch_switch_amplitude > 0)
           info.lowest_eigenvalue = lowest_eigenvalue(u, target);
 
         if (parameters.find_critical_load && std::isnan(critical_load) &&
             previous_eigenvalue > 0 && info.lowest_eigenvalue <= 0)
           {
             const Configuration unstable_configuration = model.configuration();
-            bisect_critical_load(previous, stable_configuration, lambda,
-                                 previous_eigenvalue, target,
-                                 info.lowest_eigenvalue);
+            try
+              {
+                bisect_critical_load(previous, stable_configuration, lambda,
+                                     previous_eigenvalue, target,
+                                     info.lowest_eigenvalue);
+              }
+            catch (const SolverFailure &e)
+              {
+                if (log != nullptr)
+                  *log << "  critical load search abandoned: " << e.what()
+                       << std::endl;
+              }
             model.configuration() = unstable_configuration;
+          }
+        if (parameters.branch_switch_amplitude > 0 &&
+            info.lowest_eigenvalue < 0)
+          {
+            const double unstable = info.lowest_eigenvalue;
+            const bool   found    = solve_along_mode(
+              u, target, target, model.assemble(u, target, nullptr, nullptr),
+              info.lowest_eigenvalue);
+            if (log != nullptr)
+              *log << "  unstable equilibrium (lowest eigenvalue " << unstable
+                   << "): "
+                   << (found ? "switched to a stable branch" :
+                               "no stable branch found nearby")
+                   << std::endl;
           }
         info.wall_time = timer.wall_time();
 
@@ -140,6 +211,56 @@ namespace rodnet
         lambda              = target;
         step                = std::min(2 * step, nominal);
       }
+  }
+
+  bool
+  StaticSolver::solve_along_mode(VectorType  &u,
+                                 const double mode_load_factor,
+                                 const double load_factor,
+                                 double       energy_bound,
+                                 double      &eigenvalue)
+  {
+    model.assemble(u, mode_load_factor, nullptr, &tangent);
+    const std::vector<double> mode =
+      lowest_eigenpair(tangent, model.constraints()).second;
+    // Displace the state along the mode so that its largest component
+    // moves by the given fraction of the model size, and let Newton find
+    // the equilibrium nearby, on both sides.
+    double largest = 0;
+    for (const double m : mode)
+      largest = std::max(largest, std::abs(m));
+    const double amplitude =
+      parameters.branch_switch_amplitude * model.length_scale() / largest;
+
+    const Configuration start_configuration = model.configuration();
+    Configuration       best_configuration  = start_configuration;
+    VectorType          best                = u;
+    bool                found               = false;
+    for (const double sign : {1.0, -1.0})
+      {
+        model.configuration() = start_configuration;
+        VectorType trial      = u;
+        for (unsigned int i = 0; i < mode.size(); ++i)
+          trial[i] += sign * amplitude * mode[i];
+        trial.compress(dealii::VectorOperation::insert);
+        if (!solve_at(trial, load_factor).converged)
+          continue;
+        model.reset_reference(trial);
+        const double energy =
+          model.assemble(trial, load_factor, nullptr, nullptr);
+        const double mu = lowest_eigenvalue(trial, load_factor);
+        if (mu > 0 && energy < energy_bound)
+          {
+            energy_bound       = energy;
+            eigenvalue         = mu;
+            best               = trial;
+            best_configuration = model.configuration();
+            found              = true;
+          }
+      }
+    model.configuration() = best_configuration;
+    u                     = best;
+    return found;
   }
 
   void

@@ -37,13 +37,20 @@ namespace rodnet
       /// Smallest load step, as a fraction of the nominal 1 / n_steps.
       double min_step_fraction = 1.0 / 1024;
       /// Newton converges when |residual| <= tolerance * max(|lambda f|,
-      /// |initial residual of the step|).
+      /// |initial residual of the step|), or below the rounding-error floor
+      /// eps * max|K_ii| * L * sqrt(n_dofs), whichever is larger.
       double relative_tolerance = 1e-9;
       NewtonSolver::Parameters newton;
       bool   track_lowest_eigenvalue = false;
       bool   find_critical_load      = false;
       /// Bisection stops when the bracket is below this (in load factor).
       double critical_load_tolerance = 1e-6;
+      /// Where a converged state is unstable (negative lowest eigenvalue),
+      /// push it along the buckling mode with a dead force of this fraction
+      /// of the applied load, both ways, then remove that force in steps,
+      /// and keep the stable equilibrium of lower energy (0 = off). Without
+      /// it Newton may follow the unstable branch past a bifurcation.
+      double branch_switch_amplitude = 0;
     };
 
     struct StepInfo
@@ -85,7 +92,28 @@ namespace rodnet
   private:
     /// Newton from @p u at @p load_factor; @p u holds the result.
     NewtonSolver::Result
-    solve_at(VectorType &u, double load_factor);
+    solve_at(VectorType       &u,
+             double            load_factor,
+             const VectorType *extra_force = nullptr);
+
+    /**
+     * Newton at @p load_factor from @p u displaced both ways along the
+     * lowest eigenmode of the tangent at (@p u, @p mode_load_factor). If a
+     * stable equilibrium of energy below @p energy_bound is found, @p u,
+     * @p eigenvalue and the model's reference become the lowest-energy one
+     * and it returns true; otherwise they are left as they were.
+     */
+    bool
+    solve_along_mode(VectorType &u,
+                     double      mode_load_factor,
+                     double      load_factor,
+                     double      energy_bound,
+                     double     &eigenvalue);
+
+    /// Smallest residual norm that rounding errors let the current state
+    /// reach, from the tangent assembled last.
+    double
+    roundoff_floor() const;
 
     void
     bisect_critical_load(const VectorType   &u_stable,

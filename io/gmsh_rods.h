@@ -1,0 +1,30 @@
+#ifndef RODNET_IO_GMSH_RODS_H
+#define RODNET_IO_GMSH_RODS_H
+
+#include <elements/quaternion.h>
+
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /// The vertex chain of one rod read from a mesh.
+  struct RodChain
+  {
+    unsigned int         tag;    ///< Gmsh physical tag
+    std::vector<Vector3> points; ///< in order along the rod
+    bool                 closed = false;
+  };
+
+  /**
+   * Reads a Gmsh line mesh (.msh, ASCII formats 2 and 4) through deal.II's
+   * GridIn<1,3> and returns one rod per physical tag: the tag's segments
+   * must form a single chain, open or closed. Throws std::invalid_argument
+   * naming the file and tag where they do not (branches belong to rod
+   * networks with junctions), or where the file cannot be read.
+   */
+  std::vector<RodChain>
+  read_gmsh_rods(const std::string &path);
+} // namespace rodnet
+
+#endif

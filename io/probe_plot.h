@@ -1,0 +1,25 @@
+#ifndef RODNET_IO_PROBE_PLOT_H
+#define RODNET_IO_PROBE_PLOT_H
+
+#include <string>
+
+namespace rodnet
+{
+  /**
+   * Plots a probe table (see ProbeTable: a header
+   * `step,load_factor,<probe names>` and one row per converged step) as a
+   * PNG with one panel per probe against the load factor. The gnuplot
+   * script is kept next to the image as `<png_path>.gp`, so that a user can
+   * restyle the plot and run it again.
+   *
+   * Plotting is a convenience: if the table cannot be read, has no probe or
+   * no row, or gnuplot is missing or fails, one warning line goes to
+   * std::cerr and the function returns. It never throws.
+   */
+  void
+  plot_probes(const std::string &csv_path,
+              const std::string &png_path,
+              const std::string &title);
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,139 @@
+#include <deal.II/base/utilities.h>
+
+#include <io/probes.h>
+#include <io/vertex_selector.h>
+
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    unsigned int
+    parse_component(const std::string &text, const std::string &context)
+    {
+      if (text == "x")
+        return 0;
+      if (text == "y")
+        return 1;
+      if (text == "z")
+        return 2;
+      throw std::invalid_argument(context + ": component \"" + text +
+                                  "\" is not x, y or z");
+    }
+  } // namespace
+
+  std::vector<Probe>
+  parse_probes(const std::string &text,
+               const RodModel    &model,
+               const std::string &entry)
+  {
+    std::vector<Probe> probes;
+    for (const std::string &item : dealii::Utilities::split_string_list(text, ';'))
+      {
+        const std::string context = "entry \"" + entry + "\", probe \"" + item + "\"";
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          throw std::invalid_argument(context + ": expected \"name: kind ...\"");
+        Probe probe;
+        probe.name = dealii::Utilities::trim(item.substr(0, colon));
+        if (probe.name.empty() ||
+            probe.name.find_first_of(",\" ") != std::string::npos)
+          throw std::invalid_argument(context + ": the name must be non-empty "
+                                      "without spaces, commas or quotes");
+        for (const Probe &p : probes)
+          if (p.name == probe.name)
+            throw std::invalid_argument(context + ": the name is used twice");
+        std::istringstream words(item.substr(colon + 1));
+        std::string        kind, vertex, component, extra;
+        words >> kind >> vertex >> component >> extra;
+        if (kind == "position" || kind == "reaction")
+          {
+            if (vertex.empty() || component.empty() || !extra.empty())
+              throw std::invalid_argument(context + ": expected \"" + kind +
+                                          " <vertex> <x|y|z>\"");
+            probe.kind = kind == "position" ? Probe::Kind::position :
+                                              Probe::Kind::reaction;
+            probe.vertex    = select_vertex(model.network(), vertex, entry);
+            probe.component = parse_component(component, context);
+            if (probe.kind == Probe::Kind::reaction)
+              {
+                for (const Support &s : model.supports())
+                  for (unsigned int k = 0; k < s.vertices.size(); ++k)
+                    if (s.vertices[k] == probe.vertex &&
+                        s.fixed[k][probe.component] && probe.support.empty())
+                      probe.support = s.name;
+                if (probe.support.empty())
+                  throw std::invalid_argument(
+                    context + ": no support fixes component " + component +
+                    " of vertex \"" + vertex + "\"");
+              }
+          }
+        else if ((kind == "energy" || kind == "eigenvalue") && vertex.empty())
+          probe.kind = kind == "energy" ? Probe::Kind::energy :
+                                          Probe::Kind::eigenvalue;
+        else
+          throw std::invalid_argument(
+            context + ": unknown probe kind \"" + kind +
+            "\"; known: position <vertex> <x|y|z>, reaction <vertex> <x|y|z>, "
+            "energy, eigenvalue");
+        probes.push_back(probe);
+      }
+    return probes;
+  }
+
+  std::vector<double>
+  evaluate_probes(const std::vector<Probe> &probes,
+                  const RodModel           &model,
+                  const VectorType         &u,
+                  const double              load_factor,
+                  const double              lowest_eigenvalue)
+  {
+    std::vector<double> values;
+    for (const Probe &p : probes)
+      switch (p.kind)
+        {
+          case Probe::Kind::position:
+            values.push_back(
+              model.configuration().position(u, p.vertex)[p.component]);
+            break;
+          case Probe::Kind::reaction:
+            values.push_back(
+              model.reaction(model.support(p.support), u, load_factor)
+                [p.component]);
+            break;
+          case Probe::Kind::energy:
+            values.push_back(model.elastic_energy(u));
+            break;
+          case Probe::Kind::eigenvalue:
+            values.push_back(lowest_eigenvalue);
+            break;
+        }
+    return values;
+  }
+
+  ProbeTable::ProbeTable(const std::string &path,
+                         const std::vector<Probe> &probes)
+    : file(path)
+  {
+    if (!file)
+      throw std::runtime_error("cannot write the probe file " + path);
+    file << "step,load_factor";
+    for (const Probe &p : probes)
+      file << ',' << p.name;
+    file << std::endl;
+  }
+
+  void
+  ProbeTable::add_row(const unsigned int         step,
+                      const double               load_factor,
+                      const std::vector<double> &values)
+  {
+    file << step << ',' << std::setprecision(10) << load_factor;
+    for (const double v : values)
+      file << ',' << std::setprecision(12) << v;
+    file << std::endl;
+  }
+} // namespace rodnet

@@ -1,0 +1,68 @@
+#ifndef RODNET_IO_PROBES_H
+#define RODNET_IO_PROBES_H
+
+#include <core/rod_model.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /// One scalar recorded at every converged step.
+  struct Probe
+  {
+    enum class Kind
+    {
+      position,  ///< a component of a vertex's current position
+      reaction,  ///< a component of a support's reaction force
+      energy,    ///< the total elastic energy
+      eigenvalue ///< the lowest eigenvalue of the constrained tangent
+    };
+    std::string  name;
+    Kind         kind;
+    unsigned int vertex    = 0;
+    unsigned int component = 0;
+    std::string  support; ///< for reactions: the support's name
+  };
+
+  /**
+   * Parses a probe list `name: kind args; name: kind args; ...` with kinds
+   * `position <vertex> <x|y|z>`, `reaction <vertex> <x|y|z>` (the support
+   * holding that vertex), `energy` and `eigenvalue`. Vertices as in
+   * select_vertex(). Throws std::invalid_argument naming @p entry and the
+   * offending probe.
+   */
+  std::vector<Probe>
+  parse_probes(const std::string &text,
+               const RodModel    &model,
+               const std::string &entry);
+
+  /// Values of @p probes at the converged state @p u.
+  std::vector<double>
+  evaluate_probes(const std::vector<Probe> &probes,
+                  const RodModel           &model,
+                  const VectorType         &u,
+                  double                    load_factor,
+                  double                    lowest_eigenvalue);
+
+  /**
+   * The file `probes.csv`: a header `step,load_factor,<probe names>` and one
+   * row per converged step, flushed at once so that a later failure loses
+   * nothing.
+   */
+  class ProbeTable
+  {
+  public:
+    ProbeTable(const std::string &path, const std::vector<Probe> &probes);
+
+    void
+    add_row(unsigned int step, double load_factor,
+            const std::vector<double> &values);
+
+  private:
+    std::ofstream file;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,459 @@
+#include <deal.II/base/patterns.h>
+#include <deal.II/base/utilities.h>
+
+#include <core/rod_generators.h>
+#include <elements/hinge_kernel.h>
+#include <io/gmsh_rods.h>
+#include <io/scene.h>
+#include <io/vertex_selector.h>
+#include <materials/rod_material.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    using dealii::Patterns::Anything;
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+
+    /// A pattern for "x, y, z".
+    const dealii::Patterns::List vector_pattern(Double(), 3, 3, ",");
+
+    Vector3
+    get_vector(const dealii::ParameterHandler &prm, const std::string &entry)
+    {
+      const std::vector<double> v = dealii::Utilities::string_to_double(
+        dealii::Utilities::split_string_list(prm.get(entry), ','));
+      return Vector3(v[0], v[1], v[2]);
+    }
+
+    std::string
+    join(const std::vector<std::string> &names, const std::string &separator)
+    {
+      std::string out;
+      for (const std::string &n : names)
+        out += (out.empty() ? "" : separator) + n;
+      return out;
+    }
+
+    /// "x y" or "x=0.1, z=-2" style component lists.
+    std::array<bool, 3>
+    parse_mask(const std::string &text, const std::string &entry)
+    {
+      std::array<bool, 3> mask{{false, false, false}};
+      std::istringstream  words(text);
+      std::string         w;
+      while (words >> w)
+        {
+          if (w != "x" && w != "y" && w != "z")
+            throw std::invalid_argument("entry \"" + entry + "\": \"" + w +
+                                        "\" is not a component (x, y or z)");
+          mask[w[0] - 'x'] = true;
+        }
+      if (!mask[0] && !mask[1] && !mask[2])
+        throw std::invalid_argument("entry \"" + entry + "\": \"" + text +
+                                    "\" names no component");
+      return mask;
+    }
+
+    /// Splits "vertex: rest" items of a ';'-separated list.
+    std::vector<std::pair<std::string, std::string>>
+    split_items(const std::string &text, const std::string &entry)
+    {
+      std::vector<std::pair<std::string, std::string>> items;
+      for (const std::string &item :
+           dealii::Utilities::split_string_list(text, ';'))
+        {
+          // The vertex may itself contain "rod:", so split at the last ':'.
+          const auto colon = item.rfind(':');
+          if (colon == std::string::npos)
+            throw std::invalid_argument("entry \"" + entry + "\": \"" + item +
+                                        "\" should read \"<vertex>: ...\"");
+          items.emplace_back(dealii::Utilities::trim(item.substr(0, colon)),
+                             dealii::Utilities::trim(item.substr(colon + 1)));
+        }
+      return items;
+    }
+  } // namespace
+
+  void
+  Scene::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Generator", "straight",
+                        Selection("straight|arc|ring|helix|polyline|gmsh"),
+                        "How the rod centerline is made: a straight rod, a "
+                        "circular arc, a closed ring, a helix, a polyline "
+                        "through given points, or the rods of a Gmsh line "
+                        "mesh (one rod per physical tag).");
+      prm.declare_entry("Segments", "100", Integer(1),
+                        "Number of segments of the rod (per piece for a "
+                        "polyline). [-]");
+      prm.declare_entry("Start", "0, 0, 0", vector_pattern,
+                        "Straight rod: first end. [m]");
+      prm.declare_entry("End", "1, 0, 0", vector_pattern,
+                        "Straight rod: second end. [m]");
+      prm.declare_entry(
+        "Clamp at first segment midpoint", "false", Bool(),
+        "Straight rod: begin the vertex chain half a segment behind Start, "
+        "so that a clamp of the first two vertices holds the tangent exactly "
+        "at Start and the free length is |End - Start|. [-]");
+      prm.declare_entry("Center", "0, 0, 0", vector_pattern,
+                        "Arc and ring: center of the circle. [m]");
+      prm.declare_entry("Radius", "1", Double(0),
+                        "Arc, ring and helix: radius. [m]");
+      prm.declare_entry("Plane axis 1", "1, 0, 0", vector_pattern,
+                        "Arc and ring: first in-plane unit axis. [-]");
+      prm.declare_entry("Plane axis 2", "0, 1, 0", vector_pattern,
+                        "Arc and ring: second in-plane unit axis, orthogonal "
+                        "to the first. [-]");
+      prm.declare_entry("Start angle", "0", Double(),
+                        "Arc: angle of the first vertex. [deg]");
+      prm.declare_entry("End angle", "90", Double(),
+                        "Arc: angle of the last vertex. [deg]");
+      prm.declare_entry("Rise per radian", "0.1", Double(),
+                        "Helix: axial rise per radian of turn (the pitch "
+                        "divided by 2 pi). [m]");
+      prm.declare_entry("Turns", "1", Double(0), "Helix: number of turns. [-]");
+      prm.declare_entry("Points", "0,0,0; 1,0,0", Anything(),
+                        "Polyline: corner points \"x,y,z; x,y,z; ...\". [m]");
+      prm.declare_entry("Mesh file", "", Anything(),
+                        "Gmsh: path of the .msh line mesh, relative to the "
+                        "scene file. [-]");
+      prm.declare_entry("Director d1", "0, 1, 0", vector_pattern,
+                        "Orientation of the first material director: d1 of "
+                        "each segment is this vector made orthogonal to the "
+                        "segment. Bending stiffness EI1 acts about d1. [-]");
+      prm.declare_entry("Hinge kernel", "simple",
+                        Selection(join(hinge_kernel_names(), "|")),
+                        "Bending and twisting measures: \"simple\" (Korner, "
+                        "Audoly, Bhattacharya 2021) or \"classic\" "
+                        "(Lestringant & Kochmann 2020, eqs. 10-12). [-]");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      const std::vector<std::string> names = MaterialRegistry::instance().names();
+      std::string                    help  = "Constitutive law of the rods:";
+      for (const std::string &n : names)
+        help += " \"" + n + "\": " + MaterialRegistry::instance().description(n) + ".";
+      prm.declare_entry("Model", names.front(), Selection(join(names, "|")), help);
+      for (const std::string &n : names)
+        {
+          prm.enter_subsection(n);
+          MaterialRegistry::instance().create(n)->declare_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Supports");
+    {
+      prm.declare_entry("Clamped ends", "", Anything(),
+                        "Rod ends clamped by fixing their two last vertices "
+                        "and end twist (Korner et al. 5a), e.g. \"start\" or "
+                        "\"0:start, 1:end\". [-]");
+      prm.declare_entry("Pinned vertices", "", Anything(),
+                        "Vertices whose position is fixed, e.g. \"end, 0:mid\". "
+                        "Vertices are [rod:]start|end|mid|<index>. [-]");
+      prm.declare_entry("Fixed components", "", Anything(),
+                        "Position components held at zero displacement: "
+                        "\"<vertex>: <components>; ...\", e.g. \"mid: z; "
+                        "end: y z\". [-]");
+      prm.declare_entry("Prescribed displacements", "", Anything(),
+                        "Displacements reached at load factor 1 and ramped "
+                        "with it: \"<vertex>: x=<dx> y=<dy>; ...\". [m]");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    {
+      prm.declare_entry("Steps", "10", Integer(1),
+                        "Number of equal load steps from load factor 0 to 1; "
+                        "every load and prescribed displacement is ramped. [-]");
+      prm.declare_entry("Point forces", "", Anything(),
+                        "Dead forces at load factor 1: \"<vertex>: fx, fy, fz; "
+                        "...\". [N]");
+      prm.declare_entry("Distributed force", "0, 0, 0", vector_pattern,
+                        "Dead force per unit undeformed length on every rod at "
+                        "load factor 1. [N/m]");
+      prm.declare_entry("Gravity", "0, 0, 0", vector_pattern,
+                        "Gravitational acceleration; the weight per length is "
+                        "\"Mass per length\" times this. [m/s^2]");
+      prm.declare_entry("Mass per length", "0", Double(0),
+                        "Mass of the rod per unit undeformed length, for "
+                        "gravity. [kg/m]");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Line search", "full step",
+                        Selection("backtrack|polynomial|full step"),
+                        "Globalization of Newton's method (Trilinos NOX). The "
+                        "line searches reduce the residual norm, which for "
+                        "nearly inextensible rods (large EA) rejects good "
+                        "Newton steps; the default takes full steps and "
+                        "relies on load-step cutting instead. [-]");
+      prm.declare_entry("Max iterations", "25", Integer(1),
+                        "Newton iterations per load step before it is cut. [-]");
+      prm.declare_entry("Relative tolerance", "1e-9", Double(0, 1),
+                        "Converged when the residual force norm is below this "
+                        "times the applied load norm (or the step's initial "
+                        "residual). [-]");
+      prm.declare_entry("Minimum step fraction", "0.0009765625", Double(0, 1),
+                        "Failed load steps are halved; the run stops with an "
+                        "error below this fraction of the nominal step. [-]");
+      prm.declare_entry("Critical load search", "false", Bool(),
+                        "Track the lowest eigenvalue of the tangent and locate "
+                        "by bisection the load factor where it crosses "
+                        "zero. [-]");
+      prm.declare_entry("Critical load tolerance", "1e-6", Double(0, 1),
+                        "Bracket width of the bisection, in load factor. [-]");
+      prm.declare_entry(
+        "Branch switching amplitude", "0", Double(0, 1),
+        "Where a converged equilibrium is unstable (negative lowest "
+        "eigenvalue), push it along the buckling mode, both ways, by a dead "
+        "force of this fraction of the applied load, remove that force in "
+        "four steps, and continue on the stable equilibrium of lower energy "
+        "found; 0 switches this off. Costs a dense eigenvalue analysis per "
+        "step. [-]");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory", "output", Anything(),
+                        "Where outputs go (overridden by --output). [-]");
+      prm.declare_entry("Write VTU", "true", Bool(),
+                        "Write solution-NNNNN.vtu and solution.pvd. [-]");
+      prm.declare_entry("VTU interval", "1", Integer(1),
+                        "Write the VTU of every n-th converged step. [-]");
+      prm.declare_entry("Probes", "", Anything(),
+                        "Columns of probes.csv: \"name: kind args; ...\" with "
+                        "kinds \"position <vertex> <x|y|z>\" [m], \"reaction "
+                        "<vertex> <x|y|z>\" [N], \"energy\" [J], "
+                        "\"eigenvalue\" (lowest of the constrained tangent). "
+                        "[-]");
+      prm.declare_entry("Plot", "true", Bool(),
+                        "Plot the probes against the load factor into "
+                        "probes.png (needs gnuplot). [-]");
+    }
+    prm.leave_subsection();
+  }
+
+  Scene::Scene(dealii::ParameterHandler &prm, const std::string &scene_directory)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      const std::string  generator = prm.get("Generator");
+      const unsigned int n         = prm.get_integer("Segments");
+      const double       degree    = M_PI / 180;
+      director_hint                = get_vector(prm, "Director d1");
+      hinge_kernel                 = prm.get("Hinge kernel");
+      if (generator == "straight")
+        rod_points.push_back(generators::straight(
+          get_vector(prm, "Start"), get_vector(prm, "End"), n,
+          prm.get_bool("Clamp at first segment midpoint")));
+      else if (generator == "arc")
+        rod_points.push_back(generators::arc(
+          get_vector(prm, "Center"), prm.get_double("Radius"),
+          get_vector(prm, "Plane axis 1"), get_vector(prm, "Plane axis 2"),
+          prm.get_double("Start angle") * degree,
+          prm.get_double("End angle") * degree, n));
+      else if (generator == "ring")
+        rod_points.push_back(generators::ring(
+          get_vector(prm, "Center"), prm.get_double("Radius"),
+          get_vector(prm, "Plane axis 1"), get_vector(prm, "Plane axis 2"), n));
+      else if (generator == "helix")
+        rod_points.push_back(generators::helix(prm.get_double("Radius"),
+                                               prm.get_double("Rise per radian"),
+                                               prm.get_double("Turns"), n));
+      else if (generator == "polyline")
+        {
+          std::vector<Vector3> corners;
+          for (const std::string &p :
+               dealii::Utilities::split_string_list(prm.get("Points"), ';'))
+            {
+              const auto xyz = dealii::Utilities::split_string_list(p, ',');
+              try
+                {
+                  if (xyz.size() != 3)
+                    throw std::invalid_argument("");
+                  const auto v = dealii::Utilities::string_to_double(xyz);
+                  corners.emplace_back(v[0], v[1], v[2]);
+                }
+              catch (const std::exception &)
+                {
+                  throw std::invalid_argument("entry \"Geometry/Points\": \"" +
+                                              p + "\" is not a point x,y,z");
+                }
+            }
+          rod_points.push_back(generators::polyline(corners, n));
+        }
+      else
+        {
+          std::string file = prm.get("Mesh file");
+          if (file.empty())
+            throw std::invalid_argument(
+              "entry \"Geometry/Mesh file\" is empty but Generator = gmsh");
+          if (file[0] != '/')
+            file = scene_directory + "/" + file;
+          for (const RodChain &chain : read_gmsh_rods(file))
+            {
+              rod_points.push_back(chain.points);
+              rod_closed.push_back(chain.closed);
+            }
+        }
+      rod_closed.resize(rod_points.size(), generator == "ring");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      const std::string name = prm.get("Model");
+      auto              m    = MaterialRegistry::instance().create(name);
+      prm.enter_subsection(name);
+      m->parse_parameters(prm);
+      prm.leave_subsection();
+      material = std::move(m);
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Supports");
+    clamped_ends             = prm.get("Clamped ends");
+    pinned_vertices          = prm.get("Pinned vertices");
+    fixed_components         = prm.get("Fixed components");
+    prescribed_displacements = prm.get("Prescribed displacements");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    solver.n_steps    = prm.get_integer("Steps");
+    point_forces      = prm.get("Point forces");
+    distributed_force = get_vector(prm, "Distributed force");
+    gravity           = get_vector(prm, "Gravity");
+    mass_per_length   = prm.get_double("Mass per length");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    solver.newton.line_search      = prm.get("Line search");
+    solver.newton.max_iterations   = prm.get_integer("Max iterations");
+    solver.relative_tolerance      = prm.get_double("Relative tolerance");
+    solver.min_step_fraction       = prm.get_double("Minimum step fraction");
+    solver.find_critical_load      = prm.get_bool("Critical load search");
+    solver.critical_load_tolerance = prm.get_double("Critical load tolerance");
+    solver.branch_switch_amplitude =
+      prm.get_double("Branch switching amplitude");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_directory = prm.get("Directory");
+    write_vtu        = prm.get_bool("Write VTU");
+    vtu_interval     = prm.get_integer("VTU interval");
+    probe_text       = prm.get("Probes");
+    plot             = prm.get_bool("Plot");
+    prm.leave_subsection();
+  }
+
+  std::unique_ptr<RodModel>
+  Scene::build_model() const
+  {
+    auto network = std::make_unique<RodNetwork>();
+    for (unsigned int r = 0; r < rod_points.size(); ++r)
+      network->add_rod(rod_points[r], rod_closed[r], director_hint,
+                       hinge_kernel);
+    network->create_triangulation();
+    const unsigned int n_rods = network->rods().size();
+    auto               model  = std::make_unique<RodModel>(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>(n_rods, material));
+    const RodNetwork &net = model->network();
+
+    for (const std::string &end :
+         dealii::Utilities::split_string_list(clamped_ends, ','))
+      {
+        const auto [rod, at_start] =
+          select_rod_end(net, end, "Supports/Clamped ends");
+        model->clamp_end(end, rod, at_start);
+      }
+    for (const std::string &v :
+         dealii::Utilities::split_string_list(pinned_vertices, ','))
+      model->fix_components(v, select_vertex(net, v, "Supports/Pinned vertices"),
+                            {{true, true, true}});
+    for (const auto &[v, components] :
+         split_items(fixed_components, "Supports/Fixed components"))
+      model->fix_components(v, select_vertex(net, v, "Supports/Fixed components"),
+                            parse_mask(components, "Supports/Fixed components"));
+    for (const auto &[v, values] :
+         split_items(prescribed_displacements, "Supports/Prescribed displacements"))
+      {
+        const std::string   entry = "Supports/Prescribed displacements";
+        std::array<bool, 3> mask{{false, false, false}};
+        Vector3             d = Vector3::Zero();
+        std::istringstream  words(values);
+        std::string         w;
+        while (words >> w)
+          {
+            const auto eq = w.find('=');
+            try
+              {
+                if (eq != 1 || (w[0] != 'x' && w[0] != 'y' && w[0] != 'z'))
+                  throw std::invalid_argument("");
+                std::size_t  used = 0;
+                const double value = std::stod(w.substr(2), &used);
+                if (used != w.size() - 2 || !std::isfinite(value))
+                  throw std::invalid_argument("");
+                mask[w[0] - 'x'] = true;
+                d[w[0] - 'x']    = value;
+              }
+            catch (const std::exception &)
+              {
+                throw std::invalid_argument("entry \"" + entry + "\": \"" + w +
+                                            "\" should read x=<value>, "
+                                            "y=<value> or z=<value>");
+              }
+          }
+        model->fix_components(v, select_vertex(net, v, entry), mask, d);
+      }
+
+    for (const auto &[v, value] :
+         split_items(point_forces, "Loads/Point forces"))
+      {
+        const auto xyz = dealii::Utilities::split_string_list(value, ',');
+        std::vector<double> f;
+        try
+          {
+            if (xyz.size() != 3)
+              throw std::invalid_argument("");
+            f = dealii::Utilities::string_to_double(xyz);
+          }
+        catch (const std::exception &)
+          {
+            throw std::invalid_argument("entry \"Loads/Point forces\": \"" +
+                                        value + "\" is not a force fx, fy, fz");
+          }
+        model->add_point_force(select_vertex(net, v, "Loads/Point forces"),
+                               Vector3(f[0], f[1], f[2]));
+      }
+    const Vector3 q = distributed_force + mass_per_length * gravity;
+    if (q.norm() > 0)
+      for (unsigned int r = 0; r < n_rods; ++r)
+        model->add_distributed_force(r, q);
+    model->finalize();
+    return model;
+  }
+
+  std::vector<Probe>
+  Scene::probes(const RodModel &model) const
+  {
+    return parse_probes(probe_text, model, "Output/Probes");
+  }
+} // namespace rodnet

@@ -1,0 +1,65 @@
+#ifndef RODNET_IO_SCENE_H
+#define RODNET_IO_SCENE_H
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <core/rod_model.h>
+#include <io/probes.h>
+#include <solvers/static_solver.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /**
+   * A scene file: geometry, material, supports, loads, solver and output
+   * settings, as a deal.II ParameterHandler input (.prm or .json). Every
+   * entry carries a pattern, a unit and a help text; `rodnet-run --help`
+   * prints them all.
+   *
+   * Usage: declare_parameters(prm); prm.parse_input(file); then
+   * Scene scene(prm); auto model = scene.build_model(); ...
+   */
+  class Scene
+  {
+  public:
+    /// Declares every entry of a scene, with defaults.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// Reads and checks the entries; throws std::invalid_argument naming
+    /// the entry for inadmissible values. @p scene_directory resolves
+    /// relative mesh file names.
+    Scene(dealii::ParameterHandler &prm,
+          const std::string        &scene_directory = ".");
+
+    /// Builds the rods, material, supports and loads.
+    std::unique_ptr<RodModel>
+    build_model() const;
+
+    /// The probes of the scene, resolved on @p model.
+    std::vector<Probe>
+    probes(const RodModel &model) const;
+
+    StaticSolver::Parameters solver;
+    std::string              output_directory;
+    bool                     write_vtu = true;
+    unsigned int             vtu_interval = 1;
+    bool                     plot = true;
+
+  private:
+    std::vector<std::vector<Vector3>> rod_points;
+    std::vector<bool>                 rod_closed;
+    Vector3                           director_hint;
+    std::string                       hinge_kernel;
+    std::shared_ptr<const RodMaterial> material;
+    std::string clamped_ends, pinned_vertices, fixed_components,
+      prescribed_displacements, point_forces, probe_text;
+    Vector3 distributed_force, gravity;
+    double  mass_per_length;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,92 @@
+#include <deal.II/base/utilities.h>
+
+#include <io/vertex_selector.h>
+
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// Splits "rod:where" into the rod index and "where".
+    std::pair<unsigned int, std::string>
+    split_rod(const RodNetwork  &network,
+              const std::string &text,
+              const std::string &entry)
+    {
+      const std::string trimmed = dealii::Utilities::trim(text);
+      const auto        colon   = trimmed.find(':');
+      unsigned int      rod     = 0;
+      std::string       where   = trimmed;
+      if (colon != std::string::npos)
+        {
+          const std::string rod_text =
+            dealii::Utilities::trim(trimmed.substr(0, colon));
+          try
+            {
+              std::size_t used = 0;
+              const int   r    = std::stoi(rod_text, &used);
+              if (used != rod_text.size() || r < 0)
+                throw std::invalid_argument("");
+              rod = r;
+            }
+          catch (const std::exception &)
+            {
+              throw std::invalid_argument("entry \"" + entry + "\": \"" +
+                                          rod_text +
+                                          "\" is not a rod index in \"" +
+                                          text + "\"");
+            }
+          where = dealii::Utilities::trim(trimmed.substr(colon + 1));
+        }
+      if (rod >= network.rods().size())
+        throw std::invalid_argument(
+          "entry \"" + entry + "\": rod " + std::to_string(rod) +
+          " does not exist (the scene has " +
+          std::to_string(network.rods().size()) + " rods)");
+      return {rod, where};
+    }
+  } // namespace
+
+  unsigned int
+  select_vertex(const RodNetwork  &network,
+                const std::string &text,
+                const std::string &entry)
+  {
+    const auto [rod_index, where] = split_rod(network, text, entry);
+    const Rod &rod                = network.rods()[rod_index];
+    const int  n                  = rod.vertices.size();
+    if (where == "start")
+      return rod.vertices.front();
+    if (where == "end")
+      return rod.vertices.back();
+    if (where == "mid")
+      return rod.vertices[n / 2];
+    try
+      {
+        std::size_t used = 0;
+        const int   i    = std::stoi(where, &used);
+        if (used == where.size() && i >= -n && i < n)
+          return rod.vertices[i < 0 ? n + i : i];
+      }
+    catch (const std::exception &)
+      {}
+    throw std::invalid_argument(
+      "entry \"" + entry + "\": \"" + text +
+      "\" names no vertex; use [rod:]start, end, mid or an index in [" +
+      std::to_string(-n) + ", " + std::to_string(n - 1) + "]");
+  }
+
+  std::pair<unsigned int, bool>
+  select_rod_end(const RodNetwork  &network,
+                 const std::string &text,
+                 const std::string &entry)
+  {
+    const auto [rod, where] = split_rod(network, text, entry);
+    if (where != "start" && where != "end")
+      throw std::invalid_argument("entry \"" + entry + "\": \"" + text +
+                                  "\" names no rod end; use [rod:]start or "
+                                  "[rod:]end");
+    return {rod, where == "start"};
+  }
+} // namespace rodnet

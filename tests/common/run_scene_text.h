@@ -1,0 +1,37 @@
+#ifndef RODNET_TESTS_RUN_SCENE_TEXT_H
+#define RODNET_TESTS_RUN_SCENE_TEXT_H
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <io/scene.h>
+#include <io/scene_runner.h>
+
+#include <string>
+
+namespace rodnet::testing
+{
+  /// Runs the scene given as .prm text through the library's scene runner,
+  /// writing into @p output_directory, silently.
+  inline RunSummary
+  run_scene_text(const std::string &prm_text,
+                 const std::string &output_directory)
+  {
+    dealii::ParameterHandler prm;
+    Scene::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text);
+    const Scene scene(prm);
+    return run_scene(scene, output_directory, nullptr);
+  }
+
+  /// The column of probe @p name in @p summary's rows.
+  inline std::size_t
+  probe_column(const RunSummary &summary, const std::string &name)
+  {
+    for (std::size_t i = 0; i < summary.probe_names.size(); ++i)
+      if (summary.probe_names[i] == name)
+        return i + 1;
+    throw std::invalid_argument("no probe " + name);
+  }
+} // namespace rodnet::testing
+
+#endif
