@@ -131,7 +131,7 @@ namespace
 
   TEST(BadScene, SolverFailureKeepsEarlierSteps)
   {
-    // The elastica with two Newton iterations per step and no room to cut
+    // The elastica with four Newton iterations per step and no room to cut
     // steps: the nearly linear pre-buckling steps converge, the step across
     // the bifurcation cannot, and the run stops with exit code 2. Every
     // converged step is in probes.csv and has its VTU file.
@@ -147,7 +147,7 @@ namespace
         "  set Point forces = end: -10, 1e-3, 0\n"
         "end\n"
         "subsection Solver\n"
-        "  set Max iterations = 2\n"
+        "  set Max iterations = 4\n"
         "  set Minimum step fraction = 0.5\n"
         "end\n"
         "subsection Output\n"
