@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 namespace rodnet
@@ -30,9 +31,11 @@ namespace rodnet
 
     // Per tag: each vertex's neighbours along the tag's segments.
     std::map<unsigned int, std::map<unsigned int, std::vector<unsigned int>>>
-      neighbours;
+                                               neighbours;
+    std::map<unsigned int, std::set<unsigned int>> first_vertices;
     for (const auto &cell : tria.active_cell_iterators())
       {
+        first_vertices[cell->material_id()].insert(cell->vertex_index(0));
         auto &graph = neighbours[cell->material_id()];
         graph[cell->vertex_index(0)].push_back(cell->vertex_index(1));
         graph[cell->vertex_index(1)].push_back(cell->vertex_index(0));
@@ -44,7 +47,10 @@ namespace rodnet
       {
         const std::string where =
           "mesh \"" + path + "\", physical tag " + std::to_string(tag);
-        unsigned int start = graph.begin()->first;
+        // An open chain runs along its line elements: it starts at the end
+        // that is the first vertex of its segment (the lower index if the
+        // elements disagree). A closed one starts anywhere.
+        unsigned int start  = dealii::numbers::invalid_unsigned_int;
         unsigned int n_ends = 0;
         for (const auto &[v, next] : graph)
           {
@@ -55,7 +61,10 @@ namespace rodnet
                 "(junctions of several rods are not supported yet)");
             if (next.size() == 1)
               {
-                start = std::min(start, v);
+                const bool leads = first_vertices[tag].count(v) > 0;
+                if (start == dealii::numbers::invalid_unsigned_int ||
+                    (leads && first_vertices[tag].count(start) == 0))
+                  start = v;
                 ++n_ends;
               }
           }
