@@ -2,6 +2,8 @@
 
 #include <core/rod_network.h>
 
+#include <algorithm>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -52,15 +54,39 @@ namespace rodnet
           " and " + std::to_string((j + 1) % n) + " at " +
           describe(rod_points[j]));
     // Coincident but not consecutive vertices would make two segments
-    // meet at a point that the mesh does not know as shared.
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int k = i + 2; k < n; ++k)
-        if ((rod_points[i] - rod_points[k]).norm() <= tolerance &&
-            !(closed && i == 0 && k == n - 1))
-          throw std::invalid_argument(
-            "rod " + std::to_string(rod_index) + ": vertices " +
-            std::to_string(i) + " and " + std::to_string(k) +
-            " coincide at " + describe(rod_points[i]));
+    // meet at a point that the mesh does not know as shared. Sorting along
+    // the axis of largest spread keeps the search near O(n log n).
+    const Vector3 spread = [&] {
+      Vector3 low = rod_points[0], high = rod_points[0];
+      for (const Vector3 &p : rod_points)
+        {
+          low  = low.cwiseMin(p);
+          high = high.cwiseMax(p);
+        }
+      return Vector3(high - low);
+    }();
+    unsigned int axis = 0;
+    spread.maxCoeff(&axis);
+    std::vector<unsigned int> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+      return rod_points[a][axis] < rod_points[b][axis];
+    });
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int b = a + 1;
+           b < n && rod_points[order[b]][axis] - rod_points[order[a]][axis] <=
+                      tolerance;
+           ++b)
+        {
+          const unsigned int i = std::min(order[a], order[b]);
+          const unsigned int k = std::max(order[a], order[b]);
+          if (k > i + 1 && !(closed && i == 0 && k == n - 1) &&
+              (rod_points[i] - rod_points[k]).norm() <= tolerance)
+            throw std::invalid_argument(
+              "rod " + std::to_string(rod_index) + ": vertices " +
+              std::to_string(i) + " and " + std::to_string(k) +
+              " coincide at " + describe(rod_points[i]));
+        }
 
     Rod rod;
     rod.closed        = closed;

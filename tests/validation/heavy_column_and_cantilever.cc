@@ -87,6 +87,9 @@ namespace
     ASSERT_EQ(run.rows.size(), 1u);
     const auto  &row        = run.rows[0];
     const double deflection = -row[probe_column(run, "tip_z")];
+    std::cout << GetParam() << ": tip deflection " << deflection
+              << ", P L^3/(3EI) = " << P / 3 << ", relative error "
+              << (deflection - P / 3) / (P / 3) << std::endl;
     EXPECT_NEAR(deflection, P / 3, 0.005 * P / 3);
     // The last segment's slope: its midpoint sits at L - l/2, where the
     // exact slope is P/(2EI) (L^2 - (l/2)^2) to first order.
