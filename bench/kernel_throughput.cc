@@ -1,0 +1,282 @@
+// K1 of /work/shared/BENCHMARKS.md: hinge kernel throughput.
+//
+// An open rod of N vertices on the helix x = cos t, y = sin t, z = 0.1 t,
+// t_i = 2 pi i / 50, circular section of diameter 0.01, E = 1e9 (G = E/3;
+// K1 leaves G open and it does not change the cost). The reference frames
+// are those of the undeformed helix; the current state is the helix plus
+// uniform noise of 1e-3 segment lengths on every coordinate and twists
+// uniform in [-0.01, 0.01], set directly as the DoF vector u.
+//
+// For each N and hinge kernel it times
+//  (a) energy + gradient + Hessian assembled into the Trilinos matrix,
+//      RodModel::assemble(u, 0, &r, &K): the hinge and the segment (stretch)
+//      stencils, the rate counts hinges only;
+//  (b) the gradient alone, RodModel::assemble(u, 0, &r, nullptr);
+//  (c) the bare loops without global assembly over pre-gathered local DoF
+//      vectors: the kernel's evaluate() alone, the kernel with the material
+//      and the chain rule (the local gradient / Hessian of each stencil), and
+//      the same for the segments, so that (a) - (c) is the cost of gathering
+//      and scattering through deal.II and Trilinos.
+// Every figure is the median of the repeats with its range (min-max).
+//
+// Usage: kernel_throughput [--threads n] [--repeats n] (defaults 1 and 7:
+// the peer figures are single-threaded).
+#include <deal.II/base/mpi.h>
+
+#include <core/rod_model.h>
+#include <elements/hinge_kernel.h>
+#include <elements/stretch_kernel.h>
+#include <materials/cross_section.h>
+#include <materials/linear_elastic_rod.h>
+
+#include <bench/timing.h>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <string>
+
+using namespace rodnet;
+
+namespace
+{
+  struct Options
+  {
+    unsigned int threads = 1;
+    unsigned int repeats = 7;
+  };
+
+  Options
+  parse_options(int argc, char **argv)
+  {
+    Options options;
+    for (int i = 1; i + 1 < argc; i += 2)
+      {
+        const std::string  key   = argv[i];
+        const unsigned int value = std::stoul(argv[i + 1]);
+        if (key == "--threads")
+          options.threads = value;
+        else if (key == "--repeats")
+          options.repeats = std::max(5u, value);
+        else
+          throw std::invalid_argument("unknown option " + key +
+                                      "; known: --threads, --repeats");
+      }
+    return options;
+  }
+
+  /// Consumes results so that the compiler keeps the timed loops.
+  volatile double sink = 0;
+
+  struct Timings
+  {
+    bench::Statistics assemble_hessian, assemble_gradient;
+    bench::Statistics kernel_hessian, kernel_gradient;
+    bench::Statistics local_hessian, local_gradient;
+    bench::Statistics segments_hessian, segments_gradient;
+  };
+
+  Timings
+  run_case(const unsigned int n_vertices,
+           const std::string &kernel_name,
+           const unsigned int repeats)
+  {
+    std::vector<Vector3> points;
+    for (unsigned int i = 0; i < n_vertices; ++i)
+      {
+        const double t = 2 * M_PI * i / 50.;
+        points.emplace_back(std::cos(t), std::sin(t), 0.1 * t);
+      }
+    const double segment_length = (points[1] - points[0]).norm();
+
+    auto network = std::make_unique<RodNetwork>();
+    // The helix tangent is never parallel to z, so z can fix d1.
+    network->add_rod(points, false, Vector3::UnitZ(), kernel_name);
+    network->create_triangulation();
+    const double E        = 1e9;
+    auto         material = std::make_shared<LinearElasticRod>(
+      stiffness_from_section(E, E / 3, circle_section(0.005)));
+    RodModel model(std::move(network), {material});
+    model.finalize();
+
+    VectorType                             u = model.create_vector();
+    std::mt19937                           random(20261122);
+    std::uniform_real_distribution<double> noise(-1e-3 * segment_length,
+                                                 1e-3 * segment_length);
+    std::uniform_real_distribution<double> twist(-0.01, 0.01);
+    for (unsigned int v = 0; v < model.network().n_vertices(); ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        u[model.layout().vertex_dof(v, c)] = noise(random);
+    for (const SegmentStencil &s : model.layout().segments())
+      u[model.layout().twist_dof(s.cell)] = twist(random);
+    u.compress(dealii::VectorOperation::insert);
+
+    VectorType r = model.create_vector();
+    MatrixType K;
+    model.initialize_matrix(K);
+
+    Timings timings;
+    timings.assemble_hessian =
+      bench::statistics(bench::time_repeats(repeats, [&] {
+        sink = sink + model.assemble(u, 0, &r, &K);
+      }));
+    timings.assemble_gradient =
+      bench::statistics(bench::time_repeats(repeats, [&] {
+        sink = sink + model.assemble(u, 0, &r, nullptr);
+      }));
+
+    // Local DoF vectors gathered once, outside the timing.
+    const Configuration       &configuration = model.configuration();
+    const auto                &hinges        = model.layout().hinges();
+    const auto                &segments      = model.layout().segments();
+    std::vector<HingeVector>   hinge_dofs;
+    std::vector<SegmentVector> segment_dofs;
+    for (const HingeStencil &h : hinges)
+      hinge_dofs.push_back(configuration.hinge_dofs(u, h));
+    for (const SegmentStencil &s : segments)
+      segment_dofs.push_back(configuration.segment_dofs(u, s));
+    const HingeKernel &kernel = model.hinge_kernel(0);
+
+    auto kernel_loop = [&](const bool with_hessian) {
+      HingeStrains strains;
+      double       sum = 0;
+      for (unsigned int h = 0; h < hinges.size(); ++h)
+        {
+          kernel.evaluate(hinge_dofs[h],
+                          configuration.hinge_reference(h),
+                          strains,
+                          with_hessian);
+          sum += strains.kappa[0] + strains.gradient(0, 0) +
+                 (with_hessian ? strains.hessian[2](0, 0) : 0.);
+        }
+      sink = sink + sum;
+    };
+    // The local part of RodModel::assemble: kernel, material and chain rule
+    // (Korner et al. eq. 4.5), without gather and scatter.
+    auto local_loop = [&](const bool with_hessian) {
+      HingeStrains strains;
+      HingeMatrix  hessian;
+      double       sum = 0;
+      for (unsigned int h = 0; h < hinges.size(); ++h)
+        {
+          kernel.evaluate(hinge_dofs[h],
+                          configuration.hinge_reference(h),
+                          strains,
+                          with_hessian);
+          const MaterialResponse<3> w =
+            material->hinge_energy(strains.kappa,
+                                   configuration.voronoi_length(h));
+          const HingeVector gradient = strains.gradient.transpose() * w.stress;
+          sum += w.energy + gradient[0];
+          if (with_hessian)
+            {
+              hessian =
+                strains.gradient.transpose() * w.tangent * strains.gradient;
+              for (unsigned int c = 0; c < 3; ++c)
+                hessian += w.stress[c] * strains.hessian[c];
+              sum += hessian(0, 0);
+            }
+        }
+      sink = sink + sum;
+    };
+    auto segment_loop = [&](const bool with_hessian) {
+      StretchStrain stretch;
+      double        sum = 0;
+      for (unsigned int s = 0; s < segments.size(); ++s)
+        {
+          const double l0 = configuration.rest_length(segments[s].cell);
+          evaluate_stretch(segment_dofs[s], l0, stretch, with_hessian);
+          const MaterialResponse<1> w =
+            material->segment_energy(stretch.strain, l0);
+          const SegmentVector gradient = w.stress[0] * stretch.gradient;
+          sum += w.energy + gradient[0];
+          if (with_hessian)
+            {
+              const SegmentMatrix hessian = w.tangent(0, 0) * stretch.gradient *
+                                              stretch.gradient.transpose() +
+                                            w.stress[0] * stretch.hessian;
+              sum += hessian(0, 0);
+            }
+        }
+      sink = sink + sum;
+    };
+
+    timings.kernel_hessian = bench::statistics(
+      bench::time_repeats(repeats, [&] { kernel_loop(true); }));
+    timings.kernel_gradient = bench::statistics(
+      bench::time_repeats(repeats, [&] { kernel_loop(false); }));
+    timings.local_hessian = bench::statistics(
+      bench::time_repeats(repeats, [&] { local_loop(true); }));
+    timings.local_gradient = bench::statistics(
+      bench::time_repeats(repeats, [&] { local_loop(false); }));
+    timings.segments_hessian = bench::statistics(
+      bench::time_repeats(repeats, [&] { segment_loop(true); }));
+    timings.segments_gradient = bench::statistics(
+      bench::time_repeats(repeats, [&] { segment_loop(false); }));
+    return timings;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      const Options options = parse_options(argc, argv);
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
+      std::cout << "K1 hinge kernel throughput: " << options.threads
+                << " thread(s), median (min-max) of " << options.repeats
+                << " repeats, rates in hinges/s (N - 2 hinges; the assembled "
+                   "figures include the N - 1 segments in the time)\n";
+      const char *rows[] = {"(a) E+g+H assembled into Trilinos matrix",
+                            "(b) gradient assembled into vector",
+                            "(c) kernel evaluate() with Hessians",
+                            "(c) kernel evaluate() gradient only",
+                            "(c) local E+g+H: kernel+material+chain",
+                            "(c) local E+g: kernel+material+chain",
+                            "    segments local E+g+H (time only)",
+                            "    segments local E+g (time only)"};
+      for (const unsigned int n : {1000u, 100000u})
+        for (const std::string kernel : {"simple", "classic"})
+          {
+            const Timings            t = run_case(n, kernel, options.repeats);
+            const bench::Statistics *values[] = {&t.assemble_hessian,
+                                                 &t.assemble_gradient,
+                                                 &t.kernel_hessian,
+                                                 &t.kernel_gradient,
+                                                 &t.local_hessian,
+                                                 &t.local_gradient,
+                                                 &t.segments_hessian,
+                                                 &t.segments_gradient};
+            const double             n_hinges = n - 2;
+            std::cout << "\nN = " << n << ", kernel \"" << kernel << "\"\n";
+            for (unsigned int i = 0; i < 8; ++i)
+              {
+                char line[200];
+                std::snprintf(line,
+                              sizeof(line),
+                              "  %-42s time/s %-30s hinges/s %s\n",
+                              rows[i],
+                              bench::format_time(*values[i]).c_str(),
+                              bench::format_rate(n_hinges, *values[i]).c_str());
+                std::cout << line;
+              }
+            std::cout << "  share of (a) outside the local loops "
+                         "(gather, scatter, WorkStream): "
+                      << 1 - (t.local_hessian.median +
+                              t.segments_hessian.median) /
+                               t.assemble_hessian.median
+                      << "; of (b): "
+                      << 1 - (t.local_gradient.median +
+                              t.segments_gradient.median) /
+                               t.assemble_gradient.median
+                      << std::endl;
+          }
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "kernel_throughput: " << e.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}
