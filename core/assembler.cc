@@ -8,6 +8,10 @@
 
 #include <core/rod_model.h>
 
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <exception>
 #include <mutex>
@@ -50,6 +54,141 @@ namespace rodnet
               copy.matrix(i, j) = (*hessian)(i, j);
         }
     }
+    /**
+     * Adds local contributions straight into the compressed rows of the
+     * Trilinos matrix and the vector's storage. Valid on one process, where
+     * row and column maps are the identity, for constraints that only fix
+     * DoFs (rows and columns of fixed DoFs are skipped; their diagonal is
+     * set by finish()). It replaces AffineConstraints::
+     * distribute_local_to_global, whose per-entry global-to-local lookups
+     * and searches cost more than the kernels (see doc/performance.md).
+     */
+    class DirectScatter
+    {
+    public:
+      /// Whether the fast path applies to @p matrix (or to vectors alone).
+      static bool
+      applies(const MatrixType *matrix)
+      {
+        if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 1)
+          return false;
+        if (matrix == nullptr)
+          return true;
+        const Epetra_CrsMatrix &m = matrix->trilinos_matrix();
+        if (!(m.RowMap().LinearMap() && m.ColMap().LinearMap() &&
+              m.ColMap().MinMyGID() == 0 && m.RowMap().MinMyGID() == 0 &&
+              m.ColMap().NumMyElements() == m.RowMap().NumMyElements()))
+          return false;
+        // Epetra sorts the column indices of each row when the matrix is
+        // filled; the merge in add() relies on it, so check (as cheap as
+        // zeroing the matrix).
+        for (int row = 0; row < m.NumMyRows(); ++row)
+          {
+            int     length;
+            double *row_values;
+            int    *columns;
+            m.ExtractMyRowView(row, length, row_values, columns);
+            if (!std::is_sorted(columns, columns + length))
+              return false;
+          }
+        return true;
+      }
+
+      DirectScatter(MatrixType              *matrix,
+                    VectorType              *vector,
+                    const std::vector<bool> *fixed)
+        : matrix(matrix == nullptr ?
+                   nullptr :
+                   &const_cast<Epetra_CrsMatrix &>(matrix->trilinos_matrix()))
+        , values(vector == nullptr ? nullptr : vector->trilinos_vector()[0])
+        , fixed(fixed)
+      {}
+
+      void
+      add(const LocalContribution &copy) const
+      {
+        const unsigned int n = copy.dofs.size();
+        // The stencil's DoFs in increasing order, so that each row is
+        // merged with the sorted column indices of the matrix in one pass.
+        std::array<unsigned char, n_hinge_dofs> order;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            unsigned int k = i;
+            for (; k > 0 && copy.dofs[order[k - 1]] > copy.dofs[i]; --k)
+              order[k] = order[k - 1];
+            order[k] = i;
+          }
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            const unsigned int i   = order[a];
+            const int          row = copy.dofs[i];
+            if (is_fixed(row))
+              continue;
+            if (values != nullptr)
+              values[row] += copy.vector[i];
+            if (matrix == nullptr)
+              continue;
+            int     length;
+            double *row_values;
+            int    *columns;
+            matrix->ExtractMyRowView(row, length, row_values, columns);
+            int k = 0;
+            for (unsigned int b = 0; b < n; ++b)
+              {
+                const unsigned int j   = order[b];
+                const int          col = copy.dofs[j];
+                if (is_fixed(col))
+                  continue;
+                while (columns[k] < col)
+                  ++k;
+                row_values[k] += copy.matrix(i, j);
+              }
+          }
+      }
+
+      /// Puts the mean free diagonal on the rows of fixed DoFs, so that
+      /// the Newton increment is zero there and the scale matches.
+      void
+      finish() const
+      {
+        if (matrix == nullptr || fixed == nullptr)
+          return;
+        double       sum    = 0;
+        unsigned int n_free = 0;
+        for (int row = 0; row < matrix->NumMyRows(); ++row)
+          if (!(*fixed)[row])
+            {
+              sum += std::abs(diagonal(row));
+              ++n_free;
+            }
+        const double value = n_free > 0 ? sum / n_free : 1.0;
+        for (int row = 0; row < matrix->NumMyRows(); ++row)
+          if ((*fixed)[row])
+            diagonal(row) = value;
+      }
+
+    private:
+      bool
+      is_fixed(const int dof) const
+      {
+        return fixed != nullptr && (*fixed)[dof];
+      }
+
+      double &
+      diagonal(const int row) const
+      {
+        int     length;
+        double *row_values;
+        int    *columns;
+        matrix->ExtractMyRowView(row, length, row_values, columns);
+        return row_values[std::lower_bound(columns, columns + length, row) -
+                          columns];
+      }
+
+      Epetra_CrsMatrix        *matrix;
+      double                  *values;
+      const std::vector<bool> *fixed;
+    };
   } // namespace
 
   double
@@ -88,11 +227,16 @@ namespace rodnet
         }
     };
 
+    const bool direct = DirectScatter::applies(tangent);
+    const DirectScatter scatter(tangent, residual,
+                                apply_constraints ? &fixed_dof_mask : nullptr);
     auto copier = [&](const LocalContribution &copy) {
       energy += copy.energy;
       if (!with_gradient || copy.dofs.empty())
         return;
-      if (with_hessian && residual != nullptr)
+      if (direct)
+        scatter.add(copy);
+      else if (with_hessian && residual != nullptr)
         constraints.distribute_local_to_global(copy.matrix, copy.vector,
                                                copy.dofs, *tangent, *residual);
       else if (with_hessian)
@@ -135,8 +279,9 @@ namespace rodnet
             {
               // Elastic part J^T C J and geometric part sum_k s_k d2kappa_k
               // (Korner et al. eq. 4.5).
-              hessian = scratch.hinge.gradient.transpose() * w.tangent *
-                        scratch.hinge.gradient;
+              const Eigen::Matrix<double, 3, n_hinge_dofs> cj =
+                w.tangent * scratch.hinge.gradient;
+              hessian.noalias() = scratch.hinge.gradient.transpose() * cj;
               for (unsigned int c = 0; c < 3; ++c)
                 hessian += w.stress[c] * scratch.hinge.hessian[c];
             }
@@ -199,7 +344,11 @@ namespace rodnet
         constraints.set_zero(*residual);
       }
     if (tangent != nullptr)
-      tangent->compress(dealii::VectorOperation::add);
+      {
+        if (direct)
+          scatter.finish();
+        tangent->compress(dealii::VectorOperation::add);
+      }
     return energy;
   }
 

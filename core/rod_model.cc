@@ -136,8 +136,12 @@ namespace rodnet
         fixed_dofs.emplace(layout_->twist_dof(cell), 0.0);
 
     homogeneous_constraints.reinit(all);
+    fixed_dof_mask.assign(layout_->n_dofs(), false);
     for (const auto &[dof, value] : fixed_dofs)
-      homogeneous_constraints.add_line(dof);
+      {
+        homogeneous_constraints.add_line(dof);
+        fixed_dof_mask[dof] = true;
+      }
     homogeneous_constraints.close();
     no_constraints.reinit(all);
     no_constraints.close();

@@ -197,6 +197,8 @@ namespace rodnet
     /// Fixed DoF -> prescribed value at load factor 1.
     std::map<global_dof_index, double>              fixed_dofs;
     dealii::AffineConstraints<double>               homogeneous_constraints;
+    /// Per DoF: fixed by a support (the same DoFs as the constraints).
+    std::vector<bool>                               fixed_dof_mask;
     dealii::AffineConstraints<double>               no_constraints;
     std::vector<std::pair<unsigned int, Vector3>>   point_forces;
     std::vector<std::pair<unsigned int, Vector3>>   distributed_forces;
