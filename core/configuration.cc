@@ -1,4 +1,7 @@
 #include <core/configuration.h>
+
+#include <Epetra_BlockMap.h>
+#include <Epetra_FEVector.h>
 #include <elements/parallel_transport.h>
 
 #include <stdexcept>
@@ -71,10 +74,30 @@ namespace rodnet
                             hinge_refs[i])[2];
   }
 
+  namespace
+  {
+    /// The values of @p u indexed by global DoF where its storage allows it
+    /// (one process, contiguous map from 0), else null. Reading through
+    /// the vector's operator() costs a global-to-local lookup per entry.
+    const double *
+    global_values(const dealii::TrilinosWrappers::MPI::Vector &u)
+    {
+      const Epetra_BlockMap &map = u.trilinos_vector().Map();
+      return map.LinearMap() && map.MinMyGID() == 0 &&
+                 map.NumMyElements() == map.NumGlobalElements() ?
+               u.trilinos_vector()[0] :
+               nullptr;
+    }
+  } // namespace
+
   Vector3
   Configuration::position(const dealii::TrilinosWrappers::MPI::Vector &u,
                           const unsigned int                           v) const
   {
+    if (const double *values = global_values(u))
+      return undeformed[v] + Vector3(values[layout->vertex_dof(v, 0)],
+                                     values[layout->vertex_dof(v, 1)],
+                                     values[layout->vertex_dof(v, 2)]);
     return undeformed[v] + Vector3(u[layout->vertex_dof(v, 0)],
                                    u[layout->vertex_dof(v, 1)],
                                    u[layout->vertex_dof(v, 2)]);
@@ -88,8 +111,11 @@ namespace rodnet
     for (unsigned int b = 0; b < 3; ++b)
       local.segment<3>(4 * b) = position(u, hinge.vertices[b]);
     // Twist increments are measured from the reference (Korner eq. 2.8).
-    local[3] = u[hinge.dofs[3]] - twist_at_reference[hinge.segment_prev];
-    local[7] = u[hinge.dofs[7]] - twist_at_reference[hinge.segment_next];
+    const double *values = global_values(u);
+    local[3] = (values ? values[hinge.dofs[3]] : u[hinge.dofs[3]]) -
+               twist_at_reference[hinge.segment_prev];
+    local[7] = (values ? values[hinge.dofs[7]] : u[hinge.dofs[7]]) -
+               twist_at_reference[hinge.segment_next];
     return local;
   }
 

@@ -169,7 +169,7 @@ namespace rodnet
                 f_ext[s.dofs[3 + c]] += half * q[c];
               }
           }
-    f_ext.compress(dealii::VectorOperation::insert);
+    f_ext.compress(dealii::VectorOperation::add);
 
     Vector3 low = network_->vertex(0), high = low;
     for (unsigned int v = 0; v < network_->n_vertices(); ++v)

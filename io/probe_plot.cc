@@ -1,55 +1,217 @@
 #include <io/probe_plot.h>
 
-#include <cstdlib>
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <iostream>
-#include <sstream>
+#include <spawn.h>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
+
+extern char **environ;
 
 namespace rodnet
 {
+  namespace
+  {
+    /// Fields of one CSV line; a field may be double-quoted with "" for a
+    /// quote (RFC 4180).
+    std::vector<std::string>
+    split_csv_line(const std::string &line)
+    {
+      std::vector<std::string> fields(1);
+      bool                     quoted = false;
+      for (std::size_t i = 0; i < line.size(); ++i)
+        {
+          const char c = line[i];
+          if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+            {
+              fields.back() += '"';
+              ++i;
+            }
+          else if (c == '"')
+            quoted = !quoted;
+          else if (c == ',' && !quoted)
+            fields.emplace_back();
+          else
+            fields.back() += c;
+        }
+      return fields;
+    }
+
+    /// @p text as a gnuplot single-quoted string, in which nothing but a
+    /// doubled quote is special: names and paths cannot break the script.
+    std::string
+    quote(const std::string &text)
+    {
+      std::string quoted = "'";
+      for (const char c : text)
+        quoted += (c == '\'') ? std::string("''") : std::string(1, c);
+      return quoted + "'";
+    }
+
+    /**
+     * Runs `gnuplot script`; returns an empty string on success, otherwise
+     * why it failed (the last line gnuplot printed to stderr, if any).
+     * posix_spawnp rather than std::system: no shell sees the path.
+     */
+    std::string
+    run_gnuplot(const std::string &script)
+    {
+      std::array<int, 2> pipe_ends;
+      // Close-on-exec: no other program started meanwhile by another
+      // thread inherits the pipe (dup2 clears the flag on the child's
+      // stderr).
+      if (pipe2(pipe_ends.data(), O_CLOEXEC) != 0)
+        return std::string("cannot create a pipe: ") + std::strerror(errno);
+
+      posix_spawn_file_actions_t actions;
+      posix_spawn_file_actions_init(&actions);
+      posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDERR_FILENO);
+      posix_spawn_file_actions_addopen(&actions,
+                                       STDOUT_FILENO,
+                                       "/dev/null",
+                                       O_WRONLY,
+                                       0);
+
+      std::string program  = "gnuplot";
+      std::string argument = script;
+      char *const argv[]   = {program.data(), argument.data(), nullptr};
+      pid_t       pid;
+      const int   spawn_error =
+        posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+      posix_spawn_file_actions_destroy(&actions);
+      close(pipe_ends[1]);
+      if (spawn_error != 0)
+        {
+          close(pipe_ends[0]);
+          return std::string("cannot run gnuplot: ") +
+                 std::strerror(spawn_error);
+        }
+
+      // Drain stderr before waiting, so that a chatty gnuplot cannot block
+      // on a full pipe.
+      std::string            messages;
+      std::array<char, 4096> buffer;
+      ssize_t                n;
+      while ((n = read(pipe_ends[0], buffer.data(), buffer.size())) > 0 ||
+             (n < 0 && errno == EINTR))
+        if (n > 0)
+          messages.append(buffer.data(), n);
+      close(pipe_ends[0]);
+
+      int status = 0;
+      while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+          return std::string("waiting for gnuplot failed: ") +
+                 std::strerror(errno);
+
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        return "";
+      // gnuplot ends its report of a script error with the message itself,
+      // after the offending line and a caret.
+      std::string       last_line;
+      const std::size_t end = messages.find_last_not_of(" \t\r\n");
+      if (end != std::string::npos)
+        {
+          const std::size_t newline = messages.rfind('\n', end);
+          const std::size_t begin =
+            (newline == std::string::npos) ? 0 : newline + 1;
+          last_line = messages.substr(begin, end + 1 - begin);
+        }
+      const std::string exit_text =
+        WIFEXITED(status) ?
+          "gnuplot exited with code " + std::to_string(WEXITSTATUS(status)) :
+          "gnuplot was killed";
+      return last_line.empty() ? exit_text : exit_text + ": " + last_line;
+    }
+
+    void
+    warn(const std::string &png_path, const std::string &reason)
+    {
+      std::cerr << "warning: no probe plot \"" << png_path << "\": " << reason
+                << std::endl;
+    }
+  } // namespace
+
   void
   plot_probes(const std::string &csv_path,
               const std::string &png_path,
               const std::string &title)
   {
-    auto warn = [&](const std::string &why) {
-      std::cerr << "rodnet: no plot " << png_path << ": " << why << std::endl;
-    };
+    // A failed plot must never cost the user a finished computation.
+    try
+      {
+        std::ifstream csv(csv_path);
+        std::string   header;
+        if (!csv || !std::getline(csv, header))
+          return warn(png_path, "cannot read \"" + csv_path + "\"");
+        if (!header.empty() && header.back() == '\r')
+          header.pop_back();
+        const std::vector<std::string> columns = split_csv_line(header);
+        if (columns.size() < 3)
+          return warn(png_path, "\"" + csv_path + "\" has no probe column");
+        std::string line;
+        bool        has_rows = false;
+        while (!has_rows && std::getline(csv, line))
+          has_rows = line.find_first_not_of(" \t\r") != std::string::npos;
+        if (!has_rows)
+          return warn(png_path, "\"" + csv_path + "\" has no rows yet");
 
-    std::ifstream csv(csv_path);
-    std::string   header, first_row;
-    if (!std::getline(csv, header) || !std::getline(csv, first_row))
-      return warn("the table " + csv_path + " has no rows");
-    std::vector<std::string> columns;
-    std::istringstream       names(header);
-    for (std::string name; std::getline(names, name, ',');)
-      columns.push_back(name);
-    if (columns.size() < 3)
-      return warn("the table has no probe column");
-    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
-      return warn("gnuplot is not installed");
+        // Probes have different units: one panel each, in two columns when
+        // there are many.
+        const unsigned int n_probes = columns.size() - 2;
+        const unsigned int n_cols   = n_probes > 4 ? 2 : 1;
+        const unsigned int n_rows   = (n_probes + n_cols - 1) / n_cols;
+        const std::string  size     = std::to_string(640 * n_cols) + "," +
+                                 std::to_string(80 + 240 * n_rows);
 
-    // One panel per probe, stacked, sharing the load-factor axis. Probe
-    // names are plain words (parse_probes forbids quotes and commas), so
-    // they can stand in the script's strings as they are.
-    const unsigned int n_panels = columns.size() - 2;
-    const std::string  script   = png_path + ".gp";
-    {
-      std::ofstream gp(script);
-      gp << "set terminal pngcairo size 800," << 220 * n_panels + 80 << "\n"
-         << "set output '" << png_path << "'\n"
-         << "set datafile separator ','\n"
-         << "set key off\nset grid\n"
-         << "set multiplot layout " << n_panels << ",1 title '" << title
-         << "'\n";
-      for (unsigned int i = 2; i < columns.size(); ++i)
-        gp << "set xlabel 'load factor'\nset ylabel '" << columns[i] << "'\n"
-           << "plot '" << csv_path << "' every ::1 using 2:" << i + 1
-           << " with linespoints pt 7 ps 0.5\n";
-      gp << "unset multiplot\n";
-    }
-    if (std::system(("gnuplot '" + script + "' > /dev/null 2>&1").c_str()) != 0)
-      warn("gnuplot failed on " + script);
+        const std::string script_path = png_path + ".gp";
+        {
+          std::ofstream script(script_path);
+          if (!script)
+            return warn(png_path,
+                        "cannot write the script \"" + script_path + "\"");
+          // pngcairo draws smoother lines, but not every gnuplot build has
+          // it; the libgd png terminal is the fallback.
+          script << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+                 << "  set terminal pngcairo noenhanced size " << size << "\n"
+                 << "} else {\n"
+                 << "  set terminal png noenhanced size " << size << "\n"
+                 << "}\n"
+                 << "set output " << quote(png_path) << "\n"
+                 << "set datafile separator ','\n"
+                 << "set xlabel 'load factor'\n"
+                 << "set grid\n"
+                 << "set multiplot layout " << n_rows << "," << n_cols
+                 << " title " << quote(title) << "\n";
+          for (unsigned int p = 0; p < n_probes; ++p)
+            script << "set ylabel " << quote(columns[p + 2]) << "\n"
+                   << "plot " << quote(csv_path) << " skip 1 using 2:" << p + 3
+                   << " with linespoints pointtype 7 "
+                   << "pointsize 0.5 notitle\n";
+          script << "unset multiplot\n";
+          if (!script)
+            return warn(png_path,
+                        "cannot write the script \"" + script_path + "\"");
+        }
+
+        const std::string failure = run_gnuplot(script_path);
+        if (!failure.empty())
+          warn(png_path, failure);
+      }
+    catch (const std::exception &e)
+      {
+        warn(png_path, e.what());
+      }
+    catch (...)
+      {
+        warn(png_path, "unknown exception");
+      }
   }
 } // namespace rodnet

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/mapping_q1_eulerian.h>
 #include <deal.II/lac/vector.h>
@@ -40,23 +41,22 @@ namespace rodnet
     {
       out.close();
       if (!out)
-        throw std::runtime_error("VtuOutput: writing \"" + path +
-                                 "\" failed");
+        throw std::runtime_error("VtuOutput: writing \"" + path + "\" failed");
     }
   } // namespace
 
   VtuOutput::VtuOutput(const RodModel    &model_,
                        const std::string &directory_,
                        const std::string &basename_)
-    : model(model_)
-    , directory(directory_)
-    , basename(basename_)
-    , vertex_vector_fe(dealii::FE_Q<1, 3>(1), 3)
-    , vertex_vector_dofs(model_.network().triangulation())
-    , vertex_scalar_fe(1)
-    , vertex_scalar_dofs(model_.network().triangulation())
-    , segment_vector_fe(dealii::FE_DGQ<1, 3>(0), 3)
-    , segment_vector_dofs(model_.network().triangulation())
+      : model(model_)
+      , directory(directory_)
+      , basename(basename_)
+      , vertex_vector_fe(dealii::FE_Q<1, 3>(1), 3)
+      , vertex_vector_dofs(model_.network().triangulation())
+      , vertex_scalar_fe(1)
+      , vertex_scalar_dofs(model_.network().triangulation())
+      , segment_vector_fe(dealii::FE_DGQ<1, 3>(0), 3)
+      , segment_vector_dofs(model_.network().triangulation())
   {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
@@ -80,10 +80,9 @@ namespace rodnet
         dofs.resize(vertex_vector_fe.n_dofs_per_cell());
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs.size(); ++i)
-          vertex_vector_index[cell->vertex_index(
-            i / vertex_vector_fe.n_dofs_per_vertex())]
-                             [vertex_vector_fe.system_to_component_index(i)
-                                .first] = dofs[i];
+          vertex_vector_index
+            [cell->vertex_index(i / vertex_vector_fe.n_dofs_per_vertex())]
+            [vertex_vector_fe.system_to_component_index(i).first] = dofs[i];
       }
     for (const auto &cell : vertex_scalar_dofs.active_cell_iterators())
       {
@@ -121,8 +120,7 @@ namespace rodnet
                    const double       load_factor,
                    const VectorType  &u)
   {
-    if (dealii::Utilities::MPI::this_mpi_process(u.get_mpi_communicator()) !=
-        0)
+    if (dealii::Utilities::MPI::this_mpi_process(u.get_mpi_communicator()) != 0)
       return;
 
     const Configuration &configuration = model.configuration();
@@ -163,12 +161,11 @@ namespace rodnet
     for (unsigned int h = 0; h < hinges.size(); ++h)
       {
         const HingeStencil &hinge = hinges[h];
-        const Vector3       kappa =
-          model.hinge_kernel(hinge.rod)
-            .strains(configuration.hinge_dofs(u, hinge),
-                     configuration.hinge_reference(h)) /
-          configuration.voronoi_length(h);
-        const unsigned int vertex = hinge.vertices[1];
+        const Vector3       kappa = model.hinge_kernel(hinge.rod).strains(
+                                configuration.hinge_dofs(u, hinge),
+                                configuration.hinge_reference(h)) /
+                              configuration.voronoi_length(h);
+        const unsigned int vertex                 = hinge.vertices[1];
         curvature[vertex_vector_index[vertex][0]] = kappa[0];
         curvature[vertex_vector_index[vertex][1]] = kappa[1];
         twist_rate[vertex_scalar_index[vertex]]   = kappa[2];
@@ -184,16 +181,16 @@ namespace rodnet
        component_is_part_of_vector,
        component_is_part_of_vector,
        component_is_scalar});
-    const auto add_vector_field = [&data_out](
-                                    const dealii::DoFHandler<1, 3> &dofs,
-                                    const dealii::Vector<double>   &values,
-                                    const std::string              &name) {
-      data_out.add_data_vector(
-        dofs,
-        values,
-        std::vector<std::string>(3, name),
-        std::vector<Interpretation>(3, component_is_part_of_vector));
-    };
+    const auto add_vector_field =
+      [&data_out](const dealii::DoFHandler<1, 3> &dofs,
+                  const dealii::Vector<double>   &values,
+                  const std::string              &name) {
+        data_out.add_data_vector(
+          dofs,
+          values,
+          std::vector<std::string>(3, name),
+          std::vector<Interpretation>(3, component_is_part_of_vector));
+      };
     add_vector_field(vertex_vector_dofs, curvature, "curvature");
     data_out.add_data_vector(vertex_scalar_dofs, twist_rate, "twist_rate");
     add_vector_field(segment_vector_dofs, d1, "d1");
@@ -205,7 +202,8 @@ namespace rodnet
     // A degree-1 Eulerian mapping moves each vertex by its displacement, so
     // the patches are the deformed polyline.
     const dealii::MappingQ1Eulerian<1, dealii::Vector<double>, 3> mapping(
-      vertex_vector_dofs, displacement);
+      vertex_vector_dofs,
+      displacement);
     data_out.build_patches(mapping, 1);
 
     dealii::DataOutBase::VtkFlags flags(

@@ -71,7 +71,7 @@ namespace rodnet
 
     /// Vertex vector fields: the displacement that drives the Eulerian
     /// mapping (which wants exactly spacedim components) and "curvature".
-    dealii::FESystem<1, 3> vertex_vector_fe;
+    dealii::FESystem<1, 3>   vertex_vector_fe;
     dealii::DoFHandler<1, 3> vertex_vector_dofs;
     /// Vertex scalar field "twist_rate".
     dealii::FE_Q<1, 3>       vertex_scalar_fe;
@@ -84,7 +84,7 @@ namespace rodnet
     /// Triangulation vertex -> DoFs of its three components.
     std::vector<std::array<global_dof_index, 3>> vertex_vector_index;
     /// Triangulation vertex -> DoF.
-    std::vector<global_dof_index>                vertex_scalar_index;
+    std::vector<global_dof_index> vertex_scalar_index;
     /// Active cell -> DoFs of its three components.
     std::vector<std::array<global_dof_index, 3>> segment_vector_index;
 

@@ -242,7 +242,7 @@ namespace rodnet
         VectorType trial      = u;
         for (unsigned int i = 0; i < mode.size(); ++i)
           trial[i] += sign * amplitude * mode[i];
-        trial.compress(dealii::VectorOperation::insert);
+        trial.compress(dealii::VectorOperation::add);
         if (!solve_at(trial, load_factor).converged)
           continue;
         model.reset_reference(trial);

@@ -1,0 +1,318 @@
+// VtuOutput writes the deformed rod with its fields and a .pvd time series;
+// plot_probes turns a probe table into a PNG and never throws. The .vtu
+// files are decoded here (base64, zlib, 32-bit floats) and compared with the
+// state that was written.
+
+#include <deal.II/base/utilities.h>
+
+#include <core/rod_generators.h>
+#include <core/rod_model.h>
+#include <io/probe_plot.h>
+#include <io/vtu_output.h>
+#include <materials/linear_elastic_rod.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+#include <zlib.h>
+
+using namespace rodnet;
+namespace fs = std::filesystem;
+
+namespace
+{
+  constexpr unsigned int n_segments = 8;
+
+  /// A straight rod along x of 8 segments: its vertices k/8 and the
+  /// displacements below are exact in single precision, so the positions
+  /// that deal.II stores as 32-bit floats can be checked to 1e-12.
+  std::unique_ptr<RodModel>
+  straight_rod()
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::straight(Vector3(0, 0, 0),
+                                          Vector3(1, 0, 0),
+                                          n_segments),
+                     false,
+                     Vector3::UnitY(),
+                     "simple");
+    network->create_triangulation();
+    const auto material =
+      std::make_shared<LinearElasticRod>(RodStiffness{1.0, 1.0, 1.0, 1.0});
+    auto model = std::make_unique<RodModel>(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>{material});
+    model->finalize();
+    return model;
+  }
+
+  std::string
+  read_text(const fs::path &path)
+  {
+    std::ifstream      in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  /// A fresh scratch directory under the test's working directory.
+  fs::path
+  scratch(const std::string &name)
+  {
+    const fs::path dir = fs::current_path() / ("io_vtu_output_" + name);
+    fs::remove_all(dir);
+    return dir;
+  }
+
+  /**
+   * The values of the DataArray called @p name (or, for an empty name, the
+   * point coordinates) of a VTU file written by deal.II: a base64 header of
+   * four UInt32 (one block: count, block size, last block size, compressed
+   * size), then the base64 zlib stream of the Float32 values.
+   */
+  std::vector<float>
+  read_data_array(const std::string &vtu, const std::string &name)
+  {
+    const std::size_t tag = name.empty() ?
+                              vtu.find("<DataArray", vtu.find("<Points>")) :
+                              vtu.find("Name=\"" + name + "\"");
+    if (tag == std::string::npos)
+      throw std::runtime_error("no DataArray " + name);
+    const std::size_t start   = vtu.find('>', tag) + 1;
+    const std::size_t end     = vtu.find("</DataArray>", start);
+    std::string       encoded = vtu.substr(start, end - start);
+    encoded.erase(0, encoded.find_first_not_of(" \n\t"));
+    encoded.erase(encoded.find_last_not_of(" \n\t") + 1);
+
+    const std::vector<unsigned char> header_bytes =
+      dealii::Utilities::decode_base64(encoded.substr(0, 24));
+    std::uint32_t header[4];
+    std::memcpy(header, header_bytes.data(), sizeof(header));
+    if (header[0] != 1)
+      throw std::runtime_error("expected one compressed block");
+
+    const std::vector<unsigned char> compressed =
+      dealii::Utilities::decode_base64(encoded.substr(24));
+    std::vector<unsigned char> raw(header[2]);
+    uLongf                     raw_size = raw.size();
+    if (uncompress(raw.data(), &raw_size, compressed.data(), header[3]) !=
+          Z_OK ||
+        raw_size != raw.size())
+      throw std::runtime_error("cannot inflate DataArray " + name);
+    std::vector<float> values(raw.size() / sizeof(float));
+    std::memcpy(values.data(), raw.data(), raw.size());
+    return values;
+  }
+
+  bool
+  gnuplot_on_path()
+  {
+    const char *path = std::getenv("PATH");
+    if (path == nullptr)
+      return false;
+    std::istringstream dirs(path);
+    std::string        dir;
+    while (std::getline(dirs, dir, ':'))
+      if (!dir.empty() && access((dir + "/gnuplot").c_str(), X_OK) == 0)
+        return true;
+    return false;
+  }
+} // namespace
+
+TEST(VtuOutput, WritesDeformedRodFieldsAndTimeSeries)
+{
+  const auto       model = straight_rod();
+  const fs::path   dir   = scratch("series");
+  VtuOutput        output(*model, dir.string());
+  const DofLayout &layout = model->layout();
+
+  // Step 0: a rigid translation. Step 1: also a quarter turn of the twist
+  // of segment 3, which turns its directors about the rod axis x.
+  const Vector3 translation(0.25, -0.5, 0.125);
+  VectorType    u = model->create_vector();
+  for (unsigned int v = 0; v <= n_segments; ++v)
+    for (unsigned int c = 0; c < 3; ++c)
+      u[layout.vertex_dof(v, c)] = translation[c];
+  output.write(0, 0.5, u);
+
+  const unsigned int twisted   = 3;
+  const double       angle     = M_PI / 2;
+  u[layout.twist_dof(twisted)] = angle;
+  output.write(1, 1.0, u);
+
+  ASSERT_TRUE(fs::exists(dir / "solution-00000.vtu"));
+  ASSERT_TRUE(fs::exists(dir / "solution-00001.vtu"));
+  EXPECT_EQ(output.vtu_path(1), (dir / "solution-00001.vtu").string());
+
+  const std::string pvd = read_text(dir / "solution.pvd");
+  EXPECT_NE(pvd.find("timestep=\"0.5\""), std::string::npos) << pvd;
+  EXPECT_NE(pvd.find("file=\"solution-00000.vtu\""), std::string::npos);
+  EXPECT_NE(pvd.find("timestep=\"1\""), std::string::npos) << pvd;
+  EXPECT_NE(pvd.find("file=\"solution-00001.vtu\""), std::string::npos);
+
+  const std::string vtu = read_text(dir / "solution-00001.vtu");
+  for (const std::string name : {"displacement",
+                                 "twist",
+                                 "curvature",
+                                 "twist_rate",
+                                 "d1",
+                                 "d2",
+                                 "axial_strain"})
+    EXPECT_NE(vtu.find("Name=\"" + name + "\""), std::string::npos) << name;
+
+  // One patch per segment, its two points in the cell's vertex order; the
+  // segments of the single rod are cells 0..7 joining vertices c, c+1.
+  const std::vector<float> points       = read_data_array(vtu, "");
+  const std::vector<float> displacement = read_data_array(vtu, "displacement");
+  const std::vector<float> twist        = read_data_array(vtu, "twist");
+  const std::vector<float> d1           = read_data_array(vtu, "d1");
+  const std::vector<float> d2           = read_data_array(vtu, "d2");
+  const std::vector<float> strain       = read_data_array(vtu, "axial_strain");
+  const std::vector<float> curvature    = read_data_array(vtu, "curvature");
+  const std::vector<float> twist_rate   = read_data_array(vtu, "twist_rate");
+  ASSERT_EQ(points.size(), 3 * 2 * n_segments);
+  ASSERT_EQ(displacement.size(), points.size());
+  ASSERT_EQ(twist.size(), 2 * n_segments);
+
+  const double l = 1.0 / n_segments;
+  for (unsigned int cell = 0; cell < n_segments; ++cell)
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const unsigned int p      = 2 * cell + k;
+        const unsigned int vertex = cell + k;
+        const Vector3 expected = model->network().vertex(vertex) + translation;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            EXPECT_NEAR(points[3 * p + c], expected[c], 1e-12)
+              << "point " << p << " component " << c;
+            EXPECT_NEAR(displacement[3 * p + c], translation[c], 1e-12);
+          }
+        EXPECT_NEAR(strain[p], 0.0, 1e-6);
+
+        // d1 = cos(phi) e_y + sin(phi) e_z, d2 = e_x x d1 (Korner eq. 2.8
+        // with the undeformed frame d1 = e_y, d3 = e_x).
+        const double  phi = (cell == twisted) ? angle : 0.0;
+        const Vector3 expected_d1(0, std::cos(phi), std::sin(phi));
+        const Vector3 expected_d2(0, -std::sin(phi), std::cos(phi));
+        EXPECT_NEAR(twist[p], phi, 1e-6);
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            EXPECT_NEAR(d1[3 * p + c], expected_d1[c], 1e-6) << "cell " << cell;
+            EXPECT_NEAR(d2[3 * p + c], expected_d2[c], 1e-6) << "cell " << cell;
+          }
+
+        // A straight rod has no bending. At the two hinges that bound
+        // segment 3 the frames differ by a rotation of +-phi about the
+        // axis, whose integrated twist is 2 sin(phi / 2) (Korner et al.
+        // eq. 2.13); divided by the Voronoi length l. Zero elsewhere.
+        for (unsigned int c = 0; c < 3; ++c)
+          EXPECT_NEAR(curvature[3 * p + c], 0.0, 1e-6);
+        const double jump          = 2 * std::sin(angle / 2) / l;
+        const double expected_rate = (vertex == twisted)     ? jump :
+                                     (vertex == twisted + 1) ? -jump :
+                                                               0.0;
+        EXPECT_NEAR(twist_rate[p], expected_rate, 1e-5) << "vertex " << vertex;
+      }
+
+  // Rewriting a step replaces its entry instead of adding one.
+  output.write(1, 1.0, u);
+  const std::string rewritten = read_text(dir / "solution.pvd");
+  std::size_t       entries   = 0;
+  for (std::size_t at = rewritten.find("<DataSet"); at != std::string::npos;
+       at             = rewritten.find("<DataSet", at + 1))
+    ++entries;
+  EXPECT_EQ(entries, 2u);
+}
+
+TEST(VtuOutput, UnusableDirectoryThrowsNamingIt)
+{
+  const auto     model = straight_rod();
+  const fs::path dir   = scratch("blocked");
+  fs::create_directories(dir);
+  std::ofstream(dir / "file") << "not a directory";
+  const std::string bad = (dir / "file" / "output").string();
+  try
+    {
+      VtuOutput output(*model, bad);
+      FAIL() << "no exception for " << bad;
+    }
+  catch (const std::runtime_error &e)
+    {
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+}
+
+TEST(ProbePlot, MakesPng)
+{
+  if (!gnuplot_on_path())
+    GTEST_SKIP() << "gnuplot is not on PATH";
+  const fs::path dir = scratch("plot");
+  fs::create_directories(dir);
+  // Names with a blank, a quoted comma and gnuplot's quote character.
+  std::ofstream(dir / "probes.csv")
+    << "step,load_factor,tip x,\"a,b\",it's_y\n"
+    << "0,0,0,1,5\n1,0.5,0.1,2,4\n2,1,0.3,2.5,nan\n";
+  const fs::path png = dir / "probes.png";
+  testing::internal::CaptureStderr();
+  plot_probes((dir / "probes.csv").string(), png.string(), "it's a test");
+  const std::string messages = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(messages, "");
+  ASSERT_TRUE(fs::exists(png));
+  EXPECT_GT(fs::file_size(png), 0u);
+  EXPECT_EQ(read_text(png).substr(1, 3), "PNG");
+}
+
+TEST(ProbePlot, WarnsOnceAndReturnsWhenItCannotPlot)
+{
+  const fs::path dir = scratch("no_plot");
+  fs::create_directories(dir);
+
+  testing::internal::CaptureStderr();
+  plot_probes((dir / "missing.csv").string(),
+              (dir / "missing.png").string(),
+              "missing");
+  std::string messages = testing::internal::GetCapturedStderr();
+  EXPECT_NE(messages.find("warning"), std::string::npos);
+  EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
+
+  // Without gnuplot on PATH.
+  std::ofstream(dir / "probes.csv") << "step,load_factor,x\n0,0,1\n1,1,2\n";
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  setenv("PATH", dir.c_str(), 1);
+  testing::internal::CaptureStderr();
+  plot_probes((dir / "probes.csv").string(),
+              (dir / "probes.png").string(),
+              "no gnuplot");
+  messages = testing::internal::GetCapturedStderr();
+  setenv("PATH", path.c_str(), 1);
+  EXPECT_NE(messages.find("gnuplot"), std::string::npos) << messages;
+  EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
+  EXPECT_FALSE(fs::exists(dir / "probes.png"));
+}
+
+TEST(ProbePlot, WarnsOnceWhenGnuplotFails)
+{
+  if (!gnuplot_on_path())
+    GTEST_SKIP() << "gnuplot is not on PATH";
+  const fs::path dir = scratch("failed_plot");
+  fs::create_directories(dir);
+  // gnuplot refuses a panel without a single defined value.
+  std::ofstream(dir / "probes.csv") << "step,load_factor,x\n0,0,nan\n";
+  testing::internal::CaptureStderr();
+  plot_probes((dir / "probes.csv").string(),
+              (dir / "probes.png").string(),
+              "undefined");
+  const std::string messages = testing::internal::GetCapturedStderr();
+  EXPECT_NE(messages.find("undefined"), std::string::npos) << messages;
+  EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
+}
