@@ -3,13 +3,13 @@
 // derivatives) -> material (energy, stress, tangent) -> chain rule ->
 // constraints -> global Trilinos objects.
 #include <deal.II/base/work_stream.h>
+
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <core/rod_model.h>
 
 #include <Epetra_CrsMatrix.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -97,12 +97,13 @@ namespace rodnet
       DirectScatter(MatrixType              *matrix,
                     VectorType              *vector,
                     const std::vector<bool> *fixed)
-        : matrix(matrix == nullptr ?
-                   nullptr :
-                   &const_cast<Epetra_CrsMatrix &>(matrix->trilinos_matrix()))
-        , values(vector == nullptr ? nullptr : vector->trilinos_vector()[0])
-        , fixed(fixed)
-      {}
+          : matrix(matrix == nullptr ?
+                     nullptr :
+                     &const_cast<Epetra_CrsMatrix &>(matrix->trilinos_matrix()))
+          , values(vector == nullptr ? nullptr : vector->trilinos_vector()[0])
+          , fixed(fixed)
+      {
+      }
 
       void
       add(const LocalContribution &copy) const
@@ -227,23 +228,29 @@ namespace rodnet
         }
     };
 
-    const bool direct = DirectScatter::applies(tangent);
-    const DirectScatter scatter(tangent, residual,
+    const bool          direct = DirectScatter::applies(tangent);
+    const DirectScatter scatter(tangent,
+                                residual,
                                 apply_constraints ? &fixed_dof_mask : nullptr);
-    auto copier = [&](const LocalContribution &copy) {
+    auto                copier = [&](const LocalContribution &copy) {
       energy += copy.energy;
       if (!with_gradient || copy.dofs.empty())
         return;
       if (direct)
         scatter.add(copy);
       else if (with_hessian && residual != nullptr)
-        constraints.distribute_local_to_global(copy.matrix, copy.vector,
-                                               copy.dofs, *tangent, *residual);
+        constraints.distribute_local_to_global(copy.matrix,
+                                               copy.vector,
+                                               copy.dofs,
+                                               *tangent,
+                                               *residual);
       else if (with_hessian)
-        constraints.distribute_local_to_global(copy.matrix, copy.dofs,
+        constraints.distribute_local_to_global(copy.matrix,
+                                               copy.dofs,
                                                *tangent);
       else
-        constraints.distribute_local_to_global(copy.vector, copy.dofs,
+        constraints.distribute_local_to_global(copy.vector,
+                                               copy.dofs,
                                                *residual);
     };
 
@@ -257,11 +264,11 @@ namespace rodnet
         copy.dofs.clear();
         copy.energy = 0;
         guarded([&] {
-          const unsigned int   h   = it - hinges.begin();
-          const HingeKernel   &k   = *kernels[it->rod];
+          const unsigned int    h   = it - hinges.begin();
+          const HingeKernel    &k   = *kernels[it->rod];
           const HingeReference &ref = configuration_->hinge_reference(h);
-          const HingeVector    x   = configuration_->hinge_dofs(u, *it);
-          const double         l   = configuration_->voronoi_length(h);
+          const HingeVector     x   = configuration_->hinge_dofs(u, *it);
+          const double          l   = configuration_->voronoi_length(h);
           if (!with_gradient)
             {
               copy.energy =
@@ -285,7 +292,8 @@ namespace rodnet
               for (unsigned int c = 0; c < 3; ++c)
                 hessian += w.stress[c] * scratch.hinge.hessian[c];
             }
-          store<n_hinge_dofs>(gradient, with_hessian ? &hessian : nullptr,
+          store<n_hinge_dofs>(gradient,
+                              with_hessian ? &hessian : nullptr,
                               copy);
           copy.dofs.assign(it->dofs.begin(), it->dofs.end());
         });
@@ -305,8 +313,10 @@ namespace rodnet
         copy.energy = 0;
         guarded([&] {
           const double l0 = configuration_->rest_length(it->cell);
-          evaluate_stretch(configuration_->segment_dofs(u, *it), l0,
-                           scratch.stretch, with_hessian);
+          evaluate_stretch(configuration_->segment_dofs(u, *it),
+                           l0,
+                           scratch.stretch,
+                           with_hessian);
           const MaterialResponse<1> w =
             materials[it->rod]->segment_energy(scratch.stretch.strain, l0);
           copy.energy = w.energy;
@@ -318,7 +328,8 @@ namespace rodnet
             hessian = w.tangent(0, 0) * scratch.stretch.gradient *
                         scratch.stretch.gradient.transpose() +
                       w.stress[0] * scratch.stretch.hessian;
-          store<n_segment_dofs>(gradient, with_hessian ? &hessian : nullptr,
+          store<n_segment_dofs>(gradient,
+                                with_hessian ? &hessian : nullptr,
                                 copy);
           copy.dofs.assign(it->dofs.begin(), it->dofs.end());
         });
@@ -355,6 +366,6 @@ namespace rodnet
   double
   RodModel::elastic_energy(const VectorType &u) const
   {
-    return assemble(u, 0.0, nullptr, nullptr) ;
+    return assemble(u, 0.0, nullptr, nullptr);
   }
 } // namespace rodnet

@@ -1,20 +1,19 @@
 #include <core/configuration.h>
+#include <elements/parallel_transport.h>
 
 #include <Epetra_BlockMap.h>
 #include <Epetra_FEVector.h>
-#include <elements/parallel_transport.h>
-
 #include <stdexcept>
 #include <string>
 
 namespace rodnet
 {
   Configuration::Configuration(
-    const RodNetwork                      &network_,
-    const DofLayout                       &layout_,
+    const RodNetwork                       &network_,
+    const DofLayout                        &layout_,
     const std::vector<const HingeKernel *> &rod_kernels)
-    : network(&network_)
-    , layout(&layout_)
+      : network(&network_)
+      , layout(&layout_)
   {
     const unsigned int n_cells = network->triangulation().n_active_cells();
     rest_lengths.resize(n_cells);
@@ -38,7 +37,7 @@ namespace rodnet
               undeformed[rod.vertices[j]];
             rest_lengths[cell] = e.norm();
             const Vector3 t    = e / rest_lengths[cell];
-            Vector3       d1   = rod.director_hint - rod.director_hint.dot(t) * t;
+            Vector3       d1 = rod.director_hint - rod.director_hint.dot(t) * t;
             if (!(d1.norm() > 1e-8 * rod.director_hint.norm()))
               throw std::invalid_argument(
                 "rod " + std::to_string(r) + ", segment " + std::to_string(j) +
@@ -46,9 +45,9 @@ namespace rodnet
                 "another \"Director d1\"");
             d1.normalize();
             Matrix3 R;
-            R.col(0)    = d1;
-            R.col(1)    = t.cross(d1);
-            R.col(2)    = t;
+            R.col(0)     = d1;
+            R.col(1)     = t.cross(d1);
+            R.col(2)     = t;
             frames[cell] = Quaternion(R).normalized();
           }
       }
@@ -66,8 +65,9 @@ namespace rodnet
 
     // The reference twist of kernels that track it is that of the
     // undeformed configuration, which has zero displacement.
-    dealii::TrilinosWrappers::MPI::Vector zero(
-      dealii::complete_index_set(layout->n_dofs()), MPI_COMM_WORLD);
+    dealii::TrilinosWrappers::MPI::Vector zero(dealii::complete_index_set(
+                                                 layout->n_dofs()),
+                                               MPI_COMM_WORLD);
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
       hinge_refs[i].twist =
         kernels[i]->strains(hinge_dofs(zero, layout->hinges()[i]),
@@ -112,7 +112,7 @@ namespace rodnet
       local.segment<3>(4 * b) = position(u, hinge.vertices[b]);
     // Twist increments are measured from the reference (Korner eq. 2.8).
     const double *values = global_values(u);
-    local[3] = (values ? values[hinge.dofs[3]] : u[hinge.dofs[3]]) -
+    local[3]             = (values ? values[hinge.dofs[3]] : u[hinge.dofs[3]]) -
                twist_at_reference[hinge.segment_prev];
     local[7] = (values ? values[hinge.dofs[7]] : u[hinge.dofs[7]]) -
                twist_at_reference[hinge.segment_next];
@@ -134,9 +134,10 @@ namespace rodnet
                                 const unsigned int cell) const
   {
     const SegmentStencil &s = layout->segments()[segment_index[cell]];
-    const Vector3 t = (position(u, s.vertices[1]) - position(u, s.vertices[0]))
-                        .normalized();
-    return current_director_frame(frames[cell], t,
+    const Vector3         t =
+      (position(u, s.vertices[1]) - position(u, s.vertices[0])).normalized();
+    return current_director_frame(frames[cell],
+                                  t,
                                   u[layout->twist_dof(cell)] -
                                     twist_at_reference[cell]);
   }
@@ -160,7 +161,7 @@ namespace rodnet
 
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
       {
-        const HingeStencil &h = layout->hinges()[i];
+        const HingeStencil &h    = layout->hinges()[i];
         hinge_refs[i].frame_prev = frames[h.segment_prev];
         hinge_refs[i].frame_next = frames[h.segment_next];
         hinge_refs[i].twist      = twists[i];

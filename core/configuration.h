@@ -28,9 +28,9 @@ namespace rodnet
      * director hint made orthogonal to it. Throws, naming rod and segment,
      * where the hint is parallel to a segment.
      */
-    Configuration(const RodNetwork                             &network,
-                  const DofLayout                              &layout,
-                  const std::vector<const HingeKernel *>        &rod_kernels);
+    Configuration(const RodNetwork                       &network,
+                  const DofLayout                        &layout,
+                  const std::vector<const HingeKernel *> &rod_kernels);
 
     /// Current position of vertex @p v for the DoF vector @p u.
     Vector3
@@ -77,16 +77,16 @@ namespace rodnet
     reset_reference(const dealii::TrilinosWrappers::MPI::Vector &u);
 
   private:
-    const RodNetwork                  *network;
-    const DofLayout                   *layout;
-    std::vector<const HingeKernel *>   kernels; ///< per hinge
-    std::vector<double>                rest_lengths;
-    std::vector<double>                voronoi_lengths;
-    std::vector<Quaternion>            frames;         ///< D^j per cell
-    std::vector<double>                twist_at_reference;
-    std::vector<HingeReference>        hinge_refs;
-    std::vector<Vector3>               undeformed;     ///< per vertex
-    std::vector<unsigned int>          segment_index;  ///< per cell
+    const RodNetwork                *network;
+    const DofLayout                 *layout;
+    std::vector<const HingeKernel *> kernels; ///< per hinge
+    std::vector<double>              rest_lengths;
+    std::vector<double>              voronoi_lengths;
+    std::vector<Quaternion>          frames; ///< D^j per cell
+    std::vector<double>              twist_at_reference;
+    std::vector<HingeReference>      hinge_refs;
+    std::vector<Vector3>             undeformed;    ///< per vertex
+    std::vector<unsigned int>        segment_index; ///< per cell
   };
 } // namespace rodnet
 

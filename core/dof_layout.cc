@@ -6,8 +6,8 @@
 namespace rodnet
 {
   DofLayout::DofLayout(const RodNetwork &network)
-    : fe(dealii::FE_Q<1, 3>(1), 3, dealii::FE_DGQ<1, 3>(0), 1)
-    , handler(network.triangulation())
+      : fe(dealii::FE_Q<1, 3>(1), 3, dealii::FE_DGQ<1, 3>(0), 1)
+      , handler(network.triangulation())
   {
     handler.distribute_dofs(fe);
 
@@ -21,7 +21,8 @@ namespace rodnet
         cell->get_dof_indices(cell_dofs);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
-            const unsigned int component = fe.system_to_component_index(i).first;
+            const unsigned int component =
+              fe.system_to_component_index(i).first;
             if (component < 3)
               vertex_dofs[cell->vertex_index(i / fe.n_dofs_per_vertex())]
                          [component] = cell_dofs[i];
@@ -38,8 +39,8 @@ namespace rodnet
         for (unsigned int j = 0; j < rod.segments.size(); ++j)
           {
             SegmentStencil s;
-            s.rod  = r;
-            s.cell = rod.segments[j];
+            s.rod      = r;
+            s.cell     = rod.segments[j];
             s.vertices = {{rod.vertices[j], rod.vertices[(j + 1) % n]}};
             for (unsigned int c = 0; c < 3; ++c)
               {
@@ -54,8 +55,8 @@ namespace rodnet
         const unsigned int last  = rod.closed ? n : n - 1;
         for (unsigned int i = first; i < last; ++i)
           {
-            const unsigned int prev_segment = (i + rod.segments.size() - 1) %
-                                              rod.segments.size();
+            const unsigned int prev_segment =
+              (i + rod.segments.size() - 1) % rod.segments.size();
             HingeStencil h;
             h.rod          = r;
             h.vertices     = {{rod.vertices[(i + n - 1) % n],
@@ -78,7 +79,7 @@ namespace rodnet
 
   void
   DofLayout::make_sparsity_pattern(
-    dealii::DynamicSparsityPattern         &dsp,
+    dealii::DynamicSparsityPattern          &dsp,
     const dealii::AffineConstraints<double> &constraints) const
   {
     std::vector<global_dof_index> dofs;

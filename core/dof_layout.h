@@ -22,7 +22,7 @@ namespace rodnet
   struct HingeStencil
   {
     std::array<global_dof_index, n_hinge_dofs> dofs;
-    unsigned int rod;
+    unsigned int                               rod;
     /// Triangulation vertices (i-1, i, i+1); the hinge sits at the middle one.
     std::array<unsigned int, 3> vertices;
     unsigned int segment_prev; ///< active cell index of segment i-1
@@ -33,9 +33,9 @@ namespace rodnet
   struct SegmentStencil
   {
     std::array<global_dof_index, n_segment_dofs> dofs;
-    std::array<unsigned int, 2> vertices;
-    unsigned int rod;
-    unsigned int cell;
+    std::array<unsigned int, 2>                  vertices;
+    unsigned int                                 rod;
+    unsigned int                                 cell;
   };
 
   /**
@@ -90,16 +90,17 @@ namespace rodnet
 
     /// Sparsity of the tangent: every pair of DoFs of a common stencil.
     void
-    make_sparsity_pattern(dealii::DynamicSparsityPattern         &dsp,
-                          const dealii::AffineConstraints<double> &constraints) const;
+    make_sparsity_pattern(
+      dealii::DynamicSparsityPattern          &dsp,
+      const dealii::AffineConstraints<double> &constraints) const;
 
   private:
-    dealii::FESystem<1, 3>                        fe;
-    dealii::DoFHandler<1, 3>                      handler;
-    std::vector<std::array<global_dof_index, 3>>  vertex_dofs;
-    std::vector<global_dof_index>                 twist_dofs;
-    std::vector<HingeStencil>                     hinge_list;
-    std::vector<SegmentStencil>                   segment_list;
+    dealii::FESystem<1, 3>                       fe;
+    dealii::DoFHandler<1, 3>                     handler;
+    std::vector<std::array<global_dof_index, 3>> vertex_dofs;
+    std::vector<global_dof_index>                twist_dofs;
+    std::vector<HingeStencil>                    hinge_list;
+    std::vector<SegmentStencil>                  segment_list;
   };
 } // namespace rodnet
 

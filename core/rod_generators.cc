@@ -38,8 +38,8 @@ namespace rodnet
       require_positive((end - start).norm(), "straight rod length");
       // With the midpoint clamp the n segments span [start - l/2, end], so
       // l = L / (n - 1/2).
-      const double  shift = clamp_at_start_midpoint ? 0.5 : 0.0;
-      const Vector3 step  = (end - start) / (n_segments - shift);
+      const double         shift = clamp_at_start_midpoint ? 0.5 : 0.0;
+      const Vector3        step  = (end - start) / (n_segments - shift);
       std::vector<Vector3> points;
       for (unsigned int i = 0; i <= n_segments; ++i)
         points.push_back(start + (i - shift) * step);
@@ -62,8 +62,8 @@ namespace rodnet
       for (unsigned int i = 0; i <= n_segments; ++i)
         {
           const double a = angle0 + (angle1 - angle0) * i / n_segments;
-          points.push_back(center + radius * (std::cos(a) * e1 +
-                                              std::sin(a) * e2));
+          points.push_back(center +
+                           radius * (std::cos(a) * e1 + std::sin(a) * e2));
         }
       return points;
     }
@@ -76,7 +76,8 @@ namespace rodnet
          const unsigned int n_segments)
     {
       if (n_segments < 3)
-        throw std::invalid_argument("ring: the number of segments must be >= 3");
+        throw std::invalid_argument(
+          "ring: the number of segments must be >= 3");
       std::vector<Vector3> points =
         arc(center, radius, e1, e2, 0, 2 * M_PI, n_segments);
       points.pop_back();
@@ -96,7 +97,8 @@ namespace rodnet
       for (unsigned int i = 0; i <= n_segments; ++i)
         {
           const double t = 2 * M_PI * turns * i / n_segments;
-          points.emplace_back(radius * std::cos(t), radius * std::sin(t),
+          points.emplace_back(radius * std::cos(t),
+                              radius * std::sin(t),
                               pitch_over_2pi * t);
         }
       return points;

@@ -6,26 +6,26 @@
 
 namespace rodnet
 {
-  RodModel::RodModel(std::unique_ptr<RodNetwork>                     network,
-                     std::vector<std::shared_ptr<const RodMaterial>> rod_materials)
-    : network_(std::move(network))
-    , materials(std::move(rod_materials))
+  RodModel::RodModel(
+    std::unique_ptr<RodNetwork>                     network,
+    std::vector<std::shared_ptr<const RodMaterial>> rod_materials)
+      : network_(std::move(network))
+      , materials(std::move(rod_materials))
   {
     if (network_->triangulation().n_active_cells() == 0)
       network_->create_triangulation();
     const auto &rods = network_->rods();
     if (materials.size() != rods.size())
-      throw std::invalid_argument("RodModel: " + std::to_string(rods.size()) +
-                                  " rods but " +
-                                  std::to_string(materials.size()) +
-                                  " materials");
+      throw std::invalid_argument(
+        "RodModel: " + std::to_string(rods.size()) + " rods but " +
+        std::to_string(materials.size()) + " materials");
     std::vector<const HingeKernel *> rod_kernels;
     for (const Rod &rod : rods)
       {
         kernels.push_back(create_hinge_kernel(rod.hinge_kernel));
         rod_kernels.push_back(kernels.back().get());
       }
-    layout_        = std::make_unique<DofLayout>(*network_);
+    layout_ = std::make_unique<DofLayout>(*network_);
     configuration_ =
       std::make_unique<Configuration>(*network_, *layout_, rod_kernels);
   }
@@ -42,11 +42,11 @@ namespace rodnet
                                   " is closed and has no end to clamp");
     const unsigned int n = rod.vertices.size();
     Support            s;
-    s.name     = name;
-    s.vertices = at_start ? std::vector<unsigned int>{rod.vertices[0],
-                                                      rod.vertices[1]} :
-                            std::vector<unsigned int>{rod.vertices[n - 2],
-                                                      rod.vertices[n - 1]};
+    s.name = name;
+    s.vertices =
+      at_start ?
+        std::vector<unsigned int>{rod.vertices[0], rod.vertices[1]} :
+        std::vector<unsigned int>{rod.vertices[n - 2], rod.vertices[n - 1]};
     s.fixed.assign(2, {{true, true, true}});
     for (const unsigned int v : s.vertices)
       for (unsigned int c = 0; c < 3; ++c)

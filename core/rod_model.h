@@ -26,8 +26,8 @@ namespace rodnet
   /// A named set of fixed DoFs whose reaction force can be probed.
   struct Support
   {
-    std::string                   name;
-    std::vector<unsigned int>     vertices;
+    std::string               name;
+    std::vector<unsigned int> vertices;
     /// Fixed position components per vertex (same order as vertices).
     std::vector<std::array<bool, 3>> fixed;
   };
@@ -195,17 +195,17 @@ namespace rodnet
     std::unique_ptr<Configuration>                  configuration_;
     std::vector<Support>                            support_list;
     /// Fixed DoF -> prescribed value at load factor 1.
-    std::map<global_dof_index, double>              fixed_dofs;
-    dealii::AffineConstraints<double>               homogeneous_constraints;
+    std::map<global_dof_index, double> fixed_dofs;
+    dealii::AffineConstraints<double>  homogeneous_constraints;
     /// Per DoF: fixed by a support (the same DoFs as the constraints).
-    std::vector<bool>                               fixed_dof_mask;
-    dealii::AffineConstraints<double>               no_constraints;
-    std::vector<std::pair<unsigned int, Vector3>>   point_forces;
-    std::vector<std::pair<unsigned int, Vector3>>   distributed_forces;
-    VectorType                                      f_ext;
-    dealii::TrilinosWrappers::SparsityPattern       sparsity;
-    double                                          length = 0;
-    bool                                            finalized = false;
+    std::vector<bool>                             fixed_dof_mask;
+    dealii::AffineConstraints<double>             no_constraints;
+    std::vector<std::pair<unsigned int, Vector3>> point_forces;
+    std::vector<std::pair<unsigned int, Vector3>> distributed_forces;
+    VectorType                                    f_ext;
+    dealii::TrilinosWrappers::SparsityPattern     sparsity;
+    double                                        length    = 0;
+    bool                                          finalized = false;
   };
 } // namespace rodnet
 

@@ -74,8 +74,8 @@ namespace rodnet
     });
     for (unsigned int a = 0; a < n; ++a)
       for (unsigned int b = a + 1;
-           b < n && rod_points[order[b]][axis] - rod_points[order[a]][axis] <=
-                      tolerance;
+           b < n &&
+           rod_points[order[b]][axis] - rod_points[order[a]][axis] <= tolerance;
            ++b)
         {
           const unsigned int i = std::min(order[a], order[b]);
@@ -119,7 +119,7 @@ namespace rodnet
         for (unsigned int j = 0; j < n_segments; ++j)
           {
             dealii::CellData<1> cell;
-            cell.vertices = {rod.vertices[j], rod.vertices[(j + 1) % n]};
+            cell.vertices    = {rod.vertices[j], rod.vertices[(j + 1) % n]};
             cell.material_id = 0;
             rod.segments.push_back(cells.size());
             cells.push_back(cell);
@@ -131,8 +131,8 @@ namespace rodnet
     for (const Rod &rod : rod_list)
       for (unsigned int j = 0; j < rod.segments.size(); ++j)
         {
-          const dealii::TriaActiveIterator<dealii::CellAccessor<1, 3>> c(
-            &tria, 0, rod.segments[j]);
+          const dealii::TriaActiveIterator<dealii::CellAccessor<1, 3>>
+            c(&tria, 0, rod.segments[j]);
           if (c->vertex_index(0) != rod.vertices[j] ||
               c->vertex_index(1) != rod.vertices[(j + 1) % rod.vertices.size()])
             throw std::logic_error(

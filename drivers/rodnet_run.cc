@@ -31,7 +31,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::string scene_file, output;
+  std::string                              scene_file, output;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -77,16 +77,16 @@ main(int argc, char **argv)
       prm.parse_input(scene_file);
       const std::string directory =
         std::filesystem::path(scene_file).parent_path().string();
-      scene = std::make_unique<rodnet::Scene>(prm,
-                                              directory.empty() ? "." :
-                                                                  directory);
+      scene =
+        std::make_unique<rodnet::Scene>(prm,
+                                        directory.empty() ? "." : directory);
       if (!output.empty())
         scene->output_directory = output;
     }
   catch (const std::exception &e)
     {
-      std::cerr << "rodnet-run: error in scene \"" << scene_file
-                << "\":\n" << e.what() << std::endl;
+      std::cerr << "rodnet-run: error in scene \"" << scene_file << "\":\n"
+                << e.what() << std::endl;
       return 1;
     }
 
@@ -102,15 +102,15 @@ main(int argc, char **argv)
       if (!summary.failure.empty())
         {
           std::cerr << "rodnet-run: the solver stopped after "
-                    << summary.converged_steps << " converged steps: "
-                    << summary.failure << std::endl;
+                    << summary.converged_steps
+                    << " converged steps: " << summary.failure << std::endl;
           return 2;
         }
     }
   catch (const std::exception &e)
     {
-      std::cerr << "rodnet-run: error in scene \"" << scene_file
-                << "\":\n" << e.what() << std::endl;
+      std::cerr << "rodnet-run: error in scene \"" << scene_file << "\":\n"
+                << e.what() << std::endl;
       return 1;
     }
   return 0;

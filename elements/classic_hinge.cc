@@ -2,7 +2,6 @@
 #include <elements/parallel_transport.h>
 
 #include <Sacado.hpp>
-
 #include <cmath>
 
 namespace rodnet
@@ -102,7 +101,8 @@ namespace rodnet
           , d1_prev_in_space(
               transport<double>(tangent_prev, tangent_next, d1_prev))
           , twist(reference.twist)
-      {}
+      {
+      }
 
       Vec<double> d1_prev, d2_prev, tangent_prev;
       Vec<double> d1_next, d2_next, tangent_next;
@@ -211,13 +211,11 @@ namespace rodnet
   } // namespace
 
 
-
   std::string
   ClassicHinge::name() const
   {
     return "classic";
   }
-
 
 
   Vector3
@@ -231,7 +229,6 @@ namespace rodnet
       classic_strains(u, ReferenceVectors(reference));
     return Vector3(kappa[0], kappa[1], kappa[2]);
   }
-
 
 
   void

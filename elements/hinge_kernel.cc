@@ -22,7 +22,6 @@ namespace rodnet
   }
 
 
-
   std::vector<std::string>
   hinge_kernel_names()
   {

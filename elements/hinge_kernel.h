@@ -42,9 +42,9 @@ namespace rodnet
    */
   struct HingeStrains
   {
-    Vector3                          kappa;
+    Vector3                                kappa;
     Eigen::Matrix<double, 3, n_hinge_dofs> gradient;
-    std::array<HingeMatrix, 3>       hessian;
+    std::array<HingeMatrix, 3>             hessian;
   };
 
   /**

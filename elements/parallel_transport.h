@@ -18,12 +18,13 @@ namespace rodnet
   {
   public:
     explicit ParallelTransportSingular(const double one_plus_cosine)
-      : std::runtime_error(
-          "parallel transport between nearly opposite tangents (1 + a.b = " +
-          std::to_string(one_plus_cosine) +
-          "): a segment turned by almost 180 degrees within one step; "
-          "use smaller load or time steps")
-    {}
+        : std::runtime_error(
+            "parallel transport between nearly opposite tangents (1 + a.b = " +
+            std::to_string(one_plus_cosine) +
+            "): a segment turned by almost 180 degrees within one step; "
+            "use smaller load or time steps")
+    {
+    }
   };
 
   /// Smallest admissible 1 + a.b before the transport is declared singular.

@@ -3,7 +3,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-
 #include <cmath>
 
 namespace rodnet
@@ -23,7 +22,9 @@ namespace rodnet
   rotation_about(const Vector3 &axis, const double angle)
   {
     const double s = std::sin(0.5 * angle);
-    return Quaternion(std::cos(0.5 * angle), s * axis[0], s * axis[1],
+    return Quaternion(std::cos(0.5 * angle),
+                      s * axis[0],
+                      s * axis[1],
                       s * axis[2]);
   }
 

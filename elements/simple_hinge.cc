@@ -118,13 +118,11 @@ namespace rodnet
   } // namespace
 
 
-
   std::string
   SimpleHinge::name() const
   {
     return "simple";
   }
-
 
 
   Vector3
@@ -144,7 +142,6 @@ namespace rodnet
                                                dofs[next_twist]));
     return 2.0 * q.vec();
   }
-
 
 
   void

@@ -31,7 +31,7 @@ namespace rodnet
 
     // Per tag: each vertex's neighbours along the tag's segments.
     std::map<unsigned int, std::map<unsigned int, std::vector<unsigned int>>>
-                                               neighbours;
+                                                   neighbours;
     std::map<unsigned int, std::set<unsigned int>> first_vertices;
     for (const auto &cell : tria.active_cell_iterators())
       {
@@ -76,8 +76,8 @@ namespace rodnet
           start = graph.begin()->first;
 
         RodChain chain;
-        chain.tag    = tag;
-        chain.closed = n_ends == 0;
+        chain.tag             = tag;
+        chain.closed          = n_ends == 0;
         unsigned int previous = dealii::numbers::invalid_unsigned_int;
         unsigned int current  = start;
         while (true)
@@ -89,15 +89,14 @@ namespace rodnet
             for (const unsigned int candidate : next)
               if (candidate != previous)
                 step = candidate;
-            if (step == dealii::numbers::invalid_unsigned_int ||
-                step == start)
+            if (step == dealii::numbers::invalid_unsigned_int || step == start)
               break;
             previous = current;
             current  = step;
           }
         if (chain.points.size() != graph.size())
           throw std::invalid_argument(where + ": the segments form more than "
-                                      "one chain; use one tag per rod");
+                                              "one chain; use one tag per rod");
         rods.push_back(chain);
       }
     return rods;

@@ -31,17 +31,21 @@ namespace rodnet
                const std::string &entry)
   {
     std::vector<Probe> probes;
-    for (const std::string &item : dealii::Utilities::split_string_list(text, ';'))
+    for (const std::string &item :
+         dealii::Utilities::split_string_list(text, ';'))
       {
-        const std::string context = "entry \"" + entry + "\", probe \"" + item + "\"";
+        const std::string context =
+          "entry \"" + entry + "\", probe \"" + item + "\"";
         const auto colon = item.find(':');
         if (colon == std::string::npos)
-          throw std::invalid_argument(context + ": expected \"name: kind ...\"");
+          throw std::invalid_argument(context +
+                                      ": expected \"name: kind ...\"");
         Probe probe;
         probe.name = dealii::Utilities::trim(item.substr(0, colon));
         if (probe.name.empty() ||
             probe.name.find_first_of(",\" ") != std::string::npos)
-          throw std::invalid_argument(context + ": the name must be non-empty "
+          throw std::invalid_argument(context +
+                                      ": the name must be non-empty "
                                       "without spaces, commas or quotes");
         for (const Probe &p : probes)
           if (p.name == probe.name)
@@ -54,8 +58,8 @@ namespace rodnet
             if (vertex.empty() || component.empty() || !extra.empty())
               throw std::invalid_argument(context + ": expected \"" + kind +
                                           " <vertex> <x|y|z>\"");
-            probe.kind = kind == "position" ? Probe::Kind::position :
-                                              Probe::Kind::reaction;
+            probe.kind      = kind == "position" ? Probe::Kind::position :
+                                                   Probe::Kind::reaction;
             probe.vertex    = select_vertex(model.network(), vertex, entry);
             probe.component = parse_component(component, context);
             if (probe.kind == Probe::Kind::reaction)
@@ -72,8 +76,8 @@ namespace rodnet
               }
           }
         else if ((kind == "energy" || kind == "eigenvalue") && vertex.empty())
-          probe.kind = kind == "energy" ? Probe::Kind::energy :
-                                          Probe::Kind::eigenvalue;
+          probe.kind =
+            kind == "energy" ? Probe::Kind::energy : Probe::Kind::eigenvalue;
         else
           throw std::invalid_argument(
             context + ": unknown probe kind \"" + kind +
@@ -100,9 +104,9 @@ namespace rodnet
               model.configuration().position(u, p.vertex)[p.component]);
             break;
           case Probe::Kind::reaction:
-            values.push_back(
-              model.reaction(model.support(p.support), u, load_factor)
-                [p.component]);
+            values.push_back(model.reaction(model.support(p.support),
+                                            u,
+                                            load_factor)[p.component]);
             break;
           case Probe::Kind::energy:
             values.push_back(model.elastic_energy(u));
@@ -114,9 +118,9 @@ namespace rodnet
     return values;
   }
 
-  ProbeTable::ProbeTable(const std::string &path,
+  ProbeTable::ProbeTable(const std::string        &path,
                          const std::vector<Probe> &probes)
-    : file(path)
+      : file(path)
   {
     if (!file)
       throw std::runtime_error("cannot write the probe file " + path);

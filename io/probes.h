@@ -57,7 +57,8 @@ namespace rodnet
     ProbeTable(const std::string &path, const std::vector<Probe> &probes);
 
     void
-    add_row(unsigned int step, double load_factor,
+    add_row(unsigned int               step,
+            double                     load_factor,
             const std::vector<double> &values);
 
   private:

@@ -87,51 +87,81 @@ namespace rodnet
   {
     prm.enter_subsection("Geometry");
     {
-      prm.declare_entry("Generator", "straight",
+      prm.declare_entry("Generator",
+                        "straight",
                         Selection("straight|arc|ring|helix|polyline|gmsh"),
                         "How the rod centerline is made: a straight rod, a "
                         "circular arc, a closed ring, a helix, a polyline "
                         "through given points, or the rods of a Gmsh line "
                         "mesh (one rod per physical tag).");
-      prm.declare_entry("Segments", "100", Integer(1),
+      prm.declare_entry("Segments",
+                        "100",
+                        Integer(1),
                         "Number of segments of the rod (per piece for a "
                         "polyline). [-]");
-      prm.declare_entry("Start", "0, 0, 0", vector_pattern,
+      prm.declare_entry("Start",
+                        "0, 0, 0",
+                        vector_pattern,
                         "Straight rod: first end. [m]");
-      prm.declare_entry("End", "1, 0, 0", vector_pattern,
+      prm.declare_entry("End",
+                        "1, 0, 0",
+                        vector_pattern,
                         "Straight rod: second end. [m]");
       prm.declare_entry(
-        "Clamp at first segment midpoint", "false", Bool(),
+        "Clamp at first segment midpoint",
+        "false",
+        Bool(),
         "Straight rod: begin the vertex chain half a segment behind Start, "
         "so that a clamp of the first two vertices holds the tangent exactly "
         "at Start and the free length is |End - Start|. [-]");
-      prm.declare_entry("Center", "0, 0, 0", vector_pattern,
+      prm.declare_entry("Center",
+                        "0, 0, 0",
+                        vector_pattern,
                         "Arc and ring: center of the circle. [m]");
-      prm.declare_entry("Radius", "1", Double(0),
+      prm.declare_entry("Radius",
+                        "1",
+                        Double(0),
                         "Arc, ring and helix: radius. [m]");
-      prm.declare_entry("Plane axis 1", "1, 0, 0", vector_pattern,
+      prm.declare_entry("Plane axis 1",
+                        "1, 0, 0",
+                        vector_pattern,
                         "Arc and ring: first in-plane unit axis. [-]");
-      prm.declare_entry("Plane axis 2", "0, 1, 0", vector_pattern,
+      prm.declare_entry("Plane axis 2",
+                        "0, 1, 0",
+                        vector_pattern,
                         "Arc and ring: second in-plane unit axis, orthogonal "
                         "to the first. [-]");
-      prm.declare_entry("Start angle", "0", Double(),
+      prm.declare_entry("Start angle",
+                        "0",
+                        Double(),
                         "Arc: angle of the first vertex. [deg]");
-      prm.declare_entry("End angle", "90", Double(),
+      prm.declare_entry("End angle",
+                        "90",
+                        Double(),
                         "Arc: angle of the last vertex. [deg]");
-      prm.declare_entry("Rise per radian", "0.1", Double(),
+      prm.declare_entry("Rise per radian",
+                        "0.1",
+                        Double(),
                         "Helix: axial rise per radian of turn (the pitch "
                         "divided by 2 pi). [m]");
       prm.declare_entry("Turns", "1", Double(0), "Helix: number of turns. [-]");
-      prm.declare_entry("Points", "0,0,0; 1,0,0", Anything(),
+      prm.declare_entry("Points",
+                        "0,0,0; 1,0,0",
+                        Anything(),
                         "Polyline: corner points \"x,y,z; x,y,z; ...\". [m]");
-      prm.declare_entry("Mesh file", "", Anything(),
+      prm.declare_entry("Mesh file",
+                        "",
+                        Anything(),
                         "Gmsh: path of the .msh line mesh, relative to the "
                         "scene file. [-]");
-      prm.declare_entry("Director d1", "0, 1, 0", vector_pattern,
+      prm.declare_entry("Director d1",
+                        "0, 1, 0",
+                        vector_pattern,
                         "Orientation of the first material director: d1 of "
                         "each segment is this vector made orthogonal to the "
                         "segment. Bending stiffness EI1 acts about d1. [-]");
-      prm.declare_entry("Hinge kernel", "simple",
+      prm.declare_entry("Hinge kernel",
+                        "simple",
                         Selection(join(hinge_kernel_names(), "|")),
                         "Bending and twisting measures: \"simple\" (Korner, "
                         "Audoly, Bhattacharya 2021) or \"classic\" "
@@ -141,11 +171,16 @@ namespace rodnet
 
     prm.enter_subsection("Material");
     {
-      const std::vector<std::string> names = MaterialRegistry::instance().names();
-      std::string                    help  = "Constitutive law of the rods:";
+      const std::vector<std::string> names =
+        MaterialRegistry::instance().names();
+      std::string help = "Constitutive law of the rods:";
       for (const std::string &n : names)
-        help += " \"" + n + "\": " + MaterialRegistry::instance().description(n) + ".";
-      prm.declare_entry("Model", names.front(), Selection(join(names, "|")), help);
+        help += " \"" + n +
+                "\": " + MaterialRegistry::instance().description(n) + ".";
+      prm.declare_entry("Model",
+                        names.front(),
+                        Selection(join(names, "|")),
+                        help);
       for (const std::string &n : names)
         {
           prm.enter_subsection(n);
@@ -157,18 +192,27 @@ namespace rodnet
 
     prm.enter_subsection("Supports");
     {
-      prm.declare_entry("Clamped ends", "", Anything(),
+      prm.declare_entry("Clamped ends",
+                        "",
+                        Anything(),
                         "Rod ends clamped by fixing their two last vertices "
                         "and end twist (Korner et al. 5a), e.g. \"start\" or "
                         "\"0:start, 1:end\". [-]");
-      prm.declare_entry("Pinned vertices", "", Anything(),
-                        "Vertices whose position is fixed, e.g. \"end, 0:mid\". "
-                        "Vertices are [rod:]start|end|mid|<index>. [-]");
-      prm.declare_entry("Fixed components", "", Anything(),
+      prm.declare_entry(
+        "Pinned vertices",
+        "",
+        Anything(),
+        "Vertices whose position is fixed, e.g. \"end, 0:mid\". "
+        "Vertices are [rod:]start|end|mid|<index>. [-]");
+      prm.declare_entry("Fixed components",
+                        "",
+                        Anything(),
                         "Position components held at zero displacement: "
                         "\"<vertex>: <components>; ...\", e.g. \"mid: z; "
                         "end: y z\". [-]");
-      prm.declare_entry("Prescribed displacements", "", Anything(),
+      prm.declare_entry("Prescribed displacements",
+                        "",
+                        Anything(),
                         "Displacements reached at load factor 1 and ramped "
                         "with it: \"<vertex>: x=<dx> y=<dy>; ...\". [m]");
     }
@@ -176,19 +220,30 @@ namespace rodnet
 
     prm.enter_subsection("Loads");
     {
-      prm.declare_entry("Steps", "10", Integer(1),
-                        "Number of equal load steps from load factor 0 to 1; "
-                        "every load and prescribed displacement is ramped. [-]");
-      prm.declare_entry("Point forces", "", Anything(),
+      prm.declare_entry(
+        "Steps",
+        "10",
+        Integer(1),
+        "Number of equal load steps from load factor 0 to 1; "
+        "every load and prescribed displacement is ramped. [-]");
+      prm.declare_entry("Point forces",
+                        "",
+                        Anything(),
                         "Dead forces at load factor 1: \"<vertex>: fx, fy, fz; "
                         "...\". [N]");
-      prm.declare_entry("Distributed force", "0, 0, 0", vector_pattern,
+      prm.declare_entry("Distributed force",
+                        "0, 0, 0",
+                        vector_pattern,
                         "Dead force per unit undeformed length on every rod at "
                         "load factor 1. [N/m]");
-      prm.declare_entry("Gravity", "0, 0, 0", vector_pattern,
+      prm.declare_entry("Gravity",
+                        "0, 0, 0",
+                        vector_pattern,
                         "Gravitational acceleration; the weight per length is "
                         "\"Mass per length\" times this. [m/s^2]");
-      prm.declare_entry("Mass per length", "0", Double(0),
+      prm.declare_entry("Mass per length",
+                        "0",
+                        Double(0),
                         "Mass of the rod per unit undeformed length, for "
                         "gravity. [kg/m]");
     }
@@ -196,30 +251,44 @@ namespace rodnet
 
     prm.enter_subsection("Solver");
     {
-      prm.declare_entry("Line search", "full step",
+      prm.declare_entry("Line search",
+                        "full step",
                         Selection("backtrack|polynomial|full step"),
                         "Globalization of Newton's method (Trilinos NOX). The "
                         "line searches reduce the residual norm, which for "
                         "nearly inextensible rods (large EA) rejects good "
                         "Newton steps; the default takes full steps and "
                         "relies on load-step cutting instead. [-]");
-      prm.declare_entry("Max iterations", "25", Integer(1),
-                        "Newton iterations per load step before it is cut. [-]");
-      prm.declare_entry("Relative tolerance", "1e-9", Double(0, 1),
+      prm.declare_entry(
+        "Max iterations",
+        "25",
+        Integer(1),
+        "Newton iterations per load step before it is cut. [-]");
+      prm.declare_entry("Relative tolerance",
+                        "1e-9",
+                        Double(0, 1),
                         "Converged when the residual force norm is below this "
                         "times the applied load norm (or the step's initial "
                         "residual). [-]");
-      prm.declare_entry("Minimum step fraction", "0.0009765625", Double(0, 1),
+      prm.declare_entry("Minimum step fraction",
+                        "0.0009765625",
+                        Double(0, 1),
                         "Failed load steps are halved; the run stops with an "
                         "error below this fraction of the nominal step. [-]");
-      prm.declare_entry("Critical load search", "false", Bool(),
+      prm.declare_entry("Critical load search",
+                        "false",
+                        Bool(),
                         "Track the lowest eigenvalue of the tangent and locate "
                         "by bisection the load factor where it crosses "
                         "zero. [-]");
-      prm.declare_entry("Critical load tolerance", "1e-6", Double(0, 1),
+      prm.declare_entry("Critical load tolerance",
+                        "1e-6",
+                        Double(0, 1),
                         "Bracket width of the bisection, in load factor. [-]");
       prm.declare_entry(
-        "Branch switching amplitude", "0", Double(0, 1),
+        "Branch switching amplitude",
+        "0",
+        Double(0, 1),
         "Where a converged equilibrium is unstable (negative lowest "
         "eigenvalue), push it along the buckling mode, both ways, by a dead "
         "force of this fraction of the applied load, remove that force in "
@@ -231,26 +300,37 @@ namespace rodnet
 
     prm.enter_subsection("Output");
     {
-      prm.declare_entry("Directory", "output", Anything(),
+      prm.declare_entry("Directory",
+                        "output",
+                        Anything(),
                         "Where outputs go (overridden by --output). [-]");
-      prm.declare_entry("Write VTU", "true", Bool(),
+      prm.declare_entry("Write VTU",
+                        "true",
+                        Bool(),
                         "Write solution-NNNNN.vtu and solution.pvd. [-]");
-      prm.declare_entry("VTU interval", "1", Integer(1),
+      prm.declare_entry("VTU interval",
+                        "1",
+                        Integer(1),
                         "Write the VTU of every n-th converged step. [-]");
-      prm.declare_entry("Probes", "", Anything(),
+      prm.declare_entry("Probes",
+                        "",
+                        Anything(),
                         "Columns of probes.csv: \"name: kind args; ...\" with "
                         "kinds \"position <vertex> <x|y|z>\" [m], \"reaction "
                         "<vertex> <x|y|z>\" [N], \"energy\" [J], "
                         "\"eigenvalue\" (lowest of the constrained tangent). "
                         "[-]");
-      prm.declare_entry("Plot", "true", Bool(),
+      prm.declare_entry("Plot",
+                        "true",
+                        Bool(),
                         "Plot the probes against the load factor into "
                         "probes.png (needs gnuplot). [-]");
     }
     prm.leave_subsection();
   }
 
-  Scene::Scene(dealii::ParameterHandler &prm, const std::string &scene_directory)
+  Scene::Scene(dealii::ParameterHandler &prm,
+               const std::string        &scene_directory)
   {
     prm.enter_subsection("Geometry");
     {
@@ -261,22 +341,31 @@ namespace rodnet
       hinge_kernel                 = prm.get("Hinge kernel");
       if (generator == "straight")
         rod_points.push_back(generators::straight(
-          get_vector(prm, "Start"), get_vector(prm, "End"), n,
+          get_vector(prm, "Start"),
+          get_vector(prm, "End"),
+          n,
           prm.get_bool("Clamp at first segment midpoint")));
       else if (generator == "arc")
-        rod_points.push_back(generators::arc(
-          get_vector(prm, "Center"), prm.get_double("Radius"),
-          get_vector(prm, "Plane axis 1"), get_vector(prm, "Plane axis 2"),
-          prm.get_double("Start angle") * degree,
-          prm.get_double("End angle") * degree, n));
+        rod_points.push_back(
+          generators::arc(get_vector(prm, "Center"),
+                          prm.get_double("Radius"),
+                          get_vector(prm, "Plane axis 1"),
+                          get_vector(prm, "Plane axis 2"),
+                          prm.get_double("Start angle") * degree,
+                          prm.get_double("End angle") * degree,
+                          n));
       else if (generator == "ring")
-        rod_points.push_back(generators::ring(
-          get_vector(prm, "Center"), prm.get_double("Radius"),
-          get_vector(prm, "Plane axis 1"), get_vector(prm, "Plane axis 2"), n));
+        rod_points.push_back(generators::ring(get_vector(prm, "Center"),
+                                              prm.get_double("Radius"),
+                                              get_vector(prm, "Plane axis 1"),
+                                              get_vector(prm, "Plane axis 2"),
+                                              n));
       else if (generator == "helix")
-        rod_points.push_back(generators::helix(prm.get_double("Radius"),
-                                               prm.get_double("Rise per radian"),
-                                               prm.get_double("Turns"), n));
+        rod_points.push_back(
+          generators::helix(prm.get_double("Radius"),
+                            prm.get_double("Rise per radian"),
+                            prm.get_double("Turns"),
+                            n));
       else if (generator == "polyline")
         {
           std::vector<Vector3> corners;
@@ -368,7 +457,9 @@ namespace rodnet
   {
     auto network = std::make_unique<RodNetwork>();
     for (unsigned int r = 0; r < rod_points.size(); ++r)
-      network->add_rod(rod_points[r], rod_closed[r], director_hint,
+      network->add_rod(rod_points[r],
+                       rod_closed[r],
+                       director_hint,
                        hinge_kernel);
     network->create_triangulation();
     const unsigned int n_rods = network->rods().size();
@@ -386,14 +477,18 @@ namespace rodnet
       }
     for (const std::string &v :
          dealii::Utilities::split_string_list(pinned_vertices, ','))
-      model->fix_components(v, select_vertex(net, v, "Supports/Pinned vertices"),
+      model->fix_components(v,
+                            select_vertex(net, v, "Supports/Pinned vertices"),
                             {{true, true, true}});
     for (const auto &[v, components] :
          split_items(fixed_components, "Supports/Fixed components"))
-      model->fix_components(v, select_vertex(net, v, "Supports/Fixed components"),
-                            parse_mask(components, "Supports/Fixed components"));
+      model->fix_components(v,
+                            select_vertex(net, v, "Supports/Fixed components"),
+                            parse_mask(components,
+                                       "Supports/Fixed components"));
     for (const auto &[v, values] :
-         split_items(prescribed_displacements, "Supports/Prescribed displacements"))
+         split_items(prescribed_displacements,
+                     "Supports/Prescribed displacements"))
       {
         const std::string   entry = "Supports/Prescribed displacements";
         std::array<bool, 3> mask{{false, false, false}};
@@ -407,7 +502,7 @@ namespace rodnet
               {
                 if (eq != 1 || (w[0] != 'x' && w[0] != 'y' && w[0] != 'z'))
                   throw std::invalid_argument("");
-                std::size_t  used = 0;
+                std::size_t  used  = 0;
                 const double value = std::stod(w.substr(2), &used);
                 if (used != w.size() - 2 || !std::isfinite(value))
                   throw std::invalid_argument("");

@@ -45,15 +45,15 @@ namespace rodnet
 
     StaticSolver::Parameters solver;
     std::string              output_directory;
-    bool                     write_vtu = true;
+    bool                     write_vtu    = true;
     unsigned int             vtu_interval = 1;
-    bool                     plot = true;
+    bool                     plot         = true;
 
   private:
-    std::vector<std::vector<Vector3>> rod_points;
-    std::vector<bool>                 rod_closed;
-    Vector3                           director_hint;
-    std::string                       hinge_kernel;
+    std::vector<std::vector<Vector3>>  rod_points;
+    std::vector<bool>                  rod_closed;
+    Vector3                            director_hint;
+    std::string                        hinge_kernel;
     std::shared_ptr<const RodMaterial> material;
     std::string clamped_ends, pinned_vertices, fixed_components,
       prescribed_displacements, point_forces, probe_text;

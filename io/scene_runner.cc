@@ -20,8 +20,8 @@ namespace rodnet
         parameters.track_lowest_eigenvalue = true;
 
     std::filesystem::create_directories(output_directory);
-    const std::string csv = output_directory + "/probes.csv";
-    ProbeTable        table(csv, probes);
+    const std::string          csv = output_directory + "/probes.csv";
+    ProbeTable                 table(csv, probes);
     std::unique_ptr<VtuOutput> vtu;
     if (scene.write_vtu)
       vtu = std::make_unique<VtuOutput>(*model, output_directory);
@@ -39,19 +39,23 @@ namespace rodnet
     StaticSolver solver(*model, parameters, log);
     try
       {
-        solver.run(u, [&](const StaticSolver::StepInfo &info,
-                          const VectorType             &solution) {
-          const std::vector<double> values =
-            evaluate_probes(probes, *model, solution, info.load_factor,
-                            info.lowest_eigenvalue);
-          table.add_row(info.step, info.load_factor, values);
-          std::vector<double> row{info.load_factor};
-          row.insert(row.end(), values.begin(), values.end());
-          summary.rows.push_back(row);
-          summary.converged_steps = info.step;
-          if (vtu && info.step % scene.vtu_interval == 0)
-            vtu->write(info.step, info.load_factor, solution);
-        });
+        solver.run(u,
+                   [&](const StaticSolver::StepInfo &info,
+                       const VectorType             &solution) {
+                     const std::vector<double> values =
+                       evaluate_probes(probes,
+                                       *model,
+                                       solution,
+                                       info.load_factor,
+                                       info.lowest_eigenvalue);
+                     table.add_row(info.step, info.load_factor, values);
+                     std::vector<double> row{info.load_factor};
+                     row.insert(row.end(), values.begin(), values.end());
+                     summary.rows.push_back(row);
+                     summary.converged_steps = info.step;
+                     if (vtu && info.step % scene.vtu_interval == 0)
+                       vtu->write(info.step, info.load_factor, solution);
+                   });
       }
     catch (const SolverFailure &e)
       {

@@ -12,14 +12,14 @@ namespace rodnet
   /// What a scene run produced.
   struct RunSummary
   {
-    unsigned int                     converged_steps = 0;
+    unsigned int converged_steps = 0;
     /// Load factor where the lowest eigenvalue crossed zero (NaN if none).
-    double                           critical_load_factor = std::nan("");
-    std::vector<std::string>         probe_names;
+    double                   critical_load_factor = std::nan("");
+    std::vector<std::string> probe_names;
     /// Per converged step: load factor, then the probe values.
     std::vector<std::vector<double>> rows;
     /// Empty if the run completed; the solver's message otherwise.
-    std::string                      failure;
+    std::string failure;
   };
 
   /**

@@ -32,10 +32,9 @@ namespace rodnet
             }
           catch (const std::exception &)
             {
-              throw std::invalid_argument("entry \"" + entry + "\": \"" +
-                                          rod_text +
-                                          "\" is not a rod index in \"" +
-                                          text + "\"");
+              throw std::invalid_argument(
+                "entry \"" + entry + "\": \"" + rod_text +
+                "\" is not a rod index in \"" + text + "\"");
             }
           where = dealii::Utilities::trim(trimmed.substr(colon + 1));
         }
@@ -70,7 +69,8 @@ namespace rodnet
           return rod.vertices[i < 0 ? n + i : i];
       }
     catch (const std::exception &)
-      {}
+      {
+      }
     throw std::invalid_argument(
       "entry \"" + entry + "\": \"" + text +
       "\" names no vertex; use [rod:]start, end, mid or an index in [" +

@@ -1,7 +1,7 @@
-#include <materials/cross_section.h>
-
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
+
+#include <materials/cross_section.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,19 +24,18 @@ namespace rodnet
     }
 
 
-
     void
     check_positive_entry(const std::string &context,
                          const std::string &entry,
                          const double       value)
     {
       // AssertThrow builds its exception only on failure.
-      AssertThrow(value > 0. && std::isfinite(value),
-                  dealii::ExcMessage(entry_message(
-                    context, entry, "must be positive and finite", value)));
+      AssertThrow(
+        value > 0. && std::isfinite(value),
+        dealii::ExcMessage(
+          entry_message(context, entry, "must be positive and finite", value)));
     }
   } // namespace internal
-
 
 
   CrossSection
@@ -47,7 +46,6 @@ namespace rodnet
     const double pi = dealii::numbers::PI;
     return {pi * r2, pi * r2 * r2 / 4., pi * r2 * r2 / 4., pi * r2 * r2 / 2.};
   }
-
 
 
   CrossSection
@@ -75,7 +73,6 @@ namespace rodnet
   }
 
 
-
   CrossSection
   explicit_section(const double area,
                    const double I1,
@@ -89,7 +86,6 @@ namespace rodnet
     internal::check_positive_entry(context, "J", J);
     return {area, I1, I2, J};
   }
-
 
 
   void
@@ -145,7 +141,6 @@ namespace rodnet
                       "Torsion constant (m^4), torque = G J twist rate. "
                       "Required for \"explicit\".");
   }
-
 
 
   CrossSection

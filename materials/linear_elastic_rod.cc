@@ -1,7 +1,7 @@
-#include <materials/linear_elastic_rod.h>
-
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/signaling_nan.h>
+
+#include <materials/linear_elastic_rod.h>
 
 #include <cmath>
 
@@ -20,7 +20,6 @@ namespace rodnet
   } // namespace
 
 
-
   RodStiffness
   stiffness_from_section(const double        E,
                          const double        G,
@@ -32,20 +31,19 @@ namespace rodnet
   }
 
 
-
   LinearElasticRod::LinearElasticRod()
-    : rigidities{dealii::numbers::signaling_nan<double>(),
-                 dealii::numbers::signaling_nan<double>(),
-                 dealii::numbers::signaling_nan<double>(),
-                 dealii::numbers::signaling_nan<double>()}
-  {}
-
+      : rigidities{dealii::numbers::signaling_nan<double>(),
+                   dealii::numbers::signaling_nan<double>(),
+                   dealii::numbers::signaling_nan<double>(),
+                   dealii::numbers::signaling_nan<double>()}
+  {
+  }
 
 
   LinearElasticRod::LinearElasticRod(const RodStiffness    &stiffness,
                                      const RodNaturalShape &natural_shape)
-    : rigidities(stiffness)
-    , rest_shape(natural_shape)
+      : rigidities(stiffness)
+      , rest_shape(natural_shape)
   {
     internal::check_positive_entry(context, "EA", stiffness.EA);
     internal::check_positive_entry(context, "EI1", stiffness.EI1);
@@ -53,9 +51,10 @@ namespace rodnet
     internal::check_positive_entry(context, "GJ", stiffness.GJ);
 
     const auto check_finite = [](const char *entry, const double value) {
-      AssertThrow(std::isfinite(value),
-                  dealii::ExcMessage(internal::entry_message(
-                    context, entry, "must be finite", value)));
+      AssertThrow(
+        std::isfinite(value),
+        dealii::ExcMessage(
+          internal::entry_message(context, entry, "must be finite", value)));
     };
     check_finite("Natural curvature 1", natural_shape.curvature1);
     check_finite("Natural curvature 2", natural_shape.curvature2);
@@ -70,7 +69,6 @@ namespace rodnet
                                           "must be finite and exceed -1",
                                           natural_shape.axial_eigenstrain)));
   }
-
 
 
   MaterialResponse<3>
@@ -103,7 +101,6 @@ namespace rodnet
   }
 
 
-
   MaterialResponse<1>
   LinearElasticRod::segment_energy(const double strain,
                                    const double rest_length) const
@@ -122,7 +119,6 @@ namespace rodnet
     response.tangent(0) = rest_length * rigidities.EA;
     return response;
   }
-
 
 
   void
@@ -199,7 +195,6 @@ namespace rodnet
   }
 
 
-
   void
   LinearElasticRod::parse_parameters(dealii::ParameterHandler &prm)
   {
@@ -212,10 +207,12 @@ namespace rodnet
           {
             // Isotropic elasticity needs nu > -1; the pattern admits -1.
             const double nu = prm.get_double("Poisson's ratio");
-            AssertThrow(
-              nu > -1. && nu <= 0.5,
-              dealii::ExcMessage(internal::entry_message(
-                context, "Poisson's ratio", "must lie in (-1, 0.5]", nu)));
+            AssertThrow(nu > -1. && nu <= 0.5,
+                        dealii::ExcMessage(
+                          internal::entry_message(context,
+                                                  "Poisson's ratio",
+                                                  "must lie in (-1, 0.5]",
+                                                  nu)));
             G = E / (2. * (1. + nu));
           }
         // Check E before the section so a missing modulus is named first.
@@ -243,13 +240,11 @@ namespace rodnet
   }
 
 
-
   const RodStiffness &
   LinearElasticRod::stiffness() const
   {
     return rigidities;
   }
-
 
 
   const RodNaturalShape &

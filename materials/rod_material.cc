@@ -1,6 +1,6 @@
-#include <materials/rod_material.h>
-
 #include <deal.II/base/exceptions.h>
+
+#include <materials/rod_material.h>
 
 #include <stdexcept>
 #include <utility>
@@ -30,7 +30,6 @@ namespace rodnet
   } // namespace
 
 
-
   MaterialRegistry &
   MaterialRegistry::instance()
   {
@@ -39,7 +38,6 @@ namespace rodnet
     static MaterialRegistry registry;
     return registry;
   }
-
 
 
   void
@@ -57,13 +55,11 @@ namespace rodnet
   }
 
 
-
   std::unique_ptr<RodMaterial>
   MaterialRegistry::create(const std::string &name) const
   {
     return find_or_throw(entries, name)->second.factory();
   }
-
 
 
   std::vector<std::string>
@@ -74,7 +70,6 @@ namespace rodnet
       result.push_back(entry.first);
     return result;
   }
-
 
 
   std::string

@@ -4,7 +4,6 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <Eigen/Core>
-
 #include <functional>
 #include <map>
 #include <memory>
@@ -18,9 +17,9 @@ namespace rodnet
   template <int n_strains>
   struct MaterialResponse
   {
-    double                                          energy = 0.0;
-    Eigen::Matrix<double, n_strains, 1>             stress;
-    Eigen::Matrix<double, n_strains, n_strains>     tangent;
+    double                                      energy = 0.0;
+    Eigen::Matrix<double, n_strains, 1>         stress;
+    Eigen::Matrix<double, n_strains, n_strains> tangent;
   };
 
   /**
@@ -102,15 +101,15 @@ namespace rodnet
 } // namespace rodnet
 
 /// Registers material class @p classname under @p name.
-#define RODNET_REGISTER_MATERIAL(classname, name, description)            \
-  namespace                                                               \
-  {                                                                       \
-    const bool rodnet_registered_##classname = [] {                       \
-      rodnet::MaterialRegistry::instance().add(name, description, [] {     \
-        return std::unique_ptr<rodnet::RodMaterial>(new classname());      \
-      });                                                                 \
-      return true;                                                        \
-    }();                                                                  \
+#define RODNET_REGISTER_MATERIAL(classname, name, description)         \
+  namespace                                                            \
+  {                                                                    \
+    const bool rodnet_registered_##classname = [] {                    \
+      rodnet::MaterialRegistry::instance().add(name, description, [] { \
+        return std::unique_ptr<rodnet::RodMaterial>(new classname());  \
+      });                                                              \
+      return true;                                                     \
+    }();                                                               \
   }
 
 #endif

@@ -9,7 +9,6 @@
 #include <NOX_Epetra_Vector.H>
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
-
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -32,11 +31,12 @@ namespace rodnet
       NoxInterface(const NewtonSolver::Problem &problem,
                    const VectorType            &layout,
                    MatrixType                  &tangent)
-        : problem(problem)
-        , x(layout)
-        , r(layout)
-        , tangent(tangent)
-      {}
+          : problem(problem)
+          , x(layout)
+          , r(layout)
+          , tangent(tangent)
+      {
+      }
 
       bool
       computeF(const Epetra_Vector &x_in,
@@ -108,13 +108,14 @@ namespace rodnet
         return "Polynomial";
       if (name == "full step")
         return "Full Step";
-      throw std::invalid_argument("unknown line search \"" + name +
-                                  "\"; known: backtrack, polynomial, full step");
+      throw std::invalid_argument(
+        "unknown line search \"" + name +
+        "\"; known: backtrack, polynomial, full step");
     }
   } // namespace
 
   NewtonSolver::NewtonSolver(const Parameters &parameters)
-    : parameters(parameters)
+      : parameters(parameters)
   {
     nox_line_search_name(parameters.line_search);
   }
@@ -146,15 +147,20 @@ namespace rodnet
     auto interface = rcp(new NoxInterface(problem, x, tangent));
     RCP<NOX::Epetra::Interface::Required> required = interface;
     RCP<NOX::Epetra::Interface::Jacobian> jacobian = interface;
-    RCP<Epetra_Operator>                  jacobian_operator = rcp(
-      const_cast<Epetra_CrsMatrix *>(&tangent.trilinos_matrix()), false);
+    RCP<Epetra_Operator>                  jacobian_operator =
+      rcp(const_cast<Epetra_CrsMatrix *>(&tangent.trilinos_matrix()), false);
 
-    Epetra_Vector x_view(View, x.trilinos_vector(), 0);
+    Epetra_Vector       x_view(View, x.trilinos_vector(), 0);
     NOX::Epetra::Vector initial_guess(x_view, NOX::DeepCopy);
-    auto linear_system = rcp(new NOX::Epetra::LinearSystemAmesos(
-      printing, linear, required, jacobian, jacobian_operator, initial_guess));
-    auto group = rcp(new NOX::Epetra::Group(printing, required, initial_guess,
-                                            linear_system));
+    auto                linear_system =
+      rcp(new NOX::Epetra::LinearSystemAmesos(printing,
+                                              linear,
+                                              required,
+                                              jacobian,
+                                              jacobian_operator,
+                                              initial_guess));
+    auto group = rcp(
+      new NOX::Epetra::Group(printing, required, initial_guess, linear_system));
 
     auto converged =
       rcp(new NOX::StatusTest::NormF(parameters.tolerance,
@@ -182,7 +188,7 @@ namespace rodnet
     Result result;
     result.iterations    = solver->getNumIterations();
     result.residual_norm = final_group.isF() ? final_group.getNormF() : NAN;
-    result.converged = outcome == NOX::StatusTest::Converged &&
+    result.converged     = outcome == NOX::StatusTest::Converged &&
                        std::isfinite(result.residual_norm);
     if (!result.converged)
       {

@@ -27,17 +27,17 @@ namespace rodnet
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 25;
       /// "backtrack", "polynomial" or "full step".
-      std::string  line_search = "full step";
+      std::string line_search = "full step";
     };
 
     /// Outcome of one solve.
     struct Result
     {
-      bool         converged = false;
-      unsigned int iterations = 0;
+      bool         converged     = false;
+      unsigned int iterations    = 0;
       double       residual_norm = 0;
       /// Why it failed (empty on success).
-      std::string  failure;
+      std::string failure;
     };
 
     /// The nonlinear problem: residual and tangent at a given state. Both

@@ -2,7 +2,6 @@
 #include <solvers/stability.h>
 
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <stdexcept>
 
@@ -31,12 +30,14 @@ namespace rodnet
           std::to_string(max_dense_eigenvalue_dofs) +
           " free DoFs; this model has " + std::to_string(global.size()) +
           ": use fewer segments or switch the eigenvalue probe off");
-      Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(global.size(), global.size());
+      Eigen::MatrixXd dense =
+        Eigen::MatrixXd::Zero(global.size(), global.size());
       for (unsigned int i = 0; i < n_dofs; ++i)
         if (free_index[i] >= 0)
           for (auto entry = tangent.begin(i); entry != tangent.end(i); ++entry)
             if (free_index[entry->column()] >= 0)
-              dense(free_index[i], free_index[entry->column()]) = entry->value();
+              dense(free_index[i], free_index[entry->column()]) =
+                entry->value();
       return {dense, global};
     }
   } // namespace
@@ -50,7 +51,8 @@ namespace rodnet
     if (global.empty())
       return {};
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      dense, Eigen::EigenvaluesOnly);
+      dense,
+      Eigen::EigenvaluesOnly);
     if (solver.info() != Eigen::Success)
       throw std::runtime_error("the dense eigenvalue solver did not converge");
     const Eigen::VectorXd &all = solver.eigenvalues(); // increasing order

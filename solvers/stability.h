@@ -16,7 +16,8 @@ namespace rodnet
    * The @p n lowest eigenvalues, in increasing order, of the tangent
    * restricted to the DoFs that @p constraints leave free (linearized
    * stability: the state is stable while the lowest is positive). Dense
-   * symmetric eigensolver (Eigen); throws with a clear message beyond max_dense_eigenvalue_dofs.
+   * symmetric eigensolver (Eigen); throws with a clear message beyond
+   * max_dense_eigenvalue_dofs.
    */
   std::vector<double>
   lowest_eigenvalues(const dealii::TrilinosWrappers::SparseMatrix &tangent,

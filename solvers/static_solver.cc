@@ -5,17 +5,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 
 namespace rodnet
 {
   StaticSolver::StaticSolver(RodModel         &model,
                              const Parameters &parameters,
                              std::ostream     *log)
-    : model(model)
-    , parameters(parameters)
-    , log(log)
+      : model(model)
+      , parameters(parameters)
+      , log(log)
   {
     if (parameters.n_steps < 1)
       throw std::invalid_argument("the number of load steps must be >= 1");
@@ -38,7 +38,7 @@ namespace rodnet
 
     // The force scale of the step: the applied load, or the out-of-balance
     // force of the first iterate (displacement-driven steps).
-    VectorType r = model.create_vector();
+    VectorType r     = model.create_vector();
     double     scale = load_factor * model.external_force().l2_norm();
     double     floor = 0;
     try
@@ -70,7 +70,8 @@ namespace rodnet
     double max_diagonal = 0;
     for (unsigned int i = 0; i < tangent.m(); ++i)
       if (!model.constraints().is_constrained(i))
-        max_diagonal = std::max(max_diagonal, std::abs(tangent.diag_element(i)));
+        max_diagonal =
+          std::max(max_diagonal, std::abs(tangent.diag_element(i)));
     return std::numeric_limits<double>::epsilon() * max_diagonal *
            model.length_scale() * std::sqrt(double(tangent.m()));
   }
@@ -87,13 +88,13 @@ namespace rodnet
   void
   StaticSolver::run(VectorType &u, const Observer &on_converged)
   {
-    const double nominal = 1.0 / parameters.n_steps;
-    const double minimum = nominal * parameters.min_step_fraction;
-    double       lambda  = 0;
-    double       step    = nominal;
-    unsigned int count   = 0;
-    double previous_eigenvalue = std::nan("");
-    VectorType   previous = u;
+    const double nominal             = 1.0 / parameters.n_steps;
+    const double minimum             = nominal * parameters.min_step_fraction;
+    double       lambda              = 0;
+    double       step                = nominal;
+    unsigned int count               = 0;
+    double       previous_eigenvalue = std::nan("");
+    VectorType   previous            = u;
 
     while (lambda < 1.0 - 1e-12)
       {
@@ -102,9 +103,9 @@ namespace rodnet
         // that outputs land on the loads the scene asked for.
         const double next_grid =
           (std::floor(lambda / nominal + 1e-9) + 1) * nominal;
-        step                = std::min(step, std::min(next_grid, 1.0) - lambda);
-        const double target = lambda + step;
-        VectorType   trial    = u;
+        step = std::min(step, std::min(next_grid, 1.0) - lambda);
+        const double         target = lambda + step;
+        VectorType           trial  = u;
         NewtonSolver::Result result = solve_at(trial, target);
         if (!result.converged && parameters.branch_switch_amplitude > 0)
           {
@@ -112,14 +113,17 @@ namespace rodnet
             // (whose tangent is nearly singular there) diverges; start
             // instead from the previous state displaced along its buckling
             // mode.
-            VectorType     start = u;
-            double         mu    = std::nan("");
+            VectorType          start                  = u;
+            double              mu                     = std::nan("");
             const Configuration previous_configuration = model.configuration();
-            if (solve_along_mode(start, lambda, target,
-                                 std::numeric_limits<double>::max(), mu))
+            if (solve_along_mode(start,
+                                 lambda,
+                                 target,
+                                 std::numeric_limits<double>::max(),
+                                 mu))
               {
-                trial  = start;
-                result = NewtonSolver::Result{true, 0, 0, ""};
+                trial                 = start;
+                result                = NewtonSolver::Result{true, 0, 0, ""};
                 model.configuration() = previous_configuration;
                 if (log != nullptr)
                   *log << "  step to load factor " << target
@@ -137,15 +141,16 @@ namespace rodnet
             if (step < minimum)
               throw SolverFailure(
                 "the load step from load factor " + std::to_string(lambda) +
-                " failed: " + result.failure + "; the step was cut below "
-                "the minimum " + std::to_string(minimum) +
-                " (Solver/Minimum step fraction)");
+                " failed: " + result.failure +
+                "; the step was cut below "
+                "the minimum " +
+                std::to_string(minimum) + " (Solver/Minimum step fraction)");
             continue;
           }
 
         const Configuration stable_configuration = model.configuration();
-        previous = u;
-        u        = trial;
+        previous                                 = u;
+        u                                        = trial;
         model.reset_reference(u);
 
         StepInfo info;
@@ -164,8 +169,11 @@ namespace rodnet
             const Configuration unstable_configuration = model.configuration();
             try
               {
-                bisect_critical_load(previous, stable_configuration, lambda,
-                                     previous_eigenvalue, target,
+                bisect_critical_load(previous,
+                                     stable_configuration,
+                                     lambda,
+                                     previous_eigenvalue,
+                                     target,
                                      info.lowest_eigenvalue);
               }
             catch (const SolverFailure &e)
@@ -180,9 +188,12 @@ namespace rodnet
             info.lowest_eigenvalue < 0)
           {
             const double unstable = info.lowest_eigenvalue;
-            const bool   found    = solve_along_mode(
-              u, target, target, model.assemble(u, target, nullptr, nullptr),
-              info.lowest_eigenvalue);
+            const bool   found =
+              solve_along_mode(u,
+                               target,
+                               target,
+                               model.assemble(u, target, nullptr, nullptr),
+                               info.lowest_eigenvalue);
             if (log != nullptr)
               *log << "  unstable equilibrium (lowest eigenvalue " << unstable
                    << "): "
@@ -195,11 +206,15 @@ namespace rodnet
         if (log != nullptr)
           {
             char line[200];
-            std::snprintf(line, sizeof(line),
+            std::snprintf(line,
+                          sizeof(line),
                           "step %4u  load factor %.6f  iterations %2u  "
                           "residual %.2e  time %.3f s",
-                          info.step, info.load_factor, info.iterations,
-                          info.residual_norm, info.wall_time);
+                          info.step,
+                          info.load_factor,
+                          info.iterations,
+                          info.residual_norm,
+                          info.wall_time);
             *log << line;
             if (!std::isnan(info.lowest_eigenvalue))
               *log << "  lowest eigenvalue " << info.lowest_eigenvalue;
@@ -277,11 +292,12 @@ namespace rodnet
       {
         const double lambda_mid = 0.5 * (lambda_stable + lambda_unstable);
         model.configuration()   = config;
-        VectorType u_mid        = u_lo;
+        VectorType                 u_mid  = u_lo;
         const NewtonSolver::Result result = solve_at(u_mid, lambda_mid);
         if (!result.converged)
           throw SolverFailure("bisection for the critical load failed at load "
-                              "factor " + std::to_string(lambda_mid) + ": " +
+                              "factor " +
+                              std::to_string(lambda_mid) + ": " +
                               result.failure);
         model.reset_reference(u_mid);
         const double mu = lowest_eigenvalue(u_mid, lambda_mid);

@@ -39,10 +39,10 @@ namespace rodnet
       /// Newton converges when |residual| <= tolerance * max(|lambda f|,
       /// |initial residual of the step|), or below the rounding-error floor
       /// eps * max|K_ii| * L * sqrt(n_dofs), whichever is larger.
-      double relative_tolerance = 1e-9;
+      double                   relative_tolerance = 1e-9;
       NewtonSolver::Parameters newton;
-      bool   track_lowest_eigenvalue = false;
-      bool   find_critical_load      = false;
+      bool                     track_lowest_eigenvalue = false;
+      bool                     find_critical_load      = false;
       /// Bisection stops when the bracket is below this (in load factor).
       double critical_load_tolerance = 1e-6;
       /// Where a converged state is unstable (negative lowest eigenvalue),
@@ -55,19 +55,20 @@ namespace rodnet
 
     struct StepInfo
     {
-      unsigned int step = 0;
-      double       load_factor = 0;
-      unsigned int iterations = 0;
-      double       residual_norm = 0;
-      double       wall_time = 0; ///< seconds spent on this step
+      unsigned int step              = 0;
+      double       load_factor       = 0;
+      unsigned int iterations        = 0;
+      double       residual_norm     = 0;
+      double       wall_time         = 0; ///< seconds spent on this step
       double       lowest_eigenvalue = std::nan("");
     };
 
     using Observer =
       std::function<void(const StepInfo &, const VectorType &solution)>;
 
-    StaticSolver(RodModel &model, const Parameters &parameters,
-                 std::ostream *log = nullptr);
+    StaticSolver(RodModel         &model,
+                 const Parameters &parameters,
+                 std::ostream     *log = nullptr);
 
     /**
      * Runs the load steps from the state @p u (usually zero) at load factor
@@ -116,18 +117,18 @@ namespace rodnet
     roundoff_floor() const;
 
     void
-    bisect_critical_load(const VectorType   &u_stable,
+    bisect_critical_load(const VectorType    &u_stable,
                          const Configuration &stable_configuration,
-                         double              lambda_stable,
-                         double              eigenvalue_stable,
-                         double              lambda_unstable,
-                         double              eigenvalue_unstable);
+                         double               lambda_stable,
+                         double               eigenvalue_stable,
+                         double               lambda_unstable,
+                         double               eigenvalue_unstable);
 
-    RodModel    &model;
-    Parameters   parameters;
+    RodModel     &model;
+    Parameters    parameters;
     std::ostream *log;
-    MatrixType   tangent;
-    double       critical_load = std::nan("");
+    MatrixType    tangent;
+    double        critical_load = std::nan("");
   };
 } // namespace rodnet
 

@@ -2,12 +2,11 @@
 // energy and the assembled tangent is the gradient of the residual (central
 // finite differences), for both kernels, on a rod in a random state: this
 // checks the DoF maps, the chain rule and the constraint handling together.
-#include <gtest/gtest.h>
-
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
 
+#include <gtest/gtest.h>
 #include <random>
 
 namespace
@@ -18,15 +17,17 @@ namespace
   make_model(const std::string &kernel)
   {
     auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::helix(0.5, 0.1, 0.5, 12), false,
-                     Vector3(0.3, 0.2, 1.0), kernel);
+    network->add_rod(generators::helix(0.5, 0.1, 0.5, 12),
+                     false,
+                     Vector3(0.3, 0.2, 1.0),
+                     kernel);
     network->create_triangulation();
     auto model = std::make_unique<RodModel>(
       std::move(network),
       std::vector<std::shared_ptr<const RodMaterial>>{
-        std::make_shared<LinearElasticRod>(RodStiffness{100, 2, 3, 1.5},
-                                           RodNaturalShape{0.3, -0.2, 0.1,
-                                                           0.01})});
+        std::make_shared<LinearElasticRod>(
+          RodStiffness{100, 2, 3, 1.5},
+          RodNaturalShape{0.3, -0.2, 0.1, 0.01})});
     model->add_point_force(model->network().rods()[0].vertices.back(),
                            Vector3(0.1, -0.2, 0.3));
     model->add_distributed_force(0, Vector3(0, 0, -0.5));
@@ -35,13 +36,14 @@ namespace
   }
 
   class GlobalDerivatives : public ::testing::TestWithParam<std::string>
-  {};
+  {
+  };
 
   TEST_P(GlobalDerivatives, ResidualAndTangentMatchFiniteDifferences)
   {
-    const auto  model = make_model(GetParam());
-    VectorType  u     = model->create_vector();
-    std::mt19937 random(7);
+    const auto                             model = make_model(GetParam());
+    VectorType                             u     = model->create_vector();
+    std::mt19937                           random(7);
     std::uniform_real_distribution<double> small(-0.05, 0.05);
     for (unsigned int i = 0; i < u.size(); ++i)
       u[i] = small(random);
@@ -57,18 +59,19 @@ namespace
     model->initialize_matrix(k);
     model->assemble(u, lambda, &r, &k, false);
 
-    const double h         = 1e-6;
-    double       max_r     = 0, max_k = 0, err_r = 0, err_k = 0;
-    VectorType   r_plus    = model->create_vector();
-    VectorType   r_minus   = model->create_vector();
+    const double h     = 1e-6;
+    double       max_r = 0, max_k = 0, err_r = 0, err_k = 0;
+    VectorType   r_plus  = model->create_vector();
+    VectorType   r_minus = model->create_vector();
     for (unsigned int j = 0; j < u.size(); ++j)
       {
         VectorType up = u, um = u;
         up[j] += h;
         um[j] -= h;
-        const double fd_r = (model->assemble(up, lambda, &r_plus, nullptr, false) -
-                             model->assemble(um, lambda, &r_minus, nullptr, false)) /
-                            (2 * h);
+        const double fd_r =
+          (model->assemble(up, lambda, &r_plus, nullptr, false) -
+           model->assemble(um, lambda, &r_minus, nullptr, false)) /
+          (2 * h);
         max_r = std::max(max_r, std::abs(r[j]));
         err_r = std::max(err_r, std::abs(fd_r - r[j]));
         for (unsigned int i = 0; i < u.size(); ++i)

@@ -24,7 +24,7 @@ namespace rodnet::testing
     double lo = 0, hi = 1 - 1e-15;
     for (int i = 0; i < 200; ++i)
       {
-        const double mid = 0.5 * (lo + hi);
+        const double mid                                   = 0.5 * (lo + hi);
         (std::comp_ellint_1(mid) < std::sqrt(P) ? lo : hi) = mid;
       }
     const double k  = 0.5 * (lo + hi);

@@ -17,9 +17,11 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   auto network = std::make_unique<RodNetwork>();
-  network->add_rod(generators::straight(Vector3(0, 0, 0), Vector3(1, 0, 0),
-                                        50, true),
-                   false, Vector3::UnitY(), "simple");
+  network->add_rod(
+    generators::straight(Vector3(0, 0, 0), Vector3(1, 0, 0), 50, true),
+    false,
+    Vector3::UnitY(),
+    "simple");
   RodModel model(std::move(network),
                  {std::make_shared<LinearElasticRod>(
                    RodStiffness{1e6, 1.0, 1.0, 1.0})});

@@ -19,13 +19,11 @@
 
 #include <elements/hinge_kernel.h>
 
+#include "hinge_configurations.h"
 #include <gtest/gtest.h>
-
 #include <iomanip>
 #include <iostream>
 #include <vector>
-
-#include "hinge_configurations.h"
 
 namespace
 {

@@ -15,13 +15,11 @@
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
 
-#include <Sacado.hpp>
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <iostream>
-
 #include "hinge_configurations.h"
+#include <Sacado.hpp>
+#include <algorithm>
+#include <gtest/gtest.h>
+#include <iostream>
 
 namespace
 {

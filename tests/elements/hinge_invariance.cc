@@ -10,11 +10,9 @@
 
 #include <elements/hinge_kernel.h>
 
-#include <gtest/gtest.h>
-
-#include <iostream>
-
 #include "hinge_configurations.h"
+#include <gtest/gtest.h>
+#include <iostream>
 
 namespace
 {
@@ -32,7 +30,8 @@ namespace
   }
 
   class HingeInvariance : public ::testing::TestWithParam<std::string>
-  {};
+  {
+  };
 
   TEST_P(HingeInvariance, RigidMotion)
   {
@@ -95,7 +94,6 @@ namespace
                            ::testing::Values("simple", "classic"));
 
 
-
   // With the reference twist of L&K eq. 12 set to the classic twist of the
   // reference frames, tau is the classic twist of the current frames, built
   // here from the quaternion transports of Korner et al. eqs. 2.3 and 2.8.
@@ -120,7 +118,6 @@ namespace
               << std::endl;
     EXPECT_LT(max_difference, 1e-12);
   }
-
 
 
   // A hinge whose current frames differ by a small rotation (bend and twist

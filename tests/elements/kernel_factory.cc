@@ -4,7 +4,6 @@
 #include <elements/hinge_kernel.h>
 
 #include <gtest/gtest.h>
-
 #include <stdexcept>
 
 namespace

@@ -5,9 +5,8 @@
 #include <elements/hinge_kernel.h>
 #include <elements/parallel_transport.h>
 
-#include <gtest/gtest.h>
-
 #include "hinge_configurations.h"
+#include <gtest/gtest.h>
 
 namespace
 {
@@ -77,7 +76,8 @@ namespace
   }
 
   class FlippedSegment : public ::testing::TestWithParam<std::string>
-  {};
+  {
+  };
 
   // A hinge in which one segment is reversed with respect to its reference
   // tangent: both kernels must refuse it, from every entry point.

@@ -1,11 +1,10 @@
 // Bad input gives one clear error naming the entry and a non-zero exit of
 // rodnet-run, never a crash; a solver failure keeps every earlier output.
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <string>
 #include <sys/wait.h>
 
@@ -28,7 +27,7 @@ namespace
                                 name + " 2>&1";
     FILE *pipe = popen(command.c_str(), "r");
     EXPECT_NE(pipe, nullptr);
-    std::string         output;
+    std::string           output;
     std::array<char, 512> buffer;
     while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
       output += buffer.data();
@@ -55,7 +54,8 @@ namespace
     const Outcome o = run_driver(name, scene);
     EXPECT_EQ(o.exit_code, 1) << o.output;
     EXPECT_NE(o.output.find(needle), std::string::npos)
-      << "message lacks \"" << needle << "\":\n" << o.output;
+      << "message lacks \"" << needle << "\":\n"
+      << o.output;
     EXPECT_EQ(o.output.find("Aborting"), std::string::npos) << o.output;
   }
 
@@ -94,7 +94,8 @@ namespace
                        "  set Generator = polyline\n"
                        "  set Points = 0,0,0; 1,0,0; 1,0,0; 2,0,0\n"
                        "  set Segments = 2\n"
-                       "end\n" + material,
+                       "end\n" +
+                         material,
                        "zero-length segment");
   }
 
@@ -105,7 +106,8 @@ namespace
                        "  set Generator = polyline\n"
                        "  set Points = 0,0,0; 1,0,0; 1,1,0; 0,0,0; 0,-1,0\n"
                        "  set Segments = 1\n"
-                       "end\n" + material,
+                       "end\n" +
+                         material,
                        "coincide");
   }
 
@@ -123,8 +125,9 @@ namespace
 
   TEST(BadScene, MissingFile)
   {
-    const std::string command = std::string(RODNET_BINARY_DIR) +
-                                "/rodnet-run no_such_scene.prm > /dev/null 2>&1";
+    const std::string command =
+      std::string(RODNET_BINARY_DIR) +
+      "/rodnet-run no_such_scene.prm > /dev/null 2>&1";
     const int status = std::system(command.c_str());
     EXPECT_EQ(WEXITSTATUS(status), 1);
   }
@@ -135,24 +138,25 @@ namespace
     // steps: the nearly linear pre-buckling steps converge, the step across
     // the bifurcation cannot, and the run stops with exit code 2. Every
     // converged step is in probes.csv and has its VTU file.
-    const Outcome o = run_driver(
-      "solver_failure",
-      "subsection Geometry\n"
-      "  set Segments = 50\n"
-      "  set Director d1 = 0, 0, 1\n"
-      "end\n" + material +
-        "subsection Supports\n  set Clamped ends = start\nend\n"
-        "subsection Loads\n"
-        "  set Steps = 10\n"
-        "  set Point forces = end: -10, 1e-3, 0\n"
-        "end\n"
-        "subsection Solver\n"
-        "  set Max iterations = 4\n"
-        "  set Minimum step fraction = 0.5\n"
-        "end\n"
-        "subsection Output\n"
-        "  set Probes = tip_y: position end y\n"
-        "end\n");
+    const Outcome o =
+      run_driver("solver_failure",
+                 "subsection Geometry\n"
+                 "  set Segments = 50\n"
+                 "  set Director d1 = 0, 0, 1\n"
+                 "end\n" +
+                   material +
+                   "subsection Supports\n  set Clamped ends = start\nend\n"
+                   "subsection Loads\n"
+                   "  set Steps = 10\n"
+                   "  set Point forces = end: -10, 1e-3, 0\n"
+                   "end\n"
+                   "subsection Solver\n"
+                   "  set Max iterations = 4\n"
+                   "  set Minimum step fraction = 0.5\n"
+                   "end\n"
+                   "subsection Output\n"
+                   "  set Probes = tip_y: position end y\n"
+                   "end\n");
     ASSERT_EQ(o.exit_code, 2) << o.output;
     EXPECT_NE(o.output.find("solver stopped"), std::string::npos) << o.output;
     std::ifstream csv("out_solver_failure/probes.csv");
@@ -164,7 +168,9 @@ namespace
       {
         ++rows;
         char name[64];
-        std::snprintf(name, sizeof(name), "out_solver_failure/solution-%05u.vtu",
+        std::snprintf(name,
+                      sizeof(name),
+                      "out_solver_failure/solution-%05u.vtu",
                       rows);
         EXPECT_TRUE(std::filesystem::exists(name)) << name;
       }

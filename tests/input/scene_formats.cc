@@ -2,11 +2,10 @@
 // straight generator, read from a Gmsh line mesh, and from a .json scene.
 #include <deal.II/base/parameter_handler.h>
 
-#include <gtest/gtest.h>
-
 #include <common/run_scene_text.h>
 
 #include <fstream>
+#include <gtest/gtest.h>
 
 namespace
 {
@@ -60,11 +59,11 @@ namespace
     const RunSummary generated =
       run_scene_text(cantilever(straight_geometry), "formats_generated");
     // The mesh lists its nodes and segments out of order on purpose.
-    const RunSummary meshed = run_scene_text(
-      cantilever("  set Generator = gmsh\n"
-                 "  set Mesh file = " RODNET_SOURCE_DIR
-                 "/tests/input/data/straight_rod.msh\n"),
-      "formats_gmsh");
+    const RunSummary meshed =
+      run_scene_text(cantilever("  set Generator = gmsh\n"
+                                "  set Mesh file = " RODNET_SOURCE_DIR
+                                "/tests/input/data/straight_rod.msh\n"),
+                     "formats_gmsh");
     expect_same_rows(generated, meshed);
     // The load bends the rod visibly: the comparison is not trivial.
     EXPECT_GT(generated.rows.back()[2], 0.1);

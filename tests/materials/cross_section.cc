@@ -5,9 +5,8 @@
 
 #include <materials/cross_section.h>
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
 using namespace rodnet;

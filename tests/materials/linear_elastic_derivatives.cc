@@ -7,7 +7,6 @@
 #include <materials/linear_elastic_rod.h>
 
 #include <gtest/gtest.h>
-
 #include <random>
 
 using namespace rodnet;
@@ -131,8 +130,10 @@ TEST(LinearElasticDerivatives, NaturalShapeIsStressFree)
   const double           l = 0.07;
 
   // The integrated strain of the natural shape is l times its density.
-  const auto hinge = material.hinge_energy(
-    {l * shape.curvature1, l * shape.curvature2, l * shape.twist}, l);
+  const auto hinge = material.hinge_energy({l * shape.curvature1,
+                                            l * shape.curvature2,
+                                            l * shape.twist},
+                                           l);
   EXPECT_NEAR(hinge.energy, 0., 1e-15);
   EXPECT_NEAR(hinge.stress.norm(), 0., 1e-13);
 

@@ -7,9 +7,8 @@
 #include <materials/linear_elastic_rod.h>
 #include <materials/rod_material.h>
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
 

@@ -2,12 +2,11 @@
 // 2021, section 5a; VALIDATION.md), B = L = 1: the critical load from the
 // eigenvalue crossing against pi^2/4, and post-buckled tip positions against
 // the exact elliptic-integral solution, for both hinge kernels.
-#include <gtest/gtest.h>
-
 #include <common/elastica_exact.h>
 #include <common/run_scene_text.h>
 
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
 namespace
@@ -27,10 +26,14 @@ namespace
   {
     return "subsection Geometry\n"
            "  set Generator = straight\n"
-           "  set Segments = " + std::to_string(n_segments) + "\n"
+           "  set Segments = " +
+           std::to_string(n_segments) +
+           "\n"
            "  set Clamp at first segment midpoint = true\n"
            "  set Director d1 = 0, 0, 1\n"
-           "  set Hinge kernel = " + kernel + "\n"
+           "  set Hinge kernel = " +
+           kernel +
+           "\n"
            "end\n"
            "subsection Material\n"
            "  subsection linear elastic\n"
@@ -45,13 +48,18 @@ namespace
            "  set Clamped ends = start\n"
            "end\n"
            "subsection Loads\n"
-           "  set Steps = " + std::to_string(steps) + "\n"
-           "  set Point forces = end: " + std::to_string(-P_max) + ", " +
-           std::to_string(imperfection * P_max) + ", 0\n"
+           "  set Steps = " +
+           std::to_string(steps) +
+           "\n"
+           "  set Point forces = end: " +
+           std::to_string(-P_max) + ", " +
+           std::to_string(imperfection * P_max) +
+           ", 0\n"
            "end\n"
            "subsection Solver\n"
            "  set Critical load search = " +
-           (critical_search ? "true" : "false") + "\n"
+           (critical_search ? "true" : "false") +
+           "\n"
            "  set Branch switching amplitude = 0.1\n"
            "end\n"
            "subsection Output\n"
@@ -80,16 +88,17 @@ namespace
   }
 
   class Elastica : public ::testing::TestWithParam<std::string>
-  {};
+  {
+  };
 
   TEST_P(Elastica, CriticalLoadFromEigenvalueCrossing)
   {
     // A perfect column loaded to P = 3: the lowest eigenvalue of the
     // tangent crosses zero at P_cr = pi^2/4 (tolerance 0.5%, N = 100).
     const double     P_max = 3;
-    const RunSummary run   = run_scene_text(
-      elastica_scene(100, GetParam(), P_max, 15, 0.0, true),
-      "elastica_critical_" + GetParam());
+    const RunSummary run =
+      run_scene_text(elastica_scene(100, GetParam(), P_max, 15, 0.0, true),
+                     "elastica_critical_" + GetParam());
     ASSERT_TRUE(run.failure.empty()) << run.failure;
     const double P_cr  = run.critical_load_factor * P_max;
     const double exact = M_PI * M_PI / 4;
@@ -102,22 +111,22 @@ namespace
   {
     // Tip positions at P = 3, 5, 10 within 0.005 L of the exact elastica at
     // N = 100, and the error shrinks as N grows (25, 50, 100).
-    const double P_max = 10;
+    const double P_max             = 10;
     double       previous_error[3] = {INFINITY, INFINITY, INFINITY};
     for (const unsigned int n : {25u, 50u, 100u})
       {
-        const RunSummary run = run_scene_text(
-          elastica_scene(n, GetParam(), P_max, 40, 1e-6, false),
-          "elastica_" + GetParam() + "_" + std::to_string(n));
+        const RunSummary run =
+          run_scene_text(elastica_scene(n, GetParam(), P_max, 40, 1e-6, false),
+                         "elastica_" + GetParam() + "_" + std::to_string(n));
         ASSERT_TRUE(run.failure.empty()) << run.failure;
         const double loads[3] = {3, 5, 10};
         for (unsigned int i = 0; i < 3; ++i)
           {
             const ElasticaTip exact    = elastica_tip(loads[i]);
             const ElasticaTip computed = tip_at(run, loads[i], P_max);
-            const double      error    = std::max(
-              std::abs(computed.x - exact.x),
-              std::abs(computed.delta - exact.delta));
+            const double      error =
+              std::max(std::abs(computed.x - exact.x),
+                       std::abs(computed.delta - exact.delta));
             std::cout << GetParam() << " N = " << n << " P = " << loads[i]
                       << ": tip (" << computed.x << ", " << computed.delta
                       << "), exact (" << exact.x << ", " << exact.delta

@@ -1,10 +1,9 @@
 // Heavy column (critical distributed load, VALIDATION.md) and the
 // small-deflection cantilever (P L^3 / (3 EI)), through the scene format.
-#include <gtest/gtest.h>
-
 #include <common/run_scene_text.h>
 
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
 namespace
@@ -24,7 +23,9 @@ namespace
            "  set Segments = 100\n"
            "  set Clamp at first segment midpoint = true\n"
            "  set Director d1 = 0, 0, 1\n"
-           "  set Hinge kernel = " + kernel + "\n"
+           "  set Hinge kernel = " +
+           kernel +
+           "\n"
            "end\n"
            "subsection Material\n"
            "  subsection linear elastic\n"
@@ -38,17 +39,24 @@ namespace
            "subsection Supports\n"
            "  set Clamped ends = start\n"
            "end\n"
-           "subsection Loads\n" + loads + "end\n"
-           "subsection Solver\n" + solver + "end\n"
+           "subsection Loads\n" +
+           loads +
+           "end\n"
+           "subsection Solver\n" +
+           solver +
+           "end\n"
            "subsection Output\n"
            "  set Write VTU = false\n"
            "  set Plot = false\n"
-           "  set Probes = " + probes + "\n"
+           "  set Probes = " +
+           probes +
+           "\n"
            "end\n";
   }
 
   class ClampedRod : public ::testing::TestWithParam<std::string>
-  {};
+  {
+  };
 
   TEST_P(ClampedRod, HeavyColumnCriticalLoad)
   {
@@ -57,10 +65,11 @@ namespace
     // (tolerance 1%, N = 100).
     const double     q_max = 10;
     const RunSummary run   = run_scene_text(
-      cantilever_scene(GetParam(),
-                       "  set Steps = 10\n  set Distributed force = -10, 0, 0\n",
-                       "  set Critical load search = true\n",
-                       "tip_x: position end x"),
+      cantilever_scene(
+        GetParam(),
+        "  set Steps = 10\n  set Distributed force = -10, 0, 0\n",
+        "  set Critical load search = true\n",
+        "tip_x: position end x"),
       "heavy_column_" + GetParam());
     ASSERT_TRUE(run.failure.empty()) << run.failure;
     const double q_cr  = run.critical_load_factor * q_max;
@@ -77,11 +86,12 @@ namespace
     // balances the load.
     const double     P   = 1e-4;
     const RunSummary run = run_scene_text(
-      cantilever_scene(GetParam(),
-                       "  set Steps = 1\n  set Point forces = end: 0, 0, -1e-4\n",
-                       "",
-                       "tip_z: position end z; before_tip_z: position -2 z; "
-                       "reaction_z: reaction start z"),
+      cantilever_scene(
+        GetParam(),
+        "  set Steps = 1\n  set Point forces = end: 0, 0, -1e-4\n",
+        "",
+        "tip_z: position end z; before_tip_z: position -2 z; "
+        "reaction_z: reaction start z"),
       "cantilever_" + GetParam());
     ASSERT_TRUE(run.failure.empty()) << run.failure;
     ASSERT_EQ(run.rows.size(), 1u);
@@ -95,7 +105,8 @@ namespace
     // exact slope is P/(2EI) (L^2 - (l/2)^2) to first order.
     const double l     = 1.0 / 99.5;
     const double slope = (row[probe_column(run, "before_tip_z")] -
-                          row[probe_column(run, "tip_z")]) / l;
+                          row[probe_column(run, "tip_z")]) /
+                         l;
     EXPECT_NEAR(slope, P / 2 * (1 - 0.25 * l * l), 0.005 * P / 2);
     EXPECT_NEAR(row[probe_column(run, "reaction_z")], P, 1e-6 * P);
   }
