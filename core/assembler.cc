@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <core/rod_model.h>
+#include <elements/junction_moment.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
@@ -254,6 +255,30 @@ namespace rodnet
                                                *residual);
     };
 
+    // Hinges and junction elements share the bending and twisting part:
+    // strains -> material -> chain rule.
+    auto bending = [&](const HingeStrains &strains,
+                       const RodMaterial  &material,
+                       const double        voronoi_length,
+                       LocalContribution  &copy) {
+      const MaterialResponse<3> w =
+        material.hinge_energy(strains.kappa, voronoi_length);
+      copy.energy                = w.energy;
+      const HingeVector gradient = strains.gradient.transpose() * w.stress;
+      HingeMatrix       hessian;
+      if (with_hessian)
+        {
+          // Elastic part J^T C J and geometric part sum_k s_k d2kappa_k
+          // (Korner et al. eq. 4.5).
+          const Eigen::Matrix<double, 3, n_hinge_dofs> cj =
+            w.tangent * strains.gradient;
+          hessian.noalias() = strains.gradient.transpose() * cj;
+          for (unsigned int c = 0; c < 3; ++c)
+            hessian += w.stress[c] * strains.hessian[c];
+        }
+      store<n_hinge_dofs>(gradient, with_hessian ? &hessian : nullptr, copy);
+    };
+
     const auto &hinges = layout_->hinges();
     dealii::WorkStream::run(
       hinges.begin(),
@@ -276,31 +301,78 @@ namespace rodnet
               return;
             }
           k.evaluate(x, ref, scratch.hinge, with_hessian);
-          const MaterialResponse<3> w =
-            materials[it->rod]->hinge_energy(scratch.hinge.kappa, l);
-          copy.energy = w.energy;
-          const HingeVector gradient =
-            scratch.hinge.gradient.transpose() * w.stress;
-          HingeMatrix hessian;
-          if (with_hessian)
-            {
-              // Elastic part J^T C J and geometric part sum_k s_k d2kappa_k
-              // (Korner et al. eq. 4.5).
-              const Eigen::Matrix<double, 3, n_hinge_dofs> cj =
-                w.tangent * scratch.hinge.gradient;
-              hessian.noalias() = scratch.hinge.gradient.transpose() * cj;
-              for (unsigned int c = 0; c < 3; ++c)
-                hessian += w.stress[c] * scratch.hinge.hessian[c];
-            }
-          store<n_hinge_dofs>(gradient,
-                              with_hessian ? &hessian : nullptr,
-                              copy);
+          bending(scratch.hinge, *materials[it->rod], l, copy);
           copy.dofs.assign(it->dofs.begin(), it->dofs.end());
         });
       },
       copier,
       Scratch(),
       LocalContribution());
+
+    const auto &junctions = layout_->junctions();
+    dealii::WorkStream::run(
+      junctions.begin(),
+      junctions.end(),
+      [&](const std::vector<JunctionStencil>::const_iterator &it,
+          Scratch                                            &scratch,
+          LocalContribution                                  &copy) {
+        copy.dofs.clear();
+        copy.energy = 0;
+        guarded([&] {
+          const unsigned int       e   = it - junctions.begin();
+          const JunctionKernel    &k   = *junction_kernels[it->rod];
+          const JunctionReference &ref = configuration_->junction_reference(e);
+          const HingeVector        x   = configuration_->junction_dofs(u, *it);
+          const double l = configuration_->junction_voronoi_length(e);
+          if (!with_gradient)
+            {
+              copy.energy =
+                materials[it->rod]->hinge_energy(k.strains(x, ref), l).energy;
+              return;
+            }
+          k.evaluate(x, ref, scratch.hinge, with_hessian);
+          bending(scratch.hinge, *materials[it->rod], l, copy);
+          copy.dofs.assign(it->dofs.begin(), it->dofs.end());
+        });
+      },
+      copier,
+      Scratch(),
+      LocalContribution());
+
+    // Applied moments about fixed axes: potential -lambda M theta_u(q)
+    // (Lestringant & Kochmann eq. 32-33).
+    for (const AxisLoad &m : moments)
+      {
+        Eigen::Vector4d q;
+        for (unsigned int c = 0; c < 4; ++c)
+          q[c] = u[layout_->rotation_dof(m.junction, c)] + (c == 0);
+        const RotationAngle angle = rotation_angle_about(m.axis, q);
+        const double        scale = -load_factor * m.value;
+        LocalContribution   copy;
+        copy.energy = scale * angle.angle;
+        if (with_gradient)
+          {
+            const Eigen::Vector4d gradient = scale * angle.gradient;
+            const Eigen::Matrix4d hessian  = scale * angle.hessian;
+            store<4>(gradient, with_hessian ? &hessian : nullptr, copy);
+            for (unsigned int c = 0; c < 4; ++c)
+              copy.dofs.push_back(layout_->rotation_dof(m.junction, c));
+          }
+        copier(copy);
+      }
+
+    // Unused DoFs of rod ends at junctions appear in no stencil; outside
+    // the direct path, give their (constrained) rows a diagonal entry.
+    if (!direct && with_hessian && apply_constraints)
+      for (const auto &unused : layout_->shared_copies())
+        {
+          LocalContribution copy;
+          copy.matrix.reinit(1, 1);
+          copy.matrix(0, 0) = 1.0;
+          copy.vector.reinit(1);
+          copy.dofs = {unused.first};
+          copier(copy);
+        }
 
     const auto &segments = layout_->segments();
     dealii::WorkStream::run(

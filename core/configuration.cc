@@ -9,9 +9,10 @@
 namespace rodnet
 {
   Configuration::Configuration(
-    const RodNetwork                       &network_,
-    const DofLayout                        &layout_,
-    const std::vector<const HingeKernel *> &rod_kernels)
+    const RodNetwork                          &network_,
+    const DofLayout                           &layout_,
+    const std::vector<const HingeKernel *>    &rod_kernels,
+    const std::vector<const JunctionKernel *> &rod_junction_kernels)
       : network(&network_)
       , layout(&layout_)
   {
@@ -63,6 +64,19 @@ namespace rodnet
         hinge_refs.push_back(ref);
       }
 
+    accumulated_rotations.assign(network->junctions().size(),
+                                 Quaternion::Identity());
+    for (const JunctionStencil &e : layout->junctions())
+      {
+        junction_kernels.push_back(rod_junction_kernels[e.rod]);
+        junction_lengths.push_back(0.5 * rest_lengths[e.segment]);
+        JunctionReference ref;
+        ref.segment_frame = frames[e.segment];
+        ref.ghost_frame   = frames[e.segment];
+        ref.ghost_first   = e.ghost_first;
+        junction_refs.push_back(ref);
+      }
+
     // The reference twist of kernels that track it is that of the
     // undeformed configuration, which has zero displacement.
     dealii::TrilinosWrappers::MPI::Vector zero(dealii::complete_index_set(
@@ -72,6 +86,11 @@ namespace rodnet
       hinge_refs[i].twist =
         kernels[i]->strains(hinge_dofs(zero, layout->hinges()[i]),
                             hinge_refs[i])[2];
+    for (unsigned int i = 0; i < junction_refs.size(); ++i)
+      junction_refs[i].twist =
+        junction_kernels[i]->strains(junction_dofs(zero,
+                                                   layout->junctions()[i]),
+                                     junction_refs[i])[2];
   }
 
   namespace
@@ -119,6 +138,33 @@ namespace rodnet
     return local;
   }
 
+  HingeVector
+  Configuration::junction_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+                               const JunctionStencil &junction) const
+  {
+    HingeVector local;
+    local.segment<3>(0) = position(u, junction.vertices[0]);
+    local.segment<3>(3) = position(u, junction.vertices[1]);
+    local[6] = u[junction.dofs[6]] - twist_at_reference[junction.segment];
+    // Quaternion DoFs hold q - (1, 0, 0, 0).
+    local[7] = 1.0 + u[junction.dofs[7]];
+    for (unsigned int c = 1; c < 4; ++c)
+      local[7 + c] = u[junction.dofs[7 + c]];
+    return local;
+  }
+
+  Quaternion
+  Configuration::junction_increment(
+    const dealii::TrilinosWrappers::MPI::Vector &u,
+    const unsigned int                           j) const
+  {
+    Quaternion q(1.0 + u[layout->rotation_dof(j, 0)],
+                 u[layout->rotation_dof(j, 1)],
+                 u[layout->rotation_dof(j, 2)],
+                 u[layout->rotation_dof(j, 3)]);
+    return q.normalized();
+  }
+
   SegmentVector
   Configuration::segment_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
                               const SegmentStencil &segment) const
@@ -151,6 +197,22 @@ namespace rodnet
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
       twists[i] = kernels[i]->strains(hinge_dofs(u, layout->hinges()[i]),
                                       hinge_refs[i])[2];
+    std::vector<double> junction_twists(junction_refs.size());
+    for (unsigned int i = 0; i < junction_refs.size(); ++i)
+      junction_twists[i] =
+        junction_kernels[i]->strains(junction_dofs(u, layout->junctions()[i]),
+                                     junction_refs[i])[2];
+
+    // Ghost frames turn with their junction (L&K eq. 5 and 6 compose to
+    // d~ = R(q) d~*), and the increment joins the accumulated rotation.
+    for (unsigned int i = 0; i < junction_refs.size(); ++i)
+      junction_refs[i].ghost_frame =
+        (junction_increment(u, layout->junctions()[i].junction) *
+         junction_refs[i].ghost_frame)
+          .normalized();
+    for (unsigned int j = 0; j < accumulated_rotations.size(); ++j)
+      if (layout->has_rotation_dofs(j))
+        accumulated_rotations[j] = junction_rotation(u, j);
 
     std::vector<Quaternion> new_frames(frames.size());
     for (unsigned int cell = 0; cell < frames.size(); ++cell)
@@ -165,6 +227,11 @@ namespace rodnet
         hinge_refs[i].frame_prev = frames[h.segment_prev];
         hinge_refs[i].frame_next = frames[h.segment_next];
         hinge_refs[i].twist      = twists[i];
+      }
+    for (unsigned int i = 0; i < junction_refs.size(); ++i)
+      {
+        junction_refs[i].segment_frame = frames[layout->junctions()[i].segment];
+        junction_refs[i].twist         = junction_twists[i];
       }
   }
 } // namespace rodnet

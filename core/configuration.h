@@ -6,6 +6,7 @@
 #include <core/dof_layout.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
+#include <elements/junction_kernel.h>
 
 #include <vector>
 
@@ -19,6 +20,12 @@ namespace rodnet
    * configuration is the DoF vector (vertex displacements, twist angles).
    * The reference is reset to the current configuration after every
    * converged step, so that no tangent turns by 180 degrees within a step.
+   *
+   * Junctions (Lestringant & Kochmann section 2.2): per junction element
+   * the reference frame of its ghost segment, initially the frame of the
+   * physical segment it continues (so the undeformed network is stress
+   * free), and per junction the rotation accumulated over the converged
+   * steps; the quaternion DoFs hold the increment since the reference.
    */
   class Configuration
   {
@@ -28,9 +35,11 @@ namespace rodnet
      * director hint made orthogonal to it. Throws, naming rod and segment,
      * where the hint is parallel to a segment.
      */
-    Configuration(const RodNetwork                       &network,
-                  const DofLayout                        &layout,
-                  const std::vector<const HingeKernel *> &rod_kernels);
+    Configuration(
+      const RodNetwork                          &network,
+      const DofLayout                           &layout,
+      const std::vector<const HingeKernel *>    &rod_kernels,
+      const std::vector<const JunctionKernel *> &rod_junction_kernels);
 
     /// Current position of vertex @p v for the DoF vector @p u.
     Vector3
@@ -46,6 +55,50 @@ namespace rodnet
     SegmentVector
     segment_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
                  const SegmentStencil                        &segment) const;
+
+    /// Local DoF vector of a junction element, (x_a, x_b, phi, q).
+    HingeVector
+    junction_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+                  const JunctionStencil                       &junction) const;
+
+    /// Reference data of junction element number @p e.
+    const JunctionReference &
+    junction_reference(unsigned int e) const
+    {
+      return junction_refs[e];
+    }
+
+    /**
+     * Undeformed Voronoi length of junction element @p e: half its physical
+     * segment, the part of the rod between the junction and the segment's
+     * midpoint (the paper takes the whole segment; see doc/junctions.md).
+     */
+    double
+    junction_voronoi_length(unsigned int e) const
+    {
+      return junction_lengths[e];
+    }
+
+    /// Incremental rotation of junction @p j since the reference, a unit
+    /// quaternion.
+    Quaternion
+    junction_increment(const dealii::TrilinosWrappers::MPI::Vector &u,
+                       unsigned int                                 j) const;
+
+    /// Rotation of junction @p j from the undeformed configuration.
+    Quaternion
+    junction_rotation(const dealii::TrilinosWrappers::MPI::Vector &u,
+                      unsigned int                                 j) const
+    {
+      return (junction_increment(u, j) * accumulated_rotations[j]).normalized();
+    }
+
+    /// Rotation of junction @p j at the reference configuration.
+    const Quaternion &
+    reference_rotation(unsigned int j) const
+    {
+      return accumulated_rotations[j];
+    }
 
     /// Reference data of hinge number @p h.
     const HingeReference &
@@ -77,16 +130,20 @@ namespace rodnet
     reset_reference(const dealii::TrilinosWrappers::MPI::Vector &u);
 
   private:
-    const RodNetwork                *network;
-    const DofLayout                 *layout;
-    std::vector<const HingeKernel *> kernels; ///< per hinge
-    std::vector<double>              rest_lengths;
-    std::vector<double>              voronoi_lengths;
-    std::vector<Quaternion>          frames; ///< D^j per cell
-    std::vector<double>              twist_at_reference;
-    std::vector<HingeReference>      hinge_refs;
-    std::vector<Vector3>             undeformed;    ///< per vertex
-    std::vector<unsigned int>        segment_index; ///< per cell
+    const RodNetwork                   *network;
+    const DofLayout                    *layout;
+    std::vector<const HingeKernel *>    kernels; ///< per hinge
+    std::vector<double>                 rest_lengths;
+    std::vector<double>                 voronoi_lengths;
+    std::vector<Quaternion>             frames; ///< D^j per cell
+    std::vector<double>                 twist_at_reference;
+    std::vector<HingeReference>         hinge_refs;
+    std::vector<const JunctionKernel *> junction_kernels; ///< per element
+    std::vector<JunctionReference>      junction_refs;
+    std::vector<double>                 junction_lengths;
+    std::vector<Quaternion>             accumulated_rotations; ///< per junction
+    std::vector<Vector3>                undeformed;            ///< per vertex
+    std::vector<unsigned int>           segment_index;         ///< per cell
   };
 } // namespace rodnet
 

@@ -31,6 +31,23 @@ namespace rodnet
           }
       }
 
+    // Rod ends at a junction use the position DoFs of its vertex.
+    for (const Junction &junction : network.junctions())
+      for (const RodEnd &end : junction.ends)
+        {
+          const unsigned int v = network.end_vertex(end);
+          if (v == junction.vertex)
+            continue;
+          for (unsigned int c = 0; c < 3; ++c)
+            copies.emplace_back(vertex_dofs[v][c],
+                                vertex_dofs[junction.vertex][c]);
+          vertex_dofs[v] = vertex_dofs[junction.vertex];
+        }
+    rotation_dofs.assign(network.junctions().size(), invalid);
+    for (unsigned int j = 0; j < network.junctions().size(); ++j)
+      if (network.junctions()[j].has_rotation())
+        rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
+
     const auto &rods = network.rods();
     for (unsigned int r = 0; r < rods.size(); ++r)
       {
@@ -75,6 +92,34 @@ namespace rodnet
             hinge_list.push_back(h);
           }
       }
+
+    for (unsigned int j = 0; j < network.junctions().size(); ++j)
+      if (has_rotation_dofs(j))
+        for (const RodEnd &end : network.junctions()[j].ends)
+          {
+            const Rod         &rod = rods[end.rod];
+            const unsigned int n   = rod.vertices.size();
+            JunctionStencil    s;
+            s.rod         = end.rod;
+            s.junction    = j;
+            s.ghost_first = end.at_start;
+            s.vertices    = end.at_start ?
+                              std::array<unsigned int, 2>{
+                                {rod.vertices[0], rod.vertices[1]}} :
+                              std::array<unsigned int, 2>{
+                                {rod.vertices[n - 2], rod.vertices[n - 1]}};
+            s.segment =
+              end.at_start ? rod.segments.front() : rod.segments.back();
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                s.dofs[c]     = vertex_dofs[s.vertices[0]][c];
+                s.dofs[3 + c] = vertex_dofs[s.vertices[1]][c];
+              }
+            s.dofs[6] = twist_dofs[s.segment];
+            for (unsigned int c = 0; c < 4; ++c)
+              s.dofs[7 + c] = rotation_dof(j, c);
+            junction_list.push_back(s);
+          }
   }
 
   void
@@ -93,9 +138,14 @@ namespace rodnet
         dofs.assign(s.dofs.begin(), s.dofs.end());
         constraints.add_entries_local_to_global(dofs, dsp, false);
       }
-    // Twist DoFs of segments without any hinge (a one-segment rod) still
-    // need their diagonal entry.
-    for (global_dof_index i = 0; i < handler.n_dofs(); ++i)
+    for (const JunctionStencil &s : junction_list)
+      {
+        dofs.assign(s.dofs.begin(), s.dofs.end());
+        constraints.add_entries_local_to_global(dofs, dsp, false);
+      }
+    // DoFs that no stencil sees (the twist of a one-segment rod, unused
+    // copies of shared vertices) still need their diagonal entry.
+    for (global_dof_index i = 0; i < n_dofs(); ++i)
       dsp.add(i, i);
   }
 } // namespace rodnet

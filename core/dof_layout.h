@@ -39,11 +39,38 @@ namespace rodnet
   };
 
   /**
+   * Global DoF indices of a junction element (Lestringant & Kochmann eq. 4)
+   * in the junction kernel's local order (x_a, x_b, phi, q): the physical
+   * segment from x_a to x_b along its rod, its twist, and the junction's
+   * quaternion. The ghost segment sits at x_a when the rod starts at the
+   * junction (ghost_first), else at x_b.
+   */
+  struct JunctionStencil
+  {
+    std::array<global_dof_index, n_hinge_dofs> dofs;
+    unsigned int                               rod;
+    unsigned int                               junction;
+    std::array<unsigned int, 2>                vertices; ///< (a, b)
+    unsigned int                               segment;  ///< cell
+    bool                                       ghost_first;
+  };
+
+  /**
    * The degrees of freedom of a rod network: a DoFHandler<1,3> with
    * FESystem(FE_Q<1,3>(1)^3, FE_DGQ<1,3>(0)), i.e. the displacement of
-   * every vertex and one twist angle per segment, and the stencils that
-   * the assembler loops over. Index maps come from here only; kernels see
-   * local vectors in their documented order.
+   * every vertex and one twist angle per segment, followed by a block of
+   * four quaternion DoFs per junction that carries a rotation; and the
+   * stencils that the assembler loops over. Index maps come from here only;
+   * kernels see local vectors in their documented order.
+   *
+   * Rod ends tied at a junction keep their own triangulation vertices
+   * (deal.II meshes in 1D allow two cells per vertex only) but share the
+   * position DoFs of the junction's vertex: vertex_dof() returns those for
+   * every end, and the DoFs the DoFHandler gave the other ends are unused
+   * (shared_copies() lists them with the DoF whose value they mirror).
+   *
+   * Quaternion DoFs store q - (1, 0, 0, 0), so that the zero vector is the
+   * reference configuration.
    */
   class DofLayout
   {
@@ -56,10 +83,46 @@ namespace rodnet
       return handler;
     }
 
+    /// All DoFs: the DoFHandler's, then the quaternion block.
     global_dof_index
     n_dofs() const
     {
+      return handler.n_dofs() + 4 * n_rotations;
+    }
+
+    /// DoFs of the DoFHandler (positions and twists) alone.
+    global_dof_index
+    n_field_dofs() const
+    {
       return handler.n_dofs();
+    }
+
+    /// DoF of quaternion component @p c (w, x, y, z) of junction @p j,
+    /// which must carry a rotation.
+    global_dof_index
+    rotation_dof(unsigned int j, unsigned int c) const
+    {
+      return rotation_dofs[j] + c;
+    }
+
+    /// Whether junction @p j carries quaternion DoFs.
+    bool
+    has_rotation_dofs(unsigned int j) const
+    {
+      return rotation_dofs[j] != dealii::numbers::invalid_dof_index;
+    }
+
+    /// (unused DoF, DoF it mirrors) for rod ends sharing a junction vertex.
+    const std::vector<std::pair<global_dof_index, global_dof_index>> &
+    shared_copies() const
+    {
+      return copies;
+    }
+
+    const std::vector<JunctionStencil> &
+    junctions() const
+    {
+      return junction_list;
     }
 
     /// DoF of displacement component @p c of triangulation vertex @p v.
@@ -101,6 +164,11 @@ namespace rodnet
     std::vector<global_dof_index>                twist_dofs;
     std::vector<HingeStencil>                    hinge_list;
     std::vector<SegmentStencil>                  segment_list;
+    std::vector<JunctionStencil>                 junction_list;
+    /// First quaternion DoF per junction, invalid where it has none.
+    std::vector<global_dof_index>                              rotation_dofs;
+    unsigned int                                               n_rotations = 0;
+    std::vector<std::pair<global_dof_index, global_dof_index>> copies;
   };
 } // namespace rodnet
 

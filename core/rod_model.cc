@@ -1,6 +1,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <core/rod_model.h>
+#include <elements/junction_moment.h>
 
 #include <stdexcept>
 
@@ -8,7 +9,8 @@ namespace rodnet
 {
   RodModel::RodModel(
     std::unique_ptr<RodNetwork>                     network,
-    std::vector<std::shared_ptr<const RodMaterial>> rod_materials)
+    std::vector<std::shared_ptr<const RodMaterial>> rod_materials,
+    const GhostSpin                                 ghost_spin)
       : network_(std::move(network))
       , materials(std::move(rod_materials))
   {
@@ -19,15 +21,113 @@ namespace rodnet
       throw std::invalid_argument(
         "RodModel: " + std::to_string(rods.size()) + " rods but " +
         std::to_string(materials.size()) + " materials");
-    std::vector<const HingeKernel *> rod_kernels;
+    std::vector<const HingeKernel *>    rod_kernels;
+    std::vector<const JunctionKernel *> rod_junction_kernels;
     for (const Rod &rod : rods)
       {
         kernels.push_back(create_hinge_kernel(rod.hinge_kernel));
         rod_kernels.push_back(kernels.back().get());
+        junction_kernels.push_back(
+          std::make_unique<JunctionKernel>(rod.hinge_kernel, ghost_spin));
+        rod_junction_kernels.push_back(junction_kernels.back().get());
       }
-    layout_ = std::make_unique<DofLayout>(*network_);
-    configuration_ =
-      std::make_unique<Configuration>(*network_, *layout_, rod_kernels);
+    layout_        = std::make_unique<DofLayout>(*network_);
+    configuration_ = std::make_unique<Configuration>(*network_,
+                                                     *layout_,
+                                                     rod_kernels,
+                                                     rod_junction_kernels);
+
+    // Supports that junctions imply, and the gauge of their quaternions:
+    // the real part of every increment stays 1 (stored as 0).
+    const auto &junctions = network_->junctions();
+    for (unsigned int j = 0; j < junctions.size(); ++j)
+      {
+        if (junctions[j].fixes_position())
+          fix_components(junctions[j].name,
+                         junctions[j].vertex,
+                         {{true, true, true}});
+        if (!layout_->has_rotation_dofs(j))
+          continue;
+        fixed_dofs[layout_->rotation_dof(j, 0)] = 0.0;
+        if (junctions[j].kind == JunctionKind::clamped)
+          for (unsigned int c = 1; c < 4; ++c)
+            fixed_dofs[layout_->rotation_dof(j, c)] = 0.0;
+      }
+  }
+
+  void
+  RodModel::add_moment(const unsigned int junction,
+                       const Vector3     &axis,
+                       const double       moment)
+  {
+    if (junction >= network_->junctions().size())
+      throw std::invalid_argument("moment at junction " +
+                                  std::to_string(junction) +
+                                  ", which does not exist");
+    const Junction &j = network_->junctions()[junction];
+    if (!j.has_rotation() || j.kind == JunctionKind::clamped)
+      throw std::invalid_argument("moment at junction \"" + j.name + "\": a " +
+                                  to_string(j.kind) +
+                                  " junction has no free rotation to load");
+    if (!(std::abs(axis.norm() - 1.0) < 1e-9))
+      throw std::invalid_argument("moment at junction \"" + j.name +
+                                  "\": the axis must be a unit vector");
+    moments.push_back({junction, axis, moment});
+  }
+
+  void
+  RodModel::prescribe_rotation(const unsigned int junction,
+                               const Vector3     &axis,
+                               const double       angle)
+  {
+    if (junction >= network_->junctions().size())
+      throw std::invalid_argument("prescribed rotation of junction " +
+                                  std::to_string(junction) +
+                                  ", which does not exist");
+    const Junction &j = network_->junctions()[junction];
+    if (j.kind != JunctionKind::clamped)
+      throw std::invalid_argument(
+        "prescribed rotation of junction \"" + j.name +
+        "\": only clamped "
+        "junctions have a prescribed rotation; this one is " +
+        to_string(j.kind));
+    if (!(std::abs(axis.norm() - 1.0) < 1e-9))
+      throw std::invalid_argument("prescribed rotation of junction \"" +
+                                  j.name +
+                                  "\": the axis must be a unit vector");
+    prescribed_rotations.push_back({junction, axis, angle});
+  }
+
+  void
+  RodModel::reset_reference(VectorType &u)
+  {
+    configuration_->reset_reference(u);
+    for (unsigned int j = 0; j < network_->junctions().size(); ++j)
+      if (layout_->has_rotation_dofs(j))
+        for (unsigned int c = 0; c < 4; ++c)
+          u[layout_->rotation_dof(j, c)] = 0.0;
+    u.compress(dealii::VectorOperation::insert);
+  }
+
+  Vector3
+  RodModel::reaction_moment(const unsigned int junction,
+                            const VectorType  &u,
+                            const double       load_factor) const
+  {
+    if (junction >= network_->junctions().size() ||
+        !layout_->has_rotation_dofs(junction))
+      throw std::invalid_argument("reaction moment: junction " +
+                                  std::to_string(junction) +
+                                  " does not exist or has no rotation");
+    VectorType r = create_vector();
+    assemble(u, load_factor, &r, nullptr, false);
+    Eigen::Vector4d q, gradient;
+    for (unsigned int c = 0; c < 4; ++c)
+      {
+        q[c]        = u[layout_->rotation_dof(junction, c)] + (c == 0);
+        gradient[c] = r[layout_->rotation_dof(junction, c)];
+      }
+    return spatial_moment(q, gradient);
   }
 
   void
@@ -131,6 +231,11 @@ namespace rodnet
     std::vector<bool> twist_seen(network_->triangulation().n_active_cells());
     for (const HingeStencil &h : layout_->hinges())
       twist_seen[h.segment_prev] = twist_seen[h.segment_next] = true;
+    for (const JunctionStencil &e : layout_->junctions())
+      twist_seen[e.segment] = true;
+    // Position DoFs of rod ends that share a junction vertex are unused.
+    for (const auto &copy : layout_->shared_copies())
+      fixed_dofs.emplace(copy.first, 0.0);
     for (unsigned int cell = 0; cell < twist_seen.size(); ++cell)
       if (!twist_seen[cell])
         fixed_dofs.emplace(layout_->twist_dof(cell), 0.0);
@@ -186,6 +291,26 @@ namespace rodnet
   {
     for (const auto &[dof, value] : fixed_dofs)
       u[dof] = load_factor * value;
+    // A prescribed rotation is reached from the reference rotation by an
+    // increment (1, v) in the gauge of the quaternion DoFs.
+    for (const AxisLoad &p : prescribed_rotations)
+      {
+        Quaternion increment =
+          rotation_about(p.axis, load_factor * p.value) *
+          configuration_->reference_rotation(p.junction).conjugate();
+        if (increment.w() < 0)
+          increment.coeffs() *= -1.0;
+        if (!(increment.w() > 1e-3))
+          throw std::runtime_error(
+            "the prescribed rotation of junction \"" +
+            network_->junctions()[p.junction].name +
+            "\" turns by nearly 180 degrees or more within one step; use "
+            "more load steps");
+        u[layout_->rotation_dof(p.junction, 0)] = 0.0;
+        for (unsigned int c = 1; c < 4; ++c)
+          u[layout_->rotation_dof(p.junction, c)] =
+            increment.vec()[c - 1] / increment.w();
+      }
     u.compress(dealii::VectorOperation::insert);
   }
 

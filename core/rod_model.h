@@ -37,8 +37,17 @@ namespace rodnet
    * driver or a user's deal.II program works with. It owns the DoF layout,
    * the configuration (undeformed and reference data) and the current DoF
    * vector, and evaluates the total potential energy
-   *   Phi(u) = sum_hinges W + sum_segments W - lambda f . x
+   *   Phi(u) = sum_hinges W + sum_segments W + sum_junction_elements W
+   *            - lambda f . x - lambda sum_moments M theta_u(q)
    * with its gradient (the residual) and Hessian (the tangent).
+   *
+   * Junctions of the network bring their supports with them: a clamped
+   * junction fixes its position and rotation, a welded-and-pinned one its
+   * position; each is a Support named after the junction. The scale of
+   * every junction quaternion is a gauge freedom (the kernels see q/|q|):
+   * its real part is held at 1, so increments are q = (1, v), which
+   * covers every rotation below 180 degrees per step (see
+   * doc/junctions.md).
    *
    * Usage: construct, add supports and loads, call finalize(), then
    * assemble / solve (see StaticSolver) and reset_reference() after each
@@ -53,7 +62,8 @@ namespace rodnet
      * rods' kernel names.
      */
     RodModel(std::unique_ptr<RodNetwork>                     network,
-             std::vector<std::shared_ptr<const RodMaterial>> materials);
+             std::vector<std::shared_ptr<const RodMaterial>> materials,
+             GhostSpin ghost_spin = GhostSpin::exact);
 
     /// @name Supports (before finalize())
     /// @{
@@ -80,6 +90,23 @@ namespace rodnet
     /// vertices by their Voronoi lengths.
     void
     add_distributed_force(unsigned int rod, const Vector3 &force_per_length);
+
+    /**
+     * Moment @p moment about the fixed unit @p axis at junction
+     * @p junction (Lestringant & Kochmann appendix C): the load potential
+     * -lambda M theta_u(q). The junction must have a free rotation.
+     */
+    void
+    add_moment(unsigned int junction, const Vector3 &axis, double moment);
+
+    /**
+     * Turns clamped junction @p junction about the unit @p axis by
+     * @p angle (rad) at load factor 1, ramped with the load factor.
+     */
+    void
+    prescribe_rotation(unsigned int   junction,
+                       const Vector3 &axis,
+                       double         angle);
     /// @}
 
     /// Builds constraints, sparsity pattern, matrices and vectors.
@@ -112,16 +139,25 @@ namespace rodnet
     void
     apply_boundary_values(VectorType &u, double load_factor) const;
 
-    /// Makes @p u the reference configuration.
+    /// Makes @p u the reference configuration; its quaternion DoFs return
+    /// to the identity (their rotation moves into the reference).
     void
-    reset_reference(const VectorType &u)
-    {
-      configuration_->reset_reference(u);
-    }
+    reset_reference(VectorType &u);
 
     /// Reaction force of support @p s at the converged @p u.
     Vector3
     reaction(const Support &s, const VectorType &u, double load_factor) const;
+
+    /**
+     * Moment vector that junction @p junction's rotation DoFs transmit at
+     * @p u: for a clamped junction the reaction moment of the clamp (the
+     * moment conjugate to a prescribed rotation, L&K appendix C), for a
+     * free one the residual moment (zero at equilibrium).
+     */
+    Vector3
+    reaction_moment(unsigned int      junction,
+                    const VectorType &u,
+                    double            load_factor) const;
 
     /// A zero vector with the model's layout.
     VectorType
@@ -168,6 +204,11 @@ namespace rodnet
     {
       return *kernels[rod];
     }
+    const JunctionKernel &
+    junction_kernel(unsigned int rod) const
+    {
+      return *junction_kernels[rod];
+    }
     const RodMaterial &
     material(unsigned int rod) const
     {
@@ -191,6 +232,7 @@ namespace rodnet
     std::unique_ptr<RodNetwork>                     network_;
     std::vector<std::shared_ptr<const RodMaterial>> materials;
     std::vector<std::unique_ptr<HingeKernel>>       kernels;
+    std::vector<std::unique_ptr<JunctionKernel>>    junction_kernels;
     std::unique_ptr<DofLayout>                      layout_;
     std::unique_ptr<Configuration>                  configuration_;
     std::vector<Support>                            support_list;
@@ -202,10 +244,18 @@ namespace rodnet
     dealii::AffineConstraints<double>             no_constraints;
     std::vector<std::pair<unsigned int, Vector3>> point_forces;
     std::vector<std::pair<unsigned int, Vector3>> distributed_forces;
-    VectorType                                    f_ext;
-    dealii::TrilinosWrappers::SparsityPattern     sparsity;
-    double                                        length    = 0;
-    bool                                          finalized = false;
+    struct AxisLoad
+    {
+      unsigned int junction;
+      Vector3      axis;
+      double       value; ///< moment (N m) or angle (rad) at load factor 1
+    };
+    std::vector<AxisLoad>                     moments;
+    std::vector<AxisLoad>                     prescribed_rotations;
+    VectorType                                f_ext;
+    dealii::TrilinosWrappers::SparsityPattern sparsity;
+    double                                    length    = 0;
+    bool                                      finalized = false;
   };
 } // namespace rodnet
 

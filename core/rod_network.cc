@@ -100,6 +100,143 @@ namespace rodnet
     rod_list.push_back(rod);
   }
 
+  std::string
+  to_string(const JunctionKind kind)
+  {
+    switch (kind)
+      {
+        case JunctionKind::welded:
+          return "welded";
+        case JunctionKind::pinned:
+          return "pinned";
+        case JunctionKind::clamped:
+          return "clamped";
+        case JunctionKind::welded_pinned:
+          return "welded and pinned";
+      }
+    throw std::logic_error("unknown junction kind");
+  }
+
+  JunctionKind
+  junction_kind_from_string(const std::string &name)
+  {
+    for (const JunctionKind kind : {JunctionKind::welded,
+                                    JunctionKind::pinned,
+                                    JunctionKind::clamped,
+                                    JunctionKind::welded_pinned})
+      if (name == to_string(kind))
+        return kind;
+    throw std::invalid_argument(
+      "unknown junction kind \"" + name +
+      "\"; known kinds: \"welded\", \"pinned\", \"clamped\", "
+      "\"welded and pinned\"");
+  }
+
+  unsigned int
+  RodNetwork::add_junction(const std::string         &name,
+                           const JunctionKind         kind,
+                           const std::vector<RodEnd> &ends)
+  {
+    const std::string where =
+      "junction \"" + name + "\" (" + to_string(kind) + ")";
+    for (const Junction &j : junction_list)
+      if (j.name == name)
+        throw std::invalid_argument(where + ": the name is used twice");
+    if (ends.empty())
+      throw std::invalid_argument(where + " joins no rod end");
+    // A welded junction on a single end is a rotation handle at a free
+    // end (to apply a moment there); a pinned one would tie nothing.
+    if (kind == JunctionKind::pinned && ends.size() < 2)
+      throw std::invalid_argument(
+        where + " joins a single rod end; a pinned junction joins at least "
+                "two (to fix a single end's position use a pinned support)");
+
+    const auto describe_end = [](const RodEnd &e) {
+      return std::string(e.at_start ? "start" : "end") + " of rod " +
+             std::to_string(e.rod);
+    };
+    for (unsigned int i = 0; i < ends.size(); ++i)
+      {
+        const RodEnd &e = ends[i];
+        if (e.rod >= rod_list.size())
+          throw std::invalid_argument(where + ": there is no rod " +
+                                      std::to_string(e.rod));
+        if (rod_list[e.rod].closed)
+          throw std::invalid_argument(where + ": rod " + std::to_string(e.rod) +
+                                      " is closed and has no ends");
+        for (unsigned int k = 0; k < i; ++k)
+          if (ends[k].rod == e.rod && ends[k].at_start == e.at_start)
+            throw std::invalid_argument(where + " lists the " +
+                                        describe_end(e) + " twice");
+        for (const Junction &j : junction_list)
+          for (const RodEnd &other : j.ends)
+            if (other.rod == e.rod && other.at_start == e.at_start)
+              throw std::invalid_argument(where + ": the " + describe_end(e) +
+                                          " is already in junction \"" +
+                                          j.name + "\"");
+      }
+
+    // The ends must meet: within round-off of the network's size.
+    Vector3 low = points[0], high = points[0];
+    for (const Vector3 &p : points)
+      {
+        low  = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+      }
+    const double  tolerance = 1e-9 * std::max((high - low).norm(), 1e-300);
+    const Vector3 position  = points[end_vertex(ends[0])];
+    for (const RodEnd &e : ends)
+      {
+        const double gap = (points[end_vertex(e)] - position).norm();
+        if (gap > tolerance)
+          throw std::invalid_argument(
+            where + ": the rods do not meet; the " + describe_end(e) + " at " +
+            describe(points[end_vertex(e)]) + " is " + std::to_string(gap) +
+            " m from the " + describe_end(ends[0]) + " at " +
+            describe(position));
+      }
+
+    name_vertex(name, end_vertex(ends[0]));
+    Junction junction;
+    junction.name   = name;
+    junction.kind   = kind;
+    junction.ends   = ends;
+    junction.vertex = end_vertex(ends[0]);
+    junction_list.push_back(junction);
+    return junction_list.size() - 1;
+  }
+
+  void
+  RodNetwork::name_vertex(const std::string &name, const unsigned int v)
+  {
+    if (v >= points.size())
+      throw std::invalid_argument("cannot name vertex " + std::to_string(v) +
+                                  " \"" + name + "\": it does not exist");
+    const auto [it, inserted] = vertex_names.emplace(name, v);
+    if (!inserted && it->second != v)
+      throw std::invalid_argument("the vertex name \"" + name +
+                                  "\" is used twice");
+  }
+
+  unsigned int
+  RodNetwork::named_vertex(const std::string &name) const
+  {
+    const auto it = vertex_names.find(name);
+    if (it == vertex_names.end())
+      throw std::invalid_argument("there is no vertex or junction called \"" +
+                                  name + "\"");
+    return it->second;
+  }
+
+  unsigned int
+  RodNetwork::junction_index(const std::string &name) const
+  {
+    for (unsigned int j = 0; j < junction_list.size(); ++j)
+      if (junction_list[j].name == name)
+        return j;
+    throw std::invalid_argument("there is no junction \"" + name + "\"");
+  }
+
   void
   RodNetwork::create_triangulation()
   {

@@ -5,6 +5,7 @@
 
 #include <elements/quaternion.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,71 @@ namespace rodnet
   };
 
   /**
+   * How the rod ends meeting at a junction are tied (Lestringant & Kochmann
+   * 2020, section 2.2):
+   * - welded: shared position and one rigid rotation (a quaternion DoF) to
+   *   which every end is tied through a junction element;
+   * - pinned: shared position, each end rotates freely (no junction
+   *   element, no quaternion);
+   * - clamped: fixed position, rotation prescribed (identity unless the
+   *   scene rotates it);
+   * - welded_pinned: fixed position, one free rigid rotation (the lattice
+   *   supports of L&K section 4.3).
+   */
+  enum class JunctionKind
+  {
+    welded,
+    pinned,
+    clamped,
+    welded_pinned
+  };
+
+  /// "welded", "pinned", "clamped", "welded and pinned".
+  std::string
+  to_string(JunctionKind kind);
+
+  /// Inverse of to_string(); throws std::invalid_argument listing the names.
+  JunctionKind
+  junction_kind_from_string(const std::string &name);
+
+  /// One end of a rod: its first (at_start) or last vertex.
+  struct RodEnd
+  {
+    unsigned int rod;
+    bool         at_start;
+  };
+
+  /// Rod ends tied at one point.
+  struct Junction
+  {
+    std::string         name;
+    JunctionKind        kind;
+    std::vector<RodEnd> ends;
+    /// Triangulation vertex of the first end: the other ends' vertices
+    /// share its position DoFs.
+    unsigned int vertex;
+
+    /// Whether the junction carries a rotation (quaternion DoFs).
+    bool
+    has_rotation() const
+    {
+      return kind != JunctionKind::pinned;
+    }
+
+    /// Whether the junction's position is held fixed.
+    bool
+    fixes_position() const
+    {
+      return kind == JunctionKind::clamped ||
+             kind == JunctionKind::welded_pinned;
+    }
+  };
+
+  /**
    * The undeformed geometry of a set of rods as a Triangulation<1,3>, with
-   * each rod's vertex chain. Every cell belongs to exactly one rod; its
-   * vertex 0 -> vertex 1 direction follows the rod.
+   * each rod's vertex chain and the junctions that tie rod ends together. Every
+   * cell belongs to exactly one rod; its vertex 0 -> vertex 1 direction follows
+   * the rod.
    */
   class RodNetwork
   {
@@ -52,6 +115,47 @@ namespace rodnet
             bool                        closed,
             const Vector3              &director_hint,
             const std::string          &hinge_kernel);
+
+    /**
+     * Ties rod ends at a junction called @p name. Checks, naming the
+     * junction: that rods exist and are open, that no end is in two
+     * junctions, that the ends meet (within 1e-9 of the network's size),
+     * that a pinned junction joins at least two ends. A welded junction of
+     * a single end is a rotation handle at a free end, where a moment can
+     * be applied (network inputs refuse it: there it is a missing beam).
+     * Returns the junction's index.
+     */
+    unsigned int
+    add_junction(const std::string         &name,
+                 JunctionKind               kind,
+                 const std::vector<RodEnd> &ends);
+
+    const std::vector<Junction> &
+    junctions() const
+    {
+      return junction_list;
+    }
+
+    /// Index of the junction called @p name; throws naming it if unknown.
+    unsigned int
+    junction_index(const std::string &name) const;
+
+    /// Gives vertex @p v the name @p name (junctions name their vertex);
+    /// scenes refer to it as "@name". Throws if the name is taken.
+    void
+    name_vertex(const std::string &name, unsigned int v);
+
+    /// The vertex called @p name; throws naming it if unknown.
+    unsigned int
+    named_vertex(const std::string &name) const;
+
+    /// Triangulation vertex of a rod end.
+    unsigned int
+    end_vertex(const RodEnd &end) const
+    {
+      const Rod &rod = rod_list.at(end.rod);
+      return end.at_start ? rod.vertices.front() : rod.vertices.back();
+    }
 
     /// Builds the triangulation from the rods added so far. Call once.
     void
@@ -83,9 +187,11 @@ namespace rodnet
     }
 
   private:
-    dealii::Triangulation<1, 3> tria;
-    std::vector<Vector3>        points;
-    std::vector<Rod>            rod_list;
+    dealii::Triangulation<1, 3>         tria;
+    std::vector<Vector3>                points;
+    std::vector<Rod>                    rod_list;
+    std::vector<Junction>               junction_list;
+    std::map<std::string, unsigned int> vertex_names;
   };
 } // namespace rodnet
 

@@ -3,6 +3,7 @@
 #include <io/probes.h>
 #include <io/vertex_selector.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -75,6 +76,52 @@ namespace rodnet
                     " of vertex \"" + vertex + "\"");
               }
           }
+        else if (kind == "rotation" || kind == "moment")
+          {
+            // Here "vertex" holds the junction name, "component" the axis.
+            if (vertex.empty() || component.empty() || !extra.empty())
+              throw std::invalid_argument(
+                context + ": expected \"" + kind + " <junction> " +
+                (kind == "rotation" ? "<ax>,<ay>,<az>" : "<x|y|z>") + "\"");
+            try
+              {
+                probe.junction = model.network().junction_index(vertex);
+              }
+            catch (const std::invalid_argument &e)
+              {
+                throw std::invalid_argument(context + ": " + e.what());
+              }
+            if (!model.layout().has_rotation_dofs(probe.junction))
+              throw std::invalid_argument(context + ": junction \"" + vertex +
+                                          "\" is pinned and has no rotation");
+            if (kind == "moment")
+              {
+                probe.kind      = Probe::Kind::moment;
+                probe.component = parse_component(component, context);
+              }
+            else
+              {
+                probe.kind = Probe::Kind::rotation;
+                const auto xyz =
+                  dealii::Utilities::split_string_list(component, ',');
+                try
+                  {
+                    if (xyz.size() != 3)
+                      throw std::invalid_argument("");
+                    const auto v = dealii::Utilities::string_to_double(xyz);
+                    probe.axis   = Vector3(v[0], v[1], v[2]);
+                  }
+                catch (const std::exception &)
+                  {
+                    throw std::invalid_argument(
+                      context + ": the axis \"" + component +
+                      "\" is not three numbers ax,ay,az");
+                  }
+                if (!(probe.axis.norm() > 0))
+                  throw std::invalid_argument(context + ": the axis is zero");
+                probe.axis.normalize();
+              }
+          }
         else if ((kind == "energy" || kind == "eigenvalue") && vertex.empty())
           probe.kind =
             kind == "energy" ? Probe::Kind::energy : Probe::Kind::eigenvalue;
@@ -82,7 +129,8 @@ namespace rodnet
           throw std::invalid_argument(
             context + ": unknown probe kind \"" + kind +
             "\"; known: position <vertex> <x|y|z>, reaction <vertex> <x|y|z>, "
-            "energy, eigenvalue");
+            "energy, eigenvalue, rotation <junction> <ax>,<ay>,<az>, moment "
+            "<junction> <x|y|z>");
         probes.push_back(probe);
       }
     return probes;
@@ -113,6 +161,19 @@ namespace rodnet
             break;
           case Probe::Kind::eigenvalue:
             values.push_back(lowest_eigenvalue);
+            break;
+          case Probe::Kind::rotation:
+            {
+              // The twist part of the rotation about the axis (swing-twist
+              // split): exact for rotations about the axis, up to 360 deg.
+              const Quaternion q =
+                model.configuration().junction_rotation(u, p.junction);
+              values.push_back(2.0 * std::atan2(q.vec().dot(p.axis), q.w()));
+              break;
+            }
+          case Probe::Kind::moment:
+            values.push_back(
+              model.reaction_moment(p.junction, u, load_factor)[p.component]);
             break;
         }
     return values;

@@ -14,24 +14,30 @@ namespace rodnet
   {
     enum class Kind
     {
-      position,  ///< a component of a vertex's current position
-      reaction,  ///< a component of a support's reaction force
-      energy,    ///< the total elastic energy
-      eigenvalue ///< the lowest eigenvalue of the constrained tangent
+      position,   ///< a component of a vertex's current position
+      reaction,   ///< a component of a support's reaction force
+      energy,     ///< the total elastic energy
+      eigenvalue, ///< the lowest eigenvalue of the constrained tangent
+      rotation,   ///< a junction's rotation angle about an axis
+      moment      ///< a component of a junction's reaction moment
     };
     std::string  name;
     Kind         kind;
     unsigned int vertex    = 0;
     unsigned int component = 0;
-    std::string  support; ///< for reactions: the support's name
+    std::string  support;      ///< for reactions: the support's name
+    unsigned int junction = 0; ///< for rotations and moments
+    Vector3      axis     = Vector3::UnitZ(); ///< for rotations
   };
 
   /**
    * Parses a probe list `name: kind args; name: kind args; ...` with kinds
    * `position <vertex> <x|y|z>`, `reaction <vertex> <x|y|z>` (the support
-   * holding that vertex), `energy` and `eigenvalue`. Vertices as in
-   * select_vertex(). Throws std::invalid_argument naming @p entry and the
-   * offending probe.
+   * holding that vertex), `energy`, `eigenvalue`, `rotation <junction>
+   * <ax>,<ay>,<az>` (angle of the junction's rotation about the axis, rad)
+   * and `moment <junction> <x|y|z>` (reaction moment, N m). Vertices as in
+   * select_vertex(), junctions by name. Throws std::invalid_argument naming @p
+   * entry and the offending probe.
    */
   std::vector<Probe>
   parse_probes(const std::string &text,

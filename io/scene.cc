@@ -1,9 +1,13 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <core/network_generators.h>
 #include <core/rod_generators.h>
+#include <core/rod_graph.h>
 #include <elements/hinge_kernel.h>
+#include <io/gmsh_network.h>
 #include <io/gmsh_rods.h>
+#include <io/network_file.h>
 #include <io/scene.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
@@ -21,6 +25,47 @@ namespace rodnet
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
     using dealii::Patterns::Selection;
+
+    /// Material subsections: "Material" for every rod, and optional ones
+    /// for the material groups of a network.
+    constexpr unsigned int n_material_groups = 4;
+
+    std::string
+    material_section(const unsigned int group)
+    {
+      return group == 0 ? "Material" :
+                          "Material of group " + std::to_string(group);
+    }
+
+    /// Parses "ax,ay,az <value>" into a unit axis and a number.
+    std::pair<Vector3, double>
+    parse_axis_value(const std::string &text, const std::string &entry)
+    {
+      std::istringstream words(text);
+      std::string        axis_text, value_text, extra;
+      words >> axis_text >> value_text >> extra;
+      try
+        {
+          const auto xyz = dealii::Utilities::split_string_list(axis_text, ',');
+          if (xyz.size() != 3 || value_text.empty() || !extra.empty())
+            throw std::invalid_argument("");
+          const auto    v = dealii::Utilities::string_to_double(xyz);
+          const Vector3 axis(v[0], v[1], v[2]);
+          std::size_t   used  = 0;
+          const double  value = std::stod(value_text, &used);
+          if (used != value_text.size() || !std::isfinite(value) ||
+              !(axis.norm() > 0))
+            throw std::invalid_argument("");
+          return {axis.normalized(), value};
+        }
+      catch (const std::exception &)
+        {
+          throw std::invalid_argument(
+            "entry \"" + entry + "\": \"" + text +
+            "\" should read \"<ax>,<ay>,<az> <value>\" (no spaces inside the "
+            "axis, non-zero axis)");
+        }
+    }
 
     /// A pattern for "x, y, z".
     const dealii::Patterns::List vector_pattern(Double(), 3, 3, ",");
@@ -87,18 +132,44 @@ namespace rodnet
   {
     prm.enter_subsection("Geometry");
     {
-      prm.declare_entry("Generator",
-                        "straight",
-                        Selection("straight|arc|ring|helix|polyline|gmsh"),
-                        "How the rod centerline is made: a straight rod, a "
-                        "circular arc, a closed ring, a helix, a polyline "
-                        "through given points, or the rods of a Gmsh line "
-                        "mesh (one rod per physical tag).");
+      prm.declare_entry(
+        "Generator",
+        "straight",
+        Selection("straight|arc|ring|helix|polyline|gmsh|frame|windmill|"
+                  "square lattice|hexagonal lattice|network file|"
+                  "gmsh network"),
+        "How the rods are made: a straight rod, a circular arc, a closed "
+        "ring, a helix, a polyline through given points, the rods of a Gmsh "
+        "line mesh (one rod per physical tag); or a network of beams tied at "
+        "junctions: the right-angle frame and the windmill of Lestringant & "
+        "Kochmann (Fig. 3), a square or hexagonal lattice, a node/beam list "
+        "file, or a branched Gmsh line mesh (see doc/networks.md).");
+      prm.declare_entry("Beam length",
+                        "1",
+                        Double(0),
+                        "Networks: leg length of the frame, shaft length of "
+                        "the windmill, cell side of the lattices. [m]");
+      prm.declare_entry("Cells",
+                        "2, 2",
+                        dealii::Patterns::List(Integer(1), 2, 2, ","),
+                        "Lattices: number of cells along x and y. [-]");
+      prm.declare_entry("Network file",
+                        "",
+                        Anything(),
+                        "Network file: path of the node/beam list, relative "
+                        "to the scene file. [-]");
+      prm.declare_entry(
+        "Ghost spin",
+        "exact",
+        Selection("exact|small rotation"),
+        "Junctions: spin angle of the ghost segments, exact for finite "
+        "rotations (L&K appendix B) or its small-rotation form (eq. 8). [-]");
       prm.declare_entry("Segments",
                         "100",
                         Integer(1),
                         "Number of segments of the rod (per piece for a "
-                        "polyline). [-]");
+                        "polyline, per beam for a generated network or "
+                        "network file). [-]");
       prm.declare_entry("Start",
                         "0, 0, 0",
                         vector_pattern,
@@ -169,26 +240,35 @@ namespace rodnet
     }
     prm.leave_subsection();
 
-    prm.enter_subsection("Material");
-    {
-      const std::vector<std::string> names =
-        MaterialRegistry::instance().names();
-      std::string help = "Constitutive law of the rods:";
-      for (const std::string &n : names)
-        help += " \"" + n +
-                "\": " + MaterialRegistry::instance().description(n) + ".";
-      prm.declare_entry("Model",
-                        names.front(),
-                        Selection(join(names, "|")),
-                        help);
-      for (const std::string &n : names)
-        {
-          prm.enter_subsection(n);
-          MaterialRegistry::instance().create(n)->declare_parameters(prm);
-          prm.leave_subsection();
-        }
-    }
-    prm.leave_subsection();
+    for (unsigned int group = 0; group < n_material_groups; ++group)
+      {
+        prm.enter_subsection(material_section(group));
+        if (group > 0)
+          prm.declare_entry("Use",
+                            "false",
+                            Bool(),
+                            "Give the beams of material group " +
+                              std::to_string(group) +
+                              " of a network this material instead of "
+                              "that of subsection Material. [-]");
+        const std::vector<std::string> names =
+          MaterialRegistry::instance().names();
+        std::string help = "Constitutive law of the rods:";
+        for (const std::string &n : names)
+          help += " \"" + n +
+                  "\": " + MaterialRegistry::instance().description(n) + ".";
+        prm.declare_entry("Model",
+                          names.front(),
+                          Selection(join(names, "|")),
+                          help);
+        for (const std::string &n : names)
+          {
+            prm.enter_subsection(n);
+            MaterialRegistry::instance().create(n)->declare_parameters(prm);
+            prm.leave_subsection();
+          }
+        prm.leave_subsection();
+      }
 
     prm.enter_subsection("Supports");
     {
@@ -210,6 +290,13 @@ namespace rodnet
                         "Position components held at zero displacement: "
                         "\"<vertex>: <components>; ...\", e.g. \"mid: z; "
                         "end: y z\". [-]");
+      prm.declare_entry(
+        "Prescribed rotations",
+        "",
+        Anything(),
+        "Rotations of clamped junctions reached at load factor 1 and ramped "
+        "with it: \"<junction>: <ax>,<ay>,<az> <angle>; ...\" (angle in "
+        "degrees about the axis). [deg]");
       prm.declare_entry("Prescribed displacements",
                         "",
                         Anything(),
@@ -231,6 +318,12 @@ namespace rodnet
                         Anything(),
                         "Dead forces at load factor 1: \"<vertex>: fx, fy, fz; "
                         "...\". [N]");
+      prm.declare_entry("Moments",
+                        "",
+                        Anything(),
+                        "Moments about fixed axes at junctions with a free "
+                        "rotation, at load factor 1: \"<junction>: "
+                        "<ax>,<ay>,<az> <M>; ...\". [N m]");
       prm.declare_entry("Distributed force",
                         "0, 0, 0",
                         vector_pattern,
@@ -334,6 +427,13 @@ namespace rodnet
   {
     prm.enter_subsection("Geometry");
     {
+      // File names are relative to the scene file.
+      const auto resolve = [&](std::string file, const std::string &entry) {
+        if (file.empty())
+          throw std::invalid_argument("entry \"Geometry/" + entry +
+                                      "\" is empty but the generator needs it");
+        return file[0] == '/' ? file : scene_directory + "/" + file;
+      };
       const std::string  generator = prm.get("Generator");
       const unsigned int n         = prm.get_integer("Segments");
       const double       degree    = M_PI / 180;
@@ -388,45 +488,72 @@ namespace rodnet
             }
           rod_points.push_back(generators::polyline(corners, n));
         }
-      else
+      else if (generator == "gmsh")
         {
-          std::string file = prm.get("Mesh file");
-          if (file.empty())
-            throw std::invalid_argument(
-              "entry \"Geometry/Mesh file\" is empty but Generator = gmsh");
-          if (file[0] != '/')
-            file = scene_directory + "/" + file;
-          for (const RodChain &chain : read_gmsh_rods(file))
+          for (const RodChain &chain :
+               read_gmsh_rods(resolve(prm.get("Mesh file"), "Mesh file")))
             {
               rod_points.push_back(chain.points);
               rod_closed.push_back(chain.closed);
             }
         }
+      else
+        {
+          const double a     = prm.get_double("Beam length");
+          const auto   cells = dealii::Utilities::string_to_int(
+            dealii::Utilities::split_string_list(prm.get("Cells"), ','));
+          if (generator == "frame")
+            graph = network_generators::right_angle_frame(a);
+          else if (generator == "windmill")
+            graph = network_generators::windmill(a);
+          else if (generator == "square lattice")
+            graph = network_generators::square_lattice(cells[0], cells[1], a);
+          else if (generator == "hexagonal lattice")
+            graph =
+              network_generators::hexagonal_lattice(cells[0], cells[1], a);
+          else if (generator == "network file")
+            graph = read_network_file(
+              resolve(prm.get("Network file"), "Network file"));
+          else
+            graph =
+              read_gmsh_network(resolve(prm.get("Mesh file"), "Mesh file"));
+          segments_per_beam = n;
+        }
       rod_closed.resize(rod_points.size(), generator == "ring");
+      ghost_spin = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
+                                                      GhostSpin::small_rotation;
     }
     prm.leave_subsection();
 
-    prm.enter_subsection("Material");
-    {
-      const std::string name = prm.get("Model");
-      auto              m    = MaterialRegistry::instance().create(name);
-      prm.enter_subsection(name);
-      m->parse_parameters(prm);
-      prm.leave_subsection();
-      material = std::move(m);
-    }
-    prm.leave_subsection();
+    for (unsigned int group = 0; group < n_material_groups; ++group)
+      {
+        prm.enter_subsection(material_section(group));
+        if (group == 0 || prm.get_bool("Use"))
+          {
+            const std::string name = prm.get("Model");
+            auto              m    = MaterialRegistry::instance().create(name);
+            prm.enter_subsection(name);
+            m->parse_parameters(prm);
+            prm.leave_subsection();
+            group_materials.push_back(std::move(m));
+          }
+        else
+          group_materials.push_back(group_materials.front());
+        prm.leave_subsection();
+      }
 
     prm.enter_subsection("Supports");
     clamped_ends             = prm.get("Clamped ends");
     pinned_vertices          = prm.get("Pinned vertices");
     fixed_components         = prm.get("Fixed components");
     prescribed_displacements = prm.get("Prescribed displacements");
+    prescribed_rotations     = prm.get("Prescribed rotations");
     prm.leave_subsection();
 
     prm.enter_subsection("Loads");
     solver.n_steps    = prm.get_integer("Steps");
     point_forces      = prm.get("Point forces");
+    moments           = prm.get("Moments");
     distributed_force = get_vector(prm, "Distributed force");
     gravity           = get_vector(prm, "Gravity");
     mass_per_length   = prm.get_double("Mass per length");
@@ -455,18 +582,64 @@ namespace rodnet
   std::unique_ptr<RodModel>
   Scene::build_model() const
   {
-    auto network = std::make_unique<RodNetwork>();
-    for (unsigned int r = 0; r < rod_points.size(); ++r)
-      network->add_rod(rod_points[r],
-                       rod_closed[r],
-                       director_hint,
-                       hinge_kernel);
-    network->create_triangulation();
+    std::unique_ptr<RodNetwork>                     network;
+    std::vector<std::shared_ptr<const RodMaterial>> materials;
+    if (graph)
+      {
+        BuiltNetwork built =
+          build_rod_network(*graph, segments_per_beam, hinge_kernel);
+        network = std::move(built.network);
+        for (const unsigned int group : built.rod_group)
+          {
+            if (group >= group_materials.size())
+              throw std::invalid_argument(
+                "the network has material group " + std::to_string(group) +
+                "; scenes define groups 0 to " +
+                std::to_string(group_materials.size() - 1));
+            materials.push_back(group_materials[group]);
+          }
+      }
+    else
+      {
+        network = std::make_unique<RodNetwork>();
+        for (unsigned int r = 0; r < rod_points.size(); ++r)
+          network->add_rod(rod_points[r],
+                           rod_closed[r],
+                           director_hint,
+                           hinge_kernel);
+        network->create_triangulation();
+        materials.assign(network->rods().size(), group_materials.front());
+      }
     const unsigned int n_rods = network->rods().size();
-    auto               model  = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>(n_rods, material));
+    auto               model =
+      std::make_unique<RodModel>(std::move(network), materials, ghost_spin);
     const RodNetwork &net = model->network();
+
+    const auto junction = [&net](const std::string &name,
+                                 const std::string &entry) {
+      try
+        {
+          return net.junction_index(name);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw std::invalid_argument("entry \"" + entry + "\": " + e.what());
+        }
+    };
+    for (const auto &[name, value] :
+         split_items(prescribed_rotations, "Supports/Prescribed rotations"))
+      {
+        const std::string entry    = "Supports/Prescribed rotations";
+        const auto [axis, degrees] = parse_axis_value(value, entry);
+        model->prescribe_rotation(junction(name, entry),
+                                  axis,
+                                  degrees * M_PI / 180);
+      }
+    for (const auto &[name, value] : split_items(moments, "Loads/Moments"))
+      {
+        const auto [axis, moment] = parse_axis_value(value, "Loads/Moments");
+        model->add_moment(junction(name, "Loads/Moments"), axis, moment);
+      }
 
     for (const std::string &end :
          dealii::Utilities::split_string_list(clamped_ends, ','))

@@ -3,11 +3,13 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <core/rod_graph.h>
 #include <core/rod_model.h>
 #include <io/probes.h>
 #include <solvers/static_solver.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,13 +52,19 @@ namespace rodnet
     bool                     plot         = true;
 
   private:
-    std::vector<std::vector<Vector3>>  rod_points;
-    std::vector<bool>                  rod_closed;
-    Vector3                            director_hint;
-    std::string                        hinge_kernel;
-    std::shared_ptr<const RodMaterial> material;
+    std::vector<std::vector<Vector3>> rod_points;
+    std::vector<bool>                 rod_closed;
+    Vector3                           director_hint;
+    std::string                       hinge_kernel;
+    /// Networks: the beams and junctions, built into rods by build_model().
+    std::optional<RodGraph> graph;
+    unsigned int            segments_per_beam = 1;
+    GhostSpin               ghost_spin        = GhostSpin::exact;
+    /// Material of each material group (group 0: every plain rod).
+    std::vector<std::shared_ptr<const RodMaterial>> group_materials;
     std::string clamped_ends, pinned_vertices, fixed_components,
-      prescribed_displacements, point_forces, probe_text;
+      prescribed_displacements, prescribed_rotations, point_forces, moments,
+      probe_text;
     Vector3 distributed_force, gravity;
     double  mass_per_length;
   };

@@ -52,6 +52,16 @@ namespace rodnet
                 const std::string &text,
                 const std::string &entry)
   {
+    const std::string trimmed = dealii::Utilities::trim(text);
+    if (!trimmed.empty() && trimmed[0] == '@')
+      try
+        {
+          return network.named_vertex(trimmed.substr(1));
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw std::invalid_argument("entry \"" + entry + "\": " + e.what());
+        }
     const auto [rod_index, where] = split_rod(network, text, entry);
     const Rod &rod                = network.rods()[rod_index];
     const int  n                  = rod.vertices.size();

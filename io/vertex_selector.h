@@ -11,7 +11,8 @@ namespace rodnet
    * Resolves a vertex named in a scene to a triangulation vertex. Syntax:
    * `[rod:]where`, where `rod` is a rod index (default 0) and `where` is
    * `start`, `end`, `mid` (the middle vertex), or a vertex index along the
-   * rod, negative counting from the end (-1 = last). Throws
+   * rod, negative counting from the end (-1 = last); or `@name`, a vertex
+   * the network named (junctions, network nodes). Throws
    * std::invalid_argument naming @p entry and the text for anything else.
    */
   unsigned int

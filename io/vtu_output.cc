@@ -171,11 +171,20 @@ namespace rodnet
         twist_rate[vertex_scalar_index[vertex]]   = kappa[2];
       }
 
+    // The DoFHandler's part of u, with the position of every rod end at a
+    // junction filled in from the DoFs it shares.
+    const DofLayout       &layout = model.layout();
+    dealii::Vector<double> fields(layout.n_field_dofs());
+    for (unsigned int i = 0; i < fields.size(); ++i)
+      fields[i] = u[i];
+    for (const auto &[copy, source] : layout.shared_copies())
+      fields[copy] = u[source];
+
     dealii::DataOut<1, 3> data_out;
     data_out.attach_triangulation(tria);
     data_out.add_data_vector(
-      model.layout().dof_handler(),
-      u,
+      layout.dof_handler(),
+      fields,
       {"displacement", "displacement", "displacement", "twist"},
       {component_is_part_of_vector,
        component_is_part_of_vector,

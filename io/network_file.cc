@@ -1,0 +1,177 @@
+#include <io/network_file.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// The tokens of one statement and where it stands, for messages.
+    struct Statement
+    {
+      std::string              where; ///< "file:line"
+      std::vector<std::string> tokens;
+
+      [[noreturn]] void
+      fail(const std::string &message) const
+      {
+        throw std::invalid_argument(where + ": " + message);
+      }
+
+      const std::string &
+      token(const std::size_t i, const char *what) const
+      {
+        if (i >= tokens.size())
+          fail("\"" + tokens[0] + "\" is missing " + what);
+        return tokens[i];
+      }
+
+      double
+      number(const std::size_t i, const char *what) const
+      {
+        const std::string &t = token(i, what);
+        char              *end;
+        errno          = 0;
+        const double x = std::strtod(t.c_str(), &end);
+        if (end == t.c_str() || *end != '\0' || errno == ERANGE ||
+            !std::isfinite(x))
+          fail("\"" + t + "\" is not a number (" + what + ")");
+        return x;
+      }
+
+      Vector3
+      vector(const std::size_t i, const char *what) const
+      {
+        return Vector3(number(i, what),
+                       number(i + 1, what),
+                       number(i + 2, what));
+      }
+    };
+
+    std::optional<JunctionKind>
+    parse_kind(const Statement &s, const std::size_t i)
+    {
+      if (i >= s.tokens.size())
+        return std::nullopt;
+      // The file spells the kinds without blanks, which split tokens.
+      std::string name = s.tokens[i];
+      std::replace(name.begin(), name.end(), '-', ' ');
+      try
+        {
+          return junction_kind_from_string(name);
+        }
+      catch (const std::invalid_argument &)
+        {
+          s.fail("unknown node kind \"" + s.tokens[i] +
+                 "\"; known kinds: welded, pinned, clamped, "
+                 "welded-and-pinned");
+        }
+    }
+
+    /// A beam line waits for the end of the file: nodes may come later.
+    struct PendingBeam
+    {
+      Statement   statement;
+      std::string from, to;
+    };
+  } // namespace
+
+  RodGraph
+  read_network_file(const std::string &path)
+  {
+    std::ifstream in(path);
+    if (!in)
+      throw std::invalid_argument("cannot open the network file \"" + path +
+                                  "\"");
+    RodGraph graph;
+    // Node name -> (index, line): beams look their nodes up here, and a
+    // duplicate points to the first declaration.
+    std::map<std::string, std::pair<unsigned int, unsigned int>> node_lookup;
+    std::vector<PendingBeam>                                     beams;
+    std::string                                                  line;
+    for (unsigned int number = 1; std::getline(in, line); ++number)
+      {
+        Statement s;
+        s.where = path + ":" + std::to_string(number);
+        std::istringstream words(line.substr(0, line.find('#')));
+        for (std::string w; words >> w;)
+          s.tokens.push_back(w);
+        if (s.tokens.empty())
+          continue;
+
+        if (s.tokens[0] == "node")
+          {
+            RodGraph::Node node;
+            node.name     = s.token(1, "a node name");
+            node.position = s.vector(2, "a coordinate x y z");
+            node.kind     = parse_kind(s, 5);
+            if (s.tokens.size() > 6)
+              s.fail("unexpected \"" + s.tokens[6] + "\" after the node");
+            const auto [it, inserted] =
+              node_lookup.emplace(node.name,
+                                  std::pair(graph.nodes.size(), number));
+            if (!inserted)
+              s.fail("node \"" + node.name +
+                     "\" is declared twice (first on line " +
+                     std::to_string(it->second.second) + ")");
+            graph.nodes.push_back(node);
+          }
+        else if (s.tokens[0] == "beam")
+          {
+            PendingBeam beam{s,
+                             s.token(1, "the name of its first node"),
+                             s.token(2, "the name of its second node")};
+            beams.push_back(beam);
+          }
+        else
+          s.fail("unknown keyword \"" + s.tokens[0] +
+                 "\"; a line is \"node ...\" or \"beam ...\"");
+      }
+
+    for (const PendingBeam &pending : beams)
+      {
+        const Statement &s    = pending.statement;
+        const auto       node = [&](const std::string &name) {
+          const auto it = node_lookup.find(name);
+          if (it == node_lookup.end())
+            s.fail("unknown node \"" + name + "\"");
+          return it->second.first;
+        };
+        RodGraph::Beam beam;
+        beam.from      = node(pending.from);
+        beam.to        = node(pending.to);
+        bool has_group = false, has_d1 = false;
+        for (std::size_t i = 3; i < s.tokens.size();)
+          if (s.tokens[i] == "group" && !has_group)
+            {
+              const std::string &g = s.token(i + 1, "the group number");
+              if (g.find_first_not_of("0123456789") != std::string::npos ||
+                  g.size() > 9)
+                s.fail("\"" + g + "\" is not a group number (an integer >= 0)");
+              beam.group = std::stoul(g);
+              has_group  = true;
+              i += 2;
+            }
+          else if (s.tokens[i] == "d1" && !has_d1)
+            {
+              beam.director_hint = s.vector(i + 1, "a director d1 x y z");
+              has_d1             = true;
+              i += 4;
+            }
+          else
+            s.fail("unexpected \"" + s.tokens[i] +
+                   "\"; a beam takes \"group <g>\" and \"d1 <x> <y> <z>\", "
+                   "each at most once");
+        graph.beams.push_back(beam);
+      }
+    return graph;
+  }
+} // namespace rodnet
