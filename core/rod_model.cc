@@ -99,6 +99,19 @@ namespace rodnet
   }
 
   void
+  RodModel::prescribe_rotation(const unsigned int junction,
+                               const Quaternion  &rotation)
+  {
+    if (!(std::abs(rotation.norm() - 1.0) < 1e-9))
+      throw std::invalid_argument("prescribed rotation of junction " +
+                                  std::to_string(junction) +
+                                  ": the quaternion has norm " +
+                                  std::to_string(rotation.norm()) + ", not 1");
+    const Eigen::AngleAxisd angle_axis(rotation);
+    prescribe_rotation(junction, angle_axis.axis(), angle_axis.angle());
+  }
+
+  void
   RodModel::reset_reference(VectorType &u)
   {
     configuration_->reset_reference(u);

@@ -107,6 +107,11 @@ namespace rodnet
     prescribe_rotation(unsigned int   junction,
                        const Vector3 &axis,
                        double         angle);
+
+    /// As above, the rotation at load factor 1 given as a unit quaternion
+    /// (a non-unit one is refused: it is not a rotation).
+    void
+    prescribe_rotation(unsigned int junction, const Quaternion &rotation);
     /// @}
 
     /// Builds constraints, sparsity pattern, matrices and vectors.

@@ -173,9 +173,25 @@ namespace rodnet
     status->addStatusTest(converged);
     status->addStatusTest(max_iterations);
 
-    RCP<NOX::Solver::Generic> solver =
-      NOX::Solver::buildSolver(group, status, nox_parameters);
-    const NOX::StatusTest::StatusType outcome = solver->solve();
+    RCP<NOX::Solver::Generic>   solver;
+    NOX::StatusTest::StatusType outcome = NOX::StatusTest::Failed;
+    try
+      {
+        solver  = NOX::Solver::buildSolver(group, status, nox_parameters);
+        outcome = solver->solve();
+      }
+    catch (...)
+      {
+        // NOX reports a residual or tangent our interface could not
+        // compute by throwing a C string ("fill failed"); the reason is the
+        // exception our interface recorded. x keeps the initial guess.
+        Result result;
+        result.failure       = interface->failure.empty() ?
+                                 "the nonlinear solver aborted" :
+                                 interface->failure;
+        result.residual_norm = NAN;
+        return result;
+      }
 
     const auto &final_group =
       dynamic_cast<const NOX::Epetra::Group &>(solver->getSolutionGroup());

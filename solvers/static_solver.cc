@@ -1,5 +1,8 @@
 #include <deal.II/base/timer.h>
 
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+
 #include <solvers/stability.h>
 #include <solvers/static_solver.h>
 
@@ -25,7 +28,8 @@ namespace rodnet
   NewtonSolver::Result
   StaticSolver::solve_at(VectorType       &u,
                          const double      load_factor,
-                         const VectorType *extra_force)
+                         const VectorType *extra_force,
+                         const VectorType *scale_state)
   {
     model.apply_boundary_values(u, load_factor);
     NewtonSolver::Problem problem;
@@ -43,8 +47,16 @@ namespace rodnet
     double     floor = 0;
     try
       {
+        if (scale_state != nullptr)
+          {
+            VectorType start = *scale_state;
+            model.apply_boundary_values(start, load_factor);
+            model.assemble(start, load_factor, &r, nullptr, true, extra_force);
+            scale = std::max(scale, r.l2_norm());
+          }
         model.assemble(u, load_factor, &r, &tangent, true, extra_force);
-        scale = std::max(scale, r.l2_norm());
+        if (scale_state == nullptr)
+          scale = std::max(scale, r.l2_norm());
         floor = roundoff_floor();
       }
     catch (const std::exception &e)
@@ -58,6 +70,45 @@ namespace rodnet
                                  floor,
                                  std::numeric_limits<double>::min()});
     return NewtonSolver(newton).solve(problem, u, tangent);
+  }
+
+  bool
+  StaticSolver::linear_prediction(const VectorType &u,
+                                  const double      load_factor,
+                                  VectorType       &trial)
+  {
+    VectorType moved = u;
+    model.apply_boundary_values(moved, load_factor);
+    VectorType prescribed_change = moved;
+    prescribed_change -= u;
+    if (prescribed_change.linfty_norm() == 0)
+      return false;
+    try
+      {
+        if (unconstrained_tangent.m() == 0)
+          model.initialize_matrix(unconstrained_tangent);
+        VectorType r = model.create_vector();
+        model.assemble(u, load_factor, &r, &unconstrained_tangent, false);
+        // K_ff du_f = -r_f - K_fc du_c, with du_c the prescribed change.
+        VectorType rhs = model.create_vector();
+        unconstrained_tangent.vmult(rhs, prescribed_change);
+        rhs += r;
+        rhs *= -1.0;
+        model.constraints().set_zero(rhs);
+        model.assemble(u, load_factor, nullptr, &tangent, true);
+        VectorType                             du = model.create_vector();
+        dealii::SolverControl                  control(1, 0);
+        dealii::TrilinosWrappers::SolverDirect direct(control);
+        direct.solve(tangent, du, rhs);
+        trial = moved;
+        trial += du;
+        return std::isfinite(trial.l2_norm());
+      }
+    catch (const std::exception &)
+      {
+        // A tangent that cannot be built or factored: start unpredicted.
+        return false;
+      }
   }
 
   double
@@ -95,18 +146,51 @@ namespace rodnet
     unsigned int count               = 0;
     double       previous_eigenvalue = std::nan("");
     VectorType   previous            = u;
+    // Change of the state over the last converged step (of length
+    // last_step), quaternion increments included: they are zeroed by the
+    // reference reset, so they are taken before it.
+    VectorType increment = u;
+    increment            = 0;
+    double last_step     = 0;
 
     while (lambda < 1.0 - 1e-12)
       {
         dealii::Timer timer;
         // Cut steps never skip a point of the nominal grid k / n_steps, so
-        // that outputs land on the loads the scene asked for.
+        // that outputs land on the loads the scene asked for; a target within
+        // rounding of a grid point is snapped to it, or the sum of cut steps
+        // would stop just short of it and leave a sliver of a step.
+        const double snap = 1e-6 * nominal;
         const double next_grid =
-          (std::floor(lambda / nominal + 1e-9) + 1) * nominal;
-        step = std::min(step, std::min(next_grid, 1.0) - lambda);
-        const double         target = lambda + step;
-        VectorType           trial  = u;
-        NewtonSolver::Result result = solve_at(trial, target);
+          std::min((std::floor((lambda + snap) / nominal) + 1) * nominal, 1.0);
+        const double target =
+          lambda + step > next_grid - snap ? next_grid : lambda + step;
+        step                       = target - lambda;
+        VectorType           trial = u;
+        NewtonSolver::Result result;
+        if (parameters.extrapolate && last_step > 0)
+          {
+            // Displacement-driven steps move only the prescribed DoFs at
+            // first; starting from the last increment, scaled to this step,
+            // keeps the first iterate near equilibrium as the mesh is
+            // refined. If that start fails, the plain one is tried.
+            trial.add(step / last_step, increment);
+            result = solve_at(trial, target, nullptr, &u);
+            if (!result.converged)
+              trial = u;
+          }
+        else if (last_step == 0 && linear_prediction(u, target, trial))
+          {
+            // No increment to follow yet (first step, or after a branch
+            // switch), but prescribed DoFs move: let the free ones follow
+            // them to first order.
+            result = solve_at(trial, target, nullptr, &u);
+            if (!result.converged)
+              trial = u;
+          }
+        if (!result.converged)
+          result = solve_at(trial, target);
+        bool followed_mode = false;
         if (!result.converged && parameters.branch_switch_amplitude > 0)
           {
             // Past a bifurcation the Newton step from the previous state
@@ -124,6 +208,7 @@ namespace rodnet
               {
                 trial                 = start;
                 result                = NewtonSolver::Result{true, 0, 0, ""};
+                followed_mode         = true;
                 model.configuration() = previous_configuration;
                 if (log != nullptr)
                   *log << "  step to load factor " << target
@@ -149,8 +234,11 @@ namespace rodnet
           }
 
         const Configuration stable_configuration = model.configuration();
-        previous                                 = u;
-        u                                        = trial;
+        increment                                = trial;
+        increment -= u;
+        last_step = followed_mode ? 0 : step;
+        previous  = u;
+        u         = trial;
         model.reset_reference(u);
 
         StepInfo info;
@@ -194,6 +282,8 @@ namespace rodnet
                                target,
                                model.assemble(u, target, nullptr, nullptr),
                                info.lowest_eigenvalue);
+            // The switch jumps between branches: no increment to follow.
+            last_step = 0;
             if (log != nullptr)
               *log << "  unstable equilibrium (lowest eigenvalue " << unstable
                    << "): "

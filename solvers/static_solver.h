@@ -22,11 +22,11 @@ namespace rodnet
   /**
    * Static equilibrium by load stepping: the load factor goes from 0 to 1
    * in equal steps, each solved by NewtonSolver from the previous
-   * equilibrium; a failed step is halved until it converges or falls below
-   * the minimum. After every converged step the reference configuration is
-   * reset and the observer is called. Optionally tracks the lowest
-   * eigenvalue of the constrained tangent and locates the load factor where
-   * it first crosses zero by bisection.
+   * equilibrium extrapolated along the last increment; a failed step is halved
+   * until it converges or falls below the minimum. After every converged step
+   * the reference configuration is reset and the observer is called. Optionally
+   * tracks the lowest eigenvalue of the constrained tangent and locates the
+   * load factor where it first crosses zero by bisection.
    */
   class StaticSolver
   {
@@ -39,7 +39,11 @@ namespace rodnet
       /// Newton converges when |residual| <= tolerance * max(|lambda f|,
       /// |initial residual of the step|), or below the rounding-error floor
       /// eps * max|K_ii| * L * sqrt(n_dofs), whichever is larger.
-      double                   relative_tolerance = 1e-9;
+      double relative_tolerance = 1e-9;
+      /// Start each step from the previous state plus the last converged
+      /// increment scaled to the step (falling back to the previous state
+      /// if Newton fails from there).
+      bool                     extrapolate = true;
       NewtonSolver::Parameters newton;
       bool                     track_lowest_eigenvalue = false;
       bool                     find_critical_load      = false;
@@ -91,11 +95,19 @@ namespace rodnet
     lowest_eigenvalue(const VectorType &u, double load_factor);
 
   private:
-    /// Newton from @p u at @p load_factor; @p u holds the result.
+    /**
+     * Newton from @p u at @p load_factor; @p u holds the result. The force
+     * scale of the tolerance is the larger of the applied load and the
+     * residual at @p u, or at @p scale_state instead if given: the
+     * unextrapolated start, so that the predictor changes neither way the
+     * tolerance (a good prediction would tighten it, one that stretches
+     * stiff segments would loosen it).
+     */
     NewtonSolver::Result
     solve_at(VectorType       &u,
              double            load_factor,
-             const VectorType *extra_force = nullptr);
+             const VectorType *extra_force = nullptr,
+             const VectorType *scale_state = nullptr);
 
     /**
      * Newton at @p load_factor from @p u displaced both ways along the
@@ -110,6 +122,18 @@ namespace rodnet
                      double      load_factor,
                      double      energy_bound,
                      double     &eigenvalue);
+
+    /**
+     * Start for a step to @p load_factor from the equilibrium @p u that has
+     * no previous increment to extrapolate: the prescribed DoFs move to
+     * their values and the free ones follow by one solve with the tangent
+     * at @p u. Returns false (and leaves @p trial) when no prescribed DoF
+     * moves, since Newton's first iteration is then the same solve.
+     */
+    bool
+    linear_prediction(const VectorType &u,
+                      double            load_factor,
+                      VectorType       &trial);
 
     /// Smallest residual norm that rounding errors let the current state
     /// reach, from the tangent assembled last.
@@ -128,7 +152,9 @@ namespace rodnet
     Parameters    parameters;
     std::ostream *log;
     MatrixType    tangent;
-    double        critical_load = std::nan("");
+    /// Tangent without the support constraints, for linear_prediction().
+    MatrixType unconstrained_tangent;
+    double     critical_load = std::nan("");
   };
 } // namespace rodnet
 

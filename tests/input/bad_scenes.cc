@@ -134,9 +134,10 @@ namespace
 
   TEST(BadScene, SolverFailureKeepsEarlierSteps)
   {
-    // The elastica with four Newton iterations per step and no room to cut
-    // steps: the nearly linear pre-buckling steps converge, the step across
-    // the bifurcation cannot, and the run stops with exit code 2. Every
+    // The elastica with four Newton iterations per step, no predictor and
+    // no room to cut steps: the nearly linear pre-buckling steps converge,
+    // the step across the bifurcation cannot, and the run stops with exit
+    // code 2. Every
     // converged step is in probes.csv and has its VTU file.
     const Outcome o =
       run_driver("solver_failure",
@@ -152,6 +153,7 @@ namespace
                    "end\n"
                    "subsection Solver\n"
                    "  set Max iterations = 4\n"
+                   "  set Extrapolate = false\n"
                    "  set Minimum step fraction = 0.5\n"
                    "end\n"
                    "subsection Output\n"

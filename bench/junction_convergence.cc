@@ -1,0 +1,334 @@
+// Mesh convergence of the two junction examples of Lestringant & Kochmann
+// (section 3, Figs. 3-4), for the "simple" and "classic" hinge kernels.
+//
+// Frame (Fig. 3a): two legs of length 1 at a right angle in the plane
+// z = 0, clamped at the origin, welded at the corner; the free tip is moved
+// to u_z / L = 1 in 20 load steps and the reaction F L^2/EI read there.
+// N = 10 ... 320 segments per leg.
+//
+// Windmill (Fig. 3b): shaft of length 1 along z, three blades of length
+// 1/2 welded at the hub, blade tips pinned, shaft top clamped and turned by
+// tau_z = 1.5 rad in 15 load steps; the reaction moment M L_b/EI about e_z
+// at the top. n = 5 ... 80 segments per blade, 2n on the shaft.
+//
+// Both models are those of tests/validation/junctions.cc (frame_force,
+// windmill_moment); the stiffnesses and supports are repeated here because
+// the bench times the construction, which the test hides inside a solve.
+//
+// There is no closed form at these amplitudes. The reference of a study is
+// the Richardson extrapolation of its two finest "simple" runs with the
+// order observed on its three finest "simple" runs, p = log2(|f_{N/4} -
+// f_{N/2}| / |f_{N/2} - f_N|); the errors of both kernels are relative to
+// it. The time is the wall time from the model's construction to the
+// converged final state, median of the repeats after one untimed warm-up.
+// "steps" counts converged load steps (more than the nominal count when the
+// solver cut a step).
+//
+// Results go to frame_convergence.csv and windmill_convergence.csv in the
+// current directory; bench/junction_convergence.gp draws the charts.
+//
+// A run that fails (SolverFailure, or NOX giving up on a residual
+// evaluation) is reported and ends the refinement of that kernel.
+//
+// Usage: junction_convergence [--threads n] [--repeats n]
+// [--classic-levels n] (number of refinement levels run with the classic
+// kernel, from the coarsest; default all) [--frame-max N] [--windmill-max n]
+// (finest mesh of each study; 0 skips the study)
+#include <deal.II/base/mpi.h>
+
+#include <core/rod_generators.h>
+#include <core/rod_model.h>
+#include <materials/linear_elastic_rod.h>
+#include <solvers/static_solver.h>
+
+#include <bench/timing.h>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace rodnet;
+
+namespace
+{
+  struct Options
+  {
+    unsigned int threads        = 1;
+    unsigned int repeats        = 3;
+    unsigned int classic_levels = 100;
+    unsigned int frame_max      = 320;
+    unsigned int windmill_max   = 80;
+  };
+
+  Options
+  parse_options(int argc, char **argv)
+  {
+    Options options;
+    for (int i = 1; i + 1 < argc; i += 2)
+      {
+        const std::string  key   = argv[i];
+        const unsigned int value = std::stoul(argv[i + 1]);
+        if (key == "--threads")
+          options.threads = value;
+        else if (key == "--repeats")
+          options.repeats = std::max(1u, value);
+        else if (key == "--classic-levels")
+          options.classic_levels = value;
+        else if (key == "--frame-max")
+          options.frame_max = value;
+        else if (key == "--windmill-max")
+          options.windmill_max = value;
+        else
+          throw std::invalid_argument(
+            "unknown option " + key +
+            "; known: --threads, --repeats, --classic-levels, --frame-max, "
+            "--windmill-max");
+      }
+    return options;
+  }
+
+  std::shared_ptr<const RodMaterial>
+  elastic(const double EA, const double EI, const double GJ)
+  {
+    return std::make_shared<LinearElasticRod>(RodStiffness{EA, EI, EI, GJ});
+  }
+
+  struct Outcome
+  {
+    double       value      = 0;
+    unsigned int dofs       = 0;
+    unsigned int steps      = 0;
+    unsigned int iterations = 0;
+  };
+
+  /// Solves @p model in @p n_steps nominal load steps and counts what the
+  /// solver did.
+  VectorType
+  solve(RodModel &model, const unsigned int n_steps, Outcome &outcome)
+  {
+    model.finalize();
+    VectorType               u = model.create_vector();
+    StaticSolver::Parameters parameters;
+    parameters.n_steps = n_steps;
+    StaticSolver(model, parameters)
+      .run(u, [&](const StaticSolver::StepInfo &info, const VectorType &) {
+        ++outcome.steps;
+        outcome.iterations += info.iterations;
+      });
+    outcome.dofs = u.size();
+    return u;
+  }
+
+  /// The frame of Fig. 3a with @p n segments per leg: legs of length 1,
+  /// EI = 1, mu J = 2/3, A L^2/I = 400; the tip moved by u_z = 1.
+  Outcome
+  frame(const std::string &kernel, const unsigned int n)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::straight(Vector3(0, 0, 0),
+                                          Vector3(1, 0, 0),
+                                          n),
+                     false,
+                     Vector3::UnitZ(),
+                     kernel);
+    network->add_rod(generators::straight(Vector3(1, 0, 0),
+                                          Vector3(1, 1, 0),
+                                          n),
+                     false,
+                     Vector3::UnitZ(),
+                     kernel);
+    network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
+    network->add_junction("corner",
+                          JunctionKind::welded,
+                          {{0, false}, {1, true}});
+    const auto         material = elastic(400, 1, 2.0 / 3);
+    RodModel           model(std::move(network), {material, material});
+    const unsigned int tip = model.network().rods()[1].vertices.back();
+    model.fix_components("tip", tip, {{false, false, true}}, Vector3(0, 0, 1));
+    Outcome          outcome;
+    const VectorType u = solve(model, 20, outcome);
+    outcome.value      = model.reaction(model.support("tip"), u, 1.0)[2];
+    return outcome;
+  }
+
+  /// The windmill of Fig. 3b with @p n segments per blade and 2n on the
+  /// shaft: I = 1, E = 1, mu = E/3; shaft J = 200 I, A L_a^2/I = 400;
+  /// blades J = I, A L_b^2/I = 100; the top turned by 1.5 rad.
+  Outcome
+  windmill(const std::string &kernel, const unsigned int n)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::straight(Vector3(0, 0, 0),
+                                          Vector3(0, 0, 1),
+                                          2 * n),
+                     false,
+                     Vector3::UnitX(),
+                     kernel);
+    for (const double degrees : {90.0, 210.0, 330.0})
+      {
+        const double angle = degrees * M_PI / 180;
+        network->add_rod(generators::straight(
+                           Vector3(0, 0, 0),
+                           0.5 * Vector3(std::cos(angle), std::sin(angle), 0),
+                           n),
+                         false,
+                         Vector3::UnitZ(),
+                         kernel);
+      }
+    network->add_junction("hub",
+                          JunctionKind::welded,
+                          {{0, true}, {1, true}, {2, true}, {3, true}});
+    const unsigned int top =
+      network->add_junction("top", JunctionKind::clamped, {{0, false}});
+    const auto blade = elastic(400, 1, 1.0 / 3);
+    RodModel   model(std::move(network),
+                   {elastic(400, 1, 200.0 / 3), blade, blade, blade});
+    for (unsigned int b = 1; b <= 3; ++b)
+      model.fix_components("blade" + std::to_string(b),
+                           model.network().rods()[b].vertices.back(),
+                           {{true, true, true}});
+    model.prescribe_rotation(top, Vector3::UnitZ(), 1.5);
+    Outcome          outcome;
+    const VectorType u = solve(model, 15, outcome);
+    outcome.value      = model.reaction_moment(top, u, 1.0)[2];
+    return outcome;
+  }
+
+  struct Run
+  {
+    std::string  kernel;
+    unsigned int n;
+    Outcome      outcome;
+    double       time;
+  };
+
+  /// log2 of the ratio of successive differences of three values on meshes
+  /// halved in size each time.
+  double
+  observed_order(const double coarse, const double middle, const double fine)
+  {
+    return std::log2(std::abs(middle - coarse) / std::abs(fine - middle));
+  }
+
+  void
+  study(const std::string               &name,
+        const std::string               &quantity,
+        const std::vector<unsigned int> &sizes,
+        Outcome (*model)(const std::string &, const unsigned int),
+        const Options &options)
+  {
+    std::cout << "\n"
+              << name << ": " << quantity << ", median of " << options.repeats
+              << " repeats, " << options.threads << " thread(s)\n";
+    std::vector<Run> runs;
+    for (const std::string kernel : {"simple", "classic"})
+      for (unsigned int level = 0; level < sizes.size(); ++level)
+        {
+          if (kernel == "classic" && level >= options.classic_levels)
+            {
+              std::cout << "  " << kernel << " N " << sizes[level]
+                        << ": skipped (--classic-levels)\n";
+              continue;
+            }
+          Run run{kernel, sizes[level], {}, 0};
+          try
+            {
+              run.time = bench::statistics(
+                           bench::time_repeats(options.repeats,
+                                               [&] {
+                                                 run.outcome =
+                                                   model(kernel, sizes[level]);
+                                               }))
+                           .median;
+            }
+          catch (const std::exception &e)
+            {
+              std::cout << "  " << kernel << " N " << sizes[level]
+                        << ": failed (" << e.what() << ")\n";
+              break;
+            }
+          catch (...)
+            {
+              // NOX throws a C string when a residual evaluation fails.
+              std::cout << "  " << kernel << " N " << sizes[level]
+                        << ": failed (NOX: residual evaluation failed)\n";
+              break;
+            }
+          std::printf("  %-7s N %4u  dofs %6u  value %.10f  steps %3u  "
+                      "Newton iterations %4u  time %.3g s\n",
+                      kernel.c_str(),
+                      run.n,
+                      run.outcome.dofs,
+                      run.outcome.value,
+                      run.outcome.steps,
+                      run.outcome.iterations,
+                      run.time);
+          std::fflush(stdout);
+          runs.push_back(run);
+        }
+
+    // Richardson extrapolation on the three finest "simple" runs.
+    std::size_t m = 0;
+    while (m < runs.size() && runs[m].kernel == "simple")
+      ++m;
+    AssertThrow(m >= 3,
+                dealii::ExcMessage(name + ": fewer than three simple runs"));
+    const double f0 = runs[m - 3].outcome.value, f1 = runs[m - 2].outcome.value,
+                 f2        = runs[m - 1].outcome.value;
+    const double p         = observed_order(f0, f1, f2);
+    const double reference = f2 + (f2 - f1) / (std::pow(2.0, p) - 1);
+    std::printf("  observed order (simple, N = %u, %u, %u): %.3f; "
+                "Richardson reference %.10f\n",
+                runs[m - 3].n,
+                runs[m - 2].n,
+                runs[m - 1].n,
+                p,
+                reference);
+
+    std::ofstream csv(name + "_convergence.csv");
+    csv.precision(10);
+    csv << "kernel,N,dofs,value,rel_error,time_s,steps\n";
+    for (const Run &run : runs)
+      csv << run.kernel << ',' << run.n << ',' << run.outcome.dofs << ','
+          << run.outcome.value << ','
+          << std::abs(run.outcome.value - reference) / std::abs(reference)
+          << ',' << run.time << ',' << run.outcome.steps << '\n';
+    std::cout << "  wrote " << name << "_convergence.csv" << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      const Options options = parse_options(argc, argv);
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
+      const auto up_to = [](const unsigned int coarsest,
+                            const unsigned int finest) {
+        std::vector<unsigned int> sizes;
+        for (unsigned int n = coarsest; n <= finest; n *= 2)
+          sizes.push_back(n);
+        return sizes;
+      };
+      if (options.frame_max > 0)
+        study("frame",
+              "F L^2/EI at u_z/L = 1, 20 load steps",
+              up_to(10, options.frame_max),
+              frame,
+              options);
+      if (options.windmill_max > 0)
+        study("windmill",
+              "M L_b/EI at tau_z = 1.5 rad, 15 load steps",
+              up_to(5, options.windmill_max),
+              windmill,
+              options);
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "junction_convergence: " << e.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}
