@@ -363,13 +363,14 @@ namespace rodnet
                         "Converged when the residual force norm is below this "
                         "times the applied load norm (or the step's initial "
                         "residual). [-]");
-      prm.declare_entry("Extrapolate",
+      prm.declare_entry("Predictor",
                         "true",
                         Bool(),
-                        "Start each load step from the last converged state "
-                        "plus the last increment scaled to the step, instead "
-                        "of from the last state; keeps displacement-driven "
-                        "steps converging on fine meshes. [-]");
+                        "Start each load step from a prediction: the last "
+                        "converged increment scaled to the step, or on the "
+                        "first step the linear response to the prescribed "
+                        "displacements. Keeps displacement-driven steps "
+                        "converging on fine meshes. [-]");
       prm.declare_entry("Minimum step fraction",
                         "0.0009765625",
                         Double(0, 1),
@@ -571,7 +572,7 @@ namespace rodnet
     solver.newton.max_iterations   = prm.get_integer("Max iterations");
     solver.relative_tolerance      = prm.get_double("Relative tolerance");
     solver.min_step_fraction       = prm.get_double("Minimum step fraction");
-    solver.extrapolate             = prm.get_bool("Extrapolate");
+    solver.predict                 = prm.get_bool("Predictor");
     solver.find_critical_load      = prm.get_bool("Critical load search");
     solver.critical_load_tolerance = prm.get_double("Critical load tolerance");
     solver.branch_switch_amplitude =

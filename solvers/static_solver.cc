@@ -168,25 +168,22 @@ namespace rodnet
         step                       = target - lambda;
         VectorType           trial = u;
         NewtonSolver::Result result;
-        if (parameters.extrapolate && last_step > 0)
+        if (parameters.predict)
           {
-            // Displacement-driven steps move only the prescribed DoFs at
-            // first; starting from the last increment, scaled to this step,
-            // keeps the first iterate near equilibrium as the mesh is
-            // refined. If that start fails, the plain one is tried.
-            trial.add(step / last_step, increment);
-            result = solve_at(trial, target, nullptr, &u);
-            if (!result.converged)
-              trial = u;
-          }
-        else if (last_step == 0 && linear_prediction(u, target, trial))
-          {
-            // No increment to follow yet (first step, or after a branch
-            // switch), but prescribed DoFs move: let the free ones follow
-            // them to first order.
-            result = solve_at(trial, target, nullptr, &u);
-            if (!result.converged)
-              trial = u;
+            // With an increment to follow, extrapolate it; without one
+            // (first step, after a branch switch) let the free DoFs follow
+            // the prescribed ones to first order. Displacement-driven steps
+            // otherwise move only the prescribed DoFs in the first iterate,
+            // a strain concentrated in one segment that grows with N.
+            const bool predicted =
+              last_step > 0 ? (trial.add(step / last_step, increment), true) :
+                              linear_prediction(u, target, trial);
+            if (predicted)
+              {
+                result = solve_at(trial, target, nullptr, &u);
+                if (!result.converged)
+                  trial = u;
+              }
           }
         if (!result.converged)
           result = solve_at(trial, target);

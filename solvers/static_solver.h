@@ -22,11 +22,11 @@ namespace rodnet
   /**
    * Static equilibrium by load stepping: the load factor goes from 0 to 1
    * in equal steps, each solved by NewtonSolver from the previous
-   * equilibrium extrapolated along the last increment; a failed step is halved
-   * until it converges or falls below the minimum. After every converged step
-   * the reference configuration is reset and the observer is called. Optionally
-   * tracks the lowest eigenvalue of the constrained tangent and locates the
-   * load factor where it first crosses zero by bisection.
+   * equilibrium moved by a predictor (see Parameters::predict); a failed step
+   * is halved until it converges or falls below the minimum. After every
+   * converged step the reference configuration is reset and the observer is
+   * called. Optionally tracks the lowest eigenvalue of the constrained tangent
+   * and locates the load factor where it first crosses zero by bisection.
    */
   class StaticSolver
   {
@@ -40,10 +40,11 @@ namespace rodnet
       /// |initial residual of the step|), or below the rounding-error floor
       /// eps * max|K_ii| * L * sqrt(n_dofs), whichever is larger.
       double relative_tolerance = 1e-9;
-      /// Start each step from the previous state plus the last converged
-      /// increment scaled to the step (falling back to the previous state
-      /// if Newton fails from there).
-      bool                     extrapolate = true;
+      /// Start each step from a prediction: the previous state plus the
+      /// last converged increment scaled to the step, or, without one, the
+      /// linear response to the moved prescribed DoFs (falling back to the
+      /// previous state if Newton fails from there).
+      bool                     predict = true;
       NewtonSolver::Parameters newton;
       bool                     track_lowest_eigenvalue = false;
       bool                     find_critical_load      = false;

@@ -153,7 +153,7 @@ namespace
                    "end\n"
                    "subsection Solver\n"
                    "  set Max iterations = 4\n"
-                   "  set Extrapolate = false\n"
+                   "  set Predictor = false\n"
                    "  set Minimum step fraction = 0.5\n"
                    "end\n"
                    "subsection Output\n"
