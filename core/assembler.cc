@@ -279,65 +279,50 @@ namespace rodnet
       store<n_hinge_dofs>(gradient, with_hessian ? &hessian : nullptr, copy);
     };
 
-    const auto &hinges = layout_->hinges();
-    dealii::WorkStream::run(
-      hinges.begin(),
-      hinges.end(),
-      [&](const std::vector<HingeStencil>::const_iterator &it,
-          Scratch                                         &scratch,
-          LocalContribution                               &copy) {
-        copy.dofs.clear();
-        copy.energy = 0;
-        guarded([&] {
-          const unsigned int    h   = it - hinges.begin();
-          const HingeKernel    &k   = *kernels[it->rod];
-          const HingeReference &ref = configuration_->hinge_reference(h);
-          const HingeVector     x   = configuration_->hinge_dofs(u, *it);
-          const double          l   = configuration_->voronoi_length(h);
-          if (!with_gradient)
-            {
-              copy.energy =
-                materials[it->rod]->hinge_energy(k.strains(x, ref), l).energy;
-              return;
-            }
-          k.evaluate(x, ref, scratch.hinge, with_hessian);
-          bending(scratch.hinge, *materials[it->rod], l, copy);
-          copy.dofs.assign(it->dofs.begin(), it->dofs.end());
-        });
-      },
-      copier,
-      Scratch(),
-      LocalContribution());
-
-    const auto &junctions = layout_->junctions();
-    dealii::WorkStream::run(
-      junctions.begin(),
-      junctions.end(),
-      [&](const std::vector<JunctionStencil>::const_iterator &it,
-          Scratch                                            &scratch,
-          LocalContribution                                  &copy) {
-        copy.dofs.clear();
-        copy.energy = 0;
-        guarded([&] {
-          const unsigned int       e   = it - junctions.begin();
-          const JunctionKernel    &k   = *junction_kernels[it->rod];
-          const JunctionReference &ref = configuration_->junction_reference(e);
-          const HingeVector        x   = configuration_->junction_dofs(u, *it);
-          const double l = configuration_->junction_voronoi_length(e);
-          if (!with_gradient)
-            {
-              copy.energy =
-                materials[it->rod]->hinge_energy(k.strains(x, ref), l).energy;
-              return;
-            }
-          k.evaluate(x, ref, scratch.hinge, with_hessian);
-          bending(scratch.hinge, *materials[it->rod], l, copy);
-          copy.dofs.assign(it->dofs.begin(), it->dofs.end());
-        });
-      },
-      copier,
-      Scratch(),
-      LocalContribution());
+    // Hinges and junction elements differ only in where their kernel,
+    // reference, local DoFs and Voronoi length come from: one pass serves
+    // both. @p element(i, stencil) returns those four for stencil i.
+    const auto bending_pass = [&](const auto &stencils, const auto &element) {
+      dealii::WorkStream::run(
+        stencils.begin(),
+        stencils.end(),
+        [&](const auto &it, Scratch &scratch, LocalContribution &copy) {
+          copy.dofs.clear();
+          copy.energy = 0;
+          guarded([&] {
+            const auto [k, ref, x, l] = element(it - stencils.begin(), *it);
+            if (!with_gradient)
+              {
+                copy.energy = materials[it->rod]
+                                ->hinge_energy(k->strains(x, ref), l)
+                                .energy;
+                return;
+              }
+            k->evaluate(x, ref, scratch.hinge, with_hessian);
+            bending(scratch.hinge, *materials[it->rod], l, copy);
+            copy.dofs.assign(it->dofs.begin(), it->dofs.end());
+          });
+        },
+        copier,
+        Scratch(),
+        LocalContribution());
+    };
+    bending_pass(layout_->hinges(),
+                 [&](const unsigned int h, const HingeStencil &stencil) {
+                   return std::make_tuple(
+                     kernels[stencil.rod].get(),
+                     std::cref(configuration_->hinge_reference(h)),
+                     configuration_->hinge_dofs(u, stencil),
+                     configuration_->voronoi_length(h));
+                 });
+    bending_pass(layout_->junctions(),
+                 [&](const unsigned int e, const JunctionStencil &stencil) {
+                   return std::make_tuple(
+                     junction_kernels[stencil.rod].get(),
+                     std::cref(configuration_->junction_reference(e)),
+                     configuration_->junction_dofs(u, stencil),
+                     configuration_->junction_voronoi_length(e));
+                 });
 
     // Applied moments about fixed axes: potential -lambda M theta_u(q)
     // (Lestringant & Kochmann eq. 32-33).
