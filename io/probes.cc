@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace rodnet
 {
@@ -26,9 +27,10 @@ namespace rodnet
     }
   } // namespace
 
+  template <class Model>
   std::vector<Probe>
   parse_probes(const std::string &text,
-               const RodModel    &model,
+               const Model       &model,
                const std::string &entry)
   {
     std::vector<Probe> probes;
@@ -65,7 +67,7 @@ namespace rodnet
             probe.component = parse_component(component, context);
             if (probe.kind == Probe::Kind::reaction)
               {
-                for (const Support &s : model.supports())
+                for (const auto &s : model.supports())
                   for (unsigned int k = 0; k < s.vertices.size(); ++k)
                     if (s.vertices[k] == probe.vertex &&
                         s.fixed[k][probe.component] && probe.support.empty())
@@ -91,9 +93,19 @@ namespace rodnet
               {
                 throw std::invalid_argument(context + ": " + e.what());
               }
-            if (!model.layout().has_rotation_dofs(probe.junction))
-              throw std::invalid_argument(context + ": junction \"" + vertex +
-                                          "\" is pinned and has no rotation");
+            if constexpr (std::is_same_v<Model, RodModel>)
+              {
+                if (!model.layout().has_rotation_dofs(probe.junction))
+                  throw std::invalid_argument(context + ": junction \"" +
+                                              vertex +
+                                              "\" is pinned and has no "
+                                              "rotation");
+              }
+            else
+              throw std::invalid_argument(
+                context + ": junction rotations and moments are those of the "
+                          "discrete rods' quaternions; the dynamic relaxation "
+                          "element has none");
             if (kind == "moment")
               {
                 probe.kind      = Probe::Kind::moment;
@@ -123,8 +135,15 @@ namespace rodnet
               }
           }
         else if ((kind == "energy" || kind == "eigenvalue") && vertex.empty())
-          probe.kind =
-            kind == "energy" ? Probe::Kind::energy : Probe::Kind::eigenvalue;
+          {
+            probe.kind =
+              kind == "energy" ? Probe::Kind::energy : Probe::Kind::eigenvalue;
+            if (probe.kind == Probe::Kind::eigenvalue &&
+                !std::is_same_v<Model, RodModel>)
+              throw std::invalid_argument(
+                context + ": dynamic relaxation has no tangent to take the "
+                          "eigenvalue of");
+          }
         else
           throw std::invalid_argument(
             context + ": unknown probe kind \"" + kind +
@@ -134,6 +153,41 @@ namespace rodnet
         probes.push_back(probe);
       }
     return probes;
+  }
+
+  template std::vector<Probe>
+  parse_probes(const std::string &, const RodModel &, const std::string &);
+  template std::vector<Probe>
+  parse_probes(const std::string &, const DrModel &, const std::string &);
+
+  std::vector<double>
+  evaluate_probes(const std::vector<Probe> &probes,
+                  const DrModel            &model,
+                  const DrVector           &u,
+                  const double              load_factor)
+  {
+    std::vector<double> values;
+    for (const Probe &p : probes)
+      switch (p.kind)
+        {
+          case Probe::Kind::position:
+            values.push_back(model.position(u, p.vertex)[p.component]);
+            break;
+          case Probe::Kind::reaction:
+            values.push_back(model.reaction(model.support(p.support),
+                                            u,
+                                            load_factor)[p.component]);
+            break;
+          case Probe::Kind::energy:
+            // At load factor 0 the load potential vanishes.
+            values.push_back(model.energy(u, 0.0));
+            break;
+          default:
+            // parse_probes() refuses the others for a DrModel.
+            throw std::logic_error("probe " + p.name +
+                                   " has no value under dynamic relaxation");
+        }
+    return values;
   }
 
   std::vector<double>

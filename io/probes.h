@@ -1,6 +1,7 @@
 #ifndef RODNET_IO_PROBES_H
 #define RODNET_IO_PROBES_H
 
+#include <core/dr_model.h>
 #include <core/rod_model.h>
 
 #include <fstream>
@@ -36,12 +37,14 @@ namespace rodnet
    * holding that vertex), `energy`, `eigenvalue`, `rotation <junction>
    * <ax>,<ay>,<az>` (angle of the junction's rotation about the axis, rad)
    * and `moment <junction> <x|y|z>` (reaction moment, N m). Vertices as in
-   * select_vertex(), junctions by name. Throws std::invalid_argument naming @p
-   * entry and the offending probe.
+   * select_vertex(), junctions by name. @p model is a RodModel or a
+   * DrModel (which has no rotations, moments or eigenvalue). Throws
+   * std::invalid_argument naming @p entry and the offending probe.
    */
+  template <class Model>
   std::vector<Probe>
   parse_probes(const std::string &text,
-               const RodModel    &model,
+               const Model       &model,
                const std::string &entry);
 
   /// Values of @p probes at the converged state @p u.
@@ -51,6 +54,14 @@ namespace rodnet
                   const VectorType         &u,
                   double                    load_factor,
                   double                    lowest_eigenvalue);
+
+  /// Values of @p probes (positions, reactions, energy) at the relaxed
+  /// state @p u of a DrModel.
+  std::vector<double>
+  evaluate_probes(const std::vector<Probe> &probes,
+                  const DrModel            &model,
+                  const DrVector           &u,
+                  double                    load_factor);
 
   /**
    * The file `probes.csv`: a header `step,load_factor,<probe names>` and one

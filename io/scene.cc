@@ -15,6 +15,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace rodnet
 {
@@ -344,6 +345,45 @@ namespace rodnet
 
     prm.enter_subsection("Solver");
     {
+      prm.declare_entry(
+        "Method",
+        "newton",
+        Selection("newton|dynamic relaxation"),
+        "newton: discrete elastic rods and junction elements, Newton per "
+        "load step (Trilinos NOX). dynamic relaxation: the bending-active "
+        "beam element (position, normal and rotation per node) relaxed by "
+        "explicit pseudo-dynamics with kinetic damping; see "
+        "doc/dynamic_relaxation.md for which to pick. [-]");
+      prm.enter_subsection("Dynamic relaxation");
+      {
+        prm.declare_entry("Time step",
+                          "1",
+                          Double(0),
+                          "Pseudo-time step; the fictitious masses are "
+                          "scaled for it (stable up to sqrt(2 Mass "
+                          "scaling)), and an unstable run halves it. [-]");
+        prm.declare_entry("Mass scaling",
+                          "1",
+                          Double(1),
+                          "Factor on the fictitious masses of the stability "
+                          "bound (>= 1). [-]");
+        prm.declare_entry("Residual tolerance",
+                          "1e-6",
+                          Double(0, 1),
+                          "Converged when the out-of-balance force norm is "
+                          "below this times the applied load norm (or the "
+                          "step's initial residual). [-]");
+        prm.declare_entry("Max iterations",
+                          "1000000",
+                          Integer(1),
+                          "Pseudo-time iterations per load step. [-]");
+        prm.declare_entry("Progress interval",
+                          "0",
+                          Integer(0),
+                          "Print iteration, kinetic energy and residual every "
+                          "this many iterations (0: once per load step). [-]");
+      }
+      prm.leave_subsection();
       prm.declare_entry("Line search",
                         "full step",
                         Selection("backtrack|polynomial|full step"),
@@ -577,6 +617,16 @@ namespace rodnet
     solver.critical_load_tolerance = prm.get_double("Critical load tolerance");
     solver.branch_switch_amplitude =
       prm.get_double("Branch switching amplitude");
+    method = prm.get("Method") == "newton" ? SolutionMethod::newton :
+                                             SolutionMethod::dynamic_relaxation;
+    prm.enter_subsection("Dynamic relaxation");
+    relaxation.n_steps            = solver.n_steps;
+    relaxation.time_step          = prm.get_double("Time step");
+    relaxation.mass_scaling       = prm.get_double("Mass scaling");
+    relaxation.residual_tolerance = prm.get_double("Residual tolerance");
+    relaxation.max_iterations     = prm.get_integer("Max iterations");
+    relaxation.progress_interval  = prm.get_integer("Progress interval");
+    prm.leave_subsection();
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -588,8 +638,9 @@ namespace rodnet
     prm.leave_subsection();
   }
 
-  std::unique_ptr<RodModel>
-  Scene::build_model() const
+  std::pair<std::unique_ptr<RodNetwork>,
+            std::vector<std::shared_ptr<const RodMaterial>>>
+  Scene::build_network() const
   {
     std::unique_ptr<RodNetwork>                     network;
     std::vector<std::shared_ptr<const RodMaterial>> materials;
@@ -619,10 +670,54 @@ namespace rodnet
         network->create_triangulation();
         materials.assign(network->rods().size(), group_materials.front());
       }
-    const unsigned int n_rods = network->rods().size();
-    auto               model =
+    return {std::move(network), materials};
+  }
+
+  std::unique_ptr<RodModel>
+  Scene::build_model() const
+  {
+    auto [network, materials] = build_network();
+    auto model =
       std::make_unique<RodModel>(std::move(network), materials, ghost_spin);
-    const RodNetwork &net = model->network();
+    apply_supports_and_loads(*model);
+    model->finalize();
+    return model;
+  }
+
+  DrScene
+  Scene::build_dr_model() const
+  {
+    auto [network, materials] = build_network();
+    std::vector<RodStiffness> stiffness;
+    for (unsigned int r = 0; r < materials.size(); ++r)
+      {
+        const auto *elastic =
+          dynamic_cast<const LinearElasticRod *>(materials[r].get());
+        const RodNaturalShape shape =
+          elastic != nullptr ? elastic->natural_shape() : RodNaturalShape{};
+        if (elastic == nullptr || shape.curvature1 != 0 ||
+            shape.curvature2 != 0 || shape.twist != 0 ||
+            shape.axial_eigenstrain != 0)
+          throw std::invalid_argument(
+            "Solver/Method = dynamic relaxation: rod " + std::to_string(r) +
+            " is not a linear elastic rod without natural shape, the only "
+            "material the bending-active element has");
+        stiffness.push_back(elastic->stiffness());
+      }
+    DrScene scene;
+    scene.network = std::move(network);
+    scene.model   = std::make_unique<DrModel>(*scene.network, stiffness);
+    apply_supports_and_loads(*scene.model);
+    scene.model->finalize();
+    return scene;
+  }
+
+  template <class Model>
+  void
+  Scene::apply_supports_and_loads(Model &model) const
+  {
+    const RodNetwork  &net    = model.network();
+    const unsigned int n_rods = net.rods().size();
 
     const auto junction = [&net](const std::string &name,
                                  const std::string &entry) {
@@ -635,39 +730,47 @@ namespace rodnet
           throw std::invalid_argument("entry \"" + entry + "\": " + e.what());
         }
     };
-    for (const auto &[name, value] :
-         split_items(prescribed_rotations, "Supports/Prescribed rotations"))
+    if constexpr (std::is_same_v<Model, RodModel>)
       {
-        const std::string entry    = "Supports/Prescribed rotations";
-        const auto [axis, degrees] = parse_axis_value(value, entry);
-        model->prescribe_rotation(junction(name, entry),
-                                  axis,
-                                  degrees * M_PI / 180);
+        for (const auto &[name, value] :
+             split_items(prescribed_rotations, "Supports/Prescribed rotations"))
+          {
+            const std::string entry    = "Supports/Prescribed rotations";
+            const auto [axis, degrees] = parse_axis_value(value, entry);
+            model.prescribe_rotation(junction(name, entry),
+                                     axis,
+                                     degrees * M_PI / 180);
+          }
+        for (const auto &[name, value] : split_items(moments, "Loads/Moments"))
+          {
+            const auto [axis, moment] =
+              parse_axis_value(value, "Loads/Moments");
+            model.add_moment(junction(name, "Loads/Moments"), axis, moment);
+          }
       }
-    for (const auto &[name, value] : split_items(moments, "Loads/Moments"))
-      {
-        const auto [axis, moment] = parse_axis_value(value, "Loads/Moments");
-        model->add_moment(junction(name, "Loads/Moments"), axis, moment);
-      }
-
+    else if (!split_items(prescribed_rotations, "Supports/Prescribed rotations")
+                .empty() ||
+             !split_items(moments, "Loads/Moments").empty())
+      throw std::invalid_argument(
+        "Supports/Prescribed rotations and Loads/Moments act on junction "
+        "quaternions, which the dynamic relaxation element does not have");
     for (const std::string &end :
          dealii::Utilities::split_string_list(clamped_ends, ','))
       {
         const auto [rod, at_start] =
           select_rod_end(net, end, "Supports/Clamped ends");
-        model->clamp_end(end, rod, at_start);
+        model.clamp_end(end, rod, at_start);
       }
     for (const std::string &v :
          dealii::Utilities::split_string_list(pinned_vertices, ','))
-      model->fix_components(v,
-                            select_vertex(net, v, "Supports/Pinned vertices"),
-                            {{true, true, true}});
+      model.fix_components(v,
+                           select_vertex(net, v, "Supports/Pinned vertices"),
+                           {{true, true, true}});
     for (const auto &[v, components] :
          split_items(fixed_components, "Supports/Fixed components"))
-      model->fix_components(v,
-                            select_vertex(net, v, "Supports/Fixed components"),
-                            parse_mask(components,
-                                       "Supports/Fixed components"));
+      model.fix_components(v,
+                           select_vertex(net, v, "Supports/Fixed components"),
+                           parse_mask(components, "Supports/Fixed components"));
     for (const auto &[v, values] :
          split_items(prescribed_displacements,
                      "Supports/Prescribed displacements"))
@@ -698,7 +801,7 @@ namespace rodnet
                                             "y=<value> or z=<value>");
               }
           }
-        model->fix_components(v, select_vertex(net, v, entry), mask, d);
+        model.fix_components(v, select_vertex(net, v, entry), mask, d);
       }
 
     for (const auto &[v, value] :
@@ -717,19 +820,23 @@ namespace rodnet
             throw std::invalid_argument("entry \"Loads/Point forces\": \"" +
                                         value + "\" is not a force fx, fy, fz");
           }
-        model->add_point_force(select_vertex(net, v, "Loads/Point forces"),
-                               Vector3(f[0], f[1], f[2]));
+        model.add_point_force(select_vertex(net, v, "Loads/Point forces"),
+                              Vector3(f[0], f[1], f[2]));
       }
     const Vector3 q = distributed_force + mass_per_length * gravity;
     if (q.norm() > 0)
       for (unsigned int r = 0; r < n_rods; ++r)
-        model->add_distributed_force(r, q);
-    model->finalize();
-    return model;
+        model.add_distributed_force(r, q);
   }
 
   std::vector<Probe>
   Scene::probes(const RodModel &model) const
+  {
+    return parse_probes(probe_text, model, "Output/Probes");
+  }
+
+  std::vector<Probe>
+  Scene::probes(const DrModel &model) const
   {
     return parse_probes(probe_text, model, "Output/Probes");
   }

@@ -3,9 +3,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <core/dr_model.h>
 #include <core/rod_graph.h>
 #include <core/rod_model.h>
 #include <io/probes.h>
+#include <solvers/dynamic_relaxation.h>
 #include <solvers/static_solver.h>
 
 #include <memory>
@@ -15,6 +17,21 @@
 
 namespace rodnet
 {
+  /// A scene built for dynamic relaxation: the model and the network it
+  /// refers to.
+  struct DrScene
+  {
+    std::unique_ptr<RodNetwork> network;
+    std::unique_ptr<DrModel>    model;
+  };
+
+  /// How a scene is solved.
+  enum class SolutionMethod
+  {
+    newton,             ///< discrete rods and junctions, StaticSolver
+    dynamic_relaxation, ///< bending-active element, DynamicRelaxation
+  };
+
   /**
    * A scene file: geometry, material, supports, loads, solver and output
    * settings, as a deal.II ParameterHandler input (.prm or .json). Every
@@ -41,17 +58,40 @@ namespace rodnet
     std::unique_ptr<RodModel>
     build_model() const;
 
+    /**
+     * The same rods, supports and loads for the bending-active element of
+     * dynamic relaxation. Throws std::invalid_argument for what that element
+     * cannot represent: materials other than linear elastic without natural
+     * shape, junction moments and prescribed rotations.
+     */
+    DrScene
+    build_dr_model() const;
+
     /// The probes of the scene, resolved on @p model.
     std::vector<Probe>
     probes(const RodModel &model) const;
+    std::vector<Probe>
+    probes(const DrModel &model) const;
 
-    StaticSolver::Parameters solver;
-    std::string              output_directory;
-    bool                     write_vtu    = true;
-    unsigned int             vtu_interval = 1;
-    bool                     plot         = true;
+    SolutionMethod                method = SolutionMethod::newton;
+    StaticSolver::Parameters      solver;
+    DynamicRelaxation::Parameters relaxation;
+    std::string                   output_directory;
+    bool                          write_vtu    = true;
+    unsigned int                  vtu_interval = 1;
+    bool                          plot         = true;
 
   private:
+    /// The rods (or the network's rods) and the material of each.
+    std::pair<std::unique_ptr<RodNetwork>,
+              std::vector<std::shared_ptr<const RodMaterial>>>
+    build_network() const;
+
+    /// Supports and loads of the scene, onto a RodModel or a DrModel.
+    template <class Model>
+    void
+    apply_supports_and_loads(Model &model) const;
+
     std::vector<std::vector<Vector3>> rod_points;
     std::vector<bool>                 rod_closed;
     Vector3                           director_hint;

@@ -1,0 +1,564 @@
+#include <core/dr_model.h>
+#include <materials/dr_beam_energy.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    constexpr unsigned int invalid = std::numeric_limits<unsigned int>::max();
+
+    /// Smallest z component of an initial normal: the element's normal
+    /// (n_x, n_y, sqrt(1 - n_x^2 - n_y^2)) is singular on the xy plane.
+    constexpr double min_normal_z = 1e-3;
+
+    /// Strains or stresses of an element as one vector, in the order
+    /// (stretch, twist, tilt_a, tilt_b, turn_a, turn_b).
+    using StrainVector = Eigen::Matrix<double, 6, 1>;
+
+    template <typename T>
+    StrainVector
+    pack(const T &s)
+    {
+      StrainVector v;
+      v << s.stretch, s.twist, s.tilt[0], s.tilt[1], s.turn[0], s.turn[1];
+      return v;
+    }
+
+    template <typename T>
+    T
+    unpack(const StrainVector &v)
+    {
+      T s;
+      s.stretch = v[0];
+      s.twist   = v[1];
+      s.tilt    = {{v[2], v[3]}};
+      s.turn    = {{v[4], v[5]}};
+      return s;
+    }
+
+    constexpr std::array<unsigned int, 2> node_block = {
+      {dr_dof::node_a, dr_dof::node_b}};
+    constexpr std::array<unsigned int, 2> far_block = {
+      {dr_dof::far_a, dr_dof::far_b}};
+  } // namespace
+
+
+  DrModel::DrModel(const RodNetwork         &network,
+                   std::vector<RodStiffness> stiffness_per_rod)
+      : network_(&network)
+      , stiffness(std::move(stiffness_per_rod))
+  {
+    const auto &rods = network.rods();
+    if (stiffness.size() != rods.size())
+      throw std::invalid_argument(
+        "DrModel: " + std::to_string(rods.size()) + " rods but " +
+        std::to_string(stiffness.size()) + " stiffnesses");
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      for (const auto &[name, value] : {std::make_pair("EA", stiffness[r].EA),
+                                        std::make_pair("EI1", stiffness[r].EI1),
+                                        std::make_pair("EI2", stiffness[r].EI2),
+                                        std::make_pair("GJ", stiffness[r].GJ)})
+        if (!(value > 0) || !std::isfinite(value))
+          throw std::invalid_argument(
+            "DrModel: rod " + std::to_string(r) + ": " + name +
+            " must be positive and finite, got " + std::to_string(value));
+
+    // The rod ends at a junction share the position of its vertex and,
+    // except at a pinned junction, its frame.
+    const unsigned int        n_vertices = network.n_vertices();
+    std::vector<unsigned int> position_owner(n_vertices);
+    std::iota(position_owner.begin(), position_owner.end(), 0u);
+    std::vector<unsigned int> frame_owner = position_owner;
+    for (const Junction &j : network.junctions())
+      for (const RodEnd &end : j.ends)
+        {
+          const unsigned int v = network.end_vertex(end);
+          position_owner[v]    = j.vertex;
+          if (j.kind != JunctionKind::pinned)
+            frame_owner[v] = j.vertex;
+        }
+
+    // Nodes are numbered along the rods, so that an element's DoFs lie
+    // close together in memory.
+    position_node.assign(n_vertices, invalid);
+    frame_node.assign(n_vertices, invalid);
+    Vector3 low = network.vertex(0), high = low;
+    for (const Rod &rod : rods)
+      for (const unsigned int v : rod.vertices)
+        {
+          unsigned int &p = position_node[position_owner[v]];
+          if (p == invalid)
+            {
+              p = position_dofs.size();
+              position_dofs.push_back(initial.size());
+              for (unsigned int c = 0; c < 3; ++c)
+                initial.push_back(network.vertex(v)[c]);
+              low  = low.cwiseMin(network.vertex(v));
+              high = high.cwiseMax(network.vertex(v));
+            }
+          position_node[v] = p;
+          unsigned int &f  = frame_node[frame_owner[v]];
+          if (f == invalid)
+            {
+              f = frame_dofs.size();
+              frame_dofs.push_back(initial.size());
+              initial.insert(initial.end(), 3, 0.0);
+            }
+          frame_node[v] = f;
+        }
+    length = (high - low).norm();
+
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      {
+        const Rod         &rod        = rods[r];
+        const unsigned int n          = rod.vertices.size();
+        const unsigned int n_segments = rod.closed ? n : n - 1;
+        for (unsigned int j = 0; j < n_segments; ++j)
+          {
+            Element e;
+            e.rod      = r;
+            e.segment  = j;
+            e.vertices = {{rod.vertices[j], rod.vertices[(j + 1) % n]}};
+            elements.push_back(e);
+          }
+      }
+
+    // Reference element of each frame: the first element it belongs to;
+    // the frame's normal is the director d1 of that element's rod there.
+    far_vertex.assign(frame_dofs.size(), invalid);
+    for (const Element &e : elements)
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          const unsigned int f = frame_node[e.vertices[end]];
+          if (far_vertex[f] != invalid)
+            continue;
+          far_vertex[f] = e.vertices[1 - end];
+
+          const Rod         &rod        = rods[e.rod];
+          const unsigned int n          = rod.vertices.size();
+          const unsigned int i          = (e.segment + end) % n;
+          const auto         tangent_of = [&](const unsigned int s) -> Vector3 {
+            return (network.vertex(rod.vertices[(s + 1) % n]) -
+                    network.vertex(rod.vertices[s]))
+              .normalized();
+          };
+          Vector3 tangent = Vector3::Zero();
+          if (rod.closed || i > 0)
+            tangent += tangent_of((i + n - 1) % n);
+          if (rod.closed || i + 1 < n)
+            tangent += tangent_of(i);
+          const std::string where = "DrModel: rod " + std::to_string(e.rod) +
+                                    ", vertex " + std::to_string(i);
+          if (!(tangent.norm() > 1e-8))
+            throw std::invalid_argument(where + ": the rod folds back on "
+                                                "itself there");
+          tangent.normalize();
+          const Vector3 hint = rod.director_hint;
+          Vector3       d1   = hint - hint.dot(tangent) * tangent;
+          if (!(d1.norm() > 1e-8 * hint.norm()))
+            throw std::invalid_argument(
+              where + ": the director d1 hint is parallel to the rod");
+          d1.normalize();
+          if (d1[2] < 0)
+            d1 = -d1;
+          if (!(d1[2] >= min_normal_z))
+            throw std::invalid_argument(
+              where +
+              ": the normal d1 lies (nearly) in the xy plane, where the "
+              "element's "
+              "normal (n_x, n_y, sqrt(1 - n_x^2 - n_y^2)) is singular; turn "
+              "the structure or choose a director hint with a z component");
+          initial[frame_dofs[f] + 0] = d1[0];
+          initial[frame_dofs[f] + 1] = d1[1];
+        }
+    frame_clamped.assign(frame_dofs.size(), false);
+
+    for (const Junction &j : network.junctions())
+      if (j.kind == JunctionKind::clamped)
+        clamp_vertex(j.name, j.vertex);
+      else if (j.kind == JunctionKind::welded_pinned)
+        fix_components(j.name, j.vertex, {{true, true, true}});
+  }
+
+
+  void
+  DrModel::check_not_finalized(const char *what) const
+  {
+    if (finalized)
+      throw std::logic_error(std::string("DrModel: ") + what +
+                             " after finalize()");
+  }
+
+
+  void
+  DrModel::clamp_vertex(const std::string &name, const unsigned int vertex)
+  {
+    DrSupport s;
+    s.name     = name;
+    s.vertices = {vertex};
+    s.fixed    = {{{true, true, true}}};
+    s.clamped  = true;
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        fixed_dofs[position_dof(vertex, c)] = 0.0;
+        fixed_dofs[frame_dof(vertex, c)]    = 0.0;
+      }
+    frame_clamped[frame_node[vertex]] = true;
+    support_list.push_back(s);
+  }
+
+
+  void
+  DrModel::clamp_end(const std::string &name,
+                     const unsigned int rod_index,
+                     const bool         at_start)
+  {
+    check_not_finalized("clamp_end");
+    if (rod_index >= network_->rods().size())
+      throw std::invalid_argument("support \"" + name + "\": rod " +
+                                  std::to_string(rod_index) +
+                                  " does not exist");
+    const Rod &rod = network_->rods()[rod_index];
+    if (rod.closed)
+      throw std::invalid_argument("support \"" + name + "\": rod " +
+                                  std::to_string(rod_index) +
+                                  " is closed and has no end to clamp");
+    clamp_vertex(name, at_start ? rod.vertices.front() : rod.vertices.back());
+  }
+
+
+  void
+  DrModel::fix_components(const std::string         &name,
+                          const unsigned int         vertex,
+                          const std::array<bool, 3> &mask,
+                          const Vector3             &displacement)
+  {
+    check_not_finalized("fix_components");
+    if (vertex >= network_->n_vertices())
+      throw std::invalid_argument("support \"" + name + "\": vertex " +
+                                  std::to_string(vertex) + " does not exist");
+    DrSupport s;
+    s.name     = name;
+    s.vertices = {vertex};
+    s.fixed    = {mask};
+    for (unsigned int c = 0; c < 3; ++c)
+      if (mask[c])
+        fixed_dofs[position_dof(vertex, c)] = displacement[c];
+    support_list.push_back(s);
+  }
+
+
+  void
+  DrModel::add_point_force(const unsigned int vertex, const Vector3 &force)
+  {
+    check_not_finalized("add_point_force");
+    if (vertex >= network_->n_vertices())
+      throw std::invalid_argument("point force at vertex " +
+                                  std::to_string(vertex) +
+                                  ", which does not exist");
+    point_forces.emplace_back(vertex, force);
+  }
+
+
+  void
+  DrModel::add_distributed_force(const unsigned int rod,
+                                 const Vector3     &force_per_length)
+  {
+    check_not_finalized("add_distributed_force");
+    if (rod >= network_->rods().size())
+      throw std::invalid_argument("distributed force on rod " +
+                                  std::to_string(rod) +
+                                  ", which does not exist");
+    distributed_forces.emplace_back(rod, force_per_length);
+  }
+
+
+  void
+  DrModel::add_gravity(const unsigned int rod,
+                       const double       mass_per_length,
+                       const Vector3     &acceleration)
+  {
+    add_distributed_force(rod, mass_per_length * acceleration);
+  }
+
+
+  void
+  DrModel::finalize()
+  {
+    check_not_finalized("finalize");
+
+    // A clamped frame is measured from a fixed point where its reference
+    // element's far end starts, so that n_r = 0 holds the chord's rotation
+    // about the normal.
+    anchor_dofs.assign(frame_dofs.size(), invalid);
+    for (unsigned int f = 0; f < frame_dofs.size(); ++f)
+      if (frame_clamped[f])
+        {
+          anchor_dofs[f] = initial.size();
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              fixed_dofs[initial.size()] = 0.0;
+              initial.push_back(network_->vertex(far_vertex[f])[c]);
+            }
+        }
+
+    const DrVector zero(n_dofs());
+    for (Element &e : elements)
+      {
+        for (unsigned int end = 0; end < 2; ++end)
+          {
+            const unsigned int v = e.vertices[end];
+            const unsigned int f = frame_node[v];
+            const unsigned int far =
+              anchor_dofs[f] != invalid ?
+                anchor_dofs[f] :
+                position_dofs[position_node[far_vertex[f]]];
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                e.dofs[node_block[end] + dr_dof::position + c] =
+                  position_dof(v, c);
+                e.dofs[node_block[end] + dr_dof::normal_x + c] =
+                  frame_dof(v, c);
+                e.dofs[far_block[end] + c] = far + c;
+              }
+          }
+        try
+          {
+            e.reference = dr_beam_reference(local_dofs(e, zero));
+          }
+        catch (const std::invalid_argument &error)
+          {
+            throw std::invalid_argument(
+              "DrModel: rod " + std::to_string(e.rod) + ", segment " +
+              std::to_string(e.segment) + ": " + error.what());
+          }
+      }
+
+    fixed_mask.assign(n_dofs(), false);
+    for (const auto &[dof, value] : fixed_dofs)
+      fixed_mask[dof] = true;
+
+    // Dead loads, distributed ones lumped with half of each element.
+    f_ext.reinit(n_dofs());
+    for (const auto &[vertex, force] : point_forces)
+      for (unsigned int c = 0; c < 3; ++c)
+        f_ext[position_dof(vertex, c)] += force[c];
+    for (const auto &[rod, q] : distributed_forces)
+      for (const Element &e : elements)
+        if (e.rod == rod)
+          for (const unsigned int v : e.vertices)
+            for (unsigned int c = 0; c < 3; ++c)
+              f_ext[position_dof(v, c)] += 0.5 * e.reference.rest_length * q[c];
+    finalized = true;
+  }
+
+
+  DrElementVector
+  DrModel::local_dofs(const Element &e, const DrVector &u) const
+  {
+    DrElementVector local;
+    for (unsigned int i = 0; i < n_dr_element_dofs; ++i)
+      local[i] = initial[e.dofs[i]] + u[e.dofs[i]];
+    return local;
+  }
+
+
+  void
+  DrModel::residual(const DrVector &u,
+                    const double    load_factor,
+                    DrVector       &r) const
+  {
+    if (!finalized)
+      throw std::logic_error("DrModel::residual before finalize()");
+    r.reinit(n_dofs());
+    DrElementVector gradient;
+    for (const Element &e : elements)
+      {
+        const DrBeamKinematics kinematics(local_dofs(e, u), e.reference);
+        DrBeamStress           stress;
+        dr_beam_energy(stiffness[e.rod],
+                       e.reference.rest_length,
+                       kinematics.strains(),
+                       &stress);
+        kinematics.pull_back(stress, gradient);
+        for (unsigned int i = 0; i < n_dr_element_dofs; ++i)
+          r[e.dofs[i]] += gradient[i];
+      }
+    r.add(-load_factor, f_ext);
+  }
+
+
+  double
+  DrModel::energy(const DrVector &u, const double load_factor) const
+  {
+    if (!finalized)
+      throw std::logic_error("DrModel::energy before finalize()");
+    double total = 0;
+    for (const Element &e : elements)
+      total += dr_beam_energy(
+        stiffness[e.rod],
+        e.reference.rest_length,
+        DrBeamKinematics(local_dofs(e, u), e.reference).strains(),
+        nullptr);
+    return total - load_factor * (f_ext * u);
+  }
+
+
+  void
+  DrModel::apply_boundary_values(DrVector &u, const double load_factor) const
+  {
+    for (const auto &[dof, value] : fixed_dofs)
+      u[dof] = load_factor * value;
+  }
+
+
+  void
+  DrModel::fictitious_masses(const DrVector &u,
+                             const double    mass_scaling,
+                             DrVector       &masses) const
+  {
+    if (!finalized)
+      throw std::logic_error("DrModel::fictitious_masses before finalize()");
+    if (!(mass_scaling > 0) || !std::isfinite(mass_scaling))
+      throw std::invalid_argument(
+        "fictitious masses: the mass scaling must be positive and finite, "
+        "got " +
+        std::to_string(mass_scaling));
+    DrVector row_sums(n_dofs());
+    for (const Element &e : elements)
+      {
+        const DrElementVector  local = local_dofs(e, u);
+        const DrBeamKinematics kinematics(local, e.reference);
+        const RodStiffness    &k      = stiffness[e.rod];
+        const double           l0     = e.reference.rest_length;
+        const StrainVector     strain = pack(kinematics.strains());
+
+        // C by central differences of the stress: exact for an energy
+        // quadratic in the strains, the tangent at the state otherwise.
+        Eigen::Matrix<double, 6, 6> C;
+        for (unsigned int q = 0; q < 6; ++q)
+          {
+            const double h     = q == 0 ? 1e-4 * l0 : 1e-4;
+            StrainVector shift = StrainVector::Zero();
+            shift[q]           = h;
+            DrBeamStress plus, minus;
+            dr_beam_energy(k, l0, unpack<DrBeamStrains>(strain + shift), &plus);
+            dr_beam_energy(k,
+                           l0,
+                           unpack<DrBeamStrains>(strain - shift),
+                           &minus);
+            C.col(q) = (pack(plus) - pack(minus)) / (2 * h);
+          }
+
+        // J row by row: the pull-back of a unit stress is a strain gradient.
+        Eigen::Matrix<double, 6, n_dr_element_dofs> abs_J;
+        DrElementVector                             gradient;
+        for (unsigned int p = 0; p < 6; ++p)
+          {
+            kinematics.pull_back(unpack<DrBeamStress>(StrainVector::Unit(p)),
+                                 gradient);
+            abs_J.row(p) = gradient.transpose().cwiseAbs();
+          }
+        DrElementVector bound =
+          abs_J.transpose() * (C.cwiseAbs() * abs_J.rowwise().sum());
+
+        DrBeamStress stress;
+        dr_beam_energy(k, l0, kinematics.strains(), &stress);
+        const double geometric =
+          2 * std::abs(stress.stretch) /
+          (local.segment<3>(dr_dof::node_b) - local.segment<3>(dr_dof::node_a))
+            .norm();
+        for (const unsigned int block : node_block)
+          bound.segment<3>(block + dr_dof::position).array() += geometric;
+
+        for (unsigned int i = 0; i < n_dr_element_dofs; ++i)
+          row_sums[e.dofs[i]] += bound[i];
+      }
+
+    // Elements turn during a relaxation, and with them the directions in
+    // which a node is stiff: an axial row sum EA/L0 along a straight rod
+    // becomes a bending one 24 EI/L0^3 when its elements turn by 90 degrees.
+    // Masses that are the same for x, y and z (and for n_x, n_y, which trade
+    // twist and tilt as the element turns about the normal) keep the
+    // bound under such rotations, as in Barnes' isotropic nodal masses.
+    for (const unsigned int d : position_dofs)
+      {
+        const double largest =
+          std::max({row_sums[d], row_sums[d + 1], row_sums[d + 2]});
+        for (unsigned int c = 0; c < 3; ++c)
+          row_sums[d + c] = largest;
+      }
+    for (const unsigned int d : frame_dofs)
+      row_sums[d] = row_sums[d + 1] = std::max(row_sums[d], row_sums[d + 1]);
+
+    // A DoF without stiffness (none in a connected model) gets the largest
+    // mass rather than a division by zero.
+    const double largest = row_sums.linfty_norm();
+    masses.reinit(n_dofs());
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      masses[i] =
+        0.5 * mass_scaling * (row_sums[i] > 0 ? row_sums[i] : largest);
+  }
+
+
+  Vector3
+  DrModel::position(const DrVector &u, const unsigned int vertex) const
+  {
+    return network_->vertex(vertex) + Vector3(u[position_dof(vertex, 0)],
+                                              u[position_dof(vertex, 1)],
+                                              u[position_dof(vertex, 2)]);
+  }
+
+
+  Vector3
+  DrModel::normal(const DrVector &u, const unsigned int vertex) const
+  {
+    const unsigned int x = frame_dof(vertex, 0), y = frame_dof(vertex, 1);
+    return dr_normal(initial[x] + u[x], initial[y] + u[y]);
+  }
+
+
+  Vector3
+  DrModel::reaction(const DrSupport &s,
+                    const DrVector  &u,
+                    const double     load_factor) const
+  {
+    DrVector r;
+    residual(u, load_factor, r);
+    return support_force(s, r);
+  }
+
+
+  Vector3
+  DrModel::support_force(const DrSupport &s, const DrVector &r) const
+  {
+    // At a fixed DoF the support force F balances the residual:
+    // dPhi/du - F = 0. A clamp also holds its anchor.
+    Vector3 total = Vector3::Zero();
+    for (unsigned int k = 0; k < s.vertices.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          if (s.fixed[k][c])
+            total[c] += r[position_dof(s.vertices[k], c)];
+          if (s.clamped)
+            total[c] += r[anchor_dofs[frame_node[s.vertices[k]]] + c];
+        }
+    return total;
+  }
+
+
+  const DrSupport &
+  DrModel::support(const std::string &name) const
+  {
+    for (const DrSupport &s : support_list)
+      if (s.name == name)
+        return s;
+    throw std::invalid_argument("no support named \"" + name + "\"");
+  }
+} // namespace rodnet

@@ -1,0 +1,282 @@
+#include <solvers/dynamic_relaxation.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace rodnet
+{
+  namespace
+  {
+    [[noreturn]] void
+    refuse(const std::string &entry,
+           const std::string &requirement,
+           double             value)
+    {
+      std::ostringstream message;
+      message << "dynamic relaxation: " << entry << " " << requirement
+              << ", got " << value;
+      throw std::invalid_argument(message.str());
+    }
+  } // namespace
+
+
+  DynamicRelaxation::DynamicRelaxation(const DrModel    &model,
+                                       const Parameters &parameters,
+                                       std::ostream     *log)
+      : model(model)
+      , parameters(parameters)
+      , log(log)
+  {
+    const Parameters &p = parameters;
+    if (p.n_steps < 1)
+      refuse("the number of load steps", "must be >= 1", p.n_steps);
+    if (!(p.time_step > 0) || !std::isfinite(p.time_step))
+      refuse("the time step", "must be positive and finite", p.time_step);
+    if (!(p.mass_scaling >= 1) || !std::isfinite(p.mass_scaling))
+      refuse("the mass scaling", "must be >= 1 and finite", p.mass_scaling);
+    if (!(p.residual_tolerance > 0))
+      refuse("the residual tolerance",
+             "must be positive",
+             p.residual_tolerance);
+    if (p.max_iterations < 1)
+      refuse("the maximum number of iterations",
+             "must be >= 1",
+             p.max_iterations);
+    if (!(p.instability_growth > 1))
+      refuse("the instability growth", "must be > 1", p.instability_growth);
+    if (!(p.min_time_step_fraction > 0 && p.min_time_step_fraction <= 1))
+      refuse("the minimum time step fraction",
+             "must be in (0, 1]",
+             p.min_time_step_fraction);
+    for (unsigned int i = 0; i < model.n_dofs(); ++i)
+      if (!model.fixed_dof_mask()[i])
+        free_dofs.push_back(i);
+  }
+
+
+  double
+  DynamicRelaxation::free_norm(const DrVector &r) const
+  {
+    double sum = 0;
+    for (const unsigned int i : free_dofs)
+      sum += r[i] * r[i];
+    return std::sqrt(sum);
+  }
+
+
+  double
+  DynamicRelaxation::reaction_norm(const DrVector &r) const
+  {
+    double sum = 0;
+    for (const DrSupport &s : model.supports())
+      sum += model.support_force(s, r).squaredNorm();
+    return std::sqrt(sum);
+  }
+
+
+  DynamicRelaxation::Attempt
+  DynamicRelaxation::relax(DrVector    &u,
+                           const double load_factor,
+                           const double dt) const
+  {
+    Attempt  attempt;
+    DrVector r, masses, velocity(model.n_dofs()), acceleration(model.n_dofs());
+    const auto unstable = [&](const std::string &reason) {
+      attempt.unstable = true;
+      attempt.reason   = reason;
+      return attempt;
+    };
+
+    model.apply_boundary_values(u, load_factor);
+    try
+      {
+        model.residual(u, load_factor, r);
+        model.fictitious_masses(u, parameters.mass_scaling, masses);
+      }
+    catch (const std::exception &e)
+      {
+        return unstable(e.what());
+      }
+
+    // Rounding errors of the positions, eps L, times the stiffness row sums
+    // S = 2 m / scaling bound what residual can be reached.
+    const double applied = load_factor * free_norm(model.external_force());
+    const double floor =
+      std::max(std::numeric_limits<double>::epsilon() *
+                 (2 * masses.linfty_norm() / parameters.mass_scaling) *
+                 model.length_scale() * std::sqrt(double(free_dofs.size())),
+               std::numeric_limits<double>::min());
+
+    double       kinetic_energy_before = 0;
+    bool         from_rest             = true;
+    unsigned int growing               = 0; // iterations in a row
+    double       growth_base           = 0; // kinetic energy before them
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        const double norm     = free_norm(r);
+        attempt.iterations    = iteration;
+        attempt.residual_norm = norm;
+        if (!std::isfinite(norm))
+          return unstable("the residual is not finite");
+        // The forces in the structure: the applied load, or the reactions
+        // where prescribed displacements drive it.
+        const double tolerance = std::max(parameters.residual_tolerance *
+                                            std::max(applied, reaction_norm(r)),
+                                          floor);
+        if (norm <= tolerance)
+          {
+            attempt.converged = true;
+            return attempt;
+          }
+        if (iteration == parameters.max_iterations)
+          {
+            std::ostringstream reason;
+            reason << "no convergence in " << iteration
+                   << " iterations: residual " << norm << ", tolerance "
+                   << tolerance;
+            attempt.reason = reason.str();
+            return attempt;
+          }
+
+        // Leapfrog; from rest the first kick is half a step, so that the
+        // velocity is centred (v_{-dt/2} = -v_{dt/2}).
+        const double kick           = from_rest ? 0.5 * dt : dt;
+        double       kinetic_energy = 0;
+        double       reversal       = 0; // v_{t+dt/2} . M v_{t-dt/2}
+        for (const unsigned int i : free_dofs)
+          {
+            const double before = from_rest ? 0.0 : velocity[i];
+            acceleration[i]     = -r[i] / masses[i];
+            velocity[i]         = before + kick * acceleration[i];
+            kinetic_energy += 0.5 * masses[i] * velocity[i] * velocity[i];
+            reversal += masses[i] * velocity[i] * before;
+            u[i] += dt * velocity[i];
+          }
+        if (!std::isfinite(kinetic_energy))
+          return unstable("the kinetic energy is not finite");
+        if (!from_rest && kinetic_energy > kinetic_energy_before &&
+            reversal < 0)
+          {
+            if (growing++ == 0)
+              growth_base = kinetic_energy_before;
+            if (growing >= 5 &&
+                kinetic_energy >= parameters.instability_growth * growth_base)
+              {
+                std::ostringstream reason;
+                reason << "the kinetic energy grew by a factor "
+                       << kinetic_energy / growth_base << " in " << growing
+                       << " iterations that each reversed the velocities: "
+                          "central differences are unstable at this time "
+                          "step";
+                return unstable(reason.str());
+              }
+          }
+        else
+          growing = 0;
+
+        try
+          {
+            if (!from_rest && kinetic_energy < kinetic_energy_before)
+              {
+                // Kinetic damping: back to the estimated peak, at rest.
+                for (const unsigned int i : free_dofs)
+                  {
+                    u[i] -=
+                      1.5 * dt * velocity[i] - 0.5 * dt * dt * acceleration[i];
+                    velocity[i] = 0;
+                  }
+                ++attempt.peaks;
+                from_rest             = true;
+                kinetic_energy_before = 0;
+                model.fictitious_masses(u, parameters.mass_scaling, masses);
+              }
+            else
+              {
+                from_rest             = false;
+                kinetic_energy_before = kinetic_energy;
+              }
+            model.residual(u, load_factor, r);
+          }
+        catch (const std::exception &e)
+          {
+            return unstable(e.what());
+          }
+
+        if (log != nullptr && parameters.progress_interval > 0 &&
+            (iteration + 1) % parameters.progress_interval == 0)
+          *log << "    DR iteration " << iteration + 1 << ": kinetic energy "
+               << kinetic_energy << ", |R| " << free_norm(r) << std::endl;
+      }
+  }
+
+
+  DynamicRelaxation::Result
+  DynamicRelaxation::run(DrVector &u, const Observer &on_converged)
+  {
+    if (u.size() != model.n_dofs())
+      throw std::invalid_argument(
+        "dynamic relaxation: the state has " + std::to_string(u.size()) +
+        " entries, the model " + std::to_string(model.n_dofs()) + " DoFs");
+    Result       result;
+    double       dt = parameters.time_step;
+    const double min_dt =
+      parameters.time_step * parameters.min_time_step_fraction;
+    DrVector last_converged = u;
+
+    for (unsigned int step = 1; step <= parameters.n_steps; ++step)
+      {
+        const auto   start       = std::chrono::steady_clock::now();
+        const double load_factor = double(step) / parameters.n_steps;
+        Attempt      attempt;
+        for (;;)
+          {
+            attempt = relax(u, load_factor, dt);
+            result.total_iterations += attempt.iterations;
+            if (attempt.converged)
+              break;
+            u = last_converged;
+            std::ostringstream where;
+            where << "dynamic relaxation, load step " << step
+                  << " (load factor " << load_factor << "), time step " << dt
+                  << ", iteration " << attempt.iterations << ": "
+                  << attempt.reason;
+            if (!attempt.unstable)
+              throw SolverFailure(where.str());
+            if (!(0.5 * dt >= min_dt))
+              throw SolverFailure(where.str() +
+                                  "; the time step cannot be cut below " +
+                                  std::to_string(min_dt));
+            if (log != nullptr)
+              *log << where.str() << "; retrying with time step " << 0.5 * dt
+                   << std::endl;
+            dt *= 0.5;
+            ++result.time_step_cuts;
+          }
+        last_converged = u;
+
+        StepInfo info;
+        info.step          = step;
+        info.load_factor   = load_factor;
+        info.iterations    = attempt.iterations;
+        info.peaks         = attempt.peaks;
+        info.residual_norm = attempt.residual_norm;
+        info.time_step     = dt;
+        info.wall_time     = std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count();
+        if (log != nullptr)
+          *log << "  DR step " << step << ", load factor " << load_factor
+               << ": " << attempt.iterations << " iterations, " << attempt.peaks
+               << " kinetic-energy peaks, |R| " << attempt.residual_norm << ", "
+               << info.wall_time << " s" << std::endl;
+        on_converged(info, u);
+        ++result.steps;
+      }
+    result.time_step = dt;
+    return result;
+  }
+} // namespace rodnet
