@@ -132,6 +132,46 @@ namespace
     EXPECT_EQ(WEXITSTATUS(status), 1);
   }
 
+  // What the bending-active element of dynamic relaxation cannot represent
+  // is refused before any step, naming it.
+  const std::string dynamic_relaxation =
+    "subsection Solver\n  set Method = dynamic relaxation\nend\n";
+
+  TEST(BadScene, DynamicRelaxationHasNoEigenvalue)
+  {
+    expect_input_error("dr_eigenvalue",
+                       material + dynamic_relaxation +
+                         "subsection Supports\n  set Clamped ends = start\n"
+                         "end\n"
+                         "subsection Output\n  set Probes = mu: eigenvalue\n"
+                         "end\n",
+                       "eigenvalue");
+  }
+
+  TEST(BadScene, DynamicRelaxationHasNoNaturalCurvature)
+  {
+    expect_input_error("dr_natural_curvature",
+                       material +
+                         "subsection Material\n"
+                         "  subsection linear elastic\n"
+                         "    set Natural curvature 1 = 2\n"
+                         "  end\n"
+                         "end\n" +
+                         dynamic_relaxation,
+                       "natural shape");
+  }
+
+  TEST(BadScene, DynamicRelaxationNormalInThePlane)
+  {
+    // The element stores n_z >= 0 and cannot take a normal in the xy plane:
+    // a rod along x with d1 = e_y.
+    expect_input_error("dr_horizontal_normal",
+                       "subsection Geometry\n  set Director d1 = 0, 1, 0\n"
+                       "end\n" +
+                         material + dynamic_relaxation,
+                       "rod 0");
+  }
+
   TEST(BadScene, SolverFailureKeepsEarlierSteps)
   {
     // The elastica with four Newton iterations per step, no predictor and
