@@ -21,6 +21,17 @@ namespace rodnet
       throw std::invalid_argument(
         "RodModel: " + std::to_string(rods.size()) + " rods but " +
         std::to_string(materials.size()) + " materials");
+    for (unsigned int r = 0; r < materials.size(); ++r)
+      if (materials[r]->n_hinge_internal_variables() > 0 ||
+          materials[r]->n_segment_internal_variables() > 0)
+        // The assembly does not store internal variables yet: solving with
+        // the material's instantaneous response would be a silent wrong
+        // answer for a history-dependent law.
+        throw std::invalid_argument(
+          "RodModel: the material of rod " + std::to_string(r) +
+          " has internal variables (a viscoelastic law), which static "
+          "solves do not evolve yet; time-dependent solves are to come "
+          "(doc/viscoelasticity.md)");
     std::vector<const HingeKernel *>    rod_kernels;
     std::vector<const JunctionKernel *> rod_junction_kernels;
     for (const Rod &rod : rods)

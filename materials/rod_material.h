@@ -4,9 +4,12 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <Eigen/Core>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,35 @@ namespace rodnet
    * Implementations register themselves under a name with
    * RODNET_REGISTER_MATERIAL and read their constants from a scene
    * subsection of that name.
+   *
+   * <h3>History-dependent materials</h3>
+   *
+   * A material may carry internal variables per hinge and per segment
+   * (e.g. viscous strains). Its constitutive update is variational
+   * (Lestringant & Kochmann section 2.4, variational constitutive updates):
+   * with a free energy W(kappa, alpha) and a dissipation potential
+   * Psi(alpha_dot), a step of length dt from the committed variables
+   * alpha_prev minimizes the incremental potential
+   *   W_inc(kappa) = min_alpha [W(kappa, alpha)
+   *                             + dt Psi((alpha - alpha_prev) / dt)],
+   * and the element sees W_inc with its consistent first and second
+   * derivatives (hinge_increment(), segment_increment()). The material
+   * stays a pure function of its arguments; the caller owns the storage:
+   *
+   * - the assembly keeps, per hinge (segment), an array of
+   *   n_hinge_internal_variables() (n_segment_internal_variables())
+   *   committed values, zero in the undeformed, unloaded state;
+   * - every evaluation within a step passes the committed values as
+   *   @p previous, the step's time step, and a scratch array @p updated,
+   *   into which the material writes the minimizing variables for the
+   *   strains it was given;
+   * - only once the step has converged does the assembly copy the
+   *   @p updated of the converged strains into the committed values; a
+   *   failed or cut step leaves them untouched.
+   *
+   * Materials without internal variables (the default) ignore the time step
+   * and the arrays and return hinge_energy() / segment_energy(), so a static
+   * solve may call the increment functions with any time step, even 0.
    */
   class RodMaterial
   {
@@ -50,6 +82,102 @@ namespace rodnet
     /// (engineering) strain @p strain.
     virtual MaterialResponse<1>
     segment_energy(double strain, double rest_length) const = 0;
+
+    /// Number of internal variables each hinge stores (default: none).
+    virtual unsigned int
+    n_hinge_internal_variables() const
+    {
+      return 0;
+    }
+
+    /// Number of internal variables each segment stores (default: none).
+    virtual unsigned int
+    n_segment_internal_variables() const
+    {
+      return 0;
+    }
+
+    /// One name (with unit) per hinge internal variable, for output.
+    virtual std::vector<std::string>
+    hinge_internal_variable_names() const
+    {
+      return {};
+    }
+
+    /// One name (with unit) per segment internal variable, for output.
+    virtual std::vector<std::string>
+    segment_internal_variable_names() const
+    {
+      return {};
+    }
+
+    /**
+     * Condensed incremental energy of a hinge over one time step (see the
+     * class documentation): min over alpha of
+     * W(kappa, alpha) + time_step Psi((alpha - previous) / time_step), its
+     * gradient (by the envelope theorem, dW/dkappa at the minimizer) and
+     * its consistent Hessian with respect to @p kappa (which includes the
+     * dependence of the minimizer on kappa).
+     *
+     * @p previous holds the n_hinge_internal_variables() committed values,
+     * @p updated receives as many minimizing values, or is null when the
+     * caller needs none (an energy-only evaluation); both may be null when
+     * there are no variables, and they must not overlap. Materials with
+     * internal variables throw std::invalid_argument (check_time_step()) unless
+     * @p time_step is positive and finite.
+     *
+     * The default, for materials without internal variables, returns
+     * hinge_energy(kappa, voronoi_length) and touches neither array.
+     */
+    virtual MaterialResponse<3>
+    hinge_increment(const Eigen::Vector3d &kappa,
+                    double                 voronoi_length,
+                    const double          *previous,
+                    double                 time_step,
+                    double                *updated) const
+    {
+      (void)previous;
+      (void)time_step;
+      (void)updated;
+      return hinge_energy(kappa, voronoi_length);
+    }
+
+    /**
+     * Condensed incremental energy of a segment over one time step, with
+     * the contract of hinge_increment() for n_segment_internal_variables()
+     * values. The default returns segment_energy(strain, rest_length).
+     */
+    virtual MaterialResponse<1>
+    segment_increment(double        strain,
+                      double        rest_length,
+                      const double *previous,
+                      double        time_step,
+                      double       *updated) const
+    {
+      (void)previous;
+      (void)time_step;
+      (void)updated;
+      return segment_energy(strain, rest_length);
+    }
+
+    /**
+     * Throws std::invalid_argument unless @p time_step is positive and
+     * finite: a history-dependent update divides by it. Called by
+     * materials with internal variables; a time stepper may call it to
+     * reject a bad step before assembling.
+     */
+    static void
+    check_time_step(const double time_step)
+    {
+      if (!(time_step > 0. && std::isfinite(time_step)))
+        {
+          std::ostringstream message;
+          message << "rod material with internal variables: the time step "
+                     "must be positive and finite, got "
+                  << time_step;
+          throw std::invalid_argument(message.str());
+        }
+    }
 
     /// Declares the material's entries in the current subsection.
     virtual void

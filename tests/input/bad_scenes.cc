@@ -172,6 +172,26 @@ namespace
                        "rod 0");
   }
 
+  TEST(BadScene, ViscoelasticMaterialNeedsTimeStepping)
+  {
+    // Until the assembly evolves internal variables, a history-dependent
+    // material is refused instead of solved with its instantaneous moduli.
+    expect_input_error("viscoelastic",
+                       "subsection Material\n"
+                       "  set Model = standard linear solid\n"
+                       "  subsection standard linear solid\n"
+                       "    set Stiffness input = direct\n"
+                       "    set EA = 1e4\n"
+                       "    set EI1 = 1\n"
+                       "    set EI2 = 1\n"
+                       "    set GJ = 1\n"
+                       "    set Modulus ratio E2/E1 = 0.3\n"
+                       "    set Relaxation time = 1\n"
+                       "  end\n"
+                       "end\n",
+                       "internal variables");
+  }
+
   TEST(BadScene, SolverFailureKeepsEarlierSteps)
   {
     // The elastica with four Newton iterations per step, no predictor and
