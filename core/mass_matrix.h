@@ -1,0 +1,84 @@
+#ifndef RODNET_CORE_MASS_MATRIX_H
+#define RODNET_CORE_MASS_MATRIX_H
+
+#include <core/rod_model.h>
+#include <materials/cross_section.h>
+
+#include <vector>
+
+namespace rodnet
+{
+  /// Inertia of one rod per unit undeformed length.
+  struct RodInertia
+  {
+    /// rho A (kg/m): translational inertia of the centreline.
+    double mass_per_length;
+    /// rho (I1 + I2) (kg m): polar moment of inertia of the cross-section
+    /// about the centreline, the inertia of the twist.
+    double rotational_inertia_per_length;
+  };
+
+  /**
+   * The inertia of a rod of density @p density (kg/m^3) and cross-section
+   * @p section: rho A and rho (I1 + I2). Note that I1 + I2 is the polar
+   * second moment, not the torsion constant J of the section (they agree
+   * for a circle only). Throws std::invalid_argument for a density that is
+   * not positive and finite.
+   */
+  RodInertia
+  rod_inertia(const CrossSection &section, double density);
+
+  /// How the translational inertia of a segment is distributed.
+  enum class MassKind
+  {
+    /// Linear shape functions along the segment:
+    /// rho A l0 / 6 [[2, 1], [1, 2]] per position component.
+    consistent,
+    /// Half the segment's mass at each end vertex: rho A l0 / 2 each (the
+    /// row sums of the consistent matrix).
+    lumped
+  };
+
+  /**
+   * Assembles the mass matrix M of @p model, so that the kinetic energy
+   * is 1/2 v^T M v for the DoF velocity v (doc/theory.md, "Mass and
+   * rotational inertia"); @p inertia holds one RodInertia per rod. The
+   * model must be finalized; @p mass is (re)initialized with the model's
+   * sparsity pattern, so that it can be added to a tangent of the model.
+   *
+   * Per segment of undeformed length l0, the positions of its two vertices
+   * carry rho A l0 as chosen by @p kind, and its twist DoF carries
+   * rho (I1 + I2) l0. Vertices shared by rod ends at a junction collect
+   * the mass of every adjacent segment once; the unused position DoFs of
+   * the other ends and the quaternion DoFs of junctions carry no inertia
+   * (Lestringant & Kochmann section 2.5: none on the ghost segments), so
+   * their rows are zero.
+   *
+   * With @p apply_constraints, the rows and columns of the DoFs that the
+   * model's constraints() fix are zero as well, their diagonal included:
+   * K + c M with the tangent K of RodModel::assemble (constrained) then
+   * keeps K's diagonal on fixed rows and a zero Newton increment there.
+   * Without, M is the mass of the free structure.
+   *
+   * Throws std::invalid_argument naming the rod for a mass or rotational
+   * inertia per length that is negative or not finite, and where the
+   * number of inertias is not the number of rods; std::logic_error before
+   * RodModel::finalize().
+   */
+  void
+  assemble_mass_matrix(const RodModel                &model,
+                       const std::vector<RodInertia> &inertia,
+                       MassKind                       kind,
+                       MatrixType                    &mass,
+                       bool apply_constraints = false);
+
+  /**
+   * Kinetic energy 1/2 v^T M v of the DoF velocity @p velocity for the
+   * mass matrix @p mass. Throws std::invalid_argument if their sizes
+   * differ.
+   */
+  double
+  kinetic_energy(const MatrixType &mass, const VectorType &velocity);
+} // namespace rodnet
+
+#endif
