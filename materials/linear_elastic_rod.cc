@@ -3,6 +3,7 @@
 
 #include <materials/linear_elastic_rod.h>
 
+#include <cctype>
 #include <cmath>
 
 namespace rodnet
@@ -28,6 +29,42 @@ namespace rodnet
     internal::check_positive_entry(context, "Young's modulus", E);
     internal::check_positive_entry(context, "Shear modulus", G);
     return {E * section.area, E * section.I1, E * section.I2, G * section.J};
+  }
+
+
+  void
+  declare_direct_rigidities(dealii::ParameterHandler &prm,
+                            const std::string        &qualifier)
+  {
+    const auto help = [&qualifier](const std::string &what) {
+      std::string text = qualifier + what;
+      text[0]          = std::toupper(text[0]);
+      return text + " Required for \"direct\".";
+    };
+    using dealii::Patterns::Double;
+    prm.declare_entry("EA", "0", Double(0), help("axial rigidity (N)."));
+    prm.declare_entry("EI1",
+                      "0",
+                      Double(0),
+                      help("bending rigidity about d1 (N m^2)."));
+    prm.declare_entry("EI2",
+                      "0",
+                      Double(0),
+                      help("bending rigidity about d2 (N m^2)."));
+    prm.declare_entry("GJ",
+                      "0",
+                      Double(0),
+                      help("torsional rigidity (N m^2)."));
+  }
+
+
+  RodStiffness
+  parse_direct_rigidities(dealii::ParameterHandler &prm)
+  {
+    return {prm.get_double("EA"),
+            prm.get_double("EI1"),
+            prm.get_double("EI2"),
+            prm.get_double("GJ")};
   }
 
 
@@ -153,24 +190,7 @@ namespace rodnet
                       "modulus\" and \"Poisson's ratio\".");
     CrossSectionParameters::declare_parameters(prm);
 
-    prm.declare_entry("EA",
-                      "0",
-                      Double(0),
-                      "Axial rigidity (N). Required for \"direct\".");
-    prm.declare_entry("EI1",
-                      "0",
-                      Double(0),
-                      "Bending rigidity about d1 (N m^2). Required for "
-                      "\"direct\".");
-    prm.declare_entry("EI2",
-                      "0",
-                      Double(0),
-                      "Bending rigidity about d2 (N m^2). Required for "
-                      "\"direct\".");
-    prm.declare_entry("GJ",
-                      "0",
-                      Double(0),
-                      "Torsional rigidity (N m^2). Required for \"direct\".");
+    declare_direct_rigidities(prm, "");
 
     prm.declare_entry("Natural curvature 1",
                       "0",
@@ -223,10 +243,7 @@ namespace rodnet
                                  CrossSectionParameters::parse_parameters(prm));
       }
     else
-      stiffness = {prm.get_double("EA"),
-                   prm.get_double("EI1"),
-                   prm.get_double("EI2"),
-                   prm.get_double("GJ")};
+      stiffness = parse_direct_rigidities(prm);
 
     RodNaturalShape shape;
     shape.curvature1        = prm.get_double("Natural curvature 1");

@@ -4,6 +4,8 @@
 #include <materials/cross_section.h>
 #include <materials/rod_material.h>
 
+#include <string>
+
 namespace rodnet
 {
   /// Rigidities of a rod: axial EA (N), bending EI1 about d1 and EI2 about
@@ -37,6 +39,20 @@ namespace rodnet
    */
   RodStiffness
   stiffness_from_section(double E, double G, const CrossSection &section);
+
+  /**
+   * Declares the entries EA, EI1, EI2 and GJ of the "direct" stiffness
+   * input in the current subsection; @p qualifier starts their help texts
+   * (e.g. "Relaxed " for a viscoelastic law's long-time rigidities).
+   */
+  void
+  declare_direct_rigidities(dealii::ParameterHandler &prm,
+                            const std::string        &qualifier);
+
+  /// Reads the entries of declare_direct_rigidities() (unchecked: the
+  /// material's constructor validates them, naming the entry).
+  RodStiffness
+  parse_direct_rigidities(dealii::ParameterHandler &prm);
 
   /**
    * The linear elastic (Kirchhoff) rod with natural curvature, twist and

@@ -296,26 +296,7 @@ namespace rodnet
                       "for torsion. Used for \"section\".");
     CrossSectionParameters::declare_parameters(prm);
 
-    prm.declare_entry("EA",
-                      "0",
-                      Double(0),
-                      "Relaxed axial rigidity E1 A (N). Required for "
-                      "\"direct\".");
-    prm.declare_entry("EI1",
-                      "0",
-                      Double(0),
-                      "Relaxed bending rigidity about d1, E1 I1 (N m^2). "
-                      "Required for \"direct\".");
-    prm.declare_entry("EI2",
-                      "0",
-                      Double(0),
-                      "Relaxed bending rigidity about d2, E1 I2 (N m^2). "
-                      "Required for \"direct\".");
-    prm.declare_entry("GJ",
-                      "0",
-                      Double(0),
-                      "Relaxed torsional rigidity G1 J (N m^2). Required for "
-                      "\"direct\".");
+    declare_direct_rigidities(prm, "Relaxed ");
 
     prm.declare_entry("Modulus ratio E2/E1",
                       "0",
@@ -357,10 +338,7 @@ namespace rodnet
                                  CrossSectionParameters::parse_parameters(prm));
       }
     else
-      stiffness = {prm.get_double("EA"),
-                   prm.get_double("EI1"),
-                   prm.get_double("EI2"),
-                   prm.get_double("GJ")};
+      stiffness = parse_direct_rigidities(prm);
 
     // The constructor validates; assigning only afterwards leaves *this
     // untouched when an entry is rejected.
