@@ -5,8 +5,10 @@
 // in -z, clamped at x = 0 by the midpoint clamp (the first two vertices sit
 // at -l/2 and l/2, so the free length is 1). Static equilibrium by
 // StaticSolver with load stepping, for N = 50, 100, 200, 500, 1000
-// vertices (N - 1 segments). The time is the wall time from the model's
-// construction to equilibrium, median (min-max) of the repeats.
+// vertices (N - 1 segments); the model is bench/p1_problem.h's, shared with
+// the dynamic-relaxation version p1_dynamic_relaxation. The time is the wall
+// time from the model's construction to equilibrium, median (min-max) of the
+// repeats.
 //
 // The reference tip (x, z) = (0.5157790, -0.7938299) is that of the
 // inextensible elastica. Our rod is extensible, EA = 7854 N: with q L =
@@ -23,12 +25,9 @@
 // [--log 1] (the solver's step log, for diagnosis; it is inside the timing)
 #include <deal.II/base/mpi.h>
 
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
-#include <materials/cross_section.h>
-#include <materials/linear_elastic_rod.h>
 #include <solvers/static_solver.h>
 
+#include <bench/p1_problem.h>
 #include <bench/timing.h>
 #include <cmath>
 #include <fstream>
@@ -39,9 +38,8 @@ using namespace rodnet;
 
 namespace
 {
-  constexpr double x_exact = 0.5157790;
-  constexpr double z_exact = -0.7938299;
-  constexpr double q       = 0.770476;
+  using bench::p1::x_exact;
+  using bench::p1::z_exact;
 
   struct Options
   {
@@ -96,34 +94,16 @@ namespace
         const double       ea_scale,
         const Options     &options)
   {
-    const double E = 1e8;
-    RodStiffness stiffness =
-      stiffness_from_section(E, E / 3, circle_section(5e-3));
-    stiffness.EA *= ea_scale;
-
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3::Zero(),
-                                          Vector3::UnitX(),
-                                          n_vertices - 1,
-                                          true),
-                     false,
-                     Vector3::UnitY(),
-                     "simple");
-    network->create_triangulation();
-    RodModel model(std::move(network),
-                   {std::make_shared<LinearElasticRod>(stiffness)});
-    model.clamp_end("clamp", 0, true);
-    model.add_distributed_force(0, Vector3(0, 0, -q));
-    model.finalize();
-
+    const std::unique_ptr<RodModel> model =
+      bench::p1::rod_model(n_vertices, ea_scale);
     StaticSolver::Parameters parameters;
     parameters.n_steps            = n_steps;
     parameters.newton.line_search = options.line_search;
     Outcome    outcome;
-    VectorType u = model.create_vector();
+    VectorType u = model->create_vector();
     try
       {
-        StaticSolver(model, parameters, options.log ? &std::cout : nullptr)
+        StaticSolver(*model, parameters, options.log ? &std::cout : nullptr)
           .run(u, [&](const StaticSolver::StepInfo &info, const VectorType &) {
             ++outcome.steps_done;
             outcome.iterations += info.iterations;
@@ -134,9 +114,7 @@ namespace
       {
         return outcome;
       }
-    outcome.tip =
-      model.configuration().position(u,
-                                     model.network().rods()[0].vertices.back());
+    outcome.tip = model->configuration().position(u, bench::p1::tip(*model));
     return outcome;
   }
 
