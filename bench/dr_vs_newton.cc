@@ -54,7 +54,6 @@
 // [--repeats n] [--threads n] [--rod-max N] (finest rod mesh of cantilever
 // and elastica, from 10 doubling; default 160) [--gridshell-reference n]
 // (segments per lath of the reference run; default 16)
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <core/dr_model.h>
@@ -66,6 +65,7 @@
 #include <solvers/static_solver.h>
 
 #include <array>
+#include <bench/options.h>
 #include <bench/p1_problem.h>
 #include <bench/timing.h>
 #include <cmath>
@@ -85,6 +85,25 @@ using namespace rodnet;
 
 namespace
 {
+  /// "a,b,c" into the set {a, b, c}, each one of the known studies.
+  std::set<std::string>
+  studies_in(const std::string &list)
+  {
+    std::set<std::string> studies;
+    std::stringstream     stream(list);
+    std::string           study;
+    while (std::getline(stream, study, ','))
+      {
+        if (study != "cantilever" && study != "elastica" &&
+            study != "gridshell" && study != "stability")
+          throw std::invalid_argument(
+            "unknown study " + study +
+            "; known: cantilever, elastica, gridshell, stability");
+        studies.insert(study);
+      }
+    return studies;
+  }
+
   struct Options
   {
     std::set<std::string> studies             = {"cantilever",
@@ -95,46 +114,20 @@ namespace
     unsigned int          repeats             = 3;
     unsigned int          rod_max             = 160;
     unsigned int          gridshell_reference = 16;
+
+    /// The options of the usage line above.
+    std::vector<bench::Option>
+    command_line()
+    {
+      return {{"--study",
+               [this](const std::string &list) { studies = studies_in(list); }},
+              bench::number("--repeats", repeats, 1),
+              bench::number("--threads", threads),
+              bench::number("--rod-max", rod_max),
+              bench::number("--gridshell-reference", gridshell_reference)};
+    }
   };
 
-  Options
-  parse_options(int argc, char **argv)
-  {
-    Options options;
-    for (int i = 1; i + 1 < argc; i += 2)
-      {
-        const std::string key = argv[i], value = argv[i + 1];
-        if (key == "--study")
-          {
-            options.studies.clear();
-            std::stringstream list(value);
-            std::string       study;
-            while (std::getline(list, study, ','))
-              {
-                if (study != "cantilever" && study != "elastica" &&
-                    study != "gridshell" && study != "stability")
-                  throw std::invalid_argument(
-                    "unknown study " + study +
-                    "; known: cantilever, elastica, gridshell, stability");
-                options.studies.insert(study);
-              }
-          }
-        else if (key == "--threads")
-          options.threads = std::stoul(value);
-        else if (key == "--repeats")
-          options.repeats = std::max(1ul, std::stoul(value));
-        else if (key == "--rod-max")
-          options.rod_max = std::stoul(value);
-        else if (key == "--gridshell-reference")
-          options.gridshell_reference = std::stoul(value);
-        else
-          throw std::invalid_argument(
-            "unknown option " + key +
-            "; known: --study, --repeats, --threads, --rod-max, "
-            "--gridshell-reference");
-      }
-    return options;
-  }
 
   enum class Method
   {
@@ -919,28 +912,25 @@ namespace
       csv);
     std::cout << "  wrote dr_vs_newton_stability.csv" << std::endl;
   }
+
+  /// The benchmark proper, run once the command line is read and MPI is
+  /// up.
+  void
+  benchmark(const Options &options)
+  {
+    if (options.studies.count("cantilever"))
+      cantilever_study(options);
+    if (options.studies.count("elastica"))
+      elastica_study(options);
+    if (options.studies.count("gridshell"))
+      gridshell_study(options);
+    if (options.studies.count("stability"))
+      stability_study();
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  try
-    {
-      const Options options = parse_options(argc, argv);
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
-      if (options.studies.count("cantilever"))
-        cantilever_study(options);
-      if (options.studies.count("elastica"))
-        elastica_study(options);
-      if (options.studies.count("gridshell"))
-        gridshell_study(options);
-      if (options.studies.count("stability"))
-        stability_study();
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "dr_vs_newton: " << e.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  return bench::run_benchmark("dr_vs_newton", argc, argv, benchmark);
 }

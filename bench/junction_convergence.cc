@@ -34,13 +34,12 @@
 // [--classic-levels n] (number of refinement levels run with the classic
 // kernel, from the coarsest; default all) [--frame-max N] [--windmill-max n]
 // (finest mesh of each study; 0 skips the study)
-#include <deal.II/base/mpi.h>
-
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/static_solver.h>
 
+#include <bench/options.h>
 #include <bench/timing.h>
 #include <cmath>
 #include <fstream>
@@ -59,34 +58,18 @@ namespace
     unsigned int classic_levels = 100;
     unsigned int frame_max      = 320;
     unsigned int windmill_max   = 80;
-  };
 
-  Options
-  parse_options(int argc, char **argv)
-  {
-    Options options;
-    for (int i = 1; i + 1 < argc; i += 2)
-      {
-        const std::string  key   = argv[i];
-        const unsigned int value = std::stoul(argv[i + 1]);
-        if (key == "--threads")
-          options.threads = value;
-        else if (key == "--repeats")
-          options.repeats = std::max(1u, value);
-        else if (key == "--classic-levels")
-          options.classic_levels = value;
-        else if (key == "--frame-max")
-          options.frame_max = value;
-        else if (key == "--windmill-max")
-          options.windmill_max = value;
-        else
-          throw std::invalid_argument(
-            "unknown option " + key +
-            "; known: --threads, --repeats, --classic-levels, --frame-max, "
-            "--windmill-max");
-      }
-    return options;
-  }
+    /// The options of the usage line above.
+    std::vector<bench::Option>
+    command_line()
+    {
+      return {bench::number("--threads", threads),
+              bench::number("--repeats", repeats, 1),
+              bench::number("--classic-levels", classic_levels),
+              bench::number("--frame-max", frame_max),
+              bench::number("--windmill-max", windmill_max)};
+    }
+  };
 
   std::shared_ptr<const RodMaterial>
   elastic(const double EA, const double EI, const double GJ)
@@ -296,39 +279,36 @@ namespace
           << ',' << run.time << ',' << run.outcome.steps << '\n';
     std::cout << "  wrote " << name << "_convergence.csv" << std::endl;
   }
+
+  /// The benchmark proper, run once the command line is read and MPI is
+  /// up.
+  void
+  benchmark(const Options &options)
+  {
+    const auto up_to = [](const unsigned int coarsest,
+                          const unsigned int finest) {
+      std::vector<unsigned int> sizes;
+      for (unsigned int n = coarsest; n <= finest; n *= 2)
+        sizes.push_back(n);
+      return sizes;
+    };
+    if (options.frame_max > 0)
+      study("frame",
+            "F L^2/EI at u_z/L = 1, 20 load steps",
+            up_to(10, options.frame_max),
+            frame,
+            options);
+    if (options.windmill_max > 0)
+      study("windmill",
+            "M L_b/EI at tau_z = 1.5 rad, 15 load steps",
+            up_to(5, options.windmill_max),
+            windmill,
+            options);
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  try
-    {
-      const Options options = parse_options(argc, argv);
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
-      const auto up_to = [](const unsigned int coarsest,
-                            const unsigned int finest) {
-        std::vector<unsigned int> sizes;
-        for (unsigned int n = coarsest; n <= finest; n *= 2)
-          sizes.push_back(n);
-        return sizes;
-      };
-      if (options.frame_max > 0)
-        study("frame",
-              "F L^2/EI at u_z/L = 1, 20 load steps",
-              up_to(10, options.frame_max),
-              frame,
-              options);
-      if (options.windmill_max > 0)
-        study("windmill",
-              "M L_b/EI at tau_z = 1.5 rad, 15 load steps",
-              up_to(5, options.windmill_max),
-              windmill,
-              options);
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "junction_convergence: " << e.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  return bench::run_benchmark("junction_convergence", argc, argv, benchmark);
 }

@@ -21,14 +21,13 @@
 //
 // Usage: kernel_throughput [--threads n] [--repeats n] (defaults 1 and 7:
 // the peer figures are single-threaded).
-#include <deal.II/base/mpi.h>
-
 #include <core/rod_model.h>
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
 
+#include <bench/options.h>
 #include <bench/timing.h>
 #include <cmath>
 #include <cstdlib>
@@ -44,26 +43,15 @@ namespace
   {
     unsigned int threads = 1;
     unsigned int repeats = 7;
-  };
 
-  Options
-  parse_options(int argc, char **argv)
-  {
-    Options options;
-    for (int i = 1; i + 1 < argc; i += 2)
-      {
-        const std::string  key   = argv[i];
-        const unsigned int value = std::stoul(argv[i + 1]);
-        if (key == "--threads")
-          options.threads = value;
-        else if (key == "--repeats")
-          options.repeats = std::max(5u, value);
-        else
-          throw std::invalid_argument("unknown option " + key +
-                                      "; known: --threads, --repeats");
-      }
-    return options;
-  }
+    /// The options of the usage line above.
+    std::vector<bench::Option>
+    command_line()
+    {
+      return {bench::number("--threads", threads),
+              bench::number("--repeats", repeats, 5)};
+    }
+  };
 
   /// Consumes results so that the compiler keeps the timed loops.
   volatile double sink = 0;
@@ -215,68 +203,65 @@ namespace
       bench::time_repeats(repeats, [&] { segment_loop(false); }));
     return timings;
   }
+
+  /// The benchmark proper, run once the command line is read and MPI is
+  /// up.
+  void
+  benchmark(const Options &options)
+  {
+    std::cout << "K1 hinge kernel throughput: " << options.threads
+              << " thread(s), median (min-max) of " << options.repeats
+              << " repeats, rates in hinges/s (N - 2 hinges; the assembled "
+                 "figures include the N - 1 segments in the time)\n";
+    const char *rows[] = {"(a) E+g+H assembled into Trilinos matrix",
+                          "(b) gradient assembled into vector",
+                          "(c) kernel evaluate() with Hessians",
+                          "(c) kernel evaluate() gradient only",
+                          "(c) local E+g+H: kernel+material+chain",
+                          "(c) local E+g: kernel+material+chain",
+                          "    segments local E+g+H (time only)",
+                          "    segments local E+g (time only)"};
+    for (const unsigned int n : {1000u, 100000u})
+      for (const std::string kernel : {"simple", "classic"})
+        {
+          const Timings            t = run_case(n, kernel, options.repeats);
+          const bench::Statistics *values[] = {&t.assemble_hessian,
+                                               &t.assemble_gradient,
+                                               &t.kernel_hessian,
+                                               &t.kernel_gradient,
+                                               &t.local_hessian,
+                                               &t.local_gradient,
+                                               &t.segments_hessian,
+                                               &t.segments_gradient};
+          const double             n_hinges = n - 2;
+          std::cout << "\nN = " << n << ", kernel \"" << kernel << "\"\n";
+          for (unsigned int i = 0; i < 8; ++i)
+            {
+              char line[200];
+              std::snprintf(line,
+                            sizeof(line),
+                            "  %-42s time/s %-30s hinges/s %s\n",
+                            rows[i],
+                            bench::format_time(*values[i]).c_str(),
+                            bench::format_rate(n_hinges, *values[i]).c_str());
+              std::cout << line;
+            }
+          std::cout << "  share of (a) outside the local loops "
+                       "(gather, scatter, WorkStream): "
+                    << 1 -
+                         (t.local_hessian.median + t.segments_hessian.median) /
+                           t.assemble_hessian.median
+                    << "; of (b): "
+                    << 1 - (t.local_gradient.median +
+                            t.segments_gradient.median) /
+                             t.assemble_gradient.median
+                    << std::endl;
+        }
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  try
-    {
-      const Options options = parse_options(argc, argv);
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
-      std::cout << "K1 hinge kernel throughput: " << options.threads
-                << " thread(s), median (min-max) of " << options.repeats
-                << " repeats, rates in hinges/s (N - 2 hinges; the assembled "
-                   "figures include the N - 1 segments in the time)\n";
-      const char *rows[] = {"(a) E+g+H assembled into Trilinos matrix",
-                            "(b) gradient assembled into vector",
-                            "(c) kernel evaluate() with Hessians",
-                            "(c) kernel evaluate() gradient only",
-                            "(c) local E+g+H: kernel+material+chain",
-                            "(c) local E+g: kernel+material+chain",
-                            "    segments local E+g+H (time only)",
-                            "    segments local E+g (time only)"};
-      for (const unsigned int n : {1000u, 100000u})
-        for (const std::string kernel : {"simple", "classic"})
-          {
-            const Timings            t = run_case(n, kernel, options.repeats);
-            const bench::Statistics *values[] = {&t.assemble_hessian,
-                                                 &t.assemble_gradient,
-                                                 &t.kernel_hessian,
-                                                 &t.kernel_gradient,
-                                                 &t.local_hessian,
-                                                 &t.local_gradient,
-                                                 &t.segments_hessian,
-                                                 &t.segments_gradient};
-            const double             n_hinges = n - 2;
-            std::cout << "\nN = " << n << ", kernel \"" << kernel << "\"\n";
-            for (unsigned int i = 0; i < 8; ++i)
-              {
-                char line[200];
-                std::snprintf(line,
-                              sizeof(line),
-                              "  %-42s time/s %-30s hinges/s %s\n",
-                              rows[i],
-                              bench::format_time(*values[i]).c_str(),
-                              bench::format_rate(n_hinges, *values[i]).c_str());
-                std::cout << line;
-              }
-            std::cout << "  share of (a) outside the local loops "
-                         "(gather, scatter, WorkStream): "
-                      << 1 - (t.local_hessian.median +
-                              t.segments_hessian.median) /
-                               t.assemble_hessian.median
-                      << "; of (b): "
-                      << 1 - (t.local_gradient.median +
-                              t.segments_gradient.median) /
-                               t.assemble_gradient.median
-                      << std::endl;
-          }
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "kernel_throughput: " << e.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  return bench::run_benchmark("kernel_throughput", argc, argv, benchmark);
 }

@@ -19,8 +19,6 @@
 // 1e5 because building the model is quadratic in N: RodNetwork::add_rod
 // compares every pair of vertices for coincidence, 15 s at 1e5 and an
 // estimated 25 min at 1e6 (see doc/performance.md).
-#include <deal.II/base/mpi.h>
-
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
@@ -29,6 +27,7 @@
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
 
+#include <bench/options.h>
 #include <bench/timing.h>
 #include <cmath>
 #include <fstream>
@@ -44,29 +43,16 @@ namespace
     unsigned int threads      = 1;
     unsigned int repeats      = 5;
     unsigned int max_vertices = 100000;
-  };
 
-  Options
-  parse_options(int argc, char **argv)
-  {
-    Options options;
-    for (int i = 1; i + 1 < argc; i += 2)
-      {
-        const std::string  key   = argv[i];
-        const unsigned int value = std::stoul(argv[i + 1]);
-        if (key == "--threads")
-          options.threads = value;
-        else if (key == "--repeats")
-          options.repeats = std::max(5u, value);
-        else if (key == "--max-vertices")
-          options.max_vertices = value;
-        else
-          throw std::invalid_argument(
-            "unknown option " + key +
-            "; known: --threads, --repeats, --max-vertices");
-      }
-    return options;
-  }
+    /// The options of the usage line above.
+    std::vector<bench::Option>
+    command_line()
+    {
+      return {bench::number("--threads", threads),
+              bench::number("--repeats", repeats, 5),
+              bench::number("--max-vertices", max_vertices)};
+    }
+  };
 
   /// Peak resident memory of the process (VmHWM) in MB.
   double
@@ -164,106 +150,103 @@ namespace
     result.tip_ratio        = deflection / (F / (3 * stiffness.EI1));
     return result;
   }
+
+  /// The benchmark proper, run once the command line is read and MPI is
+  /// up.
+  void
+  benchmark(const Options &options)
+  {
+    std::cout << "One Newton iteration (assemble + Amesos KLU), clamped "
+                 "straight rod, small tip load; "
+              << options.threads << " thread(s); median (min-max) in s of "
+              << options.repeats
+              << " repeats (3 for the largest N if it is 1e6)\n";
+
+    std::vector<unsigned int> sizes;
+    for (unsigned int n = 100; n <= options.max_vertices; n *= 10)
+      sizes.push_back(n);
+    std::vector<Result> results;
+    for (const unsigned int n : sizes)
+      {
+        const unsigned int repeats =
+          n >= 1000000 ? std::min(3u, options.repeats) : options.repeats;
+        results.push_back(run_case(n, repeats));
+        const Result &r = results.back();
+        char          line[400];
+        std::snprintf(
+          line,
+          sizeof(line),
+          "N %8u  DoFs %8u  setup %.3g s\n"
+          "  assemble  %-28s per vertex %.3g us\n"
+          "  factorize %-28s per vertex %.3g us\n"
+          "  solve     %-28s per vertex %.3g us\n"
+          "  total     %-28s per vertex %.3g us\n"
+          "  tip deflection / (P L^3 / 3EI) = %.6f  |K du - r|/|r| = %.1e  "
+          "peak memory %.0f MB\n",
+          n,
+          r.n_dofs,
+          r.setup,
+          bench::format_time(r.assemble).c_str(),
+          1e6 * r.assemble.median / n,
+          bench::format_time(r.factorize).c_str(),
+          1e6 * r.factorize.median / n,
+          bench::format_time(r.solve).c_str(),
+          1e6 * r.solve.median / n,
+          bench::format_time(r.total).c_str(),
+          1e6 * r.total.median / n,
+          r.tip_ratio,
+          r.relative_residual,
+          peak_memory_mb());
+        std::cout << line << std::flush;
+      }
+
+    std::cout << "\nLinearity: ratio of per-vertex times to those at the "
+                 "previous N (1 = linear)\n";
+    for (unsigned int i = 1; i < results.size(); ++i)
+      {
+        auto ratio = [&](const bench::Statistics Result::*field) {
+          return ((results[i].*field).median / sizes[i]) /
+                 ((results[i - 1].*field).median / sizes[i - 1]);
+        };
+        char line[200];
+        std::snprintf(line,
+                      sizeof(line),
+                      "  N %8u / %8u: assemble %.2f  factorize %.2f  "
+                      "solve %.2f  total %.2f\n",
+                      sizes[i],
+                      sizes[i - 1],
+                      ratio(&Result::assemble),
+                      ratio(&Result::factorize),
+                      ratio(&Result::solve),
+                      ratio(&Result::total));
+        std::cout << line;
+      }
+    if (sizes.size() >= 4)
+      {
+        const std::size_t a = 2, b = sizes.size() - 1;
+        auto exponent = [&](const bench::Statistics Result::*field) {
+          return std::log((results[b].*field).median /
+                          (results[a].*field).median) /
+                 std::log(double(sizes[b]) / sizes[a]);
+        };
+        char line[200];
+        std::snprintf(line,
+                      sizeof(line),
+                      "  exponent p of t ~ N^p from N = %u to %u: assemble "
+                      "%.3f  factorize %.3f  solve %.3f  total %.3f\n",
+                      sizes[a],
+                      sizes[b],
+                      exponent(&Result::assemble),
+                      exponent(&Result::factorize),
+                      exponent(&Result::solve),
+                      exponent(&Result::total));
+        std::cout << line;
+      }
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  try
-    {
-      const Options options = parse_options(argc, argv);
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
-      std::cout << "One Newton iteration (assemble + Amesos KLU), clamped "
-                   "straight rod, small tip load; "
-                << options.threads << " thread(s); median (min-max) in s of "
-                << options.repeats
-                << " repeats (3 for the largest N if it is 1e6)\n";
-
-      std::vector<unsigned int> sizes;
-      for (unsigned int n = 100; n <= options.max_vertices; n *= 10)
-        sizes.push_back(n);
-      std::vector<Result> results;
-      for (const unsigned int n : sizes)
-        {
-          const unsigned int repeats =
-            n >= 1000000 ? std::min(3u, options.repeats) : options.repeats;
-          results.push_back(run_case(n, repeats));
-          const Result &r = results.back();
-          char          line[400];
-          std::snprintf(
-            line,
-            sizeof(line),
-            "N %8u  DoFs %8u  setup %.3g s\n"
-            "  assemble  %-28s per vertex %.3g us\n"
-            "  factorize %-28s per vertex %.3g us\n"
-            "  solve     %-28s per vertex %.3g us\n"
-            "  total     %-28s per vertex %.3g us\n"
-            "  tip deflection / (P L^3 / 3EI) = %.6f  |K du - r|/|r| = %.1e  "
-            "peak memory %.0f MB\n",
-            n,
-            r.n_dofs,
-            r.setup,
-            bench::format_time(r.assemble).c_str(),
-            1e6 * r.assemble.median / n,
-            bench::format_time(r.factorize).c_str(),
-            1e6 * r.factorize.median / n,
-            bench::format_time(r.solve).c_str(),
-            1e6 * r.solve.median / n,
-            bench::format_time(r.total).c_str(),
-            1e6 * r.total.median / n,
-            r.tip_ratio,
-            r.relative_residual,
-            peak_memory_mb());
-          std::cout << line << std::flush;
-        }
-
-      std::cout << "\nLinearity: ratio of per-vertex times to those at the "
-                   "previous N (1 = linear)\n";
-      for (unsigned int i = 1; i < results.size(); ++i)
-        {
-          auto ratio = [&](const bench::Statistics Result::*field) {
-            return ((results[i].*field).median / sizes[i]) /
-                   ((results[i - 1].*field).median / sizes[i - 1]);
-          };
-          char line[200];
-          std::snprintf(line,
-                        sizeof(line),
-                        "  N %8u / %8u: assemble %.2f  factorize %.2f  "
-                        "solve %.2f  total %.2f\n",
-                        sizes[i],
-                        sizes[i - 1],
-                        ratio(&Result::assemble),
-                        ratio(&Result::factorize),
-                        ratio(&Result::solve),
-                        ratio(&Result::total));
-          std::cout << line;
-        }
-      if (sizes.size() >= 4)
-        {
-          const std::size_t a = 2, b = sizes.size() - 1;
-          auto exponent = [&](const bench::Statistics Result::*field) {
-            return std::log((results[b].*field).median /
-                            (results[a].*field).median) /
-                   std::log(double(sizes[b]) / sizes[a]);
-          };
-          char line[200];
-          std::snprintf(line,
-                        sizeof(line),
-                        "  exponent p of t ~ N^p from N = %u to %u: assemble "
-                        "%.3f  factorize %.3f  solve %.3f  total %.3f\n",
-                        sizes[a],
-                        sizes[b],
-                        exponent(&Result::assemble),
-                        exponent(&Result::factorize),
-                        exponent(&Result::solve),
-                        exponent(&Result::total));
-          std::cout << line;
-        }
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "newton_scaling: " << e.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  return bench::run_benchmark("newton_scaling", argc, argv, benchmark);
 }

@@ -26,10 +26,9 @@
 //
 // Usage: p1_dynamic_relaxation [--repeats n] [--threads n] [--search 0|1]
 // [--max-n N] (largest N; default 200)
-#include <deal.II/base/mpi.h>
-
 #include <solvers/dynamic_relaxation.h>
 
+#include <bench/options.h>
 #include <bench/p1_problem.h>
 #include <bench/timing.h>
 #include <cmath>
@@ -48,31 +47,17 @@ namespace
     unsigned int repeats = 3;
     bool         search  = true;
     unsigned int max_n   = 200;
-  };
 
-  Options
-  parse_options(int argc, char **argv)
-  {
-    Options options;
-    for (int i = 1; i + 1 < argc; i += 2)
-      {
-        const std::string  key   = argv[i];
-        const unsigned int value = std::stoul(argv[i + 1]);
-        if (key == "--threads")
-          options.threads = value;
-        else if (key == "--repeats")
-          options.repeats = std::max(1u, value);
-        else if (key == "--search")
-          options.search = value != 0;
-        else if (key == "--max-n")
-          options.max_n = value;
-        else
-          throw std::invalid_argument(
-            "unknown option " + key +
-            "; known: --threads, --repeats, --search, --max-n");
-      }
-    return options;
-  }
+    /// The options of the usage line above.
+    std::vector<bench::Option>
+    command_line()
+    {
+      return {bench::number("--threads", threads),
+              bench::number("--repeats", repeats, 1),
+              bench::flag("--search", search),
+              bench::number("--max-n", max_n)};
+    }
+  };
 
   /// The peer DR code at N: wall time (s) and tip error in z; it spends
   /// ~2.2 us per node per step, so its steps are time / (2.2e-6 N).
@@ -268,55 +253,52 @@ namespace
         }
     return best;
   }
+
+  /// The benchmark proper, run once the command line is read and MPI is
+  /// up.
+  void
+  benchmark(const Options &options)
+  {
+    std::ofstream csv("p1_dynamic_relaxation.csv");
+    csv.precision(8);
+    csv << "settings,N,time_step,mass_scaling,load_steps,tolerance,"
+           "iterations,time_median_s,time_min_s,time_max_s,"
+           "us_per_node_iteration,x_tip,z_tip,z_error,x_error,peer_steps,"
+           "peer_time_s,peer_z_error\n";
+
+    std::cout << "P1 by dynamic relaxation, median (min-max) of "
+              << options.repeats << " repeats, " << options.threads
+              << " thread(s)\n\ndefault settings\n";
+    for (const Peer &peer : peers)
+      if (peer.n <= options.max_n)
+        measure("default", peer, {}, options, csv);
+
+    if (options.search)
+      {
+        std::cout << "\nmass scaling 4 with the time step doubled (the "
+                     "same dt^2/s as the defaults)\n";
+        DynamicRelaxation::Parameters scaled;
+        scaled.mass_scaling = 4;
+        scaled.time_step    = 2;
+        measure("scaled", peers[0], scaled, options, csv);
+
+        for (const Peer &peer : peers)
+          if (peer.n <= options.max_n)
+            {
+              std::cout << "\nN = " << peer.n
+                        << ": fastest settings as accurate as the peer "
+                           "(z error "
+                        << peer.error << "): converged to within "
+                        << 0.1 * peer.error << "\n";
+              measure("fastest", peer, search(peer), options, csv);
+            }
+      }
+    std::cout << "\nwrote p1_dynamic_relaxation.csv" << std::endl;
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  try
-    {
-      const Options options = parse_options(argc, argv);
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
-      std::ofstream                            csv("p1_dynamic_relaxation.csv");
-      csv.precision(8);
-      csv << "settings,N,time_step,mass_scaling,load_steps,tolerance,"
-             "iterations,time_median_s,time_min_s,time_max_s,"
-             "us_per_node_iteration,x_tip,z_tip,z_error,x_error,peer_steps,"
-             "peer_time_s,peer_z_error\n";
-
-      std::cout << "P1 by dynamic relaxation, median (min-max) of "
-                << options.repeats << " repeats, " << options.threads
-                << " thread(s)\n\ndefault settings\n";
-      for (const Peer &peer : peers)
-        if (peer.n <= options.max_n)
-          measure("default", peer, {}, options, csv);
-
-      if (options.search)
-        {
-          std::cout << "\nmass scaling 4 with the time step doubled (the "
-                       "same dt^2/s as the defaults)\n";
-          DynamicRelaxation::Parameters scaled;
-          scaled.mass_scaling = 4;
-          scaled.time_step    = 2;
-          measure("scaled", peers[0], scaled, options, csv);
-
-          for (const Peer &peer : peers)
-            if (peer.n <= options.max_n)
-              {
-                std::cout << "\nN = " << peer.n
-                          << ": fastest settings as accurate as the peer "
-                             "(z error "
-                          << peer.error << "): converged to within "
-                          << 0.1 * peer.error << "\n";
-                measure("fastest", peer, search(peer), options, csv);
-              }
-        }
-      std::cout << "\nwrote p1_dynamic_relaxation.csv" << std::endl;
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "p1_dynamic_relaxation: " << e.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  return bench::run_benchmark("p1_dynamic_relaxation", argc, argv, benchmark);
 }

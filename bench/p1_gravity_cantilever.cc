@@ -23,10 +23,11 @@
 //
 // Usage: p1_gravity_cantilever [--threads n] [--repeats n] [--steps n]
 // [--log 1] (the solver's step log, for diagnosis; it is inside the timing)
-#include <deal.II/base/mpi.h>
-
+// [--line-search name] (Newton's line search: "backtrack", "polynomial" or
+// "full step", the default)
 #include <solvers/static_solver.h>
 
+#include <bench/options.h>
 #include <bench/p1_problem.h>
 #include <bench/timing.h>
 #include <cmath>
@@ -48,36 +49,18 @@ namespace
     unsigned int steps       = 0; ///< 0: choose
     bool         log         = false;
     std::string  line_search = "full step";
-  };
 
-  Options
-  parse_options(int argc, char **argv)
-  {
-    Options options;
-    for (int i = 1; i + 1 < argc; i += 2)
-      {
-        const std::string key = argv[i];
-        if (key == "--line-search")
-          {
-            options.line_search = argv[i + 1];
-            continue;
-          }
-        const unsigned int value = std::stoul(argv[i + 1]);
-        if (key == "--threads")
-          options.threads = value;
-        else if (key == "--repeats")
-          options.repeats = std::max(5u, value);
-        else if (key == "--steps")
-          options.steps = value;
-        else if (key == "--log")
-          options.log = value != 0;
-        else
-          throw std::invalid_argument(
-            "unknown option " + key +
-            "; known: --threads, --repeats, --steps, --log, --line-search");
-      }
-    return options;
-  }
+    /// The options of the usage line above.
+    std::vector<bench::Option>
+    command_line()
+    {
+      return {bench::number("--threads", threads),
+              bench::number("--repeats", repeats, 5),
+              bench::number("--steps", steps),
+              bench::flag("--log", log),
+              bench::text("--line-search", line_search)};
+    }
+  };
 
   struct Outcome
   {
@@ -173,76 +156,73 @@ namespace
       std::log(b.time / a.time) / std::log(b.error / a.error);
     return a.time * std::pow(error / a.error, slope);
   }
+
+  /// The benchmark proper, run once the command line is read and MPI is
+  /// up.
+  void
+  benchmark(const Options &options)
+  {
+    std::ofstream csv("p1_gravity_cantilever.csv");
+    csv << "variant,N,load_steps,newton_iterations,time_median_s,"
+           "time_min_s,time_max_s,x_tip,z_tip,z_error,x_error,"
+           "dismech_speedup_lower_bound,dismech_speedup_power_law\n";
+    csv.precision(8);
+
+    for (const double ea_scale : {1.0, 1e3})
+      {
+        const std::string variant = ea_scale == 1.0 ? "P1" : "EA x 1e3";
+        std::cout << "\n"
+                  << variant << ": choosing the number of load "
+                  << "steps\n";
+        const unsigned int n_steps =
+          options.steps > 0 ? options.steps : choose_steps(ea_scale, options);
+        std::cout << variant << ": " << n_steps << " load step(s), "
+                  << options.threads << " thread(s), median (min-max) of "
+                  << options.repeats << " repeats\n";
+        for (const unsigned int n : sizes)
+          {
+            Outcome                   outcome;
+            const std::vector<double> times =
+              bench::time_repeats(options.repeats, [&] {
+                outcome = solve(n, n_steps, ea_scale, options);
+              });
+            if (!outcome.converged)
+              throw std::runtime_error("N = " + std::to_string(n) +
+                                       " did not converge");
+            const bench::Statistics t = bench::statistics(times);
+            const double z_error      = std::abs(outcome.tip[2] - z_exact);
+            const double x_error      = std::abs(outcome.tip[0] - x_exact);
+            const double bound        = dismech_time_lower_bound(z_error);
+            const double law          = dismech_time_power_law(z_error);
+            char         line[400];
+            std::snprintf(line,
+                          sizeof(line),
+                          "  N %5u  iterations %3u  time %-30s  tip "
+                          "(%.7f, %.7f)  z error %.2e  x error %.2e  "
+                          "DisMech speed-up >= %.0f (power law %.0f)\n",
+                          n,
+                          outcome.iterations,
+                          bench::format_time(t).c_str(),
+                          outcome.tip[0],
+                          outcome.tip[2],
+                          z_error,
+                          x_error,
+                          bound / t.median,
+                          law / t.median);
+            std::cout << line << std::flush;
+            csv << variant << ',' << n << ',' << n_steps << ','
+                << outcome.iterations << ',' << t.median << ',' << t.min << ','
+                << t.max << ',' << outcome.tip[0] << ',' << outcome.tip[2]
+                << ',' << z_error << ',' << x_error << ',' << bound / t.median
+                << ',' << law / t.median << '\n';
+          }
+      }
+    std::cout << "\nwrote p1_gravity_cantilever.csv" << std::endl;
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  try
-    {
-      const Options options = parse_options(argc, argv);
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, options.threads);
-      std::ofstream                            csv("p1_gravity_cantilever.csv");
-      csv << "variant,N,load_steps,newton_iterations,time_median_s,"
-             "time_min_s,time_max_s,x_tip,z_tip,z_error,x_error,"
-             "dismech_speedup_lower_bound,dismech_speedup_power_law\n";
-      csv.precision(8);
-
-      for (const double ea_scale : {1.0, 1e3})
-        {
-          const std::string variant = ea_scale == 1.0 ? "P1" : "EA x 1e3";
-          std::cout << "\n"
-                    << variant << ": choosing the number of load "
-                    << "steps\n";
-          const unsigned int n_steps =
-            options.steps > 0 ? options.steps : choose_steps(ea_scale, options);
-          std::cout << variant << ": " << n_steps << " load step(s), "
-                    << options.threads << " thread(s), median (min-max) of "
-                    << options.repeats << " repeats\n";
-          for (const unsigned int n : sizes)
-            {
-              Outcome                   outcome;
-              const std::vector<double> times =
-                bench::time_repeats(options.repeats, [&] {
-                  outcome = solve(n, n_steps, ea_scale, options);
-                });
-              if (!outcome.converged)
-                throw std::runtime_error("N = " + std::to_string(n) +
-                                         " did not converge");
-              const bench::Statistics t = bench::statistics(times);
-              const double z_error      = std::abs(outcome.tip[2] - z_exact);
-              const double x_error      = std::abs(outcome.tip[0] - x_exact);
-              const double bound        = dismech_time_lower_bound(z_error);
-              const double law          = dismech_time_power_law(z_error);
-              char         line[400];
-              std::snprintf(line,
-                            sizeof(line),
-                            "  N %5u  iterations %3u  time %-30s  tip "
-                            "(%.7f, %.7f)  z error %.2e  x error %.2e  "
-                            "DisMech speed-up >= %.0f (power law %.0f)\n",
-                            n,
-                            outcome.iterations,
-                            bench::format_time(t).c_str(),
-                            outcome.tip[0],
-                            outcome.tip[2],
-                            z_error,
-                            x_error,
-                            bound / t.median,
-                            law / t.median);
-              std::cout << line << std::flush;
-              csv << variant << ',' << n << ',' << n_steps << ','
-                  << outcome.iterations << ',' << t.median << ',' << t.min
-                  << ',' << t.max << ',' << outcome.tip[0] << ','
-                  << outcome.tip[2] << ',' << z_error << ',' << x_error << ','
-                  << bound / t.median << ',' << law / t.median << '\n';
-            }
-        }
-      std::cout << "\nwrote p1_gravity_cantilever.csv" << std::endl;
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "p1_gravity_cantilever: " << e.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  return bench::run_benchmark("p1_gravity_cantilever", argc, argv, benchmark);
 }
