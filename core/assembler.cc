@@ -257,14 +257,21 @@ namespace rodnet
 
     // Hinges and junction elements share the bending and twisting part:
     // strains -> material -> chain rule.
+    // Materials see the strains, the committed internal variables of the
+    // stencil and the time step; elastic ones ignore the last two. Nothing
+    // is written back here (see commit_internal_variables()).
     auto bending = [&](const HingeStrains &strains,
                        const RodMaterial  &material,
                        const double        voronoi_length,
+                       const double       *committed,
                        LocalContribution  &copy) {
-      const MaterialResponse<3> w =
-        material.hinge_energy(strains.kappa, voronoi_length);
-      copy.energy                = w.energy;
-      const HingeVector gradient = strains.gradient.transpose() * w.stress;
+      const MaterialResponse<3> w = material.hinge_increment(strains.kappa,
+                                                             voronoi_length,
+                                                             committed,
+                                                             step_length,
+                                                             nullptr);
+      copy.energy                 = w.energy;
+      const HingeVector gradient  = strains.gradient.transpose() * w.stress;
       HingeMatrix       hessian;
       if (with_hessian)
         {
@@ -290,16 +297,21 @@ namespace rodnet
           copy.dofs.clear();
           copy.energy = 0;
           guarded([&] {
-            const auto [k, ref, x, l] = element(it - stencils.begin(), *it);
+            const auto [k, ref, x, l, committed] =
+              element(it - stencils.begin(), *it);
             if (!with_gradient)
               {
                 copy.energy = materials[it->rod]
-                                ->hinge_energy(k->strains(x, ref), l)
+                                ->hinge_increment(k->strains(x, ref),
+                                                  l,
+                                                  committed,
+                                                  step_length,
+                                                  nullptr)
                                 .energy;
                 return;
               }
             k->evaluate(x, ref, scratch.hinge, with_hessian);
-            bending(scratch.hinge, *materials[it->rod], l, copy);
+            bending(scratch.hinge, *materials[it->rod], l, committed, copy);
             copy.dofs.assign(it->dofs.begin(), it->dofs.end());
           });
         },
@@ -313,7 +325,8 @@ namespace rodnet
                      kernels[stencil.rod].get(),
                      std::cref(configuration_->hinge_reference(h)),
                      configuration_->hinge_dofs(u, stencil),
-                     configuration_->voronoi_length(h));
+                     configuration_->voronoi_length(h),
+                     history.block(InternalVariables::Owner::hinge, h));
                  });
     bending_pass(layout_->junctions(),
                  [&](const unsigned int e, const JunctionStencil &stencil) {
@@ -321,7 +334,9 @@ namespace rodnet
                      junction_kernels[stencil.rod].get(),
                      std::cref(configuration_->junction_reference(e)),
                      configuration_->junction_dofs(u, stencil),
-                     configuration_->junction_voronoi_length(e));
+                     configuration_->junction_voronoi_length(e),
+                     history.block(InternalVariables::Owner::junction_element,
+                                   e));
                  });
 
     // Applied moments about fixed axes: potential -lambda M theta_u(q)
@@ -374,8 +389,13 @@ namespace rodnet
                            l0,
                            scratch.stretch,
                            with_hessian);
-          const MaterialResponse<1> w =
-            materials[it->rod]->segment_energy(scratch.stretch.strain, l0);
+          const MaterialResponse<1> w = materials[it->rod]->segment_increment(
+            scratch.stretch.strain,
+            l0,
+            history.block(InternalVariables::Owner::segment,
+                          it - segments.begin()),
+            step_length,
+            nullptr);
           copy.energy = w.energy;
           if (!with_gradient)
             return;

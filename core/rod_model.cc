@@ -21,17 +21,6 @@ namespace rodnet
       throw std::invalid_argument(
         "RodModel: " + std::to_string(rods.size()) + " rods but " +
         std::to_string(materials.size()) + " materials");
-    for (unsigned int r = 0; r < materials.size(); ++r)
-      if (materials[r]->n_hinge_internal_variables() > 0 ||
-          materials[r]->n_segment_internal_variables() > 0)
-        // The assembly does not store internal variables yet: solving with
-        // the material's instantaneous response would be a silent wrong
-        // answer for a history-dependent law.
-        throw std::invalid_argument(
-          "RodModel: the material of rod " + std::to_string(r) +
-          " has internal variables (a viscoelastic law), which static "
-          "solves do not evolve yet; time-dependent solves are to come "
-          "(doc/viscoelasticity.md)");
     std::vector<const HingeKernel *>    rod_kernels;
     std::vector<const JunctionKernel *> rod_junction_kernels;
     for (const Rod &rod : rods)
@@ -47,6 +36,15 @@ namespace rodnet
                                                      *layout_,
                                                      rod_kernels,
                                                      rod_junction_kernels);
+
+    std::vector<std::vector<unsigned int>> sizes(3);
+    for (const HingeStencil &h : layout_->hinges())
+      sizes[0].push_back(materials[h.rod]->n_hinge_internal_variables());
+    for (const JunctionStencil &e : layout_->junctions())
+      sizes[1].push_back(materials[e.rod]->n_hinge_internal_variables());
+    for (const SegmentStencil &s : layout_->segments())
+      sizes[2].push_back(materials[s.rod]->n_segment_internal_variables());
+    history = InternalVariables(sizes);
 
     // Supports that junctions imply, and the gauge of their quaternions:
     // the real part of every increment stays 1 (stored as 0).

@@ -8,6 +8,7 @@
 
 #include <core/configuration.h>
 #include <core/dof_layout.h>
+#include <core/internal_variables.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
@@ -52,6 +53,12 @@ namespace rodnet
    * Usage: construct, add supports and loads, call finalize(), then
    * assemble / solve (see StaticSolver) and reset_reference() after each
    * converged step.
+   *
+   * History-dependent materials (RodMaterial with internal variables) make
+   * the energy the condensed incremental potential of one time step: set
+   * the step with set_time_step() before assembling, and after the step has
+   * converged call commit_internal_variables() (see TimeIntegrator, which
+   * does both). Static load stepping refuses such models.
    */
   class RodModel
   {
@@ -164,6 +171,48 @@ namespace rodnet
                     const VectorType &u,
                     double            load_factor) const;
 
+    /// @name History-dependent materials
+    /// @{
+    /// Whether any rod's material has internal variables.
+    bool
+    has_internal_variables() const
+    {
+      return !history.empty();
+    }
+
+    /**
+     * Time step of the next assemblies, which the materials' incremental
+     * updates need; 0 (the default) evaluates the stored energy at the
+     * committed internal variables, the state at the end of a converged
+     * step. Throws std::invalid_argument for a negative or non-finite value
+     * when the model has internal variables (any value is accepted, and
+     * ignored, otherwise).
+     */
+    void
+    set_time_step(double time_step);
+
+    double
+    time_step() const
+    {
+      return step_length;
+    }
+
+    /**
+     * Evaluates the materials' updated internal variables at the converged
+     * state @p u over the current time step and makes them the committed
+     * ones. Call once per converged step, before reset_reference().
+     */
+    void
+    commit_internal_variables(const VectorType &u);
+
+    /// The committed internal variables.
+    const InternalVariables &
+    internal_variables() const
+    {
+      return history;
+    }
+    /// @}
+
     /// A zero vector with the model's layout.
     VectorType
     create_vector() const;
@@ -258,6 +307,8 @@ namespace rodnet
     std::vector<AxisLoad>                     moments;
     std::vector<AxisLoad>                     prescribed_rotations;
     VectorType                                f_ext;
+    InternalVariables                         history;
+    double                                    step_length = 0;
     dealii::TrilinosWrappers::SparsityPattern sparsity;
     double                                    length    = 0;
     bool                                      finalized = false;

@@ -10,6 +10,7 @@
 #include <elements/stretch_kernel.h>
 #include <io/vtu_output.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -33,6 +34,16 @@ namespace rodnet
         throw std::runtime_error("VtuOutput: cannot open \"" + path +
                                  "\" for writing");
       return out;
+    }
+
+    /// VTU field name of an internal variable labelled "name (unit)":
+    /// the name with underscores for blanks.
+    std::string
+    field_name(const std::string &label)
+    {
+      std::string name = label.substr(0, label.find(" ("));
+      std::replace(name.begin(), name.end(), ' ', '_');
+      return name;
     }
 
     /// Closes @p out; throws naming @p path if any write failed.
@@ -171,6 +182,34 @@ namespace rodnet
         twist_rate[vertex_scalar_index[vertex]]   = kappa[2];
       }
 
+    // Internal variables of history-dependent materials, one field per
+    // name: hinge variables at the hinge's vertex, segment ones per cell,
+    // zero where a rod's material has no such variable. (Junction elements
+    // share their vertex with several rods and are not drawn.)
+    using Owner                      = InternalVariables::Owner;
+    const InternalVariables &history = model.internal_variables();
+    std::map<std::string, dealii::Vector<double>> vertex_history, cell_history;
+    for (unsigned int h = 0; !history.empty() && h < hinges.size(); ++h)
+      {
+        const auto names =
+          model.material(hinges[h].rod).hinge_internal_variable_names();
+        for (unsigned int m = 0; m < names.size(); ++m)
+          vertex_history
+            .try_emplace(field_name(names[m]), vertex_scalar_dofs.n_dofs())
+            .first->second[vertex_scalar_index[hinges[h].vertices[1]]] =
+            history.block(Owner::hinge, h)[m];
+      }
+    const auto &segments = model.layout().segments();
+    for (unsigned int c = 0; !history.empty() && c < segments.size(); ++c)
+      {
+        const auto names =
+          model.material(segments[c].rod).segment_internal_variable_names();
+        for (unsigned int m = 0; m < names.size(); ++m)
+          cell_history.try_emplace(field_name(names[m]), tria.n_active_cells())
+            .first->second[segments[c].cell] =
+            history.block(Owner::segment, c)[m];
+      }
+
     // The DoFHandler's part of u, with the position of every rod end at a
     // junction filled in from the DoFs it shares.
     const DofLayout       &layout = model.layout();
@@ -207,6 +246,12 @@ namespace rodnet
     data_out.add_data_vector(axial_strain,
                              "axial_strain",
                              dealii::DataOut<1, 3>::type_cell_data);
+    for (const auto &[name, values] : vertex_history)
+      data_out.add_data_vector(vertex_scalar_dofs, values, name);
+    for (const auto &[name, values] : cell_history)
+      data_out.add_data_vector(values,
+                               name,
+                               dealii::DataOut<1, 3>::type_cell_data);
 
     // A degree-1 Eulerian mapping moves each vertex by its displacement, so
     // the patches are the deformed polyline.

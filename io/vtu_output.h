@@ -28,7 +28,10 @@ namespace rodnet
    * - per vertex, from the hinge at that vertex and zero at rod ends:
    *   "curvature" = (kappa_1, kappa_2, 0) / l, the bending curvatures about
    *   d1 and d2 in material components, and "twist_rate" = kappa_3 / l,
-   *   with l the hinge's undeformed Voronoi length.
+   *   with l the hinge's undeformed Voronoi length;
+   * - for history-dependent materials, their committed internal variables,
+   *   one field per name ("viscous_curvature_1", ...): hinge variables per
+   *   vertex (zero at rod ends), segment variables per segment.
    *
    * deal.II's VTU writer stores every value as a 32-bit float, which is
    * enough to look at but not to restart from. The model must outlive this

@@ -61,9 +61,15 @@ namespace rodnet
    *   @p updated of the converged strains into the committed values; a
    *   failed or cut step leaves them untouched.
    *
+   * A step of zero length lets no variable flow: the increment functions
+   * then return the stored energy W(kappa, previous) with its derivatives,
+   * the instantaneous response at the committed variables. A time stepper
+   * evaluates converged states that way (stresses, energies and reactions
+   * at the end of a step, after the commit).
+   *
    * Materials without internal variables (the default) ignore the time step
    * and the arrays and return hinge_energy() / segment_energy(), so a static
-   * solve may call the increment functions with any time step, even 0.
+   * solve may call the increment functions with any time step.
    */
   class RodMaterial
   {
@@ -124,7 +130,7 @@ namespace rodnet
      * caller needs none (an energy-only evaluation); both may be null when
      * there are no variables, and they must not overlap. Materials with
      * internal variables throw std::invalid_argument (check_time_step()) unless
-     * @p time_step is positive and finite.
+     * @p time_step is finite and not negative (0: no flow, see above).
      *
      * The default, for materials without internal variables, returns
      * hinge_energy(kappa, voronoi_length) and touches neither array.
@@ -161,19 +167,19 @@ namespace rodnet
     }
 
     /**
-     * Throws std::invalid_argument unless @p time_step is positive and
-     * finite: a history-dependent update divides by it. Called by
+     * Throws std::invalid_argument unless @p time_step is finite and not
+     * negative: time runs forward in a history-dependent update. Called by
      * materials with internal variables; a time stepper may call it to
      * reject a bad step before assembling.
      */
     static void
     check_time_step(const double time_step)
     {
-      if (!(time_step > 0. && std::isfinite(time_step)))
+      if (!(time_step >= 0. && std::isfinite(time_step)))
         {
           std::ostringstream message;
           message << "rod material with internal variables: the time step "
-                     "must be positive and finite, got "
+                     "must be finite and not negative, got "
                   << time_step;
           throw std::invalid_argument(message.str());
         }

@@ -10,6 +10,7 @@
 #include <io/probe_plot.h>
 #include <io/vtu_output.h>
 #include <materials/linear_elastic_rod.h>
+#include <materials/standard_linear_solid.h>
 
 #include <algorithm>
 #include <cmath>
@@ -232,6 +233,47 @@ TEST(VtuOutput, WritesDeformedRodFieldsAndTimeSeries)
        at             = rewritten.find("<DataSet", at + 1))
     ++entries;
   EXPECT_EQ(entries, 2u);
+}
+
+// A viscoelastic rod stretched uniformly by e over one committed step of
+// dt: its viscous axial strain is (1 - w) e per segment, w = t_r/(t_r + dt),
+// and its viscous curvatures are zero.
+TEST(VtuOutput, WritesInternalVariables)
+{
+  auto network = std::make_unique<RodNetwork>();
+  network->add_rod(generators::straight(Vector3(0, 0, 0),
+                                        Vector3(1, 0, 0),
+                                        n_segments),
+                   false,
+                   Vector3::UnitY(),
+                   "simple");
+  const double t_r = 2.0, dt = 0.5, e = 0.125;
+  RodModel     model(
+    std::move(network),
+    {std::make_shared<StandardLinearSolid>(RodStiffness{1.0, 1.0, 1.0, 1.0},
+                                           0.5,
+                                           t_r)});
+  model.finalize();
+  VectorType u = model.create_vector();
+  for (unsigned int v = 0; v <= n_segments; ++v)
+    u[model.layout().vertex_dof(v, 0)] = e * model.network().vertex(v)[0];
+  model.set_time_step(dt);
+  model.commit_internal_variables(u);
+
+  const fs::path dir = scratch("history");
+  VtuOutput      output(model, dir.string());
+  output.write(0, dt, u);
+  const std::string        vtu = read_text(dir / "solution-00000.vtu");
+  const std::vector<float> viscous =
+    read_data_array(vtu, "viscous_axial_strain");
+  ASSERT_EQ(viscous.size(), 2 * n_segments);
+  const double w = t_r / (t_r + dt);
+  for (const float value : viscous)
+    EXPECT_NEAR(value, (1 - w) * e, 1e-7);
+  for (const std::string name :
+       {"viscous_curvature_1", "viscous_curvature_2", "viscous_twist_rate"})
+    for (const float value : read_data_array(vtu, name))
+      EXPECT_NEAR(value, 0.0, 1e-7) << name;
 }
 
 TEST(VtuOutput, UnusableDirectoryThrowsNamingIt)
