@@ -36,6 +36,11 @@ namespace rodnet
           , r(layout)
           , tangent(tangent)
       {
+        if (problem.rank_one)
+          {
+            rank_one_a.reinit(layout);
+            rank_one_b.reinit(layout);
+          }
       }
 
       bool
@@ -66,6 +71,8 @@ namespace rodnet
           {
             copy_in(x_in);
             problem.tangent(x, tangent);
+            if (problem.rank_one)
+              problem.rank_one(x, rank_one_a, rank_one_b);
             return true;
           }
         catch (const std::exception &e)
@@ -76,6 +83,8 @@ namespace rodnet
       }
 
       std::string failure;
+      /// The Jacobian's rank-one part a b^T at the last computeJacobian().
+      VectorType rank_one_a, rank_one_b;
 
     private:
       void
@@ -97,6 +106,87 @@ namespace rodnet
       VectorType                   x;
       VectorType                   r;
       MatrixType                  &tangent;
+    };
+
+    /**
+     * Amesos solves with the Jacobian J = K + a b^T, K the assembled
+     * tangent and a, b the interface's rank-one vectors (Sherman-Morrison):
+     * J^-1 f = x - y (b.x) / (1 + b.y), with K x = f and K y = a.
+     */
+    class RankOneAmesos : public NOX::Epetra::LinearSystemAmesos
+    {
+    public:
+      RankOneAmesos(Teuchos::ParameterList              &printing,
+                    Teuchos::ParameterList              &linear,
+                    const Teuchos::RCP<NoxInterface>    &interface,
+                    const Teuchos::RCP<Epetra_Operator> &jacobian,
+                    const NOX::Epetra::Vector           &clone)
+          : NOX::Epetra::LinearSystemAmesos(printing,
+                                            linear,
+                                            interface,
+                                            interface,
+                                            jacobian,
+                                            clone)
+          , interface(interface)
+      {
+      }
+
+      bool
+      applyJacobian(const NOX::Epetra::Vector &input,
+                    NOX::Epetra::Vector       &result) const override
+      {
+        if (!NOX::Epetra::LinearSystemAmesos::applyJacobian(input, result))
+          return false;
+        result.getEpetraVector().Update(dot(b(), input.getEpetraVector()),
+                                        a(),
+                                        1.0);
+        return true;
+      }
+
+      bool
+      applyJacobianInverse(Teuchos::ParameterList    &params,
+                           const NOX::Epetra::Vector &input,
+                           NOX::Epetra::Vector       &result) override
+      {
+        NOX::Epetra::Vector a_vector(a(), NOX::DeepCopy);
+        NOX::Epetra::Vector y(a_vector, NOX::ShapeCopy);
+        if (!NOX::Epetra::LinearSystemAmesos::applyJacobianInverse(params,
+                                                                   input,
+                                                                   result) ||
+            !NOX::Epetra::LinearSystemAmesos::applyJacobianInverse(params,
+                                                                   a_vector,
+                                                                   y))
+          return false;
+        const double denominator = 1 + dot(b(), y.getEpetraVector());
+        if (!(std::abs(denominator) > 0) || !std::isfinite(denominator))
+          return false;
+        result.getEpetraVector().Update(-dot(b(), result.getEpetraVector()) /
+                                          denominator,
+                                        y.getEpetraVector(),
+                                        1.0);
+        return true;
+      }
+
+    private:
+      const Epetra_Vector &
+      a() const
+      {
+        return *interface->rank_one_a.trilinos_vector()(0);
+      }
+      const Epetra_Vector &
+      b() const
+      {
+        return *interface->rank_one_b.trilinos_vector()(0);
+      }
+      static double
+      dot(const Epetra_Vector &u, const Epetra_Vector &v)
+      {
+        double value = 0;
+        u.Dot(v, &value);
+        return value;
+      }
+
+      Teuchos::RCP<NoxInterface> interface;
     };
 
     std::string
@@ -150,15 +240,22 @@ namespace rodnet
     RCP<Epetra_Operator>                  jacobian_operator =
       rcp(const_cast<Epetra_CrsMatrix *>(&tangent.trilinos_matrix()), false);
 
-    Epetra_Vector       x_view(View, x.trilinos_vector(), 0);
-    NOX::Epetra::Vector initial_guess(x_view, NOX::DeepCopy);
-    auto                linear_system =
-      rcp(new NOX::Epetra::LinearSystemAmesos(printing,
-                                              linear,
-                                              required,
-                                              jacobian,
-                                              jacobian_operator,
-                                              initial_guess));
+    Epetra_Vector                  x_view(View, x.trilinos_vector(), 0);
+    NOX::Epetra::Vector            initial_guess(x_view, NOX::DeepCopy);
+    RCP<NOX::Epetra::LinearSystem> linear_system;
+    if (problem.rank_one)
+      linear_system = rcp(new RankOneAmesos(printing,
+                                            linear,
+                                            interface,
+                                            jacobian_operator,
+                                            initial_guess));
+    else
+      linear_system = rcp(new NOX::Epetra::LinearSystemAmesos(printing,
+                                                              linear,
+                                                              required,
+                                                              jacobian,
+                                                              jacobian_operator,
+                                                              initial_guess));
     auto group = rcp(
       new NOX::Epetra::Group(printing, required, initial_guess, linear_system));
 

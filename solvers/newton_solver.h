@@ -46,6 +46,15 @@ namespace rodnet
     {
       std::function<void(const VectorType &x, VectorType &residual)> residual;
       std::function<void(const VectorType &x, MatrixType &tangent)>  tangent;
+      /**
+       * Optional dense part of the Jacobian: where set, the Jacobian at x
+       * is tangent + a b^T, with a and b filled by this function, called
+       * right after tangent() at the same x. Linear solves then use the
+       * Sherman-Morrison formula around the sparse factorization (two
+       * solves per iteration); a sparse matrix cannot hold a b^T.
+       */
+      std::function<void(const VectorType &x, VectorType &a, VectorType &b)>
+        rank_one;
     };
 
     explicit NewtonSolver(const Parameters &parameters);

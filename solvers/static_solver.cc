@@ -22,6 +22,13 @@ namespace rodnet
   {
     if (parameters.n_steps < 1)
       throw std::invalid_argument("the number of load steps must be >= 1");
+    if (model.has_internal_variables())
+      // Load steps have no time: a history-dependent material would answer
+      // with an arbitrary rate.
+      throw std::invalid_argument(
+        "static load stepping cannot solve a material with internal "
+        "variables (a viscoelastic law): its response depends on time; "
+        "use time stepping (quasi-static or dynamic, doc/dynamics.md)");
     model.initialize_matrix(tangent);
   }
 
@@ -57,7 +64,7 @@ namespace rodnet
         model.assemble(u, load_factor, &r, &tangent, true, extra_force);
         if (scale_state == nullptr)
           scale = std::max(scale, r.l2_norm());
-        floor = roundoff_floor();
+        floor = residual_roundoff_floor(model, tangent);
       }
     catch (const std::exception &e)
       {
@@ -112,12 +119,8 @@ namespace rodnet
   }
 
   double
-  StaticSolver::roundoff_floor() const
+  residual_roundoff_floor(const RodModel &model, const MatrixType &tangent)
   {
-    // Internal forces are differences of stiffness times positions: an
-    // axial force EA (|e|/l - 1) carries the rounding error of the
-    // positions, eps |x|, times EA / l, the scale of the tangent's diagonal.
-    // Summed over the DoFs, no residual norm below this is meaningful.
     double max_diagonal = 0;
     for (unsigned int i = 0; i < tangent.m(); ++i)
       if (!model.constraints().is_constrained(i))

@@ -20,6 +20,16 @@ namespace rodnet
   };
 
   /**
+   * Smallest residual norm that rounding errors let a state of @p model
+   * reach, from its constrained @p tangent: an axial force EA (|e|/l - 1)
+   * carries the rounding error of the positions, eps |x|, times EA / l, the
+   * scale of the tangent's diagonal; summed over the DoFs, no residual
+   * norm below eps max|K_ii| L sqrt(n_dofs) is meaningful.
+   */
+  double
+  residual_roundoff_floor(const RodModel &model, const MatrixType &tangent);
+
+  /**
    * Static equilibrium by load stepping: the load factor goes from 0 to 1
    * in equal steps, each solved by NewtonSolver from the previous
    * equilibrium moved by a predictor (see Parameters::predict); a failed step
@@ -135,11 +145,6 @@ namespace rodnet
     linear_prediction(const VectorType &u,
                       double            load_factor,
                       VectorType       &trial);
-
-    /// Smallest residual norm that rounding errors let the current state
-    /// reach, from the tangent assembled last.
-    double
-    roundoff_floor() const;
 
     void
     bisect_critical_load(const VectorType    &u_stable,

@@ -1,0 +1,440 @@
+#include <deal.II/base/timer.h>
+
+#include <solvers/time_integrator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    const std::vector<std::pair<Integrator, std::string>> integrator_names = {
+      {Integrator::quasi_static, "quasi-static"},
+      {Integrator::backward_euler, "backward euler"},
+      {Integrator::newmark, "newmark"},
+      {Integrator::midpoint, "midpoint"}};
+
+    /// Coefficient c of the mass term c M (u - u_n - h v_n) of @p method.
+    double
+    mass_coefficient(const Integrator method, const double h)
+    {
+      switch (method)
+        {
+          case Integrator::quasi_static:
+            return 0;
+          case Integrator::backward_euler:
+            return 1 / (h * h);
+          case Integrator::newmark:
+            return 4 / (h * h);
+          case Integrator::midpoint:
+            return 2 / (h * h);
+        }
+      return 0;
+    }
+
+    std::string
+    time_string(const double t)
+    {
+      std::ostringstream s;
+      s.precision(6);
+      s << t;
+      return s.str();
+    }
+  } // namespace
+
+  std::string
+  to_string(const Integrator integrator)
+  {
+    for (const auto &[value, name] : integrator_names)
+      if (value == integrator)
+        return name;
+    return "unknown";
+  }
+
+  Integrator
+  parse_integrator(const std::string &name)
+  {
+    std::string known;
+    for (const auto &[value, n] : integrator_names)
+      {
+        if (n == name)
+          return value;
+        known += (known.empty() ? "" : ", ") + n;
+      }
+    throw std::invalid_argument("unknown time integrator \"" + name +
+                                "\"; known: " + known);
+  }
+
+  TimeIntegrator::TimeIntegrator(RodModel                      &model,
+                                 const std::vector<RodInertia> &inertia,
+                                 const Parameters              &parameters,
+                                 std::ostream                  *log)
+      : model(model)
+      , parameters(parameters)
+      , log(log)
+  {
+    const Parameters &p = parameters;
+    if (!(p.time_step > 0) || !std::isfinite(p.time_step))
+      throw std::invalid_argument(
+        "time stepping: the time step must be positive and finite, got " +
+        time_string(p.time_step));
+    if (!(p.end_time >= p.start_time) || !std::isfinite(p.end_time))
+      throw std::invalid_argument(
+        "time stepping: the end time " + time_string(p.end_time) +
+        " lies before the start time " + time_string(p.start_time));
+    if (!(p.preload_time >= 0) || !std::isfinite(p.preload_time) ||
+        (p.preload_time > 0 && p.preload_steps == 0))
+      throw std::invalid_argument(
+        "time stepping: the preload time must be finite and not negative, "
+        "and a preload needs at least one step");
+    if (!(p.min_step_fraction > 0 && p.min_step_fraction <= 1))
+      throw std::invalid_argument(
+        "time stepping: the minimum step fraction must lie in (0, 1]");
+    if (p.integrator == Integrator::midpoint && model.has_internal_variables())
+      throw std::invalid_argument(
+        "time stepping: the midpoint rule conserves a stored energy, which "
+        "a material with internal variables (a viscoelastic law) does not "
+        "have; use newmark or backward euler");
+    model.initialize_matrix(tangent);
+    last_increment = model.create_vector();
+    if (p.integrator == Integrator::quasi_static)
+      return;
+    if (inertia.empty())
+      throw std::invalid_argument(
+        "time stepping: the " + to_string(p.integrator) +
+        " integrator needs the inertia of every rod (a density); only "
+        "quasi-static runs do without");
+    assemble_mass_matrix(model, inertia, p.mass, mass, false);
+    assemble_mass_matrix(model, inertia, p.mass, constrained_mass, true);
+    has_mass.resize(mass.m());
+    for (unsigned int i = 0; i < mass.m(); ++i)
+      has_mass[i] = mass.diag_element(i) != 0.0;
+    inertial_force = model.create_vector();
+  }
+
+  void
+  TimeIntegrator::equilibrium_inertial_force(const VectorType &u,
+                                             const double      load_factor)
+  {
+    // M a_0 = lambda f - grad W: the out-of-balance force of the start.
+    model.assemble(u, load_factor, &inertial_force, nullptr, true);
+    inertial_force *= -1.0;
+    for (unsigned int i = 0; i < has_mass.size(); ++i)
+      if (!has_mass[i])
+        inertial_force[i] = 0;
+    inertial_force.compress(dealii::VectorOperation::insert);
+  }
+
+  void
+  TimeIntegrator::run(VectorType &u, VectorType &v, const Observer &observer)
+  {
+    const Parameters &p = parameters;
+    if (p.preload_time > 0)
+      {
+        // Steps end at start - preload_time + (k - 1) h, k = 1..n: all
+        // strictly before the start, so that a load released at the start
+        // (load factor if(t < 0, 1, 0)) holds during the whole preload.
+        const double h    = p.preload_time / p.preload_steps;
+        const double from = p.start_time - p.preload_time - h;
+        model.apply_boundary_values(u, p.load_factor(from));
+        advance(Integrator::quasi_static,
+                from,
+                p.start_time - h,
+                h,
+                u,
+                v,
+                observer);
+        v                = 0;
+        last_step_length = 0;
+      }
+    model.apply_boundary_values(u, p.load_factor(p.start_time));
+    model.set_time_step(0);
+    if (p.integrator == Integrator::newmark)
+      equilibrium_inertial_force(u, p.load_factor(p.start_time));
+    advance(p.integrator,
+            p.start_time,
+            p.end_time,
+            p.time_step,
+            u,
+            v,
+            observer);
+  }
+
+  void
+  TimeIntegrator::advance(const Integrator method,
+                          const double     from,
+                          const double     to,
+                          const double     h,
+                          VectorType      &u,
+                          VectorType      &v,
+                          const Observer  &observer)
+  {
+    // Times closer than this to a grid point are on it (rounding of t).
+    const double on_grid = 1e-9 * h;
+    double       t       = from;
+    unsigned int k       = 0; ///< grid points passed
+    double       attempt = h;
+    while (to - t > on_grid)
+      {
+        const double         grid   = std::min(from + (k + 1) * h, to);
+        const double         length = std::min(attempt, grid - t);
+        dealii::Timer        timer;
+        NewtonSolver::Result result;
+        if (!step(method, t, length, u, v, result))
+          {
+            attempt = length / 2;
+            if (attempt < parameters.min_step_fraction * h)
+              throw SolverFailure("time stepping (" + to_string(method) +
+                                  "): the step from t = " + time_string(t) +
+                                  " s failed down to a length of " +
+                                  time_string(length) +
+                                  " s: " + result.failure);
+            if (log != nullptr)
+              *log << "  t = " << t << " s: step of " << length << " s failed ("
+                   << result.failure << "); halving\n";
+            continue;
+          }
+        t += length;
+        if (grid - t <= on_grid)
+          {
+            t = grid;
+            ++k;
+            attempt = h;
+          }
+        ++n_steps;
+
+        StepInfo info;
+        info.step          = n_steps;
+        info.time          = t;
+        info.time_step     = length;
+        info.load_factor   = parameters.load_factor(t);
+        info.iterations    = result.iterations;
+        info.residual_norm = result.residual_norm;
+        info.potential_energy =
+          model.assemble(u, info.load_factor, nullptr, nullptr);
+        if (method != Integrator::quasi_static)
+          info.kinetic_energy = kinetic_energy(mass, v);
+        info.wall_time = timer.wall_time();
+        if (!std::isfinite(info.potential_energy) ||
+            !std::isfinite(info.kinetic_energy))
+          throw SolverFailure(
+            "time stepping (" + to_string(method) +
+            "): the energy is not finite at t = " + time_string(t) + " s");
+        if (observer)
+          observer(info, u, v);
+        if (log != nullptr && parameters.progress_interval > 0 &&
+            n_steps % parameters.progress_interval == 0)
+          *log << "  t = " << t << " s: step " << n_steps << ", "
+               << result.iterations << " Newton iterations, energy "
+               << info.kinetic_energy + info.potential_energy << " J\n";
+      }
+  }
+
+  bool
+  TimeIntegrator::step(const Integrator      method,
+                       const double          time,
+                       const double          h,
+                       VectorType           &u,
+                       VectorType           &v,
+                       NewtonSolver::Result &result)
+  {
+    const double c           = mass_coefficient(method, h);
+    const double load_factor = parameters.load_factor(
+      method == Integrator::midpoint ? time + h / 2 : time + h);
+    const double end_load_factor = parameters.load_factor(time + h);
+    const bool   midpoint        = method == Integrator::midpoint;
+
+    // u_n + h v_n: the base of the mass term and the predictor.
+    VectorType base = u;
+    base.add(h, v);
+    // Predictor: the last increment, scaled to the step, rather than
+    // h v_n: the velocities of stiff modes that the second-order rules do
+    // not damp flip sign from step to step, and their mean over the last
+    // step is what the next one continues.
+    VectorType x = u;
+    if (last_step_length > 0)
+      x.add(h / last_step_length, last_increment);
+    else
+      x.add(h, v);
+    model.apply_boundary_values(x, end_load_factor);
+
+    VectorType difference = model.create_vector();
+    VectorType product    = model.create_vector();
+    // Adds c M (x - base) (minus Newmark's p_n) to r, free rows only.
+    const auto add_inertia = [&](const VectorType &y, VectorType &r) {
+      if (c == 0)
+        return;
+      difference = y;
+      difference -= base;
+      mass.vmult(product, difference);
+      r.add(c, product);
+      if (method == Integrator::newmark)
+        r.add(-1.0, inertial_force);
+      model.constraints().set_zero(r);
+    };
+
+    double     start_energy = 0;
+    VectorType point        = model.create_vector();
+    // Midpoint rule: gradients at m and at u, the correction coefficient
+    // and the rank-one part of the Jacobian.
+    VectorType gradient_m, gradient_y, rank_one_a, rank_one_b;
+    double     correction = 0;
+    if (midpoint)
+      {
+        gradient_m.reinit(point);
+        gradient_y.reinit(point);
+        rank_one_a.reinit(point);
+        rank_one_b.reinit(point);
+      }
+    NewtonSolver::Problem problem;
+    if (midpoint)
+      {
+        problem.residual = [&](const VectorType &y, VectorType &r) {
+          point = y;
+          point += u;
+          point *= 0.5;
+          // Unconstrained: grad Pi . d needs the fixed rows too, where
+          // prescribed DoFs move.
+          model.assemble(point, load_factor, &r, nullptr, false);
+          difference = y;
+          difference -= u;
+          const double change =
+            model.assemble(y, load_factor, nullptr, nullptr) - start_energy -
+            (r * difference);
+          model.constraints().set_zero(r);
+          model.constraints().set_zero(difference);
+          const double norm2 = difference.norm_sqr();
+          if (norm2 > 0)
+            r.add(change / norm2, difference);
+          add_inertia(y, r);
+        };
+        // The exact Jacobian of the discrete gradient: the derivative of
+        // the correction c d_f is c on the free diagonal plus the dense
+        // d_f (grad c)^T, with
+        //   grad c = [grad Pi(u) - grad Pi(m) - K(m) d / 2 - 2 c d_f] / |d_f|^2
+        // (free rows), which NewtonSolver takes as a rank-one term.
+        problem.tangent = [&](const VectorType &y, MatrixType &k) {
+          point = y;
+          point += u;
+          point *= 0.5;
+          model.assemble(point, load_factor, &gradient_m, nullptr, false);
+          const double energy =
+            model.assemble(y, load_factor, &gradient_y, nullptr, false);
+          difference = y;
+          difference -= u;
+          const double change =
+            energy - start_energy - (gradient_m * difference);
+          model.constraints().set_zero(difference);
+          const double norm2 = difference.norm_sqr();
+          correction         = norm2 > 0 ? change / norm2 : 0.0;
+
+          model.assemble(point, load_factor, nullptr, &k, true);
+          k *= 0.5;
+          k.vmult(product, difference);
+          k.add(c, constrained_mass);
+          for (unsigned int i = 0; i < k.m(); ++i)
+            if (!model.constraints().is_constrained(i))
+              k.add(i, i, correction);
+          k.compress(dealii::VectorOperation::add);
+
+          rank_one_b = gradient_y;
+          rank_one_b -= gradient_m;
+          rank_one_b -= product;
+          rank_one_b.add(-2 * correction, difference);
+          model.constraints().set_zero(rank_one_b);
+          rank_one_b *= norm2 > 0 ? 1 / norm2 : 0.0;
+          rank_one_a = difference;
+        };
+        problem.rank_one =
+          [&](const VectorType &, VectorType &a, VectorType &b) {
+            a = rank_one_a;
+            b = rank_one_b;
+          };
+      }
+    else
+      {
+        problem.residual = [&](const VectorType &y, VectorType &r) {
+          model.assemble(y, load_factor, &r, nullptr, true);
+          add_inertia(y, r);
+        };
+        problem.tangent = [&](const VectorType &y, MatrixType &k) {
+          model.assemble(y, load_factor, nullptr, &k, true);
+          if (c != 0)
+            k.add(c, constrained_mass);
+        };
+      }
+
+    try
+      {
+        model.set_time_step(h);
+        if (midpoint)
+          start_energy = model.assemble(u, load_factor, nullptr, nullptr);
+        // Tolerance from the force scale of the step, as in statics.
+        VectorType r = model.create_vector();
+        problem.residual(x, r);
+        problem.tangent(x, tangent);
+        const double scale =
+          std::max(std::abs(load_factor) * model.external_force().l2_norm(),
+                   r.l2_norm());
+        NewtonSolver::Parameters newton = parameters.newton;
+        newton.tolerance = std::max({parameters.relative_tolerance * scale,
+                                     residual_roundoff_floor(model, tangent),
+                                     std::numeric_limits<double>::min()});
+        result           = NewtonSolver(newton).solve(problem, x, tangent);
+      }
+    catch (const std::exception &e)
+      {
+        result.converged = false;
+        result.failure   = e.what();
+      }
+    if (result.converged && !std::isfinite(x.l2_norm()))
+      {
+        result.converged = false;
+        result.failure   = "the state is not finite";
+      }
+    if (!result.converged)
+      return false;
+
+    // Velocities and Newmark's inertial force at the new state.
+    difference = x;
+    difference -= u;
+    if (method == Integrator::newmark || midpoint)
+      {
+        v *= -1.0;
+        v.add(2 / h, difference);
+      }
+    else
+      {
+        v = difference;
+        v /= h;
+      }
+    if (method == Integrator::newmark)
+      {
+        difference = x;
+        difference -= base;
+        mass.vmult(product, difference);
+        inertial_force *= -1.0;
+        inertial_force.add(c, product);
+      }
+    // Rows without mass (junction quaternions) have no velocity.
+    for (unsigned int i = 0; i < has_mass.size(); ++i)
+      if (!has_mass[i])
+        v[i] = 0;
+    v.compress(dealii::VectorOperation::insert);
+
+    model.commit_internal_variables(x);
+    // Until the next step, evaluations see the converged state: the stored
+    // energy at the committed variables (a zero-length step).
+    model.set_time_step(0);
+    last_increment = x;
+    last_increment -= u;
+    last_step_length = h;
+    model.reset_reference(x);
+    u = x;
+    return true;
+  }
+} // namespace rodnet

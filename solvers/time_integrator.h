@@ -1,0 +1,208 @@
+#ifndef RODNET_SOLVERS_TIME_INTEGRATOR_H
+#define RODNET_SOLVERS_TIME_INTEGRATOR_H
+
+#include <core/mass_matrix.h>
+#include <core/rod_model.h>
+#include <solvers/newton_solver.h>
+#include <solvers/static_solver.h>
+
+#include <cmath>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /// Time discretization of a TimeIntegrator (see there for the equations).
+  enum class Integrator
+  {
+    /// No inertia: equilibrium at every time (creep, relaxation).
+    quasi_static,
+    /// Backward Euler: first order, dissipative.
+    backward_euler,
+    /// Newmark average acceleration (trapezoidal rule): second order, no
+    /// numerical dissipation, any material.
+    newmark,
+    /// Implicit midpoint rule with Gonzalez's discrete gradient: second
+    /// order, conserves the energy of elastic rods exactly.
+    midpoint
+  };
+
+  /// The scene name of @p integrator ("quasi-static", "backward euler",
+  /// "newmark", "midpoint").
+  std::string
+  to_string(Integrator integrator);
+
+  /// Inverse of to_string(); throws std::invalid_argument listing the
+  /// names otherwise.
+  Integrator
+  parse_integrator(const std::string &name);
+
+  /**
+   * Implicit time stepping of a RodModel (Lestringant & Kochmann sections
+   * 2.4-2.5): every step of length h from the state (u_n, v_n) at t_n
+   * solves one nonlinear system for u = u_{n+1} by NewtonSolver, the same
+   * Newton path as statics, with the model's incremental potential
+   * Pi(u, lambda) (energy minus load potential, history materials
+   * condensed over h) and the mass matrix M:
+   *
+   * - quasi-static:   grad Pi(u, lambda_{n+1}) = 0;
+   * - backward Euler: M (u - u_n - h v_n) / h^2 + grad Pi(u, lambda_{n+1})
+   *                   = 0, v_{n+1} = (u - u_n) / h;
+   * - Newmark (beta = 1/4, gamma = 1/2), in trapezoidal form with the
+   *   inertial force p = M a carried from step to step:
+   *                   4 M (u - u_n - h v_n) / h^2 - p_n
+   *                   + grad Pi(u, lambda_{n+1}) = 0,
+   *                   p_{n+1} = 4 M (u - u_n - h v_n) / h^2 - p_n;
+   * - midpoint:       2 M (u - u_n - h v_n) / h^2
+   *                   + gradbar Pi(u_n, u; lambda_{n+1/2}) = 0,
+   *   with Gonzalez's discrete gradient
+   *     gradbar = grad Pi(m) + (Pi(u) - Pi(u_n) - grad Pi(m).d) d / |d|^2,
+   *   m = (u_n + u)/2, d = u - u_n (over the free DoFs), which makes
+   *   gradbar . d = Pi(u) - Pi(u_n), so that 1/2 v.Mv + Pi is conserved to
+   *   the Newton tolerance whatever the nonlinearity;
+   * - Newmark and midpoint: v_{n+1} = 2 (u - u_n) / h - v_n.
+   *
+   * The first three minimize an incremental potential (the mass term plus
+   * Pi), which is what history-dependent materials need; the midpoint
+   * rule's discrete gradient needs a stored energy and refuses them.
+   * The tangent is c M + K (midpoint: 2 M / h^2 + K(m) / 2, without the
+   * derivative of the discrete-gradient correction, which is of order d).
+   *
+   * After every converged step the internal variables of history materials
+   * are committed, the model's time step set to 0 (so that what the
+   * observer evaluates, reactions and energies, is the state at the end of
+   * the step: the stored energy at the committed variables), and the
+   * reference configuration reset (Korner et al. 2c;
+   * the twist inertia neglects the transport of the reference frame, see
+   * doc/theory.md); the observer then sees the step. A step whose Newton
+   * solve fails is halved, from the same state, down to min_step_fraction
+   * of the nominal step; the run then throws SolverFailure naming the time
+   * and the reason, after every earlier step has been reported. A state or
+   * energy that is not finite is a failure as well, never an output.
+   */
+  class TimeIntegrator
+  {
+  public:
+    struct Parameters
+    {
+      Integrator integrator = Integrator::newmark;
+      double     start_time = 0;
+      double     end_time   = 0;
+      /// Nominal time step (s); steps land on start_time + k time_step and
+      /// on end_time.
+      double time_step = 0;
+      /// Load factor multiplying every load and prescribed displacement of
+      /// the model, as a function of time.
+      std::function<double(double)> load_factor = [](double) { return 1.0; };
+      /**
+       * Quasi-static steps before start_time (the hold of Lestringant &
+       * Kochmann's Fig. 5): preload_steps steps of h = preload_time /
+       * preload_steps under load_factor(t) at t = start_time -
+       * preload_time + (k - 1) h, k = 1..n, all before the start, so that
+       * a load released at the start, if(t < 0, 1, 0), holds throughout;
+       * the run then starts at rest. No preload when 0.
+       */
+      double       preload_time  = 0;
+      unsigned int preload_steps = 0;
+      MassKind     mass          = MassKind::consistent;
+      /// Smallest step after halving, as a fraction of time_step.
+      double min_step_fraction = 1.0 / 64;
+      /// Newton converges when |R| <= relative_tolerance * max(lambda |f|,
+      /// |R at the predictor|), or below the round-off floor
+      /// (residual_roundoff_floor()).
+      double                   relative_tolerance = 1e-9;
+      NewtonSolver::Parameters newton;
+      /// Progress line on the log every this many steps (0: none).
+      unsigned int progress_interval = 100;
+    };
+
+    struct StepInfo
+    {
+      unsigned int step      = 0; ///< converged steps so far, preload included
+      double       time      = 0;
+      double       time_step = 0; ///< length of this step
+      double       load_factor    = 0;
+      unsigned int iterations     = 0;
+      double       residual_norm  = 0;
+      double       kinetic_energy = 0; ///< 1/2 v.Mv (0 quasi-statically)
+      /// Stored energy minus load potential at the end of the step.
+      double potential_energy = 0;
+      double wall_time        = 0; ///< seconds spent on this step
+    };
+
+    using Observer = std::function<
+      void(const StepInfo &, const VectorType &u, const VectorType &v)>;
+
+    /**
+     * @p inertia holds one RodInertia per rod (may be empty for
+     * quasi-static runs). Throws std::invalid_argument for a time step that
+     * is not positive and finite, an end time before the start, missing
+     * inertia for a dynamic integrator, or the midpoint rule with a
+     * history-dependent material. The model must be finalized.
+     */
+    TimeIntegrator(RodModel                      &model,
+                   const std::vector<RodInertia> &inertia,
+                   const Parameters              &parameters,
+                   std::ostream                  *log = nullptr);
+
+    /**
+     * Runs from the displacement @p u and velocity @p v at start_time
+     * (after the preload, if any, which overwrites @p v with zero) to
+     * end_time; both hold the last converged state on return or on a
+     * throw. Prescribed DoFs of @p u are set to their values at the start.
+     */
+    void
+    run(VectorType &u, VectorType &v, const Observer &on_converged);
+
+    /// The mass matrix (unconstrained); empty for quasi-static runs.
+    const MatrixType &
+    mass_matrix() const
+    {
+      return mass;
+    }
+
+  private:
+    /// One attempt of a step of length @p h with @p method from the state
+    /// (u, v, p) at @p time; on success updates them and returns true.
+    bool
+    step(Integrator            method,
+         double                time,
+         double                h,
+         VectorType           &u,
+         VectorType           &v,
+         NewtonSolver::Result &result);
+
+    /// Runs steps of @p method from @p from to @p to, nominally @p h long.
+    void
+    advance(Integrator      method,
+            double          from,
+            double          to,
+            double          h,
+            VectorType     &u,
+            VectorType     &v,
+            const Observer &on_converged);
+
+    /// The inertial force -grad Pi(u) on the rows that carry mass.
+    void
+    equilibrium_inertial_force(const VectorType &u, double load_factor);
+
+    RodModel     &model;
+    Parameters    parameters;
+    std::ostream *log;
+    MatrixType    mass;             ///< unconstrained
+    MatrixType    constrained_mass; ///< fixed rows and columns zero
+    MatrixType    tangent;
+    /// Rows with a nonzero mass diagonal.
+    std::vector<bool> has_mass;
+    /// Newmark's inertial force M a at the current state.
+    VectorType inertial_force;
+    /// u_n - u_{n-1} and its step length (0: none yet), for the predictor.
+    VectorType   last_increment;
+    double       last_step_length = 0;
+    unsigned int n_steps          = 0;
+  };
+} // namespace rodnet
+
+#endif
