@@ -86,7 +86,7 @@ main(int argc, char **argv)
   catch (const std::exception &e)
     {
       std::cerr << "rodnet-run: error in scene \"" << scene_file << "\":\n"
-                << e.what() << std::endl;
+                << rodnet::error_message(e) << std::endl;
       return 1;
     }
 
@@ -110,7 +110,7 @@ main(int argc, char **argv)
   catch (const std::exception &e)
     {
       std::cerr << "rodnet-run: error in scene \"" << scene_file << "\":\n"
-                << e.what() << std::endl;
+                << rodnet::error_message(e) << std::endl;
       return 1;
     }
   return 0;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <spawn.h>
 #include <string>
@@ -131,6 +132,14 @@ namespace rodnet
       return last_line.empty() ? exit_text : exit_text + ": " + last_line;
     }
 
+    /// "load factor" for the column "load_factor".
+    std::string
+    axis_label(std::string column)
+    {
+      std::replace(column.begin(), column.end(), '_', ' ');
+      return column;
+    }
+
     void
     warn(const std::string &png_path, const std::string &reason)
     {
@@ -140,9 +149,10 @@ namespace rodnet
   } // namespace
 
   void
-  plot_probes(const std::string &csv_path,
-              const std::string &png_path,
-              const std::string &title)
+  plot_probes(const std::string                              &csv_path,
+              const std::string                              &png_path,
+              const std::string                              &title,
+              const std::optional<std::pair<double, double>> &x_range)
   {
     // A failed plot must never cost the user a finished computation.
     try
@@ -186,9 +196,12 @@ namespace rodnet
                  << "}\n"
                  << "set output " << quote(png_path) << "\n"
                  << "set datafile separator ','\n"
-                 << "set xlabel 'load factor'\n"
-                 << "set grid\n"
-                 << "set multiplot layout " << n_rows << "," << n_cols
+                 << "set xlabel " << quote(axis_label(columns[1])) << "\n"
+                 << "set grid\n";
+          if (x_range && x_range->first < x_range->second)
+            script << std::setprecision(17) << "set xrange [" << x_range->first
+                   << ":" << x_range->second << "]\n";
+          script << "set multiplot layout " << n_rows << "," << n_cols
                  << " title " << quote(title) << "\n";
           for (unsigned int p = 0; p < n_probes; ++p)
             script << "set ylabel " << quote(columns[p + 2]) << "\n"

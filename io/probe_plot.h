@@ -1,25 +1,31 @@
 #ifndef RODNET_IO_PROBE_PLOT_H
 #define RODNET_IO_PROBE_PLOT_H
 
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace rodnet
 {
   /**
    * Plots a probe table (see ProbeTable: a header
-   * `step,load_factor,<probe names>` and one row per converged step) as a
-   * PNG with one panel per probe against the load factor. The gnuplot
+   * `step,<abscissa>,<probe names>` and one row per converged step) as a
+   * PNG with one panel per probe against the abscissa (the load factor or
+   * the time, labelled by its column name). The gnuplot
    * script is kept next to the image as `<png_path>.gp`, so that a user can
-   * restyle the plot and run it again.
+   * restyle the plot and run it again. With @p x_range, the panels show
+   * that range of the abscissa only (a time history after its preload).
    *
    * Plotting is a convenience: if the table cannot be read, has no probe or
    * no row, or gnuplot is missing or fails, one warning line goes to
    * std::cerr and the function returns. It never throws.
    */
   void
-  plot_probes(const std::string &csv_path,
-              const std::string &png_path,
-              const std::string &title);
+  plot_probes(
+    const std::string                              &csv_path,
+    const std::string                              &png_path,
+    const std::string                              &title,
+    const std::optional<std::pair<double, double>> &x_range = std::nullopt);
 } // namespace rodnet
 
 #endif

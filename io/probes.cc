@@ -234,12 +234,13 @@ namespace rodnet
   }
 
   ProbeTable::ProbeTable(const std::string        &path,
-                         const std::vector<Probe> &probes)
+                         const std::vector<Probe> &probes,
+                         const std::string        &abscissa)
       : file(path)
   {
     if (!file)
       throw std::runtime_error("cannot write the probe file " + path);
-    file << "step,load_factor";
+    file << "step," << abscissa;
     for (const Probe &p : probes)
       file << ',' << p.name;
     file << std::endl;
@@ -247,10 +248,10 @@ namespace rodnet
 
   void
   ProbeTable::add_row(const unsigned int         step,
-                      const double               load_factor,
+                      const double               abscissa,
                       const std::vector<double> &values)
   {
-    file << step << ',' << std::setprecision(10) << load_factor;
+    file << step << ',' << std::setprecision(10) << abscissa;
     for (const double v : values)
       file << ',' << std::setprecision(12) << v;
     file << std::endl;

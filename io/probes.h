@@ -64,18 +64,21 @@ namespace rodnet
                   double                    load_factor);
 
   /**
-   * The file `probes.csv`: a header `step,load_factor,<probe names>` and one
+   * The file `probes.csv`: a header `step,<abscissa>,<probe names>` and one
    * row per converged step, flushed at once so that a later failure loses
-   * nothing.
+   * nothing. The abscissa is the load factor of load stepping
+   * ("load_factor") or the time of time stepping ("time").
    */
   class ProbeTable
   {
   public:
-    ProbeTable(const std::string &path, const std::vector<Probe> &probes);
+    ProbeTable(const std::string        &path,
+               const std::vector<Probe> &probes,
+               const std::string        &abscissa = "load_factor");
 
     void
     add_row(unsigned int               step,
-            double                     load_factor,
+            double                     abscissa,
             const std::vector<double> &values);
 
   private:

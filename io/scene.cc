@@ -1,3 +1,5 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
@@ -126,7 +128,158 @@ namespace rodnet
         }
       return items;
     }
+
+    /// Where the time-stepping entries live, for messages.
+    const std::string time_stepping_section = "Solver/Time stepping";
+
+    /// The integrators in the order of the "Integrator" selection.
+    const std::vector<Integrator> integrators = {Integrator::quasi_static,
+                                                 Integrator::backward_euler,
+                                                 Integrator::newmark,
+                                                 Integrator::midpoint};
+
+    /// Declares the subsection "Time stepping" in the current subsection.
+    void
+    declare_time_stepping(dealii::ParameterHandler &prm)
+    {
+      std::vector<std::string> names;
+      for (const Integrator i : integrators)
+        names.push_back(to_string(i));
+      prm.enter_subsection("Time stepping");
+      prm.declare_entry(
+        "Integrator",
+        to_string(Integrator::newmark),
+        Selection(join(names, "|")),
+        "quasi-static: equilibrium at every time, no inertia (creep, "
+        "relaxation). backward euler: first order, numerically damped. "
+        "newmark: average acceleration, second order, undamped. midpoint: "
+        "implicit midpoint rule with a discrete gradient, conserves the "
+        "energy of elastic rods (not for viscoelastic materials). All but "
+        "quasi-static need a Density in every material subsection in "
+        "use. [-]");
+      // No lower bound in the pattern: a bad step is reported by the
+      // scene with what is wrong, rather than as a pattern mismatch.
+      prm.declare_entry("Time step",
+                        "0",
+                        Double(),
+                        "Nominal time step h, required (positive); a step "
+                        "whose Newton solve fails is halved down to "
+                        "\"Minimum step fraction\" of it. [s]");
+      prm.declare_entry("Start time", "0", Double(), "Time of the start. [s]");
+      prm.declare_entry("End time",
+                        "1",
+                        Double(),
+                        "Time of the end, not before the start. [s]");
+      prm.declare_entry(
+        "Load factor",
+        "1",
+        Anything(),
+        "Factor on every load and prescribed displacement as a function of "
+        "the time t, a muparser expression (pi is defined), e.g. \"if(t < "
+        "0, 1, 0)\" (held during a preload, released at t = 0) or "
+        "\"sin(2*pi*5*t)\". [-]");
+      prm.declare_entry(
+        "Preload time",
+        "0",
+        Double(0),
+        "Quasi-static hold before the start: the structure is loaded by the "
+        "load factor over this time before \"Start time\" and starts from "
+        "rest; viscoelastic rods creep meanwhile. 0: no preload. [s]");
+      prm.declare_entry("Preload steps",
+                        "1",
+                        Integer(1),
+                        "Equal quasi-static steps of the preload. [-]");
+      prm.declare_entry("Mass",
+                        "consistent",
+                        Selection("consistent|lumped"),
+                        "Distribution of each segment's mass onto its "
+                        "vertices: linear shape functions (consistent) or "
+                        "half at each end (lumped). [-]");
+      prm.declare_entry("Progress interval",
+                        "100",
+                        Integer(0),
+                        "Print time, Newton iterations and energy every this "
+                        "many steps (0: never). [-]");
+      prm.declare_entry(
+        "Initial displacement",
+        "0; 0; 0",
+        Anything(),
+        "Displacement of every vertex at the start, three ';'-separated "
+        "muparser expressions of its undeformed position x, y, z, e.g. \"0; "
+        "0; 0.01*x^2\"; supported components take their prescribed values. "
+        "With a preload, the state the preload starts from. [m]");
+      prm.declare_entry("Initial velocity",
+                        "0; 0; 0",
+                        Anything(),
+                        "Velocity of every vertex at the start, as \"Initial "
+                        "displacement\"; zero on supported components, and "
+                        "ignored after a preload, which ends at rest. [m/s]");
+      prm.leave_subsection();
+    }
+
+    /**
+     * The function of the ';'-separated muparser expressions @p text
+     * (one per component) in the variables @p variables, with the constant
+     * pi. Muparser reads
+     * an expression when it is first evaluated, so every component is
+     * evaluated once at the origin here, which makes a syntax error or an
+     * unknown name an error of the entry @p entry rather than of the run.
+     */
+    template <int dim>
+    std::shared_ptr<const dealii::FunctionParser<dim>>
+    parse_function(const std::string &text,
+                   const std::string &variables,
+                   const unsigned int n_components,
+                   const std::string &entry)
+    {
+      const std::vector<std::string> expressions =
+        dealii::Utilities::split_string_list(text, ';');
+      if (expressions.size() != n_components)
+        throw std::invalid_argument(
+          "entry \"" + entry + "\": \"" + text + "\" should be " +
+          std::to_string(n_components) + " expression(s) of " + variables +
+          " separated by ';'");
+      auto function =
+        std::make_shared<dealii::FunctionParser<dim>>(n_components);
+      try
+        {
+          function->initialize(variables, expressions, {{"pi", M_PI}});
+          for (unsigned int c = 0; c < n_components; ++c)
+            function->value(dealii::Point<dim>(), c);
+        }
+      catch (const std::exception &e)
+        {
+          throw std::invalid_argument("entry \"" + entry + "\": \"" + text +
+                                      "\" is not an expression of " +
+                                      variables + ": " + error_message(e));
+        }
+      return function;
+    }
+
+    /// "<value>" of a double for messages.
+    std::string
+    number(const double value)
+    {
+      std::ostringstream s;
+      s << value;
+      return s.str();
+    }
   } // namespace
+
+  std::string
+  error_message(const std::exception &e)
+  {
+    std::ostringstream text;
+    if (const auto *info = dynamic_cast<const dealii::ExceptionBase *>(&e))
+      info->print_info(text);
+    else
+      text << e.what();
+    std::istringstream words(text.str());
+    std::string        word, line;
+    while (words >> word)
+      line += (line.empty() ? "" : " ") + word;
+    return line;
+  }
 
   void
   Scene::declare_parameters(dealii::ParameterHandler &prm)
@@ -252,6 +405,15 @@ namespace rodnet
                               std::to_string(group) +
                               " of a network this material instead of "
                               "that of subsection Material. [-]");
+        prm.declare_entry(
+          "Density",
+          "0",
+          Double(0),
+          "Mass density rho of the rods, for time stepping: a rod carries rho "
+          "A per length and rho (I1 + I2) of twist inertia, with A, I1, I2 "
+          "from the cross-section of the model's \"Stiffness input = "
+          "section\". 0 means not given, which static solves and "
+          "quasi-static time stepping accept. [kg/m^3]");
         const std::vector<std::string> names =
           MaterialRegistry::instance().names();
         std::string help = "Constitutive law of the rods:";
@@ -348,12 +510,16 @@ namespace rodnet
       prm.declare_entry(
         "Method",
         "newton",
-        Selection("newton|dynamic relaxation"),
+        Selection("newton|dynamic relaxation|time stepping"),
         "newton: discrete elastic rods and junction elements, Newton per "
         "load step (Trilinos NOX). dynamic relaxation: the bending-active "
         "beam element (position, normal and rotation per node) relaxed by "
         "explicit pseudo-dynamics with kinetic damping; see "
-        "doc/dynamic_relaxation.md for which to pick. [-]");
+        "doc/dynamic_relaxation.md for which to pick. time stepping: the "
+        "discrete rods in time, with inertia or quasi-statically, for "
+        "vibrations and viscoelastic materials (subsection Time stepping; "
+        "the Newton entries of Solver apply to every time step). [-]");
+      declare_time_stepping(prm);
       prm.enter_subsection("Dynamic relaxation");
       {
         prm.declare_entry("Time step",
@@ -396,7 +562,7 @@ namespace rodnet
         "Max iterations",
         "25",
         Integer(1),
-        "Newton iterations per load step before it is cut. [-]");
+        "Newton iterations per load or time step before it is cut. [-]");
       prm.declare_entry("Relative tolerance",
                         "1e-9",
                         Double(0, 1),
@@ -414,8 +580,9 @@ namespace rodnet
       prm.declare_entry("Minimum step fraction",
                         "0.0009765625",
                         Double(0, 1),
-                        "Failed load steps are halved; the run stops with an "
-                        "error below this fraction of the nominal step. [-]");
+                        "Failed load and time steps are halved; the run stops "
+                        "with an error below this fraction of the nominal "
+                        "step. [-]");
       prm.declare_entry("Critical load search",
                         "false",
                         Bool(),
@@ -459,13 +626,14 @@ namespace rodnet
                         "Columns of probes.csv: \"name: kind args; ...\" with "
                         "kinds \"position <vertex> <x|y|z>\" [m], \"reaction "
                         "<vertex> <x|y|z>\" [N], \"energy\" [J], "
-                        "\"eigenvalue\" (lowest of the constrained tangent). "
-                        "[-]");
+                        "\"eigenvalue\" (lowest of the constrained tangent; "
+                        "Newton only). [-]");
       prm.declare_entry("Plot",
                         "true",
                         Bool(),
-                        "Plot the probes against the load factor into "
-                        "probes.png (needs gnuplot). [-]");
+                        "Plot the probes against the load factor (the time "
+                        "for time stepping) into probes.png (needs "
+                        "gnuplot). [-]");
     }
     prm.leave_subsection();
   }
@@ -578,15 +746,33 @@ namespace rodnet
         prm.enter_subsection(material_section(group));
         if (group == 0 || prm.get_bool("Use"))
           {
-            const std::string name = prm.get("Model");
-            auto              m    = MaterialRegistry::instance().create(name);
-            prm.enter_subsection(name);
-            m->parse_parameters(prm);
+            MaterialGroup g;
+            g.subsection = material_section(group);
+            g.model      = prm.get("Model");
+            g.density    = prm.get_double("Density");
+            auto m       = MaterialRegistry::instance().create(g.model);
+            prm.enter_subsection(g.model);
+            // The material's message names its entry; this adds which
+            // material subsection.
+            try
+              {
+                m->parse_parameters(prm);
+              }
+            catch (const dealii::ExceptionBase &e)
+              {
+                throw std::invalid_argument("subsection \"" + g.subsection +
+                                            "\": " + error_message(e));
+              }
+            // Both registered materials read "section" the same way; the
+            // material has checked the section's entries already.
+            if (prm.get("Stiffness input") == "section")
+              g.section = CrossSectionParameters::parse_parameters(prm);
             prm.leave_subsection();
-            group_materials.push_back(std::move(m));
+            g.material = std::move(m);
+            material_groups.push_back(std::move(g));
           }
         else
-          group_materials.push_back(group_materials.front());
+          material_groups.push_back(material_groups.front());
         prm.leave_subsection();
       }
 
@@ -617,8 +803,12 @@ namespace rodnet
     solver.critical_load_tolerance = prm.get_double("Critical load tolerance");
     solver.branch_switch_amplitude =
       prm.get_double("Branch switching amplitude");
-    method = prm.get("Method") == "newton" ? SolutionMethod::newton :
-                                             SolutionMethod::dynamic_relaxation;
+    const std::string method_name = prm.get("Method");
+    method = method_name == "newton" ? SolutionMethod::newton :
+             method_name == "dynamic relaxation" ?
+                                       SolutionMethod::dynamic_relaxation :
+                                       SolutionMethod::time_stepping;
+    parse_time_stepping(prm);
     prm.enter_subsection("Dynamic relaxation");
     relaxation.n_steps            = solver.n_steps;
     relaxation.time_step          = prm.get_double("Time step");
@@ -638,27 +828,174 @@ namespace rodnet
     prm.leave_subsection();
   }
 
+  void
+  Scene::parse_time_stepping(dealii::ParameterHandler &prm)
+  {
+    TimeIntegrator::Parameters &p = time_stepping;
+    p.newton                      = solver.newton;
+    p.relative_tolerance          = solver.relative_tolerance;
+    p.min_step_fraction           = solver.min_step_fraction;
+    prm.enter_subsection("Time stepping");
+    p.integrator    = parse_integrator(prm.get("Integrator"));
+    p.time_step     = prm.get_double("Time step");
+    p.start_time    = prm.get_double("Start time");
+    p.end_time      = prm.get_double("End time");
+    p.preload_time  = prm.get_double("Preload time");
+    p.preload_steps = prm.get_integer("Preload steps");
+    p.mass =
+      prm.get("Mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
+    p.progress_interval          = prm.get_integer("Progress interval");
+    const std::string load_entry = time_stepping_section + "/Load factor";
+    p.load_factor =
+      [load_entry,
+       f = parse_function<1>(prm.get("Load factor"), "t", 1, load_entry)](
+        const double t) {
+        const double value = f->value(dealii::Point<1>(t));
+        if (!std::isfinite(value))
+          throw std::invalid_argument(
+            "entry \"" + load_entry + "\": the load factor is " +
+            number(value) + " at t = " + number(t) + " s");
+        return value;
+      };
+    initial_displacement =
+      parse_function<3>(prm.get("Initial displacement"),
+                        "x,y,z",
+                        3,
+                        time_stepping_section + "/Initial displacement");
+    initial_velocity =
+      parse_function<3>(prm.get("Initial velocity"),
+                        "x,y,z",
+                        3,
+                        time_stepping_section + "/Initial velocity");
+    prm.leave_subsection();
+    if (method == SolutionMethod::time_stepping)
+      check_time_stepping();
+  }
+
+  void
+  Scene::check_time_stepping() const
+  {
+    const TimeIntegrator::Parameters &p = time_stepping;
+    const std::string entry = "entry \"" + time_stepping_section + "/";
+    if (!(p.time_step > 0) || !std::isfinite(p.time_step))
+      throw std::invalid_argument(entry +
+                                  "Time step\": must be positive, got " +
+                                  number(p.time_step) + " s");
+    if (!(p.end_time >= p.start_time))
+      throw std::invalid_argument(entry + "End time\": " + number(p.end_time) +
+                                  " s lies before the start time " +
+                                  number(p.start_time) + " s");
+    if (p.integrator == Integrator::quasi_static)
+      return;
+    // Throws for a material group without density or section.
+    inertia();
+    if (p.integrator == Integrator::midpoint)
+      for (const unsigned int g : rod_groups())
+        {
+          const RodMaterial &m = *material_groups[g].material;
+          if (m.n_hinge_internal_variables() +
+                m.n_segment_internal_variables() >
+              0)
+            throw std::invalid_argument(
+              entry +
+              "Integrator\": the midpoint rule conserves a stored "
+              "energy, which the \"" +
+              material_groups[g].model + "\" of subsection \"" +
+              material_groups[g].subsection +
+              "\" does not have (it has internal variables); use newmark or "
+              "backward euler");
+        }
+  }
+
+  std::vector<unsigned int>
+  Scene::rod_groups() const
+  {
+    if (!graph)
+      return std::vector<unsigned int>(rod_points.size(), 0);
+    // build_rod_network() makes beam b rod b.
+    std::vector<unsigned int> groups;
+    for (const RodGraph::Beam &beam : graph->beams)
+      {
+        if (beam.group >= material_groups.size())
+          throw std::invalid_argument(
+            "the network has material group " + std::to_string(beam.group) +
+            "; scenes define groups 0 to " +
+            std::to_string(material_groups.size() - 1));
+        groups.push_back(beam.group);
+      }
+    return groups;
+  }
+
+  std::vector<RodInertia>
+  Scene::inertia() const
+  {
+    const std::string       integrator = to_string(time_stepping.integrator);
+    std::vector<RodInertia> result;
+    for (const unsigned int g : rod_groups())
+      {
+        const MaterialGroup &group = material_groups[g];
+        if (!(group.density > 0))
+          throw std::invalid_argument(
+            "entry \"" + group.subsection +
+            "/Density\": time stepping with the " + integrator +
+            " integrator needs the density of every material in use (0 means "
+            "not given)");
+        if (!group.section)
+          throw std::invalid_argument(
+            "entry \"" + group.subsection + "/" + group.model +
+            "/Stiffness input\": time stepping with the " + integrator +
+            " integrator takes the inertia rho A and rho (I1 + I2) from the "
+            "cross-section, which \"direct\" rigidities do not give; use "
+            "\"section\"");
+        result.push_back(rod_inertia(*group.section, group.density));
+      }
+    return result;
+  }
+
+  void
+  Scene::initial_state(const RodModel &model,
+                       VectorType     &u,
+                       VectorType     &v) const
+  {
+    const RodNetwork &net = model.network();
+    // Vertices of rod ends at a junction share its position DoFs (and
+    // position), so writing every vertex is consistent.
+    const auto fill = [&](const dealii::Function<3> &function,
+                          const std::string         &name,
+                          VectorType                &field) {
+      field = model.create_vector();
+      for (unsigned int vertex = 0; vertex < net.n_vertices(); ++vertex)
+        {
+          const Vector3          x = net.vertex(vertex);
+          const dealii::Point<3> p(x[0], x[1], x[2]);
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const double value = function.value(p, c);
+              if (!std::isfinite(value))
+                throw std::invalid_argument(
+                  "entry \"" + time_stepping_section + "/" + name +
+                  "\": component " + std::to_string(c + 1) + " is " +
+                  number(value) + " at (" + number(x[0]) + ", " + number(x[1]) +
+                  ", " + number(x[2]) + ")");
+              field[model.layout().vertex_dof(vertex, c)] = value;
+            }
+        }
+      field.compress(dealii::VectorOperation::insert);
+    };
+    fill(*initial_displacement, "Initial displacement", u);
+    fill(*initial_velocity, "Initial velocity", v);
+    // Supports hold still; the integrator sets their displacements.
+    model.constraints().set_zero(v);
+  }
+
   std::pair<std::unique_ptr<RodNetwork>,
             std::vector<std::shared_ptr<const RodMaterial>>>
   Scene::build_network() const
   {
-    std::unique_ptr<RodNetwork>                     network;
-    std::vector<std::shared_ptr<const RodMaterial>> materials;
+    std::unique_ptr<RodNetwork> network;
     if (graph)
-      {
-        BuiltNetwork built =
-          build_rod_network(*graph, segments_per_beam, hinge_kernel);
-        network = std::move(built.network);
-        for (const unsigned int group : built.rod_group)
-          {
-            if (group >= group_materials.size())
-              throw std::invalid_argument(
-                "the network has material group " + std::to_string(group) +
-                "; scenes define groups 0 to " +
-                std::to_string(group_materials.size() - 1));
-            materials.push_back(group_materials[group]);
-          }
-      }
+      network =
+        build_rod_network(*graph, segments_per_beam, hinge_kernel).network;
     else
       {
         network = std::make_unique<RodNetwork>();
@@ -668,8 +1005,10 @@ namespace rodnet
                            director_hint,
                            hinge_kernel);
         network->create_triangulation();
-        materials.assign(network->rods().size(), group_materials.front());
       }
+    std::vector<std::shared_ptr<const RodMaterial>> materials;
+    for (const unsigned int g : rod_groups())
+      materials.push_back(material_groups[g].material);
     return {std::move(network), materials};
   }
 

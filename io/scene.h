@@ -1,14 +1,18 @@
 #ifndef RODNET_IO_SCENE_H
 #define RODNET_IO_SCENE_H
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <core/dr_model.h>
+#include <core/mass_matrix.h>
 #include <core/rod_graph.h>
 #include <core/rod_model.h>
 #include <io/probes.h>
+#include <materials/cross_section.h>
 #include <solvers/dynamic_relaxation.h>
 #include <solvers/static_solver.h>
+#include <solvers/time_integrator.h>
 
 #include <memory>
 #include <optional>
@@ -17,6 +21,15 @@
 
 namespace rodnet
 {
+  /**
+   * What a user needs of an input error @p e: for deal.II's exceptions
+   * (ExcMessage, a pattern mismatch of ParameterHandler, ...) their
+   * explanation without the source location and stack trace that what()
+   * adds, otherwise what(); on one line.
+   */
+  std::string
+  error_message(const std::exception &e);
+
   /// A scene built for dynamic relaxation: the model and the network it
   /// refers to.
   struct DrScene
@@ -30,6 +43,7 @@ namespace rodnet
   {
     newton,             ///< discrete rods and junctions, StaticSolver
     dynamic_relaxation, ///< bending-active element, DynamicRelaxation
+    time_stepping,      ///< discrete rods and junctions, TimeIntegrator
   };
 
   /**
@@ -73,15 +87,69 @@ namespace rodnet
     std::vector<Probe>
     probes(const DrModel &model) const;
 
+    /**
+     * The inertia of every rod of build_model(), rod by rod: rho A and
+     * rho (I1 + I2) from the "Density" and the cross-section of the rod's
+     * material group (the groups of build_model()). Throws
+     * std::invalid_argument naming the subsection and entry where a group
+     * in use has no density or gives its rigidities directly (then there
+     * is no section to take A and I from).
+     */
+    std::vector<RodInertia>
+    inertia() const;
+
+    /**
+     * The start of a time-stepping run on @p model (built by
+     * build_model()): @p u and @p v take "Initial displacement" and
+     * "Initial velocity" at the undeformed position of every vertex; twists
+     * and junction rotations start at zero, and so does the velocity of the
+     * supported DoFs. Throws std::invalid_argument naming the entry where a
+     * value is not finite.
+     */
+    void
+    initial_state(const RodModel &model, VectorType &u, VectorType &v) const;
+
     SolutionMethod                method = SolutionMethod::newton;
     StaticSolver::Parameters      solver;
     DynamicRelaxation::Parameters relaxation;
-    std::string                   output_directory;
-    bool                          write_vtu    = true;
-    unsigned int                  vtu_interval = 1;
-    bool                          plot         = true;
+    /// Method = time stepping: the integrator's settings; its load_factor
+    /// evaluates the scene's "Load factor" expression (and throws
+    /// std::invalid_argument naming that entry where it is not finite).
+    TimeIntegrator::Parameters time_stepping;
+    std::string                output_directory;
+    bool                       write_vtu    = true;
+    unsigned int               vtu_interval = 1;
+    bool                       plot         = true;
 
   private:
+    /// What a material subsection defines.
+    struct MaterialGroup
+    {
+      std::shared_ptr<const RodMaterial> material;
+      /// The subsection, for messages ("Material", "Material of group 2").
+      std::string subsection;
+      /// The subsection of the material model within it.
+      std::string model;
+      /// kg/m^3; 0 when not given.
+      double density = 0;
+      /// Empty where the rigidities are given directly.
+      std::optional<CrossSection> section;
+    };
+
+    /// Reads Solver/Time stepping (and the Newton entries of Solver).
+    void
+    parse_time_stepping(dealii::ParameterHandler &prm);
+
+    /// Throws std::invalid_argument naming the entry unless the scene can
+    /// be time stepped: a positive step, an end after the start, densities
+    /// and sections for inertia, no midpoint rule with a history material.
+    void
+    check_time_stepping() const;
+
+    /// Material group of every rod of build_network(), rod by rod.
+    std::vector<unsigned int>
+    rod_groups() const;
+
     /// The rods (or the network's rods) and the material of each.
     std::pair<std::unique_ptr<RodNetwork>,
               std::vector<std::shared_ptr<const RodMaterial>>>
@@ -100,8 +168,13 @@ namespace rodnet
     std::optional<RodGraph> graph;
     unsigned int            segments_per_beam = 1;
     GhostSpin               ghost_spin        = GhostSpin::exact;
-    /// Material of each material group (group 0: every plain rod).
-    std::vector<std::shared_ptr<const RodMaterial>> group_materials;
+    /// Every material group (group 0: every plain rod); a group without
+    /// its own material repeats group 0.
+    std::vector<MaterialGroup> material_groups;
+    /// Time stepping: displacement and velocity fields of the undeformed
+    /// position x, y, z (three components each).
+    std::shared_ptr<const dealii::Function<3>> initial_displacement,
+      initial_velocity;
     std::string clamped_ends, pinned_vertices, fixed_components,
       prescribed_displacements, prescribed_rotations, point_forces, moments,
       probe_text;

@@ -2,14 +2,19 @@
 #include <io/scene_runner.h>
 #include <io/vtu_output.h>
 
+#include <cmath>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <utility>
 
 namespace rodnet
 {
   namespace
   {
-    /// What both solution methods do with a converged step: a row of
-    /// probes.csv, a row of the summary, and the VTU files.
+    /// What every solution method does with a converged step: a row of
+    /// probes.csv, a row of the summary, and the VTU files, against the
+    /// load factor or the time (@p abscissa names which).
     class StepRecorder
     {
     public:
@@ -17,40 +22,49 @@ namespace rodnet
                    const std::string        &output_directory,
                    const std::vector<Probe> &probes,
                    const RodModel           *vtu_model,
-                   RunSummary               &summary)
+                   RunSummary               &summary,
+                   const std::string        &abscissa = "load_factor")
           : scene(scene)
           , csv(csv_path(output_directory))
-          , table(csv, probes)
+          , table(csv, probes, abscissa)
           , summary(summary)
       {
+        summary.abscissa = abscissa;
         if (scene.write_vtu && vtu_model != nullptr)
           vtu = std::make_unique<VtuOutput>(*vtu_model, output_directory);
         for (const Probe &p : probes)
           summary.probe_names.push_back(p.name);
       }
 
-      /// Records step @p step; @p u is the state for the VTU files in the
-      /// layout of the RodModel given to the constructor.
+      /// Records step @p step at load factor or time @p abscissa (also the
+      /// "time" of the PVD record); @p u is the state for the VTU files in
+      /// the layout of the RodModel given to the constructor.
       void
       record(const unsigned int         step,
-             const double               load_factor,
+             const double               abscissa,
              const std::vector<double> &values,
              const VectorType          *u)
       {
-        table.add_row(step, load_factor, values);
-        std::vector<double> row{load_factor};
+        table.add_row(step, abscissa, values);
+        std::vector<double> row{abscissa};
         row.insert(row.end(), values.begin(), values.end());
         summary.rows.push_back(row);
         summary.converged_steps = step;
         if (vtu && u != nullptr && step % scene.vtu_interval == 0)
-          vtu->write(step, load_factor, *u);
+          vtu->write(step, abscissa, *u);
       }
 
+      /// Plots probes.csv, over @p x_range of the abscissa if given.
       void
-      finish(const std::string &output_directory) const
+      finish(const std::string                              &output_directory,
+             const std::optional<std::pair<double, double>> &x_range =
+               std::nullopt) const
       {
         if (scene.plot && !summary.probe_names.empty() && !summary.rows.empty())
-          plot_probes(csv, output_directory + "/probes.png", "rodnet probes");
+          plot_probes(csv,
+                      output_directory + "/probes.png",
+                      "rodnet probes",
+                      x_range);
       }
 
     private:
@@ -184,6 +198,87 @@ namespace rodnet
       recorder.finish(output_directory);
       return summary;
     }
+
+    RunSummary
+    run_time_stepping(const Scene       &scene,
+                      const std::string &output_directory,
+                      std::ostream      *log)
+    {
+      std::unique_ptr<RodModel> model  = scene.build_model();
+      const std::vector<Probe>  probes = scene.probes(*model);
+      for (const Probe &p : probes)
+        if (p.kind == Probe::Kind::eigenvalue)
+          throw std::invalid_argument(
+            "entry \"Output/Probes\", probe \"" + p.name +
+            "\": the lowest eigenvalue is tracked by Newton load stepping "
+            "only, not by time stepping");
+      const TimeIntegrator::Parameters &parameters = scene.time_stepping;
+      const bool dynamic = parameters.integrator != Integrator::quasi_static;
+      TimeIntegrator integrator(*model,
+                                dynamic ? scene.inertia() :
+                                          std::vector<RodInertia>(),
+                                parameters,
+                                log);
+
+      RunSummary   summary;
+      StepRecorder recorder(scene,
+                            output_directory,
+                            probes,
+                            model.get(),
+                            summary,
+                            "time");
+      if (log != nullptr)
+        *log << "rodnet (time stepping, " << to_string(parameters.integrator)
+             << "): " << model->network().rods().size() << " rod(s), "
+             << model->layout().n_dofs()
+             << " DoFs, t = " << parameters.start_time << " to "
+             << parameters.end_time << " s in steps of " << parameters.time_step
+             << " s" << std::endl;
+
+      const auto record = [&](const unsigned int step,
+                              const double       time,
+                              const double       load_factor,
+                              const VectorType  &u) {
+        recorder.record(
+          step,
+          time,
+          evaluate_probes(probes, *model, u, load_factor, std::nan("")),
+          &u);
+      };
+      VectorType u, v;
+      scene.initial_state(*model, u, v);
+      // Without a preload the history begins with the initial state.
+      if (parameters.preload_time == 0)
+        {
+          const double load_factor =
+            parameters.load_factor(parameters.start_time);
+          model->apply_boundary_values(u, load_factor);
+          record(0, parameters.start_time, load_factor, u);
+        }
+      try
+        {
+          integrator.run(u,
+                         v,
+                         [&](const TimeIntegrator::StepInfo &info,
+                             const VectorType               &state,
+                             const VectorType &) {
+                           record(info.step,
+                                  info.time,
+                                  info.load_factor,
+                                  state);
+                         });
+        }
+      catch (const SolverFailure &e)
+        {
+          summary.failure = e.what();
+        }
+      // The preload's rows stay in probes.csv; the plot shows the motion,
+      // whose time scale is usually far shorter.
+      recorder.finish(output_directory,
+                      std::make_pair(parameters.start_time,
+                                     parameters.end_time));
+      return summary;
+    }
   } // namespace
 
   RunSummary
@@ -191,8 +286,15 @@ namespace rodnet
             const std::string &output_directory,
             std::ostream      *log)
   {
-    return scene.method == SolutionMethod::newton ?
-             run_newton(scene, output_directory, log) :
-             run_dynamic_relaxation(scene, output_directory, log);
+    switch (scene.method)
+      {
+        case SolutionMethod::newton:
+          return run_newton(scene, output_directory, log);
+        case SolutionMethod::dynamic_relaxation:
+          return run_dynamic_relaxation(scene, output_directory, log);
+        case SolutionMethod::time_stepping:
+          return run_time_stepping(scene, output_directory, log);
+      }
+    throw std::logic_error("run_scene: unknown solution method");
   }
 } // namespace rodnet

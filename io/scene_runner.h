@@ -16,18 +16,25 @@ namespace rodnet
     /// Load factor where the lowest eigenvalue crossed zero (NaN if none).
     double                   critical_load_factor = std::nan("");
     std::vector<std::string> probe_names;
-    /// Per converged step: load factor, then the probe values.
+    /// What the first entry of every row is: "load_factor" for load
+    /// stepping, "time" for time stepping.
+    std::string abscissa = "load_factor";
+    /// Per converged step: the abscissa, then the probe values.
     std::vector<std::vector<double>> rows;
     /// Empty if the run completed; the solver's message otherwise.
     std::string failure;
   };
 
   /**
-   * Runs a scene: builds the model, steps the load, and after every
-   * converged step writes the VTU/PVD files and a row of probes.csv into
-   * @p output_directory (created if needed), and finally probes.png. A
+   * Runs a scene: builds the model, steps the load (or the time), and after
+   * every converged step writes the VTU/PVD files and a row of probes.csv
+   * into @p output_directory (created if needed), and finally probes.png.
+   * Time stepping also records the initial state (step 0) when there is no
+   * preload, and every preload step (at times up to the start time). A
    * solver failure ends the run with RunSummary::failure set; everything
-   * written before stays. Bad input throws before any step.
+   * written before stays. Bad input throws std::invalid_argument before any
+   * step, except a "Load factor" expression that is not finite at some
+   * time, which throws when the run gets there.
    */
   RunSummary
   run_scene(const Scene       &scene,

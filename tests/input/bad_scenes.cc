@@ -174,8 +174,9 @@ namespace
 
   TEST(BadScene, ViscoelasticMaterialNeedsTimeStepping)
   {
-    // Until the assembly evolves internal variables, a history-dependent
-    // material is refused instead of solved with its instantaneous moduli.
+    // Static load stepping has no time for the internal variables to evolve
+    // in: a history-dependent material is refused there rather than solved
+    // with its instantaneous moduli (Method = time stepping runs it).
     expect_input_error("viscoelastic",
                        "subsection Material\n"
                        "  set Model = standard linear solid\n"
@@ -190,6 +191,147 @@ namespace
                        "  end\n"
                        "end\n",
                        "internal variables");
+  }
+
+  // Time stepping: a cantilever of standard linear solid with density and
+  // a cross-section, which every dynamic run needs; each test breaks one
+  // entry.
+  const std::string clamped_rod =
+    "subsection Geometry\n  set Segments = 10\nend\n"
+    "subsection Supports\n  set Clamped ends = start\nend\n";
+
+  /// Standard linear solid entries with @p extra lines (given last, they
+  /// override), and "Density" @p density in the Material subsection.
+  std::string
+  viscoelastic_material(const std::string &density, const std::string &extra)
+  {
+    return "subsection Material\n"
+           "  set Model = standard linear solid\n"
+           "  set Density = " +
+           density +
+           "\n"
+           "  subsection standard linear solid\n"
+           "    set Young's modulus E1 = 1e6\n"
+           "    set Cross section = circle\n"
+           "    set Radius = 0.01\n"
+           "    set Modulus ratio E2/E1 = 0.3\n"
+           "    set Relaxation time = 0.1\n" +
+           extra +
+           "  end\n"
+           "end\n";
+  }
+
+  /// Method = time stepping with the subsection "Time stepping" holding
+  /// @p entries.
+  std::string
+  time_stepping(const std::string &entries)
+  {
+    return "subsection Solver\n"
+           "  set Method = time stepping\n"
+           "  subsection Time stepping\n" +
+           entries +
+           "  end\n"
+           "end\n";
+  }
+
+  TEST(BadScene, TimeStepZero)
+  {
+    // The default time step, 0, is "not given".
+    expect_input_error("time_step_zero",
+                       clamped_rod + viscoelastic_material("1000", "") +
+                         time_stepping("    set End time = 1\n"),
+                       "entry \"Solver/Time stepping/Time step\"");
+  }
+
+  TEST(BadScene, TimeStepNegative)
+  {
+    expect_input_error("time_step_negative",
+                       clamped_rod + viscoelastic_material("1000", "") +
+                         time_stepping("    set Time step = -0.01\n"),
+                       "entry \"Solver/Time stepping/Time step\"");
+  }
+
+  TEST(BadScene, DashpotWithoutRelaxationSpring)
+  {
+    // Without the spring E2 the dashpot carries no stress, and a dashpot
+    // without viscosity (t_r = 0) is no dashpot: both are refused, naming
+    // the entry, rather than run as an elastic rod with idle internal
+    // variables.
+    const std::string run = time_stepping("    set Time step = 0.01\n");
+    expect_input_error(
+      "no_maxwell_spring",
+      clamped_rod +
+        viscoelastic_material("1000", "    set Modulus ratio E2/E1 = 0\n") +
+        run,
+      "Modulus ratio E2/E1");
+    expect_input_error(
+      "no_viscosity",
+      clamped_rod +
+        viscoelastic_material("1000", "    set Relaxation time = 0\n") + run,
+      "Relaxation time");
+  }
+
+  TEST(BadScene, DynamicRunNeedsDensity)
+  {
+    expect_input_error("no_density",
+                       clamped_rod + viscoelastic_material("0", "") +
+                         time_stepping("    set Integrator = newmark\n"
+                                       "    set Time step = 0.01\n"),
+                       "entry \"Material/Density\"");
+  }
+
+  TEST(BadScene, DynamicRunNeedsSection)
+  {
+    // Direct rigidities give no area or second moments for the inertia.
+    expect_input_error(
+      "no_section",
+      clamped_rod +
+        viscoelastic_material("1000",
+                              "    set Stiffness input = direct\n"
+                              "    set EA = 1e4\n"
+                              "    set EI1 = 1\n"
+                              "    set EI2 = 1\n"
+                              "    set GJ = 1\n") +
+        time_stepping("    set Integrator = backward euler\n"
+                      "    set Time step = 0.01\n"),
+      "entry \"Material/standard linear solid/Stiffness input\"");
+  }
+
+  TEST(BadScene, MidpointRuleRefusesViscoelasticMaterial)
+  {
+    expect_input_error("midpoint_viscoelastic",
+                       clamped_rod + viscoelastic_material("1000", "") +
+                         time_stepping("    set Integrator = midpoint\n"
+                                       "    set Time step = 0.01\n"),
+                       "entry \"Solver/Time stepping/Integrator\"");
+  }
+
+  TEST(BadScene, LoadFactorIsNotAnExpression)
+  {
+    expect_input_error("load_factor_syntax",
+                       clamped_rod + viscoelastic_material("1000", "") +
+                         time_stepping("    set Time step = 0.01\n"
+                                       "    set Load factor = 1 +\n"),
+                       "entry \"Solver/Time stepping/Load factor\"");
+  }
+
+  TEST(BadScene, LoadFactorNotFinite)
+  {
+    // Infinite at the start time: refused by name, never a NaN state.
+    expect_input_error("load_factor_infinite",
+                       clamped_rod + viscoelastic_material("1000", "") +
+                         time_stepping("    set Time step = 0.01\n"
+                                       "    set Load factor = 1/t\n"),
+                       "entry \"Solver/Time stepping/Load factor\"");
+  }
+
+  TEST(BadScene, InitialVelocityNeedsThreeComponents)
+  {
+    expect_input_error("initial_velocity",
+                       clamped_rod + viscoelastic_material("1000", "") +
+                         time_stepping("    set Time step = 0.01\n"
+                                       "    set Initial velocity = 0; 0\n"),
+                       "entry \"Solver/Time stepping/Initial velocity\"");
   }
 
   TEST(BadScene, SolverFailureKeepsEarlierSteps)
@@ -238,5 +380,46 @@ namespace
       }
     EXPECT_GE(rows, 1u);
     EXPECT_LT(rows, 10u);
+  }
+
+  TEST(BadScene, TimeSteppingFailureKeepsEarlierSteps)
+  {
+    // At rest until t = 0.05 s, then a tip load far beyond what two Newton
+    // iterations per step can follow, with no room to cut steps: the run
+    // stops with exit code 2 after the steps at rest, which stay in
+    // probes.csv (against time, from the initial state at step 0) with
+    // their VTU files.
+    const Outcome o = run_driver(
+      "time_stepping_failure",
+      clamped_rod + viscoelastic_material("1000", "") +
+        "subsection Loads\n  set Point forces = end: 0, 0, -100\nend\n" +
+        "subsection Solver\n"
+        "  set Max iterations = 2\n"
+        "  set Minimum step fraction = 0.5\n"
+        "end\n" +
+        time_stepping("    set Time step = 0.01\n"
+                      "    set End time = 0.1\n"
+                      "    set Load factor = if(t < 0.05, 0, 1)\n") +
+        "subsection Output\n  set Probes = tip_z: position end z\nend\n");
+    ASSERT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_NE(o.output.find("solver stopped"), std::string::npos) << o.output;
+    std::ifstream csv("out_time_stepping_failure/probes.csv");
+    std::string   line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "step,time,tip_z");
+    unsigned int rows = 0;
+    while (std::getline(csv, line))
+      {
+        char name[64];
+        std::snprintf(name,
+                      sizeof(name),
+                      "out_time_stepping_failure/solution-%05u.vtu",
+                      rows);
+        EXPECT_TRUE(std::filesystem::exists(name)) << name;
+        ++rows;
+      }
+    // Step 0 and the steps to t = 0.04 s at least; not the end.
+    EXPECT_GE(rows, 5u);
+    EXPECT_LT(rows, 11u);
   }
 } // namespace
