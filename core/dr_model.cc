@@ -258,11 +258,7 @@ namespace rodnet
   DrModel::add_point_force(const unsigned int vertex, const Vector3 &force)
   {
     check_not_finalized("add_point_force");
-    if (vertex >= network_->n_vertices())
-      throw std::invalid_argument("point force at vertex " +
-                                  std::to_string(vertex) +
-                                  ", which does not exist");
-    point_forces.emplace_back(vertex, force);
+    loads.add_point_force(*network_, vertex, force);
   }
 
 
@@ -271,11 +267,7 @@ namespace rodnet
                                  const Vector3     &force_per_length)
   {
     check_not_finalized("add_distributed_force");
-    if (rod >= network_->rods().size())
-      throw std::invalid_argument("distributed force on rod " +
-                                  std::to_string(rod) +
-                                  ", which does not exist");
-    distributed_forces.emplace_back(rod, force_per_length);
+    loads.add_distributed_force(*network_, rod, force_per_length);
   }
 
 
@@ -346,10 +338,10 @@ namespace rodnet
 
     // Dead loads, distributed ones lumped with half of each element.
     f_ext.reinit(n_dofs());
-    for (const auto &[vertex, force] : point_forces)
+    for (const auto &[vertex, force] : loads.point_forces)
       for (unsigned int c = 0; c < 3; ++c)
         f_ext[position_dof(vertex, c)] += force[c];
-    for (const auto &[rod, q] : distributed_forces)
+    for (const auto &[rod, q] : loads.distributed_forces)
       for (const Element &e : elements)
         if (e.rod == rod)
           for (const unsigned int v : e.vertices)

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <core/dead_loads.h>
 #include <core/rod_network.h>
 #include <elements/dr_beam_kernel.h>
 #include <materials/linear_elastic_rod.h>
@@ -290,13 +291,12 @@ namespace rodnet
     /// Per frame node: the first DoF of its anchor (clamped frames only).
     std::vector<unsigned int> anchor_dofs;
     /// Fixed DoF -> prescribed change at load factor 1.
-    std::map<unsigned int, double>                fixed_dofs;
-    std::vector<bool>                             fixed_mask;
-    std::vector<std::pair<unsigned int, Vector3>> point_forces;
-    std::vector<std::pair<unsigned int, Vector3>> distributed_forces;
-    DrVector                                      f_ext;
-    double                                        length    = 0;
-    bool                                          finalized = false;
+    std::map<unsigned int, double> fixed_dofs;
+    std::vector<bool>              fixed_mask;
+    DeadLoads                      loads;
+    DrVector                       f_ext;
+    double                         length    = 0;
+    bool                           finalized = false;
   };
 } // namespace rodnet
 

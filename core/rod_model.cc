@@ -201,22 +201,14 @@ namespace rodnet
   void
   RodModel::add_point_force(const unsigned int vertex, const Vector3 &force)
   {
-    if (vertex >= network_->n_vertices())
-      throw std::invalid_argument("point force at vertex " +
-                                  std::to_string(vertex) +
-                                  ", which does not exist");
-    point_forces.emplace_back(vertex, force);
+    loads.add_point_force(*network_, vertex, force);
   }
 
   void
   RodModel::add_distributed_force(const unsigned int rod,
                                   const Vector3     &force_per_length)
   {
-    if (rod >= network_->rods().size())
-      throw std::invalid_argument("distributed force on rod " +
-                                  std::to_string(rod) +
-                                  ", which does not exist");
-    distributed_forces.emplace_back(rod, force_per_length);
+    loads.add_distributed_force(*network_, rod, force_per_length);
   }
 
   const Support &
@@ -282,10 +274,10 @@ namespace rodnet
     // Dead loads: point forces, and distributed forces lumped with the
     // undeformed Voronoi lengths (half of each adjacent segment).
     f_ext = create_vector();
-    for (const auto &[vertex, force] : point_forces)
+    for (const auto &[vertex, force] : loads.point_forces)
       for (unsigned int c = 0; c < 3; ++c)
         f_ext[layout_->vertex_dof(vertex, c)] += force[c];
-    for (const auto &[rod_index, q] : distributed_forces)
+    for (const auto &[rod_index, q] : loads.distributed_forces)
       for (const SegmentStencil &s : layout_->segments())
         if (s.rod == rod_index)
           {

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <core/configuration.h>
+#include <core/dead_loads.h>
 #include <core/dof_layout.h>
 #include <core/internal_variables.h>
 #include <core/rod_network.h>
@@ -294,10 +295,9 @@ namespace rodnet
     std::map<global_dof_index, double> fixed_dofs;
     dealii::AffineConstraints<double>  homogeneous_constraints;
     /// Per DoF: fixed by a support (the same DoFs as the constraints).
-    std::vector<bool>                             fixed_dof_mask;
-    dealii::AffineConstraints<double>             no_constraints;
-    std::vector<std::pair<unsigned int, Vector3>> point_forces;
-    std::vector<std::pair<unsigned int, Vector3>> distributed_forces;
+    std::vector<bool>                 fixed_dof_mask;
+    dealii::AffineConstraints<double> no_constraints;
+    DeadLoads                         loads;
     struct AxisLoad
     {
       unsigned int junction;

@@ -1,0 +1,56 @@
+#ifndef RODNET_CORE_DEAD_LOADS_H
+#define RODNET_CORE_DEAD_LOADS_H
+
+#include <core/rod_network.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rodnet
+{
+  /**
+   * The dead forces of a model at load factor 1, as added: point forces on
+   * vertices and forces per undeformed length on whole rods, each checked
+   * against the network when added. RodModel and DrModel keep one each and
+   * lump the distributed forces onto their own DoFs.
+   */
+  class DeadLoads
+  {
+  public:
+    /// Throws std::invalid_argument if @p vertex is not a vertex of
+    /// @p network.
+    void
+    add_point_force(const RodNetwork  &network,
+                    const unsigned int vertex,
+                    const Vector3     &force)
+    {
+      if (vertex >= network.n_vertices())
+        throw std::invalid_argument("point force at vertex " +
+                                    std::to_string(vertex) +
+                                    ", which does not exist");
+      point_forces.emplace_back(vertex, force);
+    }
+
+    /// Throws std::invalid_argument if @p rod is not a rod of @p network.
+    void
+    add_distributed_force(const RodNetwork  &network,
+                          const unsigned int rod,
+                          const Vector3     &force_per_length)
+    {
+      if (rod >= network.rods().size())
+        throw std::invalid_argument("distributed force on rod " +
+                                    std::to_string(rod) +
+                                    ", which does not exist");
+      distributed_forces.emplace_back(rod, force_per_length);
+    }
+
+    /// (vertex, force) pairs.
+    std::vector<std::pair<unsigned int, Vector3>> point_forces;
+    /// (rod, force per undeformed length) pairs.
+    std::vector<std::pair<unsigned int, Vector3>> distributed_forces;
+  };
+} // namespace rodnet
+
+#endif
