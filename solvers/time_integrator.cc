@@ -173,6 +173,22 @@ namespace rodnet
                           VectorType      &v,
                           const Observer  &observer)
   {
+    // Under a constant load factor the total energy of a dynamic run can
+    // only stay (conservative rods) or fall (dissipation); growth beyond
+    // energy_growth_limit of its scale marks an unstable integration
+    // (Newmark's rule has no energy bound for nonlinear rods), stopped
+    // before it runs away. The reference restarts whenever the load moves.
+    const bool check_energy =
+      method != Integrator::quasi_static && parameters.energy_growth_limit > 0;
+    double reference_load   = parameters.load_factor(from);
+    double reference_energy = 0, energy_scale = 0;
+    if (check_energy)
+      {
+        reference_energy = kinetic_energy(mass, v) +
+                           model.assemble(u, reference_load, nullptr, nullptr);
+        energy_scale = std::abs(reference_energy);
+      }
+
     // Times closer than this to a grid point are on it (rounding of t).
     const double on_grid = 1e-9 * h;
     double       t       = from;
@@ -224,6 +240,27 @@ namespace rodnet
           throw SolverFailure(
             "time stepping (" + to_string(method) +
             "): the energy is not finite at t = " + time_string(t) + " s");
+        if (check_energy)
+          {
+            const double energy = info.kinetic_energy + info.potential_energy;
+            if (info.load_factor != reference_load)
+              {
+                reference_load   = info.load_factor;
+                reference_energy = energy;
+                energy_scale     = std::abs(energy);
+              }
+            energy_scale = std::max(energy_scale, info.kinetic_energy);
+            if (energy - reference_energy >
+                parameters.energy_growth_limit * energy_scale)
+              throw SolverFailure(
+                "time stepping (" + to_string(method) + "): unstable at t = " +
+                time_string(t) + " s, the energy grew from " +
+                time_string(reference_energy) + " to " + time_string(energy) +
+                " J under a constant load; take a smaller time step" +
+                (method == Integrator::newmark ?
+                   " or the midpoint rule, which conserves energy" :
+                   ""));
+          }
         if (observer)
           observer(info, u, v);
         if (log != nullptr && parameters.progress_interval > 0 &&

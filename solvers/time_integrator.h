@@ -80,7 +80,9 @@ namespace rodnet
    * solve fails is halved, from the same state, down to min_step_fraction
    * of the nominal step; the run then throws SolverFailure naming the time
    * and the reason, after every earlier step has been reported. A state or
-   * energy that is not finite is a failure as well, never an output.
+   * energy that is not finite is a failure as well, never an output, and
+   * so is energy growth under constant loads (Parameters::
+   * energy_growth_limit): the signature of an unstable integration.
    */
   class TimeIntegrator
   {
@@ -114,6 +116,13 @@ namespace rodnet
       /// (residual_roundoff_floor()).
       double                   relative_tolerance = 1e-9;
       NewtonSolver::Parameters newton;
+      /**
+       * Dynamic runs stop as unstable (SolverFailure) where, over steps with
+       * an unchanged load factor, the total energy (kinetic plus potential)
+       * grows by more than this fraction of its scale (its value when the
+       * load last changed, or the largest kinetic energy since). 0: off.
+       */
+      double energy_growth_limit = 0.01;
       /// Progress line on the log every this many steps (0: none).
       unsigned int progress_interval = 100;
     };

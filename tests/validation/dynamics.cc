@@ -4,9 +4,6 @@
 // rule to the Newton tolerance, decreasing under backward Euler), and the
 // creep of a standard-linear-solid cantilever under a constant tip load
 // against P L^3 / (3 I) J(t).
-#include <core/mass_matrix.h>
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
 #include <solvers/time_integrator.h>
@@ -15,100 +12,13 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <map>
+#include <tests/common/cantilever_swing.h>
 #include <vector>
 
 namespace
 {
   using namespace rodnet;
-
-  /// Slender rod of unit length, EI = 1 and rho A = 1: a circular section
-  /// with A L^2 / I = 1e4 (radius 0.02), G = E / 2.6.
-  const RodStiffness stiffness{1e4, 1, 1, 1 / 1.3};
-  const RodInertia   inertia{1, 2e-4};
-
-  /// Cantilever along e_x, clamped at the origin, tip force (0, 0, @p P)
-  /// at load factor 1.
-  std::unique_ptr<RodModel>
-  cantilever(const unsigned int                        n,
-             const std::shared_ptr<const RodMaterial> &material,
-             const double                              P)
-  {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(
-      generators::straight(Vector3(0, 0, 0), Vector3(1, 0, 0), n, true),
-      false,
-      Vector3::UnitY(),
-      "simple");
-    auto model = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>{material});
-    model->clamp_end("clamp", 0, true);
-    model->add_point_force(n, Vector3(0, 0, P));
-    model->finalize();
-    return model;
-  }
-
-  /// Time and tip deflection (z) of every converged step.
-  struct History
-  {
-    std::vector<double> time, tip, energy;
-  };
-
-  /**
-   * Holds @p model under its load (a quasi-static preload), releases it
-   * at t = 0 and integrates with @p method to @p end_time in steps @p h.
-   */
-  History
-  released_swing(RodModel        &model,
-                 const Integrator method,
-                 const double     h,
-                 const double     end_time)
-  {
-    TimeIntegrator::Parameters p;
-    p.integrator         = method;
-    p.time_step          = h;
-    p.end_time           = end_time;
-    p.preload_time       = 1;
-    p.preload_steps      = 4;
-    p.load_factor        = [](const double t) { return t < 0 ? 1.0 : 0.0; };
-    p.relative_tolerance = 1e-11;
-    TimeIntegrator     integrator(model,
-                              std::vector<RodInertia>{inertia},
-                              p,
-                              &std::cout);
-    const unsigned int tip = model.network().rods()[0].vertices.back();
-    History            history;
-    VectorType         u = model.create_vector(), v = model.create_vector();
-    integrator.run(u,
-                   v,
-                   [&](const TimeIntegrator::StepInfo &info,
-                       const VectorType               &x,
-                       const VectorType &) {
-                     if (info.time < 0)
-                       return;
-                     history.time.push_back(info.time);
-                     history.tip.push_back(
-                       model.configuration().position(x, tip)[2]);
-                     history.energy.push_back(info.kinetic_energy +
-                                              info.potential_energy);
-                   });
-    return history;
-  }
-
-  /// Period from the zero crossings of @p h.tip (linear interpolation
-  /// between steps), over all full half-periods recorded.
-  double
-  period(const History &h)
-  {
-    std::vector<double> crossings;
-    for (unsigned int i = 1; i < h.tip.size(); ++i)
-      if ((h.tip[i - 1] > 0) != (h.tip[i] > 0))
-        crossings.push_back(h.time[i - 1] + (h.time[i] - h.time[i - 1]) *
-                                              h.tip[i - 1] /
-                                              (h.tip[i - 1] - h.tip[i]));
-    EXPECT_GE(crossings.size(), 3u);
-    return 2 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
-  }
+  using namespace rodnet::testing;
 
   // Euler-Bernoulli: omega_1 = 1.8751^2 sqrt(EI / (rho A L^4)); released
   // from its static deflection under a tip load of 1 % of the tip
@@ -116,29 +26,22 @@ namespace
   // per period, N = 50.
   TEST(Dynamics, FirstFrequencyOfCantilever)
   {
-    const double expected = 2 * M_PI / (1.8751 * 1.8751); // EI = rho A = L = 1
+    const double expected = cantilever_period();
     for (const Integrator method : {Integrator::newmark, Integrator::midpoint})
       {
         auto model =
-          cantilever(50, std::make_shared<LinearElasticRod>(stiffness), 0.03);
-        const History h =
+          cantilever(50,
+                     std::make_shared<LinearElasticRod>(swing_stiffness),
+                     0.03);
+        const SwingHistory h =
           released_swing(*model, method, expected / 100, 4 * expected);
-        const double T = period(h);
+        ASSERT_EQ(h.failure, "");
+        const double T = zero_crossing_period(h);
         std::cout << to_string(method) << ": period " << T << ", expected "
                   << expected << ", relative error " << T / expected - 1
                   << std::endl;
         EXPECT_NEAR(T / expected, 1, 0.01) << to_string(method);
       }
-  }
-
-  /// Largest relative change of the energy from its first value.
-  double
-  energy_drift(const History &h)
-  {
-    double drift = 0;
-    for (const double e : h.energy)
-      drift = std::max(drift, std::abs(e / h.energy.front() - 1));
-    return drift;
   }
 
   // A swing of amplitude ~0.5 L (released from P L^2 / EI = 2), 1000 steps
@@ -148,16 +51,19 @@ namespace
   // doc/dynamics.md) is reported.
   TEST(Dynamics, EnergyOfLargeAmplitudeSwing)
   {
-    const double                  T = 2 * M_PI / (1.8751 * 1.8751);
-    std::map<Integrator, History> runs;
+    const double                       T = 2 * M_PI / (1.8751 * 1.8751);
+    std::map<Integrator, SwingHistory> runs;
     for (const Integrator method : {Integrator::midpoint,
                                     Integrator::newmark,
                                     Integrator::backward_euler})
       {
         auto model =
-          cantilever(20, std::make_shared<LinearElasticRod>(stiffness), 2.0);
-        runs[method]     = released_swing(*model, method, T / 200, 5 * T);
-        const History &h = runs[method];
+          cantilever(20,
+                     std::make_shared<LinearElasticRod>(swing_stiffness),
+                     2.0);
+        runs[method]          = released_swing(*model, method, T / 200, 5 * T);
+        const SwingHistory &h = runs[method];
+        ASSERT_EQ(h.failure, "") << to_string(method);
         ASSERT_EQ(h.energy.size(), 1000u) << to_string(method);
         std::cout << to_string(method) << ": initial tip deflection "
                   << h.tip.front() << ", energy drift " << energy_drift(h)
@@ -166,7 +72,7 @@ namespace
     EXPECT_GT(runs[Integrator::midpoint].tip.front(), 0.45);
     EXPECT_LT(energy_drift(runs[Integrator::midpoint]), 1e-6);
 
-    const History &dissipative = runs[Integrator::backward_euler];
+    const SwingHistory &dissipative = runs[Integrator::backward_euler];
     for (unsigned int i = 1; i < dissipative.energy.size(); ++i)
       ASSERT_LT(dissipative.energy[i], dissipative.energy[i - 1])
         << "step " << i;
@@ -183,7 +89,7 @@ namespace
   {
     const double P = 3e-3, r = 0.3, t_r = 2.0;
     const auto   material =
-      std::make_shared<StandardLinearSolid>(stiffness, r, t_r);
+      std::make_shared<StandardLinearSolid>(swing_stiffness, r, t_r);
     const double t_c = material->creep_time();
     ASSERT_NEAR(t_c, t_r * (1 + r), 1e-12);
     auto model = cantilever(20, material, P);
@@ -207,9 +113,9 @@ namespace
     ASSERT_EQ(deflection.size(), 1000u);
     for (const unsigned int multiple : {1u, 3u, 10u})
       {
-        const double t = multiple * t_c;
-        const double expected =
-          P / (3 * stiffness.EI1) * (1 - r / (1 + r) * std::exp(-t / t_c));
+        const double t        = multiple * t_c;
+        const double expected = P / (3 * swing_stiffness.EI1) *
+                                (1 - r / (1 + r) * std::exp(-t / t_c));
         const double computed = deflection.at(100 * multiple);
         std::cout << "creep at t = " << multiple << " t_c: " << computed
                   << ", expected " << expected << ", relative error "
