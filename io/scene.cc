@@ -201,6 +201,14 @@ namespace rodnet
                         "Print time, Newton iterations and energy every this "
                         "many steps (0: never). [-]");
       prm.declare_entry(
+        "Energy growth limit",
+        "0.01",
+        Double(0),
+        "A dynamic run stops as unstable where, under an unchanged load "
+        "factor, the total energy grows by more than this fraction of its "
+        "value (or of the largest kinetic energy since the load last "
+        "changed); 0 switches the check off. [-]");
+      prm.declare_entry(
         "Initial displacement",
         "0; 0; 0",
         Anything(),
@@ -845,6 +853,7 @@ namespace rodnet
     p.mass =
       prm.get("Mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
     p.progress_interval          = prm.get_integer("Progress interval");
+    p.energy_growth_limit        = prm.get_double("Energy growth limit");
     const std::string load_entry = time_stepping_section + "/Load factor";
     p.load_factor =
       [load_entry,

@@ -19,7 +19,8 @@ namespace rodnet
    * Writes converged states of a RodModel as a ParaView time series: one
    * file `<directory>/<basename>-NNNNN.vtu` per step and the collection
    * `<directory>/<basename>.pvd` listing every step written so far, with the
-   * load factor as its "time". Cells are drawn in the deformed
+   * load factor (static runs) or the time (time stepping) as its "time".
+   * Cells are drawn in the deformed
    * configuration. The fields are
    * - "displacement" (vector) and "twist" (per segment, the twist DoF),
    *   straight from the DoF vector;
@@ -49,7 +50,8 @@ namespace rodnet
               const std::string &basename = "solution");
 
     /**
-     * Writes the state @p u of step @p step at load factor @p load_factor
+     * Writes the state @p u of step @p step at load factor (or time)
+     * @p load_factor
      * and rewrites the .pvd record, both before returning, so that a later
      * failure loses no converged step. Writing the same step again replaces
      * its entry. In a parallel run only rank 0 of @p u's communicator

@@ -196,11 +196,16 @@ namespace rodnet
     double       attempt = h;
     while (to - t > on_grid)
       {
-        const double         grid   = std::min(from + (k + 1) * h, to);
-        const double         length = std::min(attempt, grid - t);
+        const double grid = std::min(from + (k + 1) * h, to);
+        // A step that reaches the grid point ends exactly on it, so that
+        // the load factor is evaluated there and not a rounding error
+        // before (which matters for discontinuous loads).
+        const bool           to_grid = attempt >= grid - t - on_grid;
+        const double         end     = to_grid ? grid : t + attempt;
+        const double         length  = end - t;
         dealii::Timer        timer;
         NewtonSolver::Result result;
-        if (!step(method, t, length, u, v, result))
+        if (!step(method, t, end, u, v, result))
           {
             attempt = length / 2;
             if (attempt < parameters.min_step_fraction * h)
@@ -214,10 +219,9 @@ namespace rodnet
                    << result.failure << "); halving\n";
             continue;
           }
-        t += length;
-        if (grid - t <= on_grid)
+        t = end;
+        if (to_grid)
           {
-            t = grid;
             ++k;
             attempt = h;
           }
@@ -274,15 +278,16 @@ namespace rodnet
   bool
   TimeIntegrator::step(const Integrator      method,
                        const double          time,
-                       const double          h,
+                       const double          end_time,
                        VectorType           &u,
                        VectorType           &v,
                        NewtonSolver::Result &result)
   {
+    const double h           = end_time - time;
     const double c           = mass_coefficient(method, h);
     const double load_factor = parameters.load_factor(
-      method == Integrator::midpoint ? time + h / 2 : time + h);
-    const double end_load_factor = parameters.load_factor(time + h);
+      method == Integrator::midpoint ? time + h / 2 : end_time);
+    const double end_load_factor = parameters.load_factor(end_time);
     const bool   midpoint        = method == Integrator::midpoint;
 
     // u_n + h v_n: the base of the mass term and the predictor.
@@ -318,15 +323,34 @@ namespace rodnet
     VectorType point        = model.create_vector();
     // Midpoint rule: gradients at m and at u, the correction coefficient
     // and the rank-one part of the Jacobian.
-    VectorType gradient_m, gradient_y, rank_one_a, rank_one_b;
-    double     correction = 0;
+    VectorType gradient_m, gradient_y, mass_difference, rank_one_a, rank_one_b;
     if (midpoint)
       {
         gradient_m.reinit(point);
         gradient_y.reinit(point);
+        mass_difference.reinit(point);
         rank_one_a.reinit(point);
         rank_one_b.reinit(point);
       }
+    // The discrete gradient in the metric of the mass matrix:
+    // gradbar = grad Pi(m) + c M d_f, c = [Pi(u) - Pi(u_n) -
+    // grad Pi(m).d] / (d_f.M d_f). Any metric keeps gradbar.d =
+    // Pi(u) - Pi(u_n); the mass puts the correction where the inertia
+    // is, instead of loading the stiff, nearly massless twist DoFs as
+    // much as the positions (which made Newton stall at coarse steps),
+    // and never on massless quaternion rows.
+    const auto correction_terms = [&](const VectorType &y,
+                                      const VectorType &gradient,
+                                      const double      energy) {
+      difference = y;
+      difference -= u;
+      const double change = energy - start_energy - (gradient * difference);
+      model.constraints().set_zero(difference);
+      mass.vmult(mass_difference, difference);
+      model.constraints().set_zero(mass_difference);
+      const double norm2 = difference * mass_difference;
+      return std::make_pair(norm2 > 0 ? change / norm2 : 0.0, norm2);
+    };
     NewtonSolver::Problem problem;
     if (midpoint)
       {
@@ -337,22 +361,17 @@ namespace rodnet
           // Unconstrained: grad Pi . d needs the fixed rows too, where
           // prescribed DoFs move.
           model.assemble(point, load_factor, &r, nullptr, false);
-          difference = y;
-          difference -= u;
-          const double change =
-            model.assemble(y, load_factor, nullptr, nullptr) - start_energy -
-            (r * difference);
+          const double energy =
+            model.assemble(y, load_factor, nullptr, nullptr);
+          const double coefficient = correction_terms(y, r, energy).first;
           model.constraints().set_zero(r);
-          model.constraints().set_zero(difference);
-          const double norm2 = difference.norm_sqr();
-          if (norm2 > 0)
-            r.add(change / norm2, difference);
+          r.add(coefficient, mass_difference);
           add_inertia(y, r);
         };
-        // The exact Jacobian of the discrete gradient: the derivative of
-        // the correction c d_f is c on the free diagonal plus the dense
-        // d_f (grad c)^T, with
-        //   grad c = [grad Pi(u) - grad Pi(m) - K(m) d / 2 - 2 c d_f] / |d_f|^2
+        // The exact Jacobian: the derivative of the correction c M d_f is
+        // c M (sparse) plus the dense M d_f (grad c)^T, with
+        //   grad c = [grad Pi(u) - grad Pi(m) - K(m) d / 2 - 2 c M d_f]
+        //            / (d_f.M d_f)
         // (free rows), which NewtonSolver takes as a rank-one term.
         problem.tangent = [&](const VectorType &y, MatrixType &k) {
           point = y;
@@ -361,30 +380,21 @@ namespace rodnet
           model.assemble(point, load_factor, &gradient_m, nullptr, false);
           const double energy =
             model.assemble(y, load_factor, &gradient_y, nullptr, false);
-          difference = y;
-          difference -= u;
-          const double change =
-            energy - start_energy - (gradient_m * difference);
-          model.constraints().set_zero(difference);
-          const double norm2 = difference.norm_sqr();
-          correction         = norm2 > 0 ? change / norm2 : 0.0;
+          const auto [coefficient, norm2] =
+            correction_terms(y, gradient_m, energy);
 
           model.assemble(point, load_factor, nullptr, &k, true);
           k *= 0.5;
           k.vmult(product, difference);
-          k.add(c, constrained_mass);
-          for (unsigned int i = 0; i < k.m(); ++i)
-            if (!model.constraints().is_constrained(i))
-              k.add(i, i, correction);
-          k.compress(dealii::VectorOperation::add);
+          k.add(c + coefficient, constrained_mass);
 
           rank_one_b = gradient_y;
           rank_one_b -= gradient_m;
           rank_one_b -= product;
-          rank_one_b.add(-2 * correction, difference);
+          rank_one_b.add(-2 * coefficient, mass_difference);
           model.constraints().set_zero(rank_one_b);
           rank_one_b *= norm2 > 0 ? 1 / norm2 : 0.0;
-          rank_one_a = difference;
+          rank_one_a = mass_difference;
         };
         problem.rank_one =
           [&](const VectorType &, VectorType &a, VectorType &b) {

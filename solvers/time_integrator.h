@@ -58,7 +58,7 @@ namespace rodnet
    * - midpoint:       2 M (u - u_n - h v_n) / h^2
    *                   + gradbar Pi(u_n, u; lambda_{n+1/2}) = 0,
    *   with Gonzalez's discrete gradient
-   *     gradbar = grad Pi(m) + (Pi(u) - Pi(u_n) - grad Pi(m).d) d / |d|^2,
+   *     gradbar = grad Pi(m) + (Pi(u) - Pi(u_n) - grad Pi(m).d) M d / d.Md,
    *   m = (u_n + u)/2, d = u - u_n (over the free DoFs), which makes
    *   gradbar . d = Pi(u) - Pi(u_n), so that 1/2 v.Mv + Pi is conserved to
    *   the Newton tolerance whatever the nonlinearity;
@@ -67,8 +67,9 @@ namespace rodnet
    * The first three minimize an incremental potential (the mass term plus
    * Pi), which is what history-dependent materials need; the midpoint
    * rule's discrete gradient needs a stored energy and refuses them.
-   * The tangent is c M + K (midpoint: 2 M / h^2 + K(m) / 2, without the
-   * derivative of the discrete-gradient correction, which is of order d).
+   * The tangent is c M + K (midpoint: 2 M / h^2 + K(m) / 2 plus the
+   * derivative of the discrete-gradient correction, whose dense rank-one
+   * part NewtonSolver handles by Sherman-Morrison).
    *
    * After every converged step the internal variables of history materials
    * are committed, the model's time step set to 0 (so that what the
@@ -173,12 +174,12 @@ namespace rodnet
     }
 
   private:
-    /// One attempt of a step of length @p h with @p method from the state
-    /// (u, v, p) at @p time; on success updates them and returns true.
+    /// One attempt of a step with @p method from the state (u, v, p) at
+    /// @p time to @p end_time; on success updates them and returns true.
     bool
     step(Integrator            method,
          double                time,
-         double                h,
+         double                end_time,
          VectorType           &u,
          VectorType           &v,
          NewtonSolver::Result &result);
