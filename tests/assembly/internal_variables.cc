@@ -64,6 +64,7 @@ namespace
     std::uniform_real_distribution<double> small(-size, size);
     for (unsigned int i = 0; i < u.size(); ++i)
       u[i] += small(random);
+    u.compress(dealii::VectorOperation::add);
   }
 
   class InternalVariablesInAssembly : public ::testing::TestWithParam<bool>
