@@ -32,6 +32,22 @@ namespace rodnet
   }
 
 
+  double
+  isotropic_shear_modulus(const std::string &context,
+                          const double       E,
+                          const double       nu)
+  {
+    // Isotropic elasticity needs nu > -1; the entry's pattern admits -1.
+    AssertThrow(nu > -1. && nu <= 0.5,
+                dealii::ExcMessage(
+                  internal::entry_message(context,
+                                          "Poisson's ratio",
+                                          "must lie in (-1, 0.5]",
+                                          nu)));
+    return E / (2. * (1. + nu));
+  }
+
+
   void
   declare_direct_rigidities(dealii::ParameterHandler &prm,
                             const std::string        &qualifier)
@@ -224,17 +240,9 @@ namespace rodnet
         const double E = prm.get_double("Young's modulus");
         double       G = prm.get_double("Shear modulus");
         if (G == 0.)
-          {
-            // Isotropic elasticity needs nu > -1; the pattern admits -1.
-            const double nu = prm.get_double("Poisson's ratio");
-            AssertThrow(nu > -1. && nu <= 0.5,
-                        dealii::ExcMessage(
-                          internal::entry_message(context,
-                                                  "Poisson's ratio",
-                                                  "must lie in (-1, 0.5]",
-                                                  nu)));
-            G = E / (2. * (1. + nu));
-          }
+          G = isotropic_shear_modulus(context,
+                                      E,
+                                      prm.get_double("Poisson's ratio"));
         // Check E before the section so a missing modulus is named first.
         internal::check_positive_entry(context, "Young's modulus", E);
         stiffness =

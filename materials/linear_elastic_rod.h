@@ -41,6 +41,14 @@ namespace rodnet
   stiffness_from_section(double E, double G, const CrossSection &section);
 
   /**
+   * Shear modulus E / (2 (1 + nu)) of an isotropic material with Young's
+   * modulus @p E and the entry "Poisson's ratio" @p nu; throws a message
+   * starting with @p context unless nu lies in (-1, 0.5].
+   */
+  double
+  isotropic_shear_modulus(const std::string &context, double E, double nu);
+
+  /**
    * Declares the entries EA, EI1, EI2 and GJ of the "direct" stiffness
    * input in the current subsection; @p qualifier starts their help texts
    * (e.g. "Relaxed " for a viscoelastic law's long-time rigidities).

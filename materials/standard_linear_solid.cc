@@ -322,19 +322,15 @@ namespace rodnet
     if (prm.get("Stiffness input") == "section")
       {
         const double E1 = prm.get_double("Young's modulus E1");
-        // Isotropic elasticity needs nu > -1; the pattern admits -1.
-        const double nu = prm.get_double("Poisson's ratio");
-        AssertThrow(nu > -1. && nu <= 0.5,
-                    dealii::ExcMessage(
-                      internal::entry_message(context,
-                                              "Poisson's ratio",
-                                              "must lie in (-1, 0.5]",
-                                              nu)));
+        const double G1 =
+          isotropic_shear_modulus(context,
+                                  E1,
+                                  prm.get_double("Poisson's ratio"));
         // Checked here, so the message names this material's entry.
         internal::check_positive_entry(context, "Young's modulus E1", E1);
         stiffness =
           stiffness_from_section(E1,
-                                 E1 / (2. * (1. + nu)),
+                                 G1,
                                  CrossSectionParameters::parse_parameters(prm));
       }
     else
