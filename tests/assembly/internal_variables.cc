@@ -2,7 +2,8 @@
 // strains in every hinge, junction element and segment, the residual is the
 // gradient of the condensed incremental energy and the tangent its
 // Hessian (central finite differences); a commit stores the closed-form
-// update alpha = (dt e + t_r alpha_prev) / (dt + t_r) of each stencil; the
+// update alpha = (dt e + t_r alpha_prev) / (dt + t_r) of each hinge,
+// junction element and segment; the
 // energy does not change when the reference is reset; time steps are
 // checked.
 #include <core/network_generators.h>
@@ -170,9 +171,27 @@ namespace
                       1e-12)
             << "hinge " << h << " mode " << m;
       }
-    for (unsigned int e = 0; e < model->layout().junctions().size(); ++e)
-      EXPECT_EQ(model->internal_variables().size(Owner::junction_element, e),
-                3u);
+    const auto &junctions = model->layout().junctions();
+    EXPECT_EQ(junctions.empty(), !GetParam());
+    for (unsigned int e = 0; e < junctions.size(); ++e)
+      {
+        const JunctionKernel &kernel = model->junction_kernel(junctions[e].rod);
+        const double          l      = c.junction_voronoi_length(e);
+        const Vector3 k1 = kernel.strains(c.junction_dofs(u1, junctions[e]),
+                                          c.junction_reference(e)) /
+                           l;
+        const Vector3 k2 = kernel.strains(c.junction_dofs(u, junctions[e]),
+                                          c.junction_reference(e)) /
+                           l;
+        ASSERT_EQ(model->internal_variables().size(Owner::junction_element, e),
+                  3u);
+        for (unsigned int m = 0; m < 3; ++m)
+          EXPECT_NEAR(model->internal_variables().block(Owner::junction_element,
+                                                        e)[m],
+                      w * (1 - w) * k1[m] + (1 - w) * k2[m],
+                      1e-12)
+            << "junction element " << e << " mode " << m;
+      }
   }
 
   TEST_P(InternalVariablesInAssembly, EnergyInvariantUnderReferenceReset)

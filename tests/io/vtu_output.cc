@@ -38,7 +38,9 @@ namespace
   /// displacements below are exact in single precision, so the positions
   /// that deal.II stores as 32-bit floats can be checked to 1e-12.
   std::unique_ptr<RodModel>
-  straight_rod()
+  straight_rod(
+    std::shared_ptr<const RodMaterial> material =
+      std::make_shared<LinearElasticRod>(RodStiffness{1.0, 1.0, 1.0, 1.0}))
   {
     auto network = std::make_unique<RodNetwork>();
     network->add_rod(generators::straight(Vector3(0, 0, 0),
@@ -48,8 +50,6 @@ namespace
                      Vector3::UnitY(),
                      "simple");
     network->create_triangulation();
-    const auto material =
-      std::make_shared<LinearElasticRod>(RodStiffness{1.0, 1.0, 1.0, 1.0});
     auto model = std::make_unique<RodModel>(
       std::move(network),
       std::vector<std::shared_ptr<const RodMaterial>>{material});
@@ -240,21 +240,13 @@ TEST(VtuOutput, WritesDeformedRodFieldsAndTimeSeries)
 // and its viscous curvatures are zero.
 TEST(VtuOutput, WritesInternalVariables)
 {
-  auto network = std::make_unique<RodNetwork>();
-  network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                        Vector3(1, 0, 0),
-                                        n_segments),
-                   false,
-                   Vector3::UnitY(),
-                   "simple");
   const double t_r = 2.0, dt = 0.5, e = 0.125;
-  RodModel     model(
-    std::move(network),
-    {std::make_shared<StandardLinearSolid>(RodStiffness{1.0, 1.0, 1.0, 1.0},
-                                           0.5,
-                                           t_r)});
-  model.finalize();
-  VectorType u = model.create_vector();
+  const auto   rod = straight_rod(
+    std::make_shared<StandardLinearSolid>(RodStiffness{1.0, 1.0, 1.0, 1.0},
+                                          0.5,
+                                          t_r));
+  RodModel  &model = *rod;
+  VectorType u     = model.create_vector();
   for (unsigned int v = 0; v <= n_segments; ++v)
     u[model.layout().vertex_dof(v, 0)] = e * model.network().vertex(v)[0];
   model.set_time_step(dt);
