@@ -42,6 +42,43 @@ namespace rodnet
       return s;
     }
 
+    /**
+     * Throws unless rod @p r of @p network may have natural shape straight
+     * for the element, which is stress free in its initial geometry only:
+     * the rod must be straight there (no hinge turning by more than
+     * round-off).
+     */
+    void
+    check_natural_shape(const RodNetwork &network, const unsigned int r)
+    {
+      const Rod &rod = network.rods()[r];
+      if (rod.natural_shape != NaturalShape::straight)
+        return;
+      const unsigned int n       = rod.vertices.size();
+      const auto         tangent = [&](const unsigned int s) -> Vector3 {
+        return (network.vertex(rod.vertices[(s + 1) % n]) -
+                network.vertex(rod.vertices[s]))
+          .normalized();
+      };
+      // The hinges: every vertex of a closed rod, the interior ones else.
+      const unsigned int end = rod.closed ? n : n - 1;
+      for (unsigned int i = rod.closed ? 0 : 1; i < end; ++i)
+        {
+          const Vector3 a = tangent((i + n - 1) % n), b = tangent(i);
+          const double  angle = std::atan2(a.cross(b).norm(), a.dot(b));
+          if (angle > 1e-8)
+            throw std::invalid_argument(
+              "DrModel: rod " + std::to_string(r) + ", vertex " +
+              std::to_string(i) + ": the rod turns by " +
+              std::to_string(angle * 180 / M_PI) +
+              " degrees there but its natural shape is straight, which the "
+              "bending-active element cannot represent (it is stress free "
+              "in its initial geometry); use natural shape \"initial "
+              "geometry\" (scenes: Geometry/Natural shape) or the Newton "
+              "solver");
+        }
+    }
+
     constexpr std::array<unsigned int, 2> node_block = {
       {dr_dof::node_a, dr_dof::node_b}};
     constexpr std::array<unsigned int, 2> far_block = {
@@ -68,6 +105,8 @@ namespace rodnet
           throw std::invalid_argument(
             "DrModel: rod " + std::to_string(r) + ": " + name +
             " must be positive and finite, got " + std::to_string(value));
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      check_natural_shape(network, r);
 
     // The rod ends at a junction share the position of its vertex and,
     // except at a pinned junction, its frame.
