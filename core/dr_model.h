@@ -46,8 +46,10 @@ namespace rodnet
    * The DoF vector u holds the change from the initial configuration: node
    * displacements and the changes of (n_x, n_y, n_r). u = 0 is the initial,
    * stress-free state: the element's rest angles are those of the initial
-   * geometry, i.e. every rod has NaturalShape::initial_geometry, and a
-   * curved rod of NaturalShape::straight is refused.
+   * geometry. Rods must be straight at rest (between their junctions):
+   * the element cannot bend a curved rod of NaturalShape::straight, and
+   * gives wrong answers for a curved one stress free as built (see
+   * doc/dynamic_relaxation.md), so curved rods are refused.
    *
    * Initial normals are the rods' directors d1 at the vertices (the rod's
    * director hint made orthogonal to the vertex tangent, the normalized sum
@@ -75,8 +77,8 @@ namespace rodnet
      * Nodes, frames and elements of @p network (which must outlive the
      * model) with the rigidities @p stiffness_per_rod of each rod. Throws
      * std::invalid_argument for a stiffness count that does not match the
-     * rods, a rigidity that is not positive and finite, a curved rod of
-     * natural shape straight, or an initial normal that the element cannot
+     * rods, a rigidity that is not positive and finite, a rod that is not
+     * straight at rest, or an initial normal that the element cannot
      * represent (naming rod and vertex).
      */
     DrModel(const RodNetwork         &network,
