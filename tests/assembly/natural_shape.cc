@@ -41,7 +41,9 @@ namespace
      "set Generator = arc\nset Radius = 0.7\nset End angle = 120\n"
      "set Segments = 12\n",
      true},
-    {"ring", "set Generator = ring\nset Radius = 0.7\nset Segments = 12\n", true},
+    {"ring",
+     "set Generator = ring\nset Radius = 0.7\nset Segments = 12\n",
+     true},
     {"helix",
      "set Generator = helix\nset Radius = 0.5\nset Rise per radian = 0.1\n"
      "set Turns = 1.5\nset Segments = 20\n",
@@ -83,16 +85,15 @@ namespace
                            kernel + "\nset Natural shape = " + natural_shape +
                            "\nend\n";
     // Anisotropic, so that swapped bending axes would show.
-    prm.parse_input_from_string(geometry +
-                                "subsection Material\n"
-                                "  subsection linear elastic\n"
-                                "    set Stiffness input = direct\n"
-                                "    set EA = 1e4\n"
-                                "    set EI1 = 1\n"
-                                "    set EI2 = 2\n"
-                                "    set GJ = 0.7\n"
-                                "  end\n"
-                                "end\n");
+    prm.parse_input_from_string(geometry + "subsection Material\n"
+                                           "  subsection linear elastic\n"
+                                           "    set Stiffness input = direct\n"
+                                           "    set EA = 1e4\n"
+                                           "    set EI1 = 1\n"
+                                           "    set EI2 = 2\n"
+                                           "    set GJ = 0.7\n"
+                                           "  end\n"
+                                           "end\n");
     return Scene(prm).build_model();
   }
 
@@ -107,17 +108,17 @@ namespace
   AtRest
   at_rest(const RodModel &model)
   {
-    const VectorType u = model.create_vector();
-    VectorType       r = model.create_vector();
-    const double     energy = model.assemble(u, 0.0, &r, nullptr);
-    double shortest = std::numeric_limits<double>::max();
+    const VectorType u        = model.create_vector();
+    VectorType       r        = model.create_vector();
+    const double     energy   = model.assemble(u, 0.0, &r, nullptr);
+    double           shortest = std::numeric_limits<double>::max();
     for (const SegmentStencil &s : model.layout().segments())
       shortest = std::min(shortest, model.configuration().rest_length(s.cell));
     return {energy, r.linfty_norm(), 2.0 / (shortest * shortest)};
   }
 
   class ZeroLoad
-    : public ::testing::TestWithParam<std::tuple<GeneratorCase, std::string>>
+      : public ::testing::TestWithParam<std::tuple<GeneratorCase, std::string>>
   {
   };
 
@@ -188,8 +189,8 @@ namespace
   // change: the twist DoFs are angles about the reference tangents.)
   TEST_P(Reset, NaturalStrainsSurviveAReset)
   {
-    const auto model = free_helix(GetParam());
-    VectorType u     = model->create_vector();
+    const auto                             model = free_helix(GetParam());
+    VectorType                             u     = model->create_vector();
     std::mt19937                           random(3);
     std::uniform_real_distribution<double> small(-0.05, 0.05);
     for (unsigned int i = 0; i < u.size(); ++i)
