@@ -2,8 +2,8 @@
 // number of turns (the end effect of the clamps on the coil) and in the
 // segments per turn (the discretization), for both hinge kernels: the
 // table of k / k_ideal - 1 in doc/validation.md, "Helical spring", with
-// k_ideal from Castigliano (tests/common/helical_spring.h) and, per row,
-// the ratio of k_ideal to VALIDATION.md's pitch-corrected formula.
+// k_ideal from Castigliano (tests/common/helical_spring.h), and the ratio
+// of k_ideal to VALIDATION.md's pitch-corrected formula.
 //
 // Usage: helical_spring [--threads n] [--max-turns n] [--max-segments n]
 // (turns 2, 4, ... up to --max-turns, default 32; segments per turn 8, 16,
@@ -35,6 +35,8 @@ namespace
   void
   benchmark(const Options &options)
   {
+    std::printf("k_ideal / k_VALIDATION.md = %.6f\n",
+                ideal_spring_stiffness(1) / validation_md_stiffness(1));
     for (const std::string kernel : {"simple", "classic"})
       {
         std::printf("%s kernel: k / k_ideal - 1 per turns (rows) and "
@@ -43,7 +45,7 @@ namespace
                     "turns");
         for (unsigned int s = 8; s <= options.max_segments; s *= 2)
           std::printf(" %10u", s);
-        std::printf(" %14s\n", "ideal/VAL.md");
+        std::printf("\n");
         for (unsigned int turns = 2; turns <= options.max_turns; turns *= 2)
           {
             std::printf("%8u", turns);
@@ -52,9 +54,7 @@ namespace
                           helical_spring_stiffness(turns, s, kernel) /
                               ideal_spring_stiffness(turns) -
                             1);
-            std::printf(" %14.6f\n",
-                        ideal_spring_stiffness(turns) /
-                          validation_md_stiffness(turns));
+            std::printf("\n");
           }
       }
   }

@@ -12,6 +12,7 @@
 #include <materials/linear_elastic_rod.h>
 
 #include <gtest/gtest.h>
+#include <iostream>
 #include <limits>
 #include <random>
 #include <string>
@@ -134,6 +135,10 @@ namespace
     // A ring bent from a straight rod is prestressed but in equilibrium:
     // the energy tells.
     const AtRest prestressed = at_rest(*build(c, kernel, "straight"));
+    std::cout << c.name << ", " << kernel << ": at rest, residual "
+              << rest.residual << " (scale " << rest.scale << "), energy "
+              << rest.energy << " J; natural shape straight: energy "
+              << prestressed.energy << " J" << std::endl;
     if (c.curved)
       EXPECT_GT(prestressed.energy, 1e-2) << c.name << ", " << kernel;
     else
@@ -209,6 +214,11 @@ namespace
     EXPECT_LE(model->assemble(zero, 0, &r, nullptr), 1e-20 * energy);
     EXPECT_LE(r.linfty_norm(), 1e-10);
     ASSERT_GT(energy, 1e-3);
+    std::cout << GetParam() << ": energy change under the reset "
+              << std::abs(model->elastic_energy(u) - energy) / energy
+              << " relative; at rest after it, energy "
+              << model->assemble(zero, 0, &r, nullptr) << " J, residual "
+              << r.linfty_norm() << " N" << std::endl;
   }
 
   INSTANTIATE_TEST_SUITE_P(BothKernels,
