@@ -5,15 +5,13 @@
 // curved-beam theory (Castigliano) with a second-order error, from the arc
 // generator and from a Gmsh mesh of the same arc, where the plain clamp
 // (half a segment in, along the first chord) is first order.
-#include <common/run_scene_text.h>
+#include <common/scene_text.h>
 #include <core/rod_generators.h>
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <iostream>
-#include <sstream>
 #include <string>
 
 namespace
@@ -112,36 +110,9 @@ namespace
   std::string
   quarter_circle_scene(const std::string &geometry)
   {
-    std::ostringstream force;
-    force.precision(17);
-    force << tip_force[0] << ", " << tip_force[1] << ", " << tip_force[2];
-    return "subsection Geometry\n" + geometry +
-           "  set Director d1 = 0, 0, 1\n"
-           "end\n"
-           "subsection Material\n"
-           "  subsection linear elastic\n"
-           "    set Stiffness input = direct\n"
-           "    set EA = " +
-           std::to_string(EA) + "\n    set EI1 = " + std::to_string(EI1) +
-           "\n    set EI2 = " + std::to_string(EI2) +
-           "\n    set GJ = " + std::to_string(GJ) +
-           "\n  end\n"
-           "end\n"
-           "subsection Supports\n"
-           "  set Clamped ends = start\n"
-           "end\n"
-           "subsection Loads\n"
-           "  set Steps = 1\n"
-           "  set Point forces = end: " +
-           force.str() +
-           "\n"
-           "end\n"
-           "subsection Output\n"
-           "  set Write VTU = false\n"
-           "  set Plot = false\n"
-           "  set Probes = x: position end x; y: position end y; z: position "
-           "end z\n"
-           "end\n";
+    return cantilever_scene(geometry,
+                            direct_material(EA, EI1, EI2, GJ),
+                            tip_force);
   }
 
   /// Relative error of the tip displacement of a run of @p scene.
@@ -150,12 +121,10 @@ namespace
   {
     const RunSummary run = run_scene_text(scene, name);
     EXPECT_TRUE(run.failure.empty()) << run.failure;
-    const auto   &row = run.rows.back();
-    const Vector3 displacement(row[probe_column(run, "x")],
-                               row[probe_column(run, "y")] - 1,
-                               row[probe_column(run, "z")]);
     const Vector3 exact = curved_beam_deflection();
-    return (displacement - exact).norm() / exact.norm();
+    return (end_position(run, run.rows.size() - 1) - Vector3(0, 1, 0) - exact)
+             .norm() /
+           exact.norm();
   }
 
   std::string
@@ -167,22 +136,18 @@ namespace
            (midpoint ? "true" : "false") + "\n";
   }
 
-  /// Writes the quarter circle as a Gmsh line mesh of @p n elements.
+  /// The quarter circle as a Gmsh line mesh of @p n elements.
   std::string
   gmsh_geometry(const unsigned int n)
   {
-    const std::string path = "quarter_circle_" + std::to_string(n) + ".msh";
-    std::ofstream     mesh(path);
-    mesh.precision(17);
-    mesh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << n + 1 << "\n";
+    std::vector<Vector3> points;
     for (unsigned int i = 0; i <= n; ++i)
-      mesh << i + 1 << " " << std::cos(M_PI / 2 * i / n) << " "
-           << std::sin(M_PI / 2 * i / n) << " 0\n";
-    mesh << "$EndNodes\n$Elements\n" << n << "\n";
-    for (unsigned int i = 0; i < n; ++i)
-      mesh << i + 1 << " 1 2 1 1 " << i + 1 << " " << i + 2 << "\n";
-    mesh << "$EndElements\n";
-    return "  set Generator = gmsh\n  set Mesh file = " + path +
+      points.emplace_back(std::cos(M_PI / 2 * i / n),
+                          std::sin(M_PI / 2 * i / n),
+                          0);
+    return "  set Generator = gmsh\n  set Mesh file = " +
+           write_gmsh_chain("quarter_circle_" + std::to_string(n) + ".msh",
+                            points) +
            "\n  set Clamp at first segment midpoint = true\n";
   }
 

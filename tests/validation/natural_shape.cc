@@ -6,14 +6,14 @@
 // - a helix loaded far into the nonlinear range and unloaded again, one
 //   reference reset per step, returns to its initial geometry: the natural
 //   strains stay those of the undeformed rod through every reset.
-#include <common/run_scene_text.h>
+#include <common/scene_text.h>
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -22,20 +22,6 @@ namespace
 
   constexpr double EA = 1e6, EI1 = 10, EI2 = 20, GJ = 7;
   const Vector3    tip_force(0.02, -0.01, 0.015);
-
-  std::string
-  material()
-  {
-    return "subsection Material\n"
-           "  subsection linear elastic\n"
-           "    set Stiffness input = direct\n"
-           "    set EA = " +
-           std::to_string(EA) + "\n    set EI1 = " + std::to_string(EI1) +
-           "\n    set EI2 = " + std::to_string(EI2) +
-           "\n    set GJ = " + std::to_string(GJ) +
-           "\n  end\n"
-           "end\n";
-  }
 
   /**
    * Tip displacement of the L of unit legs, clamped at the origin, along x
@@ -62,56 +48,30 @@ namespace
   std::string
   kinked_mesh(const unsigned int n)
   {
-    const std::string path = "kinked_" + std::to_string(n) + ".msh";
-    std::ofstream     mesh(path);
-    mesh.precision(17);
-    mesh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
-         << 2 * n + 1 << "\n";
-    for (unsigned int i = 0; i <= 2 * n; ++i)
-      mesh << i + 1 << " " << (i <= n ? double(i) / n : 1.0) << " "
-           << (i <= n ? 0.0 : double(i - n) / n) << " 0\n";
-    mesh << "$EndNodes\n$Elements\n" << 2 * n << "\n";
-    for (unsigned int i = 0; i < 2 * n; ++i)
-      mesh << i + 1 << " 1 2 3 1 " << i + 1 << " " << i + 2 << "\n";
-    mesh << "$EndElements\n";
-    return path;
+    std::vector<Vector3> points;
+    for (unsigned int i = 0; i <= n; ++i)
+      points.emplace_back(double(i) / n, 0, 0);
+    for (unsigned int i = 1; i <= n; ++i)
+      points.emplace_back(1, double(i) / n, 0);
+    return write_gmsh_chain("kinked_" + std::to_string(n) + ".msh", points);
   }
 
   /// Relative error of the tip displacement of the kinked rod in @p mesh.
   double
   kinked_tip_error(const std::string &mesh)
   {
-    std::ostringstream force;
-    force.precision(17);
-    force << tip_force[0] << ", " << tip_force[1] << ", " << tip_force[2];
     const RunSummary run = run_scene_text(
-      "subsection Geometry\n"
-      "  set Generator = gmsh\n"
-      "  set Mesh file = " +
-        mesh +
-        "\n"
-        "  set Clamp at first segment midpoint = true\n"
-        "  set Director d1 = 0, 0, 1\n"
-        "end\n" +
-        material() +
-        "subsection Supports\n  set Clamped ends = start\nend\n"
-        "subsection Loads\n"
-        "  set Steps = 1\n"
-        "  set Point forces = end: " +
-        force.str() +
-        "\nend\n"
-        "subsection Output\n"
-        "  set Write VTU = false\n"
-        "  set Plot = false\n"
-        "  set Probes = x: position end x; y: position end y; z: position "
-        "end z\n"
-        "end\n",
+      cantilever_scene("  set Generator = gmsh\n"
+                       "  set Mesh file = " +
+                         mesh +
+                         "\n"
+                         "  set Clamp at first segment midpoint = true\n",
+                       direct_material(EA, EI1, EI2, GJ),
+                       tip_force),
       "kinked_rod");
     EXPECT_TRUE(run.failure.empty()) << run.failure;
-    const auto   &row = run.rows.back();
-    const Vector3 displacement(row[probe_column(run, "x")] - 1,
-                               row[probe_column(run, "y")] - 1,
-                               row[probe_column(run, "z")]);
+    const Vector3 displacement =
+      end_position(run, run.rows.size() - 1) - Vector3(1, 1, 0);
     return (displacement - l_frame_deflection()).norm() /
            l_frame_deflection().norm();
   }
@@ -141,47 +101,40 @@ namespace
   // back in its initial geometry.
   TEST(NaturalShape, HelixReturnsToItsInitialGeometryWhenUnloaded)
   {
-    const RunSummary run = run_scene_text(
-      "subsection Geometry\n"
-      "  set Generator = helix\n"
-      "  set Radius = 0.5\n"
-      "  set Rise per radian = 0.1\n"
-      "  set Turns = 1.5\n"
-      "  set Segments = 30\n"
-      "  set Director d1 = 0, 0, 1\n"
-      "end\n" +
-        material() +
-        "subsection Supports\n  set Clamped ends = start\nend\n"
-        "subsection Loads\n"
-        "  set Point forces = end: 4, 0, -6\n"
-        "end\n"
-        "subsection Solver\n"
-        "  set Method = time stepping\n"
-        "  subsection Time stepping\n"
-        "    set Integrator = quasi-static\n"
-        "    set Time step = 0.05\n"
-        "    set End time = 2\n"
-        "    set Load factor = if(t <= 1, t, 2 - t)\n"
-        "  end\n"
-        "end\n"
-        "subsection Output\n"
-        "  set Write VTU = false\n"
-        "  set Plot = false\n"
-        "  set Probes = x: position end x; y: position end y; z: position "
-        "end z\n"
-        "end\n",
-      "helix_unloaded");
+    const RunSummary run =
+      run_scene_text("subsection Geometry\n"
+                     "  set Generator = helix\n"
+                     "  set Radius = 0.5\n"
+                     "  set Rise per radian = 0.1\n"
+                     "  set Turns = 1.5\n"
+                     "  set Segments = 30\n"
+                     "  set Director d1 = 0, 0, 1\n"
+                     "end\n" +
+                       direct_material(EA, EI1, EI2, GJ) +
+                       "subsection Supports\n  set Clamped ends = start\nend\n"
+                       "subsection Loads\n"
+                       "  set Point forces = end: 4, 0, -6\n"
+                       "end\n"
+                       "subsection Solver\n"
+                       "  set Method = time stepping\n"
+                       "  subsection Time stepping\n"
+                       "    set Integrator = quasi-static\n"
+                       "    set Time step = 0.05\n"
+                       "    set End time = 2\n"
+                       "    set Load factor = if(t <= 1, t, 2 - t)\n"
+                       "  end\n"
+                       "end\n" +
+                       end_position_output(),
+                     "helix_unloaded");
     ASSERT_TRUE(run.failure.empty()) << run.failure;
     ASSERT_FALSE(run.rows.empty());
     // The tip of the helix, x = (r cos t, r sin t, c t) at t = 3 pi.
     const Vector3 initial(-0.5, 0, 0.3 * M_PI);
     double        largest = 0;
     Vector3       tip     = Vector3::Zero();
-    for (const auto &row : run.rows)
+    for (std::size_t row = 0; row < run.rows.size(); ++row)
       {
-        tip     = Vector3(row[probe_column(run, "x")],
-                      row[probe_column(run, "y")],
-                      row[probe_column(run, "z")]);
+        tip     = end_position(run, row);
         largest = std::max(largest, (tip - initial).norm());
       }
     std::cout << "helix: largest tip displacement " << largest
