@@ -49,7 +49,7 @@ namespace rodnet
      * element is stress free in its initial geometry, so it cannot bend a
      * curved rod of natural shape straight, and for a curved rod of
      * natural shape initial geometry its answers are off (a quarter-circle
-     * cantilever's tip deflection by 3% to 15%, not converging as the
+     * cantilever's tip deflection by 2% to 12%, not converging as the
      * elements get shorter; doc/dynamic_relaxation.md).
      */
     void

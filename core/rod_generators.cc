@@ -27,10 +27,7 @@ namespace rodnet
                                       " must be positive and finite, got " +
                                       std::to_string(value));
       }
-    } // namespace
 
-    namespace
-    {
       /**
        * Vertices of the curve @p x(u), u in [0, 1], traversed at constant
        * speed, with @p velocity = dx/du at u = 0: n equal segments, or with
