@@ -287,8 +287,11 @@ namespace rodnet
     };
 
     // Hinges and junction elements differ only in where their kernel,
-    // reference, local DoFs and Voronoi length come from: one pass serves
-    // both. @p element(i, stencil) returns those four for stencil i.
+    // reference, local DoFs, Voronoi length, internal variables and natural
+    // strains come from: one pass serves both. @p element(i, stencil)
+    // returns those for stencil i. The material sees the strains minus the
+    // natural ones (doc/theory.md, "Natural shape"); their derivatives are
+    // the kernel's.
     const auto bending_pass = [&](const auto &stencils, const auto &element) {
       dealii::WorkStream::run(
         stencils.begin(),
@@ -297,12 +300,12 @@ namespace rodnet
           copy.dofs.clear();
           copy.energy = 0;
           guarded([&] {
-            const auto [k, ref, x, l, committed] =
+            const auto [k, ref, x, l, committed, natural] =
               element(it - stencils.begin(), *it);
             if (!with_gradient)
               {
                 copy.energy = materials[it->rod]
-                                ->hinge_increment(k->strains(x, ref),
+                                ->hinge_increment(k->strains(x, ref) - natural,
                                                   l,
                                                   committed,
                                                   step_length,
@@ -311,6 +314,7 @@ namespace rodnet
                 return;
               }
             k->evaluate(x, ref, scratch.hinge, with_hessian);
+            scratch.hinge.kappa -= natural;
             bending(scratch.hinge, *materials[it->rod], l, committed, copy);
             copy.dofs.assign(it->dofs.begin(), it->dofs.end());
           });
@@ -326,7 +330,8 @@ namespace rodnet
                      std::cref(configuration_->hinge_reference(h)),
                      configuration_->hinge_dofs(u, stencil),
                      configuration_->voronoi_length(h),
-                     history.block(InternalVariables::Owner::hinge, h));
+                     history.block(InternalVariables::Owner::hinge, h),
+                     configuration_->natural_strains(h));
                  });
     bending_pass(layout_->junctions(),
                  [&](const unsigned int e, const JunctionStencil &stencil) {
@@ -336,7 +341,10 @@ namespace rodnet
                      configuration_->junction_dofs(u, stencil),
                      configuration_->junction_voronoi_length(e),
                      history.block(InternalVariables::Owner::junction_element,
-                                   e));
+                                   e),
+                     // Stress free where built: the ghost frame starts as
+                     // the segment's (Configuration).
+                     Vector3(Vector3::Zero()));
                  });
 
     // Applied moments about fixed axes: potential -lambda M theta_u(q)

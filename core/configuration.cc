@@ -86,6 +86,16 @@ namespace rodnet
       hinge_refs[i].twist =
         kernels[i]->strains(hinge_dofs(zero, layout->hinges()[i]),
                             hinge_refs[i])[2];
+    // Natural strains are the undeformed strains with the reference twist
+    // just set (for the classic kernel, the twist of the undeformed rod).
+    for (unsigned int i = 0; i < hinge_refs.size(); ++i)
+      {
+        const HingeStencil &h = layout->hinges()[i];
+        hinge_natural_strains.push_back(
+          rods[h.rod].natural_shape == NaturalShape::initial_geometry ?
+            kernels[i]->strains(hinge_dofs(zero, h), hinge_refs[i]) :
+            Vector3::Zero());
+      }
     for (unsigned int i = 0; i < junction_refs.size(); ++i)
       junction_refs[i].twist =
         junction_kernels[i]->strains(junction_dofs(zero,

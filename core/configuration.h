@@ -26,6 +26,13 @@ namespace rodnet
    * physical segment it continues (so the undeformed network is stress
    * free), and per junction the rotation accumulated over the converged
    * steps; the quaternion DoFs hold the increment since the reference.
+   *
+   * Natural strains (doc/theory.md, "Natural shape"): per hinge the strains
+   * kappa_bar at which it is stress free, the hinge's own measures in the
+   * undeformed configuration for rods of NaturalShape::initial_geometry,
+   * zero for NaturalShape::straight. They are fixed at construction: the
+   * measures depend on positions and material frames only, not on the
+   * reference, so reset_reference() leaves them valid.
    */
   class Configuration
   {
@@ -107,6 +114,16 @@ namespace rodnet
       return hinge_refs[h];
     }
 
+    /**
+     * Natural strains of hinge number @p h (integrated, as the kernel's
+     * strains): the material sees kappa - natural_strains(h).
+     */
+    const Vector3 &
+    natural_strains(unsigned int h) const
+    {
+      return hinge_natural_strains[h];
+    }
+
     /// Current director frame of the segment on cell @p cell.
     Quaternion
     director_frame(const dealii::TrilinosWrappers::MPI::Vector &u,
@@ -138,6 +155,7 @@ namespace rodnet
     std::vector<Quaternion>             frames; ///< D^j per cell
     std::vector<double>                 twist_at_reference;
     std::vector<HingeReference>         hinge_refs;
+    std::vector<Vector3>                hinge_natural_strains;
     std::vector<const JunctionKernel *> junction_kernels; ///< per element
     std::vector<JunctionReference>      junction_refs;
     std::vector<double>                 junction_lengths;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 namespace rodnet
@@ -42,6 +43,44 @@ namespace rodnet
       return s;
     }
 
+    /**
+     * Throws unless rod @p r of @p network is straight at rest (no hinge
+     * turning by more than 1e-6 rad, round-off of mesh coordinates): the
+     * element is stress free in its initial geometry, so it cannot bend a
+     * curved rod of natural shape straight, and for a curved rod of
+     * natural shape initial geometry its answers are off (a quarter-circle
+     * cantilever's tip deflection by 2% to 12%, not converging as the
+     * elements get shorter; doc/dynamic_relaxation.md).
+     */
+    void
+    check_straight_at_rest(const RodNetwork &network, const unsigned int r)
+    {
+      const Rod         &rod     = network.rods()[r];
+      const unsigned int n       = rod.vertices.size();
+      const auto         tangent = [&](const unsigned int s) -> Vector3 {
+        return (network.vertex(rod.vertices[(s + 1) % n]) -
+                network.vertex(rod.vertices[s]))
+          .normalized();
+      };
+      // The hinges: every vertex of a closed rod, the interior ones else.
+      const unsigned int end = rod.closed ? n : n - 1;
+      for (unsigned int i = rod.closed ? 0 : 1; i < end; ++i)
+        {
+          const Vector3 a = tangent((i + n - 1) % n), b = tangent(i);
+          const double  angle = std::atan2(a.cross(b).norm(), a.dot(b));
+          if (!(angle > 1e-6))
+            continue;
+          std::ostringstream message;
+          message << "DrModel: rod " << r << ", vertex " << i
+                  << ": the rod turns by " << angle * 180 / M_PI
+                  << " degrees there; the bending-active element of dynamic "
+                     "relaxation takes rods that are straight at rest only "
+                     "(curved ones come out wrong, see "
+                     "doc/dynamic_relaxation.md); use the Newton solver";
+          throw std::invalid_argument(message.str());
+        }
+    }
+
     constexpr std::array<unsigned int, 2> node_block = {
       {dr_dof::node_a, dr_dof::node_b}};
     constexpr std::array<unsigned int, 2> far_block = {
@@ -68,6 +107,8 @@ namespace rodnet
           throw std::invalid_argument(
             "DrModel: rod " + std::to_string(r) + ": " + name +
             " must be positive and finite, got " + std::to_string(value));
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      check_straight_at_rest(network, r);
 
     // The rod ends at a junction share the position of its vertex and,
     // except at a pinned junction, its frame.

@@ -45,7 +45,11 @@ namespace rodnet
    *
    * The DoF vector u holds the change from the initial configuration: node
    * displacements and the changes of (n_x, n_y, n_r). u = 0 is the initial,
-   * stress-free state.
+   * stress-free state: the element's rest angles are those of the initial
+   * geometry. Rods must be straight at rest (between their junctions):
+   * the element cannot bend a curved rod of NaturalShape::straight, and
+   * gives wrong answers for a curved one stress free as built (see
+   * doc/dynamic_relaxation.md), so curved rods are refused.
    *
    * Initial normals are the rods' directors d1 at the vertices (the rod's
    * director hint made orthogonal to the vertex tangent, the normalized sum
@@ -73,8 +77,9 @@ namespace rodnet
      * Nodes, frames and elements of @p network (which must outlive the
      * model) with the rigidities @p stiffness_per_rod of each rod. Throws
      * std::invalid_argument for a stiffness count that does not match the
-     * rods, a rigidity that is not positive and finite, or an initial
-     * normal that the element cannot represent (naming rod and vertex).
+     * rods, a rigidity that is not positive and finite, a rod that is not
+     * straight at rest, or an initial normal that the element cannot
+     * represent (naming rod and vertex).
      */
     DrModel(const RodNetwork         &network,
             std::vector<RodStiffness> stiffness_per_rod);

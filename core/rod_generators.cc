@@ -1,5 +1,6 @@
 #include <core/rod_generators.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,34 @@ namespace rodnet
                                       " must be positive and finite, got " +
                                       std::to_string(value));
       }
+
+      /**
+       * Vertices of the curve @p x(u), u in [0, 1], traversed at constant
+       * speed, with @p velocity = dx/du at u = 0: n equal segments, or with
+       * the midpoint clamp the layout of the header (the arc length is
+       * proportional to u, so l = L / (n - 1/2) is du = 1 / (n - 1/2)).
+       */
+      template <class Curve>
+      std::vector<Vector3>
+      sample(const Curve       &x,
+             const Vector3     &velocity,
+             const unsigned int n,
+             const bool         clamp_at_start_midpoint)
+      {
+        std::vector<Vector3> points;
+        if (!clamp_at_start_midpoint)
+          {
+            for (unsigned int i = 0; i <= n; ++i)
+              points.push_back(x(double(i) / n));
+            return points;
+          }
+        const double du = 1.0 / (n - 0.5);
+        points.push_back(x(0) - 0.5 * du * velocity);
+        points.push_back(x(0) + 0.5 * du * velocity);
+        for (unsigned int i = 2; i <= n; ++i)
+          points.push_back(x((i - 0.5) * du));
+        return points;
+      }
     } // namespace
 
     std::vector<Vector3>
@@ -36,14 +65,11 @@ namespace rodnet
     {
       require_segments(n_segments, "straight rod");
       require_positive((end - start).norm(), "straight rod length");
-      // With the midpoint clamp the n segments span [start - l/2, end], so
-      // l = L / (n - 1/2).
-      const double         shift = clamp_at_start_midpoint ? 0.5 : 0.0;
-      const Vector3        step  = (end - start) / (n_segments - shift);
-      std::vector<Vector3> points;
-      for (unsigned int i = 0; i <= n_segments; ++i)
-        points.push_back(start + (i - shift) * step);
-      return points;
+      const Vector3 chord = end - start;
+      return sample([&](const double u) { return Vector3(start + u * chord); },
+                    chord,
+                    n_segments,
+                    clamp_at_start_midpoint);
     }
 
     std::vector<Vector3>
@@ -53,19 +79,22 @@ namespace rodnet
         const Vector3     &e2,
         const double       angle0,
         const double       angle1,
-        const unsigned int n_segments)
+        const unsigned int n_segments,
+        const bool         clamp_at_start_midpoint)
     {
       require_segments(n_segments, "arc");
       require_positive(radius, "arc radius");
       require_positive(std::abs(angle1 - angle0), "arc opening angle");
-      std::vector<Vector3> points;
-      for (unsigned int i = 0; i <= n_segments; ++i)
-        {
-          const double a = angle0 + (angle1 - angle0) * i / n_segments;
-          points.push_back(center +
-                           radius * (std::cos(a) * e1 + std::sin(a) * e2));
-        }
-      return points;
+      const double opening = angle1 - angle0;
+      const auto   x       = [&](const double u) {
+        const double a = angle0 + opening * u;
+        return Vector3(center + radius * (std::cos(a) * e1 + std::sin(a) * e2));
+      };
+      return sample(x,
+                    radius * opening *
+                      (-std::sin(angle0) * e1 + std::cos(angle0) * e2),
+                    n_segments,
+                    clamp_at_start_midpoint);
     }
 
     std::vector<Vector3>
@@ -88,25 +117,29 @@ namespace rodnet
     helix(const double       radius,
           const double       pitch_over_2pi,
           const double       turns,
-          const unsigned int n_segments)
+          const unsigned int n_segments,
+          const bool         clamp_at_start_midpoint)
     {
       require_segments(n_segments, "helix");
       require_positive(radius, "helix radius");
       require_positive(turns, "helix number of turns");
-      std::vector<Vector3> points;
-      for (unsigned int i = 0; i <= n_segments; ++i)
-        {
-          const double t = 2 * M_PI * turns * i / n_segments;
-          points.emplace_back(radius * std::cos(t),
-                              radius * std::sin(t),
-                              pitch_over_2pi * t);
-        }
-      return points;
+      const double angle = 2 * M_PI * turns;
+      const auto   x     = [&](const double u) {
+        const double t = angle * u;
+        return Vector3(radius * std::cos(t),
+                       radius * std::sin(t),
+                       pitch_over_2pi * t);
+      };
+      return sample(x,
+                    angle * Vector3(0, radius, pitch_over_2pi),
+                    n_segments,
+                    clamp_at_start_midpoint);
     }
 
     std::vector<Vector3>
     polyline(const std::vector<Vector3> &corners,
-             const unsigned int          segments_per_piece)
+             const unsigned int          segments_per_piece,
+             const bool                  clamp_at_start_midpoint)
     {
       require_segments(segments_per_piece, "polyline");
       if (corners.size() < 2)
@@ -116,6 +149,29 @@ namespace rodnet
         for (unsigned int i = 1; i <= segments_per_piece; ++i)
           points.push_back(corners[k] + (corners[k + 1] - corners[k]) *
                                           (double(i) / segments_per_piece));
+      if (!clamp_at_start_midpoint)
+        return points;
+      if (!((corners[1] - corners[0]).norm() > 0))
+        throw std::invalid_argument("polyline: the first two points "
+                                    "coincide; the midpoint clamp needs the "
+                                    "direction of the first piece");
+      // The first piece is straight: lay it out as a straight rod.
+      std::vector<Vector3> first =
+        straight(corners[0], corners[1], segments_per_piece, true);
+      first.back() = corners[1];
+      std::copy(first.begin(), first.end(), points.begin());
+      return points;
+    }
+
+    std::vector<Vector3>
+    center_first_segment_on_start(const std::vector<Vector3> &chain)
+    {
+      if (chain.size() < 2)
+        throw std::invalid_argument(
+          "midpoint clamp: the chain needs at least 2 points");
+      const Vector3        half = 0.5 * (chain[1] - chain[0]);
+      std::vector<Vector3> points{chain[0] - half, chain[0] + half};
+      points.insert(points.end(), chain.begin() + 1, chain.end());
       return points;
     }
   } // namespace generators

@@ -141,7 +141,8 @@ namespace rodnet
   BuiltNetwork
   build_rod_network(const RodGraph    &graph,
                     const unsigned int segments_per_beam,
-                    const std::string &hinge_kernel)
+                    const std::string &hinge_kernel,
+                    const NaturalShape natural_shape)
   {
     if (segments_per_beam == 0)
       throw std::invalid_argument(
@@ -189,7 +190,11 @@ namespace rodnet
                           beam.interior.end());
             points.push_back(to);
           }
-        network.add_rod(points, false, director_hint(graph, b), hinge_kernel);
+        network.add_rod(points,
+                        false,
+                        director_hint(graph, b),
+                        hinge_kernel,
+                        natural_shape);
         built.rod_group.push_back(beam.group);
         node_ends[beam.from].push_back(RodEnd{b, true});
         node_ends[beam.to].push_back(RodEnd{b, false});

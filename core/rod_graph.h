@@ -66,8 +66,9 @@ namespace rodnet
   /**
    * Builds the rods (beam b -> rod b, through its interior vertices or
    * split into @p segments_per_beam equal segments; hinge kernel
-   * @p hinge_kernel) and the junctions (named as the
-   * nodes) of @p graph, and creates the triangulation. Throws
+   * @p hinge_kernel, natural shape @p natural_shape, which matters for
+   * beams with interior vertices off the chord) and the junctions (named
+   * as the nodes) of @p graph, and creates the triangulation. Throws
    * std::invalid_argument naming the node or beam for: a beam whose ends
    * are the same node or coincide (zero length), a node index out of
    * range, two nodes at the same position (within 1e-12 of the graph's
@@ -80,9 +81,11 @@ namespace rodnet
    * name their vertex, so that scenes can refer to them as "@name".
    */
   BuiltNetwork
-  build_rod_network(const RodGraph    &graph,
-                    unsigned int       segments_per_beam,
-                    const std::string &hinge_kernel);
+  build_rod_network(
+    const RodGraph    &graph,
+    unsigned int       segments_per_beam,
+    const std::string &hinge_kernel,
+    NaturalShape       natural_shape = NaturalShape::initial_geometry);
 } // namespace rodnet
 
 #endif

@@ -54,7 +54,8 @@ namespace rodnet
                      h,
                      kernels[hinges[h].rod]->strains(
                        configuration_->hinge_dofs(u, hinges[h]),
-                       configuration_->hinge_reference(h)),
+                       configuration_->hinge_reference(h)) -
+                       configuration_->natural_strains(h),
                      hinges[h].rod,
                      configuration_->voronoi_length(h));
 

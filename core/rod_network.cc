@@ -26,7 +26,8 @@ namespace rodnet
   RodNetwork::add_rod(const std::vector<Vector3> &rod_points,
                       const bool                  closed,
                       const Vector3              &director_hint,
-                      const std::string          &hinge_kernel)
+                      const std::string          &hinge_kernel,
+                      const NaturalShape          natural_shape)
   {
     const unsigned int rod_index = rod_list.size();
     const unsigned int n         = rod_points.size();
@@ -92,6 +93,7 @@ namespace rodnet
     rod.closed        = closed;
     rod.director_hint = director_hint;
     rod.hinge_kernel  = hinge_kernel;
+    rod.natural_shape = natural_shape;
     for (const Vector3 &p : rod_points)
       {
         rod.vertices.push_back(points.size());
@@ -115,6 +117,25 @@ namespace rodnet
           return "welded and pinned";
       }
     throw std::logic_error("unknown junction kind");
+  }
+
+  std::string
+  to_string(const NaturalShape shape)
+  {
+    return shape == NaturalShape::initial_geometry ? "initial geometry" :
+                                                     "straight";
+  }
+
+  NaturalShape
+  natural_shape_from_string(const std::string &name)
+  {
+    for (const NaturalShape shape :
+         {NaturalShape::initial_geometry, NaturalShape::straight})
+      if (name == to_string(shape))
+        return shape;
+    throw std::invalid_argument("unknown natural shape \"" + name +
+                                "\"; known: \"initial geometry\", "
+                                "\"straight\"");
   }
 
   JunctionKind

@@ -12,6 +12,30 @@
 namespace rodnet
 {
   /**
+   * The stress-free shape of a rod's hinges (doc/theory.md, "Natural
+   * shape"):
+   * - initial_geometry: every hinge's natural strains are its strains in the
+   *   undeformed configuration, so the rod is stress free where it was
+   *   built (a helix stays a helix);
+   * - straight: the natural strains are zero, so a curved rod starts
+   *   prestressed, bent from a straight one.
+   * A material's own natural curvature and twist act on top of either.
+   */
+  enum class NaturalShape
+  {
+    initial_geometry,
+    straight
+  };
+
+  /// "initial geometry", "straight".
+  std::string
+  to_string(NaturalShape shape);
+
+  /// Inverse of to_string(); throws std::invalid_argument listing the names.
+  NaturalShape
+  natural_shape_from_string(const std::string &name);
+
+  /**
    * One rod of a network: an ordered chain of vertices of the triangulation,
    * its segments (cells) in the same order, and the direction that fixes the
    * orientation of its first director d1.
@@ -30,6 +54,8 @@ namespace rodnet
     Vector3 director_hint = Vector3::UnitY();
     /// Name of the hinge kernel of the rod ("simple" or "classic").
     std::string hinge_kernel = "simple";
+    /// Where the natural strains of the rod's hinges come from.
+    NaturalShape natural_shape = NaturalShape::initial_geometry;
   };
 
   /**
@@ -108,13 +134,15 @@ namespace rodnet
      * Adds a rod through @p points (open, or closed when @p closed). Points
      * are checked: consecutive points closer than a relative tolerance are a
      * zero-length segment, other coincident points are reported too; the
-     * error names the rod and the vertex indices.
+     * error names the rod and the vertex indices. @p natural_shape: see
+     * NaturalShape (for a straight rod both choices agree).
      */
     void
     add_rod(const std::vector<Vector3> &points,
             bool                        closed,
             const Vector3              &director_hint,
-            const std::string          &hinge_kernel);
+            const std::string          &hinge_kernel,
+            NaturalShape natural_shape = NaturalShape::initial_geometry);
 
     /**
      * Ties rod ends at a junction called @p name. Checks, naming the

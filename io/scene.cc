@@ -344,9 +344,23 @@ namespace rodnet
         "Clamp at first segment midpoint",
         "false",
         Bool(),
-        "Straight rod: begin the vertex chain half a segment behind Start, "
-        "so that a clamp of the first two vertices holds the tangent exactly "
-        "at Start and the free length is |End - Start|. [-]");
+        "Open rods (straight, arc, helix, polyline, gmsh): centre the first "
+        "segment on the rod's start, along the rod's tangent there (the "
+        "chain begins half a segment behind the start), so that the clamp "
+        "of the start, which Supports/Clamped ends must then hold, acts "
+        "exactly at the start with the rod's tangent, and the free length "
+        "is the rod's length. Not for rings, networks (clamp a node "
+        "instead) or dynamic relaxation. [-]");
+      prm.declare_entry(
+        "Natural shape",
+        to_string(NaturalShape::initial_geometry),
+        Selection(to_string(NaturalShape::initial_geometry) + "|" +
+                  to_string(NaturalShape::straight)),
+        "Stress-free shape of every rod: \"initial geometry\" (the rods "
+        "are stress free as built: a helix stays a helix at zero load) or "
+        "\"straight\" (a curved rod starts prestressed, bent from a "
+        "straight one). The material's Natural curvature and twist act on "
+        "top of either. Junctions always keep their initial angles. [-]");
       prm.declare_entry("Center",
                         "0, 0, 0",
                         vector_pattern,
@@ -663,12 +677,21 @@ namespace rodnet
       const double       degree    = M_PI / 180;
       director_hint                = get_vector(prm, "Director d1");
       hinge_kernel                 = prm.get("Hinge kernel");
+      natural_shape  = natural_shape_from_string(prm.get("Natural shape"));
+      midpoint_clamp = prm.get_bool("Clamp at first segment midpoint");
+      if (midpoint_clamp && generator != "straight" && generator != "arc" &&
+          generator != "helix" && generator != "polyline" &&
+          generator != "gmsh")
+        throw std::invalid_argument(
+          "entry \"Geometry/Clamp at first segment midpoint\": the " +
+          generator +
+          " generator has no open rod start for it (rings are closed; a "
+          "network clamps exactly at a clamped node); set it to false");
       if (generator == "straight")
-        rod_points.push_back(generators::straight(
-          get_vector(prm, "Start"),
-          get_vector(prm, "End"),
-          n,
-          prm.get_bool("Clamp at first segment midpoint")));
+        rod_points.push_back(generators::straight(get_vector(prm, "Start"),
+                                                  get_vector(prm, "End"),
+                                                  n,
+                                                  midpoint_clamp));
       else if (generator == "arc")
         rod_points.push_back(
           generators::arc(get_vector(prm, "Center"),
@@ -677,7 +700,8 @@ namespace rodnet
                           get_vector(prm, "Plane axis 2"),
                           prm.get_double("Start angle") * degree,
                           prm.get_double("End angle") * degree,
-                          n));
+                          n,
+                          midpoint_clamp));
       else if (generator == "ring")
         rod_points.push_back(generators::ring(get_vector(prm, "Center"),
                                               prm.get_double("Radius"),
@@ -689,7 +713,8 @@ namespace rodnet
           generators::helix(prm.get_double("Radius"),
                             prm.get_double("Rise per radian"),
                             prm.get_double("Turns"),
-                            n));
+                            n,
+                            midpoint_clamp));
       else if (generator == "polyline")
         {
           std::vector<Vector3> corners;
@@ -710,14 +735,25 @@ namespace rodnet
                                               p + "\" is not a point x,y,z");
                 }
             }
-          rod_points.push_back(generators::polyline(corners, n));
+          rod_points.push_back(
+            generators::polyline(corners, n, midpoint_clamp));
         }
       else if (generator == "gmsh")
         {
           for (const RodChain &chain :
                read_gmsh_rods(resolve(prm.get("Mesh file"), "Mesh file")))
             {
-              rod_points.push_back(chain.points);
+              if (midpoint_clamp && chain.closed)
+                throw std::invalid_argument(
+                  "entry \"Geometry/Clamp at first segment midpoint\": "
+                  "physical tag " +
+                  std::to_string(chain.tag) +
+                  " of the mesh is a closed chain with no start to clamp; "
+                  "set it to false");
+              rod_points.push_back(
+                midpoint_clamp ?
+                  generators::center_first_segment_on_start(chain.points) :
+                  chain.points);
               rod_closed.push_back(chain.closed);
             }
         }
@@ -1003,8 +1039,11 @@ namespace rodnet
   {
     std::unique_ptr<RodNetwork> network;
     if (graph)
-      network =
-        build_rod_network(*graph, segments_per_beam, hinge_kernel).network;
+      network = build_rod_network(*graph,
+                                  segments_per_beam,
+                                  hinge_kernel,
+                                  natural_shape)
+                  .network;
     else
       {
         network = std::make_unique<RodNetwork>();
@@ -1012,7 +1051,8 @@ namespace rodnet
           network->add_rod(rod_points[r],
                            rod_closed[r],
                            director_hint,
-                           hinge_kernel);
+                           hinge_kernel,
+                           natural_shape);
         network->create_triangulation();
       }
     std::vector<std::shared_ptr<const RodMaterial>> materials;
@@ -1029,12 +1069,49 @@ namespace rodnet
       std::make_unique<RodModel>(std::move(network), materials, ghost_spin);
     apply_supports_and_loads(*model);
     model->finalize();
+    if (midpoint_clamp)
+      check_midpoint_clamps(*model);
     return model;
+  }
+
+  void
+  Scene::check_midpoint_clamps(const RodModel &model) const
+  {
+    // The chain begins half a segment behind the start: without a clamp
+    // there the rod would be half a segment too long.
+    const auto &constraints = model.constraints();
+    for (unsigned int r = 0; r < model.network().rods().size(); ++r)
+      {
+        const Rod &rod     = model.network().rods()[r];
+        bool       clamped = constraints.is_constrained(
+          model.layout().twist_dof(rod.segments.front()));
+        for (unsigned int v = 0; v < 2; ++v)
+          for (unsigned int c = 0; c < 3; ++c)
+            clamped =
+              clamped && constraints.is_constrained(
+                           model.layout().vertex_dof(rod.vertices[v], c));
+        if (!clamped)
+          throw std::invalid_argument(
+            "entry \"Geometry/Clamp at first segment midpoint\": the start "
+            "of rod " +
+            std::to_string(r) +
+            " is not clamped, but the option begins the rod half a segment "
+            "behind its start for a clamp there; clamp it (Supports/Clamped "
+            "ends = " +
+            (model.network().rods().size() > 1 ? std::to_string(r) + ":" :
+                                                 std::string()) +
+            "start) or set the option to false");
+      }
   }
 
   DrScene
   Scene::build_dr_model() const
   {
+    if (midpoint_clamp)
+      throw std::invalid_argument(
+        "entry \"Geometry/Clamp at first segment midpoint\": the "
+        "bending-active element of dynamic relaxation clamps at a node, "
+        "which is the rod's start without the option; set it to false");
     auto [network, materials] = build_network();
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)

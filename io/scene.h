@@ -155,6 +155,12 @@ namespace rodnet
               std::vector<std::shared_ptr<const RodMaterial>>>
     build_network() const;
 
+    /// Throws naming the entry unless the start of every rod is clamped
+    /// (the rods begin half a segment behind it, see
+    /// "Clamp at first segment midpoint").
+    void
+    check_midpoint_clamps(const RodModel &model) const;
+
     /// Supports and loads of the scene, onto a RodModel or a DrModel.
     template <class Model>
     void
@@ -164,6 +170,9 @@ namespace rodnet
     std::vector<bool>                 rod_closed;
     Vector3                           director_hint;
     std::string                       hinge_kernel;
+    NaturalShape natural_shape = NaturalShape::initial_geometry;
+    /// Every rod begins half a segment behind its start (midpoint clamp).
+    bool midpoint_clamp = false;
     /// Networks: the beams and junctions, built into rods by build_model().
     std::optional<RodGraph> graph;
     unsigned int            segments_per_beam = 1;

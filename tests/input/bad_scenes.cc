@@ -422,4 +422,55 @@ namespace
     EXPECT_GE(rows, 5u);
     EXPECT_LT(rows, 11u);
   }
+
+  // Natural shape and the midpoint clamp (doc/user_guide.md, "Other
+  // geometries").
+  const std::string quarter_arc = "subsection Geometry\n"
+                                  "  set Generator = arc\n"
+                                  "  set Segments = 8\n"
+                                  "  set Director d1 = 0, 0, 1\n";
+
+  TEST(BadScene, UnknownNaturalShape)
+  {
+    expect_input_error("natural_shape",
+                       quarter_arc + "  set Natural shape = curved\nend\n" +
+                         material,
+                       "Natural shape");
+  }
+
+  TEST(BadScene, DynamicRelaxationOfACurvedRod)
+  {
+    // Stress free as built (or prestressed: the same check), the element
+    // gets a curved rod wrong.
+    expect_input_error("dr_curved",
+                       quarter_arc + "end\n" + material + dynamic_relaxation +
+                         "subsection Supports\n  set Clamped ends = start\n"
+                         "end\n",
+                       "rod 0, vertex 1: the rod turns by 11.25");
+  }
+
+  TEST(BadScene, MidpointClampNeedsAClampedStart)
+  {
+    const std::string midpoint = "  set Clamp at first segment midpoint = "
+                                 "true\nend\n";
+    expect_input_error("midpoint_unclamped",
+                       quarter_arc + midpoint + material +
+                         "subsection Supports\n  set Clamped ends = end\n"
+                         "end\n",
+                       "the start of rod 0 is not clamped");
+    expect_input_error("midpoint_ring",
+                       "subsection Geometry\n  set Generator = ring\n" +
+                         midpoint + material,
+                       "the ring generator has no open rod start");
+    expect_input_error("midpoint_network",
+                       "subsection Geometry\n  set Generator = frame\n" +
+                         midpoint + material,
+                       "the frame generator has no open rod start");
+    expect_input_error("midpoint_dr",
+                       "subsection Geometry\n  set Director d1 = 0, 0, 1\n" +
+                         midpoint + material + dynamic_relaxation +
+                         "subsection Supports\n  set Clamped ends = start\n"
+                         "end\n",
+                       "clamps at a node");
+  }
 } // namespace
