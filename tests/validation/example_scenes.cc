@@ -1,0 +1,160 @@
+// Every scene shipped in scenes/ runs as shipped and gives the answer its
+// header comment promises: one small example per generator, each against
+// an independent reference (beam, ring or curved-beam theory, an exact
+// statement of statics), and a check that no scene is left untested.
+#include <deal.II/base/parameter_handler.h>
+
+#include <common/run_scene_text.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using namespace rodnet;
+  using namespace rodnet::testing;
+
+  /// One probe of a shipped scene at its last converged step.
+  struct Expectation
+  {
+    std::string scene;
+    std::string probe;
+    /// The reference value of the probe, from theory.
+    double reference;
+    /// Allowed |value - reference| / scale.
+    double tolerance;
+    /// The scale of the error: |reference| unless given (a position
+    /// probe is compared against the displacement it measures).
+    double scale = 0;
+    /// Scene text read after the file (later entries override).
+    std::string overrides = "";
+  };
+
+  std::ostream &
+  operator<<(std::ostream &out, const Expectation &e)
+  {
+    return out << e.scene << ": " << e.probe;
+  }
+
+  /// Runs scenes/@p name.prm as shipped, then @p overrides, without VTU
+  /// files and plots.
+  RunSummary
+  run_shipped_scene(const std::string &name, const std::string &overrides)
+  {
+    std::ifstream     file(RODNET_SOURCE_DIR "/scenes/" + name + ".prm");
+    std::stringstream text;
+    text << file.rdbuf() << "\n"
+         << overrides
+         << "\nsubsection Output\n  set Write VTU = false\n"
+            "  set Plot = false\nend\n";
+    dealii::ParameterHandler prm;
+    Scene::declare_parameters(prm);
+    prm.parse_input_from_string(text.str());
+    const Scene scene(prm, RODNET_SOURCE_DIR "/scenes");
+    return run_scene(scene, "example_" + name, nullptr);
+  }
+
+  const double pi = M_PI;
+
+  // P = 1e-3 N, EI = 1 N m^2 and the lengths of the scenes' comments.
+  // Tolerances are a little above the discretization error measured at the
+  // scene's resolution (second order in every case; quoted per line).
+  const std::vector<Expectation> expectations = {
+    // Quarter circle, out-of-plane tip force: P R^3 [pi/(4 EI) + (3 pi/4 -
+    // 2)/GJ] with GJ = 2/3 (Castigliano). Measured -3.3e-4 at N = 40.
+    {"arc", "tip_z", 1e-3 * (pi / 4 + (3 * pi / 4 - 2) * 1.5), 1e-3},
+    {"arc", "clamp_force_z", -1e-3, 1e-9},
+    // Ring across a diameter: R - (pi/4 - 2/pi) P R^3 / EI; measured
+    // +1.6e-3 of the displacement at N = 160 (+6e-3 at 80, second order).
+    {"ring", "top_y", 1 - (pi / 4 - 2 / pi) * 1e-3, 2.5e-3,
+     (pi / 4 - 2 / pi) * 1e-3},
+    {"ring", "bottom_force_y", 1e-3, 1e-8},
+    // L-shaped rod, out-of-plane force: P L^3 (2/(3 EI) + 1/GJ) = 13/6 P.
+    // Measured -6.5e-7 at 80 segments per leg.
+    {"polyline", "tip_z", 13. / 6 * 1e-3, 1e-4},
+    // Cantilever from a mesh: P L^3 / (3 EI). Measured -6.5e-4 at N = 21.
+    {"gmsh_rod", "tip_y", 1e-3 / 3, 1.5e-3},
+    // Windmill twisted by 1e-3 rad: M = tau EI / ((127/900) L_b) with
+    // L_b = 1/2 (doc/junctions.md). Measured -9.8e-4 at N = 20.
+    {"windmill", "top_moment_z", 1e-3 * 900. / 127 / 0.5, 2e-3},
+    // Portal frame, sway H / k with k = 24 (1 + 6 r)/(4 + 6 r), r = 1/2.
+    // Measured +1.2e-3 at N = 40 (+4.6e-3 at 20, second order).
+    {"network_file", "sway", 1e-3 * 7. / 96, 2e-3},
+    // Antisymmetric sway: the bases share the horizontal force (the beam
+    // carries H/2 across, up to its axial strain).
+    {"network_file", "base_shear_left", -5e-4, 1e-3},
+    // Clamped-clamped beam, middle force: -P L^3 / (192 EI). Measured
+    // +1.25e-3 at 80 elements (+5e-3 at 40, second order).
+    {"gmsh_network", "mid_y", -1e-3 / 192, 2e-3},
+    {"gmsh_network", "left_force_y", 5e-4, 1e-9},
+    // Square lattice stretched by d = 1e-3: each top node EA d / (2 a),
+    // exact (no bending); the lattice does not contract sideways.
+    {"square_lattice", "corner_force_y", 0.5, 1e-9},
+    {"square_lattice", "inner_force_y", 0.5, 1e-9},
+    {"square_lattice", "corner_x", 3, 1e-12},
+    // Free thermal expansion of the honeycomb: a stress-free dilation by
+    // 1 + e0 about the pinned node (0, 1/2), exact.
+    {"hexagonal_lattice", "far_x", 3 * std::sqrt(3.) * 1.001, 1e-10},
+    {"hexagonal_lattice", "far_y", 0.5 + 3 * 1.001, 1e-10},
+    {"hexagonal_lattice", "energy", 0, 1e-20, 1},
+    // The default scene: the elastica at P = 5 (VALIDATION.md), exact
+    // post-buckled tip; the tip moves by about 1 along both axes.
+    {"elastica", "tip_x", 0.059784, 5e-4, 1},
+    {"elastica", "tip_y", 0.795217, 5e-4, 1},
+    // The right-angle frame with its tip moved by a small u_z = 1e-4 (the
+    // shipped u_z = L has no closed form): F = (6/13) EI u_z / L^3
+    // (VALIDATION.md, doc/junctions.md).
+    {"frame", "force_z", 6. / 13 * 1e-4, 2e-3, 0,
+     "subsection Supports\n  set Prescribed displacements = @tip: z=1e-4\n"
+     "end\nsubsection Loads\n  set Steps = 1\nend\n"},
+  };
+
+  /// Scenes with a validation test of their own.
+  const std::set<std::string> tested_elsewhere = {
+    "gridshell",       // validation/gridshell
+    "helical_spring",  // validation/helical_spring
+    "hexagonal_truss", // validation/hexagonal_truss
+  };
+
+  class ExampleScenes : public ::testing::TestWithParam<Expectation>
+  {
+  };
+
+  TEST_P(ExampleScenes, LastStepMatchesTheReference)
+  {
+    const Expectation &e   = GetParam();
+    const RunSummary   run = run_shipped_scene(e.scene, e.overrides);
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_FALSE(run.rows.empty());
+    const double value = run.rows.back().at(probe_column(run, e.probe));
+    const double scale = e.scale > 0 ? e.scale : std::abs(e.reference);
+    std::cout << e << " = " << value << ", reference " << e.reference
+              << ", error " << (value - e.reference) / scale << std::endl;
+    EXPECT_NEAR(value, e.reference, e.tolerance * scale);
+  }
+
+  INSTANTIATE_TEST_SUITE_P(Shipped,
+                           ExampleScenes,
+                           ::testing::ValuesIn(expectations));
+
+  // A scene added to scenes/ needs a reference here or a test of its own.
+  TEST(ExampleScenes, EveryShippedSceneIsTested)
+  {
+    std::set<std::string> covered = tested_elsewhere;
+    for (const Expectation &e : expectations)
+      covered.insert(e.scene);
+    for (const auto &entry :
+         std::filesystem::directory_iterator(RODNET_SOURCE_DIR "/scenes"))
+      if (entry.path().extension() == ".prm")
+        EXPECT_TRUE(covered.count(entry.path().stem().string()) == 1)
+          << "scenes/" << entry.path().filename().string()
+          << " is run by no test";
+  }
+} // namespace
