@@ -107,13 +107,17 @@ namespace
     std::cout << "outputs in " << directory << "/:" << outputs << std::endl;
     if (summary.stopped_by != 0)
       {
-        const std::string steps = summary.rows.empty() ?
-                                    "no step recorded" :
-                                    "outputs of steps 0.." +
-                                      std::to_string(summary.converged_steps) +
-                                      " kept";
-        std::cerr << "rodnet-run: interrupted at step "
-                  << summary.converged_steps << ": " << steps << std::endl;
+        // Steps are recorded one after the other: step 0 or, after a
+        // preload, step 1 first.
+        const unsigned int last = summary.converged_steps;
+        const std::string  steps =
+          summary.rows.empty() ?
+             "no step recorded" :
+             "outputs of steps " +
+              std::to_string(last + 1 - summary.rows.size()) + ".." +
+              std::to_string(last) + " kept";
+        std::cerr << "rodnet-run: interrupted at step " << last << ": " << steps
+                  << std::endl;
         return 128 + summary.stopped_by;
       }
     if (!summary.failure.empty())

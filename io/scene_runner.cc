@@ -387,6 +387,7 @@ namespace rodnet
                                      parameters.end_time));
       return summary;
     }
+
     /// "1 rod(s), 100 segments, 403 DoFs, memory about 200 MB (15 GB
     /// available)".
     std::string

@@ -339,6 +339,35 @@ namespace
                            ::testing::ValuesIn(bad_inputs),
                            [](const auto &info) { return info.param.name; });
 
+  TEST(BadInputTable, VtuFilesBeyondTheDisk)
+  {
+    // 10000 VTU files of 1e6 segments, at most 60 bytes per vertex each:
+    // up to 600 GB, refused before the model is built where the disk has
+    // less (the memory check must pass first: 4e6 DoFs, about 3.4 GB).
+    const double vtu_bytes = 10000 * (2000 + 60 * 1000001.0);
+    if (std::filesystem::space(".").available > vtu_bytes / 2)
+      GTEST_SKIP() << "the disk has room for the files";
+    std::ifstream meminfo("/proc/meminfo");
+    std::string   key;
+    double        available = 0;
+    while (meminfo >> key >> available && key != "MemAvailable:")
+      meminfo.ignore(100, '\n');
+    if (available * 1024 < 5e9)
+      GTEST_SKIP() << "too little memory for the scene to pass that check";
+    std::ofstream("bad_input_disk.prm")
+      << with("Geometry", "  set Segments = 1000000\n") +
+           section("Loads", "  set Steps = 9999\n") +
+           section("Output", "  set Write VTU = true\n");
+    const rodnet::testing::DriverOutcome o =
+      run_driver_with("bad_input_disk.prm --output out_bad_input_disk");
+    EXPECT_EQ(o.exit_code, 1) << o.output;
+    EXPECT_NE(o.output.find("entry \"Output/VTU interval\": the 10000 VTU "
+                            "files of the run would take up to 600 GB"),
+              std::string::npos)
+      << o.output;
+    EXPECT_EQ(o.output.find("building"), std::string::npos) << o.output;
+  }
+
   TEST(BadInputTable, ByteOrderMarkIsSkipped)
   {
     // A UTF-8 byte-order mark, as some editors write, before a valid scene.
