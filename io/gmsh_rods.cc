@@ -2,6 +2,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <io/gmsh_rods.h>
+#include <io/scene.h>
 
 #include <fstream>
 #include <map>
@@ -25,8 +26,13 @@ namespace rodnet
       }
     catch (const std::exception &e)
       {
-        throw std::invalid_argument("cannot read the Gmsh file \"" + path +
-                                    "\": " + e.what());
+        // deal.II's reader refuses what a rod mesh cannot be, such as
+        // several tags on one entity; its text without the stack trace.
+        throw std::invalid_argument(
+          "cannot read the Gmsh file \"" + path +
+          "\" as rods: " + error_message(e) +
+          "; if it is a network of beams meeting at junctions, use "
+          "\"Generator = gmsh network\"");
       }
 
     // Per tag: each vertex's neighbours along the tag's segments.
@@ -57,8 +63,9 @@ namespace rodnet
             if (next.size() > 2)
               throw std::invalid_argument(
                 where + ": " + std::to_string(next.size()) +
-                " segments meet at a vertex; a rod must be a single chain "
-                "(junctions of several rods are not supported yet)");
+                " segments meet at a vertex; a rod must be a single chain: "
+                "for a network of beams meeting at junctions use "
+                "\"Generator = gmsh network\"");
             if (next.size() == 1)
               {
                 const bool leads = first_vertices[tag].count(v) > 0;
@@ -71,7 +78,9 @@ namespace rodnet
         if (n_ends != 0 && n_ends != 2)
           throw std::invalid_argument(where + ": the segments form " +
                                       std::to_string(n_ends / 2) +
-                                      " separate chains; use one tag per rod");
+                                      " separate chains; use one tag per "
+                                      "rod, or \"Generator = gmsh network\" "
+                                      "for a network");
         if (n_ends == 0)
           start = graph.begin()->first;
 

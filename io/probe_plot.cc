@@ -132,27 +132,33 @@ namespace rodnet
       return last_line.empty() ? exit_text : exit_text + ": " + last_line;
     }
 
-    /// "load factor" for the column "load_factor".
+    /// "tip_y [m]": the label of column @p c (counted after "step"), named
+    /// @p name, with its unit in @p units if that has one.
     std::string
-    axis_label(std::string column)
+    axis_label(const std::string              &name,
+               const std::vector<std::string> &units,
+               const std::size_t               c)
     {
-      std::replace(column.begin(), column.end(), '_', ' ');
-      return column;
+      return c < units.size() && !units[c].empty() ?
+               name + " [" + units[c] + "]" :
+               name;
     }
 
-    void
+    bool
     warn(const std::string &png_path, const std::string &reason)
     {
       std::cerr << "warning: no probe plot \"" << png_path << "\": " << reason
                 << std::endl;
+      return false;
     }
   } // namespace
 
-  void
+  bool
   plot_probes(const std::string                              &csv_path,
               const std::string                              &png_path,
               const std::string                              &title,
-              const std::optional<std::pair<double, double>> &x_range)
+              const std::optional<std::pair<double, double>> &x_range,
+              const std::vector<std::string>                 &units)
   {
     // A failed plot must never cost the user a finished computation.
     try
@@ -181,6 +187,10 @@ namespace rodnet
         const std::string  size     = std::to_string(640 * n_cols) + "," +
                                  std::to_string(80 + 240 * n_rows);
 
+        // "load factor" for the column "load_factor".
+        std::string abscissa = columns[1];
+        std::replace(abscissa.begin(), abscissa.end(), '_', ' ');
+
         const std::string script_path = png_path + ".gp";
         {
           std::ofstream script(script_path);
@@ -196,7 +206,8 @@ namespace rodnet
                  << "}\n"
                  << "set output " << quote(png_path) << "\n"
                  << "set datafile separator ','\n"
-                 << "set xlabel " << quote(axis_label(columns[1])) << "\n"
+                 << "set xlabel " << quote(axis_label(abscissa, units, 0))
+                 << "\n"
                  << "set grid\n";
           if (x_range && x_range->first < x_range->second)
             script << std::setprecision(17) << "set xrange [" << x_range->first
@@ -204,7 +215,8 @@ namespace rodnet
           script << "set multiplot layout " << n_rows << "," << n_cols
                  << " title " << quote(title) << "\n";
           for (unsigned int p = 0; p < n_probes; ++p)
-            script << "set ylabel " << quote(columns[p + 2]) << "\n"
+            script << "set ylabel "
+                   << quote(axis_label(columns[p + 2], units, p + 1)) << "\n"
                    << "plot " << quote(csv_path) << " skip 1 using 2:" << p + 3
                    << " with linespoints pointtype 7 "
                    << "pointsize 0.5 notitle\n";
@@ -216,15 +228,16 @@ namespace rodnet
 
         const std::string failure = run_gnuplot(script_path);
         if (!failure.empty())
-          warn(png_path, failure);
+          return warn(png_path, failure);
+        return true;
       }
     catch (const std::exception &e)
       {
-        warn(png_path, e.what());
+        return warn(png_path, e.what());
       }
     catch (...)
       {
-        warn(png_path, "unknown exception");
+        return warn(png_path, "unknown exception");
       }
   }
 } // namespace rodnet

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace rodnet
 {
@@ -15,17 +16,21 @@ namespace rodnet
    * script is kept next to the image as `<png_path>.gp`, so that a user can
    * restyle the plot and run it again. With @p x_range, the panels show
    * that range of the abscissa only (a time history after its preload).
+   * @p units, if given, are the units of the columns after "step" (the
+   * abscissa first), shown in brackets in the axis labels: "tip_y [m]".
    *
    * Plotting is a convenience: if the table cannot be read, has no probe or
    * no row, or gnuplot is missing or fails, one warning line goes to
-   * std::cerr and the function returns. It never throws.
+   * std::cerr and the function returns false. It never throws; it returns
+   * true when the PNG was written.
    */
-  void
+  bool
   plot_probes(
     const std::string                              &csv_path,
     const std::string                              &png_path,
     const std::string                              &title,
-    const std::optional<std::pair<double, double>> &x_range = std::nullopt);
+    const std::optional<std::pair<double, double>> &x_range = std::nullopt,
+    const std::vector<std::string>                 &units   = {});
 } // namespace rodnet
 
 #endif

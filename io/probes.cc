@@ -13,6 +13,22 @@ namespace rodnet
 {
   namespace
   {
+    /// A probe kind as the scene writes it.
+    struct KindName
+    {
+      Probe::Kind kind;
+      const char *syntax;
+      const char *unit;
+    };
+
+    const std::vector<KindName> kind_names = {
+      {Probe::Kind::position, "position <vertex> <x|y|z>", "m"},
+      {Probe::Kind::reaction, "reaction <vertex> <x|y|z>", "N"},
+      {Probe::Kind::energy, "energy", "J"},
+      {Probe::Kind::eigenvalue, "eigenvalue", "mixed"},
+      {Probe::Kind::rotation, "rotation <junction> <ax>,<ay>,<az>", "rad"},
+      {Probe::Kind::moment, "moment <junction> <x|y|z>", "N m"}};
+
     unsigned int
     parse_component(const std::string &text, const std::string &context)
     {
@@ -26,6 +42,39 @@ namespace rodnet
                                   "\" is not x, y or z");
     }
   } // namespace
+
+  std::string
+  unit(const Probe::Kind kind)
+  {
+    for (const KindName &k : kind_names)
+      if (k.kind == kind)
+        return k.unit;
+    throw std::logic_error("unit: unknown probe kind");
+  }
+
+  std::string
+  probe_kinds_description()
+  {
+    std::string text;
+    for (const KindName &k : kind_names)
+      text += (text.empty() ? "" : ", ") + std::string(k.syntax) + " [" +
+              k.unit + "]";
+    return text;
+  }
+
+  void
+  unwrap_rotations(const std::vector<Probe>  &probes,
+                   const std::vector<double> &previous,
+                   std::vector<double>       &values)
+  {
+    for (std::size_t i = 0; i < probes.size(); ++i)
+      if (probes[i].kind == Probe::Kind::rotation)
+        {
+          const double reference = previous.empty() ? 0.0 : previous[i];
+          const double turn      = 2 * M_PI;
+          values[i] += turn * std::round((reference - values[i]) / turn);
+        }
+  }
 
   template <class Model>
   std::vector<Probe>
@@ -147,9 +196,7 @@ namespace rodnet
         else
           throw std::invalid_argument(
             context + ": unknown probe kind \"" + kind +
-            "\"; known: position <vertex> <x|y|z>, reaction <vertex> <x|y|z>, "
-            "energy, eigenvalue, rotation <junction> <ax>,<ay>,<az>, moment "
-            "<junction> <x|y|z>");
+            "\"; known: " + probe_kinds_description());
         probes.push_back(probe);
       }
     return probes;

@@ -31,12 +31,36 @@ namespace rodnet
     Vector3      axis     = Vector3::UnitZ(); ///< for rotations
   };
 
+  /// The unit of a probe kind's values: "m", "N", "J", "rad", "N m", and
+  /// "mixed" for the eigenvalue (the tangent's DoFs are positions and
+  /// angles).
+  std::string
+  unit(Probe::Kind kind);
+
+  /// Every probe kind with its arguments and unit, for help texts and
+  /// messages: "position <vertex> <x|y|z> [m], reaction ...".
+  std::string
+  probe_kinds_description();
+
+  /**
+   * Makes the rotation probes among @p values continuous from @p previous
+   * (the values of the step before, empty for the first step, when the
+   * reference is 0): a rotation is known modulo one turn, so the value
+   * nearest the previous one is taken. This holds as long as a probed
+   * rotation changes by less than half a turn between recorded steps.
+   */
+  void
+  unwrap_rotations(const std::vector<Probe>  &probes,
+                   const std::vector<double> &previous,
+                   std::vector<double>       &values);
+
   /**
    * Parses a probe list `name: kind args; name: kind args; ...` with kinds
    * `position <vertex> <x|y|z>`, `reaction <vertex> <x|y|z>` (the support
    * holding that vertex), `energy`, `eigenvalue`, `rotation <junction>
-   * <ax>,<ay>,<az>` (angle of the junction's rotation about the axis, rad)
-   * and `moment <junction> <x|y|z>` (reaction moment, N m). Vertices as in
+   * <ax>,<ay>,<az>` (angle of the junction's rotation about the axis, rad,
+   * in (-2 pi, 2 pi]; see unwrap_rotations()) and `moment <junction>
+   * <x|y|z>` (reaction moment, N m). Vertices as in
    * select_vertex(), junctions by name. @p model is a RodModel or a
    * DrModel (which has no rotations, moments or eigenvalue). Throws
    * std::invalid_argument naming @p entry and the offending probe.

@@ -7,14 +7,19 @@
 #include <core/rod_generators.h>
 #include <core/rod_graph.h>
 #include <elements/hinge_kernel.h>
+#include <io/entry_numbers.h>
+#include <io/entry_tree.h>
 #include <io/gmsh_network.h>
 #include <io/gmsh_rods.h>
 #include <io/network_file.h>
+#include <io/run_limits.h>
 #include <io/scene.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -79,6 +84,131 @@ namespace rodnet
       const std::vector<double> v = dealii::Utilities::string_to_double(
         dealii::Utilities::split_string_list(prm.get(entry), ','));
       return Vector3(v[0], v[1], v[2]);
+    }
+
+    /// "<value>" of a double for messages.
+    std::string
+    number(const double value)
+    {
+      std::ostringstream s;
+      s << value;
+      return s.str();
+    }
+
+    /// The vector entry @p name of subsection Geometry, which gives a
+    /// direction: refused if zero.
+    Vector3
+    get_direction(const dealii::ParameterHandler &prm, const std::string &name)
+    {
+      const Vector3 v = get_vector(prm, name);
+      if (!(v.norm() > 0))
+        throw std::invalid_argument(
+          "entry \"Geometry/" + name + "\": \"" + prm.get(name) +
+          "\" has no direction; give a non-zero vector, e.g. 0, 0, 1");
+      return v;
+    }
+
+    /// "Plane axis 1" and "Plane axis 2" as unit vectors; refused unless
+    /// they are orthogonal (to 1e-6 in the cosine of their angle).
+    std::pair<Vector3, Vector3>
+    get_plane_axes(const dealii::ParameterHandler &prm)
+    {
+      const Vector3 e1     = get_direction(prm, "Plane axis 1").normalized();
+      const Vector3 e2     = get_direction(prm, "Plane axis 2").normalized();
+      const double  cosine = e1.dot(e2);
+      if (std::abs(cosine) > 1e-6)
+        throw std::invalid_argument(
+          "entry \"Geometry/Plane axis 2\": \"" + prm.get("Plane axis 2") +
+          "\" makes " +
+          number(std::acos(std::clamp(cosine, -1., 1.)) * 180 / M_PI) +
+          " deg with \"Plane axis 1\" = \"" + prm.get("Plane axis 1") +
+          "\"; the axes of the circle's plane must be orthogonal, e.g. 1, 0, "
+          "0 and 0, 1, 0");
+      return {e1, e2};
+    }
+
+    /// True if an entry below @p section holds other than its default.
+    bool
+    sets_an_entry(const EntryNode &section)
+    {
+      bool set = false;
+      for_each_entry(section, [&set](const std::string &, const EntryNode &e) {
+        set = set || e.value != e.default_value;
+      });
+      return set;
+    }
+
+    /**
+     * The size of what @p generator makes from @p n segments (per rod,
+     * piece or beam), from the entries alone, for the generators that make
+     * many points or beams from a few numbers: their size is checked
+     * before a point is generated. Empty for the others (the file readers,
+     * the frame and the windmill), checked once they are read.
+     */
+    std::optional<ProblemSize>
+    planned_size(const dealii::ParameterHandler &prm,
+                 const std::string              &generator,
+                 const double                    n)
+    {
+      if (generator == "straight" || generator == "arc" || generator == "helix")
+        return rods_size(1, n);
+      if (generator == "ring")
+        return rods_size(1, n, 1);
+      if (generator == "polyline")
+        return rods_size(
+          1,
+          n * (dealii::Utilities::split_string_list(prm.get("Points"), ';')
+                 .size() -
+               1));
+      if (generator != "square lattice" && generator != "hexagonal lattice")
+        return std::nullopt;
+      const auto cells = dealii::Utilities::string_to_int(
+        dealii::Utilities::split_string_list(prm.get("Cells"), ','));
+      const double nx = cells[0], ny = cells[1];
+      // Square: the sides of (nx + 1)(ny + 1) nodes; hexagonal: 3 new
+      // sides per cell and 2 more at the rim, 2 corners per cell and 2 more.
+      return generator == "square lattice" ?
+               network_size(nx * (ny + 1) + ny * (nx + 1),
+                            (nx + 1) * (ny + 1),
+                            n) :
+               network_size(3 * nx * ny + 2 * (nx + ny),
+                            2 * nx * ny + 2 * (nx + ny),
+                            n);
+    }
+
+    /// The size of the rods that build_rod_network() makes of @p graph,
+    /// @p n segments per beam: its junctions with a rotation (four DoFs)
+    /// are the nodes of two or more beam ends or of a kind, but pinned.
+    ProblemSize
+    graph_size(const RodGraph &graph, const double n)
+    {
+      std::vector<unsigned int> ends(graph.nodes.size(), 0);
+      for (const RodGraph::Beam &beam : graph.beams)
+        {
+          ++ends[beam.from];
+          ++ends[beam.to];
+        }
+      double junctions = 0;
+      for (std::size_t i = 0; i < graph.nodes.size(); ++i)
+        {
+          const auto &kind = graph.nodes[i].kind;
+          junctions += (ends[i] > 1 || kind) && kind != JunctionKind::pinned;
+        }
+      return network_size(graph.beams.size(), junctions, n);
+    }
+
+    /// The size of the rods @p rods, closed where @p closed says.
+    ProblemSize
+    generated_size(const std::vector<std::vector<Vector3>> &rods,
+                   const std::vector<bool>                 &closed)
+    {
+      double segments = 0, n_closed = 0;
+      for (std::size_t r = 0; r < rods.size(); ++r)
+        {
+          segments += closed[r] ? rods[r].size() : rods[r].size() - 1.0;
+          n_closed += closed[r];
+        }
+      return rods_size(rods.size(), segments, n_closed);
     }
 
     std::string
@@ -162,7 +292,8 @@ namespace rodnet
       prm.declare_entry("Time step",
                         "0",
                         Double(),
-                        "Nominal time step h, required (positive); a step "
+                        "Nominal time step h, required (positive), at most "
+                        "1e6 steps from the start to the end time; a step "
                         "whose Newton solve fails is halved down to "
                         "\"Minimum step fraction\" of it. [s]");
       prm.declare_entry("Start time", "0", Double(), "Time of the start. [s]");
@@ -264,14 +395,6 @@ namespace rodnet
       return function;
     }
 
-    /// "<value>" of a double for messages.
-    std::string
-    number(const double value)
-    {
-      std::ostringstream s;
-      s << value;
-      return s.str();
-    }
   } // namespace
 
   std::string
@@ -372,12 +495,14 @@ namespace rodnet
       prm.declare_entry("Plane axis 1",
                         "1, 0, 0",
                         vector_pattern,
-                        "Arc and ring: first in-plane unit axis. [-]");
+                        "Arc and ring: direction of the first in-plane "
+                        "axis (normalized; angle 0). [-]");
       prm.declare_entry("Plane axis 2",
                         "0, 1, 0",
                         vector_pattern,
-                        "Arc and ring: second in-plane unit axis, orthogonal "
-                        "to the first. [-]");
+                        "Arc and ring: direction of the second in-plane "
+                        "axis (normalized; angle 90 deg), orthogonal to the "
+                        "first. [-]");
       prm.declare_entry("Start angle",
                         "0",
                         Double(),
@@ -440,8 +565,8 @@ namespace rodnet
           MaterialRegistry::instance().names();
         std::string help = "Constitutive law of the rods:";
         for (const std::string &n : names)
-          help += " \"" + n +
-                  "\": " + MaterialRegistry::instance().description(n) + ".";
+          help +=
+            " \"" + n + "\": " + MaterialRegistry::instance().description(n);
         prm.declare_entry("Model",
                           names.front(),
                           Selection(join(names, "|")),
@@ -496,8 +621,8 @@ namespace rodnet
         "Steps",
         "10",
         Integer(1),
-        "Number of equal load steps from load factor 0 to 1; "
-        "every load and prescribed displacement is ramped. [-]");
+        "Number of equal load steps from load factor 0 to 1, at most "
+        "100000; every load and prescribed displacement is ramped. [-]");
       prm.declare_entry("Point forces",
                         "",
                         Anything(),
@@ -641,15 +766,21 @@ namespace rodnet
       prm.declare_entry("VTU interval",
                         "1",
                         Integer(1),
-                        "Write the VTU of every n-th converged step. [-]");
+                        "Write the VTU of every n-th step (step 0 is the "
+                        "unloaded or initial state); a run writes at most "
+                        "10000 VTU files, and no more than fit on the "
+                        "disk. [-]");
       prm.declare_entry("Probes",
                         "",
                         Anything(),
                         "Columns of probes.csv: \"name: kind args; ...\" with "
-                        "kinds \"position <vertex> <x|y|z>\" [m], \"reaction "
-                        "<vertex> <x|y|z>\" [N], \"energy\" [J], "
-                        "\"eigenvalue\" (lowest of the constrained tangent; "
-                        "Newton only). [-]");
+                        "the kinds " +
+                          probe_kinds_description() +
+                          ". energy: the elastic energy; eigenvalue: the "
+                          "lowest of the constrained tangent (Newton only); "
+                          "rotation: the angle of a junction's rotation "
+                          "about the axis, continuous over the steps; "
+                          "moment: the reaction moment at a junction. [-]");
       prm.declare_entry("Plot",
                         "true",
                         Bool(),
@@ -663,6 +794,24 @@ namespace rodnet
   Scene::Scene(dealii::ParameterHandler &prm,
                const std::string        &scene_directory)
   {
+    // Before anything is read or generated: every number of every entry.
+    const EntryNode entries = entry_tree(prm);
+    check_entry_numbers(entries,
+                        {"Geometry/Mesh file",
+                         "Geometry/Network file",
+                         "Output/Directory"});
+    const std::string solution_method = prm.get({"Solver"}, "Method");
+    const double      bytes_per_dof =
+      memory_per_dof(solution_method == "newton",
+                     solution_method == "time stepping",
+                     prm.get_bool({"Output"}, "Write VTU"));
+    // What cannot fit in memory is refused before it is generated.
+    const auto check_size = [&](ProblemSize size, const std::string &entry) {
+      size.bytes_per_dof = bytes_per_dof;
+      check_memory(size, available_memory(), entry);
+      return size;
+    };
+
     prm.enter_subsection("Geometry");
     {
       // File names are relative to the scene file.
@@ -670,12 +819,17 @@ namespace rodnet
         if (file.empty())
           throw std::invalid_argument("entry \"Geometry/" + entry +
                                       "\" is empty but the generator needs it");
-        return file[0] == '/' ? file : scene_directory + "/" + file;
+        const std::string path =
+          file[0] == '/' ? file : scene_directory + "/" + file;
+        if (std::filesystem::is_directory(path))
+          throw std::invalid_argument("entry \"Geometry/" + entry + "\": \"" +
+                                      path + "\" is a directory, not a file");
+        return path;
       };
       const std::string  generator = prm.get("Generator");
       const unsigned int n         = prm.get_integer("Segments");
       const double       degree    = M_PI / 180;
-      director_hint                = get_vector(prm, "Director d1");
+      director_hint                = get_direction(prm, "Director d1");
       hinge_kernel                 = prm.get("Hinge kernel");
       natural_shape  = natural_shape_from_string(prm.get("Natural shape"));
       midpoint_clamp = prm.get_bool("Clamp at first segment midpoint");
@@ -687,6 +841,11 @@ namespace rodnet
           generator +
           " generator has no open rod start for it (rings are closed; a "
           "network clamps exactly at a clamped node); set it to false");
+      const bool lattice = generator.find("lattice") != std::string::npos;
+      const std::string size_entry =
+        lattice ? "Geometry/Cells" : "Geometry/Segments";
+      if (const auto planned = planned_size(prm, generator, n))
+        check_size(*planned, size_entry);
       if (generator == "straight")
         rod_points.push_back(generators::straight(get_vector(prm, "Start"),
                                                   get_vector(prm, "End"),
@@ -696,8 +855,8 @@ namespace rodnet
         rod_points.push_back(
           generators::arc(get_vector(prm, "Center"),
                           prm.get_double("Radius"),
-                          get_vector(prm, "Plane axis 1"),
-                          get_vector(prm, "Plane axis 2"),
+                          get_plane_axes(prm).first,
+                          get_plane_axes(prm).second,
                           prm.get_double("Start angle") * degree,
                           prm.get_double("End angle") * degree,
                           n,
@@ -705,8 +864,8 @@ namespace rodnet
       else if (generator == "ring")
         rod_points.push_back(generators::ring(get_vector(prm, "Center"),
                                               prm.get_double("Radius"),
-                                              get_vector(prm, "Plane axis 1"),
-                                              get_vector(prm, "Plane axis 2"),
+                                              get_plane_axes(prm).first,
+                                              get_plane_axes(prm).second,
                                               n));
       else if (generator == "helix")
         rod_points.push_back(
@@ -782,6 +941,9 @@ namespace rodnet
       rod_closed.resize(rod_points.size(), generator == "ring");
       ghost_spin = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
                                                       GhostSpin::small_rotation;
+      model_size = check_size(graph ? graph_size(*graph, n) :
+                                      generated_size(rod_points, rod_closed),
+                              size_entry);
     }
     prm.leave_subsection();
 
@@ -794,7 +956,14 @@ namespace rodnet
             g.subsection = material_section(group);
             g.model      = prm.get("Model");
             g.density    = prm.get_double("Density");
-            auto m       = MaterialRegistry::instance().create(g.model);
+            if (!sets_an_entry(*entries.find(g.subsection)->find(g.model)))
+              throw std::invalid_argument(
+                "subsection \"" + g.subsection + "/" + g.model +
+                "\" sets no entry, so the rods have no stiffness: give a "
+                "Young's modulus and a cross section, or the rigidities "
+                "(rodnet-run --help lists the entries; scenes/elastica.prm "
+                "is an example)");
+            auto m = MaterialRegistry::instance().create(g.model);
             prm.enter_subsection(g.model);
             // The material's message names its entry; this adds which
             // material subsection.
@@ -870,6 +1039,61 @@ namespace rodnet
     probe_text       = prm.get("Probes");
     plot             = prm.get_bool("Plot");
     prm.leave_subsection();
+    check_run_length();
+  }
+
+  const ProblemSize &
+  Scene::size() const
+  {
+    return model_size;
+  }
+
+  double
+  Scene::planned_steps() const
+  {
+    const TimeIntegrator::Parameters &t = time_stepping;
+    return method == SolutionMethod::time_stepping ?
+             std::ceil((t.end_time - t.start_time) / t.time_step) +
+               (t.preload_time > 0 ? t.preload_steps : 0) :
+             solver.n_steps;
+  }
+
+  double
+  Scene::planned_vtu_files() const
+  {
+    // Step 0 (the unloaded or initial state), then every interval-th step.
+    return write_vtu ? std::floor(planned_steps() / vtu_interval) + 1 : 0;
+  }
+
+  void
+  Scene::check_run_length() const
+  {
+    using namespace run_limits;
+    if (method != SolutionMethod::time_stepping &&
+        solver.n_steps > max_load_steps)
+      throw std::invalid_argument(
+        "entry \"Loads/Steps\": " + std::to_string(solver.n_steps) +
+        " load steps are more than the " + std::to_string(max_load_steps) +
+        " a run may take; fewer do as well (a step that fails is cut "
+        "where needed)");
+    const TimeIntegrator::Parameters &t = time_stepping;
+    const double n_time_steps = (t.end_time - t.start_time) / t.time_step;
+    if (method == SolutionMethod::time_stepping &&
+        n_time_steps > max_time_steps)
+      throw std::invalid_argument(
+        "entry \"" + time_stepping_section + "/Time step\": " +
+        number(t.time_step) + " s from " + number(t.start_time) + " to " +
+        number(t.end_time) + " s are " + number(std::ceil(n_time_steps)) +
+        " time steps, more than the " + number(max_time_steps) +
+        " a run may take; take a larger step or a shorter time");
+    const double files = planned_vtu_files();
+    if (files > max_vtu_files)
+      throw std::invalid_argument(
+        "entry \"Output/VTU interval\": the run would write " + number(files) +
+        " VTU files, more than the " + std::to_string(max_vtu_files) +
+        " a run may write; set the interval to " +
+        number(std::ceil(planned_steps() / (max_vtu_files - 1))) +
+        " or more, or \"Write VTU = false\"");
   }
 
   void

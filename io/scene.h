@@ -9,6 +9,7 @@
 #include <core/rod_graph.h>
 #include <core/rod_model.h>
 #include <io/probes.h>
+#include <io/problem_size.h>
 #include <materials/cross_section.h>
 #include <solvers/dynamic_relaxation.h>
 #include <solvers/static_solver.h>
@@ -63,10 +64,23 @@ namespace rodnet
     declare_parameters(dealii::ParameterHandler &prm);
 
     /// Reads and checks the entries; throws std::invalid_argument naming
-    /// the entry for inadmissible values. @p scene_directory resolves
-    /// relative mesh file names.
+    /// the entry for inadmissible values: numbers that are not finite or
+    /// beyond max_input_magnitude (in any entry), models that would not fit
+    /// in the available memory (before generating them), runs longer than
+    /// run_limits allow. @p scene_directory resolves relative mesh file
+    /// names.
     Scene(dealii::ParameterHandler &prm,
           const std::string        &scene_directory = ".");
+
+    /// The size of the model that build_model() makes, and the memory a
+    /// run of it takes (estimated), known before it is built.
+    const ProblemSize &
+    size() const;
+
+    /// How many VTU files the run writes if no step is cut: the
+    /// recorded steps (step 0 included) divided by the VTU interval.
+    double
+    planned_vtu_files() const;
 
     /// Builds the rods, material, supports and loads.
     std::unique_ptr<RodModel>
@@ -146,6 +160,16 @@ namespace rodnet
     void
     check_time_stepping() const;
 
+    /// The steps a run takes if none is cut: load steps, or time steps
+    /// with the preload steps.
+    double
+    planned_steps() const;
+
+    /// Throws std::invalid_argument naming the entry if the run would
+    /// exceed run_limits: load steps, time steps, VTU files.
+    void
+    check_run_length() const;
+
     /// Material group of every rod of build_network(), rod by rod.
     std::vector<unsigned int>
     rod_groups() const;
@@ -187,8 +211,9 @@ namespace rodnet
     std::string clamped_ends, pinned_vertices, fixed_components,
       prescribed_displacements, prescribed_rotations, point_forces, moments,
       probe_text;
-    Vector3 distributed_force, gravity;
-    double  mass_per_length;
+    Vector3     distributed_force, gravity;
+    double      mass_per_length;
+    ProblemSize model_size;
   };
 } // namespace rodnet
 

@@ -1,10 +1,17 @@
+#include <deal.II/base/timer.h>
+
+#include <io/interrupt.h>
 #include <io/probe_plot.h>
+#include <io/run_limits.h>
 #include <io/scene_runner.h>
 #include <io/vtu_output.h>
 
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
+#include <iostream>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -14,7 +21,9 @@ namespace rodnet
   {
     /// What every solution method does with a converged step: a row of
     /// probes.csv, a row of the summary, and the VTU files, against the
-    /// load factor or the time (@p abscissa names which).
+    /// load factor or the time (@p abscissa names which). After each step
+    /// it ends the run with StopRequested if a signal asked for that: every
+    /// file is complete then.
     class StepRecorder
     {
     public:
@@ -25,46 +34,61 @@ namespace rodnet
                    RunSummary               &summary,
                    const std::string        &abscissa = "load_factor")
           : scene(scene)
+          , probes(probes)
           , csv(csv_path(output_directory))
           , table(csv, probes, abscissa)
           , summary(summary)
+          , units{abscissa == "time" ? "s" : "-"}
       {
         summary.abscissa = abscissa;
+        summary.outputs  = {"probes.csv"};
         if (scene.write_vtu && vtu_model != nullptr)
           vtu = std::make_unique<VtuOutput>(*vtu_model, output_directory);
         for (const Probe &p : probes)
-          summary.probe_names.push_back(p.name);
+          {
+            summary.probe_names.push_back(p.name);
+            units.push_back(unit(p.kind));
+          }
       }
 
       /// Records step @p step at load factor or time @p abscissa (also the
       /// "time" of the PVD record); @p u is the state for the VTU files in
       /// the layout of the RodModel given to the constructor.
       void
-      record(const unsigned int         step,
-             const double               abscissa,
-             const std::vector<double> &values,
-             const VectorType          *u)
+      record(const unsigned int  step,
+             const double        abscissa,
+             std::vector<double> values,
+             const VectorType   *u)
       {
+        unwrap_rotations(probes, previous_values, values);
+        previous_values = values;
         table.add_row(step, abscissa, values);
         std::vector<double> row{abscissa};
         row.insert(row.end(), values.begin(), values.end());
         summary.rows.push_back(row);
         summary.converged_steps = step;
         if (vtu && u != nullptr && step % scene.vtu_interval == 0)
-          vtu->write(step, abscissa, *u);
+          write_vtu(step, abscissa, *u);
+        throw_if_stop_requested();
       }
 
-      /// Plots probes.csv, over @p x_range of the abscissa if given.
+      /// Plots probes.csv, over @p x_range of the abscissa if given, and
+      /// lists the outputs written in the summary.
       void
       finish(const std::string                              &output_directory,
              const std::optional<std::pair<double, double>> &x_range =
                std::nullopt) const
       {
-        if (scene.plot && !summary.probe_names.empty() && !summary.rows.empty())
-          plot_probes(csv,
-                      output_directory + "/probes.png",
-                      "rodnet probes",
-                      x_range);
+        if (scene.plot && !summary.probe_names.empty() &&
+            !summary.rows.empty() &&
+            plot_probes(csv,
+                        output_directory + "/probes.png",
+                        "rodnet probes",
+                        x_range,
+                        units))
+          summary.outputs.push_back("probes.png");
+        if (vtu_files > 0)
+          summary.outputs.push_back("solution.pvd");
       }
 
     private:
@@ -76,20 +100,74 @@ namespace rodnet
         return directory + "/probes.csv";
       }
 
+      /// Writes the VTU file of a step, up to run_limits::max_vtu_files
+      /// (Scene refuses runs planned beyond it; cut steps may add some).
+      void
+      write_vtu(const unsigned int step,
+                const double       abscissa,
+                const VectorType  &u)
+      {
+        if (vtu_files < run_limits::max_vtu_files)
+          {
+            vtu->write(step, abscissa, u);
+            ++vtu_files;
+          }
+        else if (!vtu_capped)
+          {
+            std::cerr << "warning: " << vtu_files
+                      << " VTU files written, the most one run writes; the "
+                         "steps from "
+                      << step << " on get none (raise \"Output/VTU interval\")"
+                      << std::endl;
+            vtu_capped = true;
+          }
+      }
+
       const Scene               &scene;
+      const std::vector<Probe>  &probes;
       const std::string          csv;
       ProbeTable                 table;
       RunSummary                &summary;
       std::unique_ptr<VtuOutput> vtu;
+      unsigned int               vtu_files  = 0;
+      bool                       vtu_capped = false;
+      /// The abscissa's unit, then each probe's.
+      std::vector<std::string> units;
+      /// The probe values of the step before, for unwrap_rotations().
+      std::vector<double> previous_values;
     };
+
+    /**
+     * Runs @p build, the construction of a model of @p scene; a big one
+     * (over 1e5 DoFs) gets a line before and one after, with the time it
+     * took, so that a long build does not look like a hang. A stop signal
+     * received meanwhile ends the run after it.
+     */
+    template <class Build>
+    auto
+    build_with_progress(const Scene  &scene,
+                        std::ostream *log,
+                        const Build  &build)
+    {
+      const bool    report = log != nullptr && scene.size().dofs() > 1e5;
+      dealii::Timer timer;
+      if (report)
+        *log << "building the model ..." << std::endl;
+      auto model = build();
+      if (report)
+        *log << "  built in " << timer.wall_time() << " s" << std::endl;
+      throw_if_stop_requested();
+      return model;
+    }
 
     RunSummary
     run_newton(const Scene       &scene,
                const std::string &output_directory,
                std::ostream      *log)
     {
-      std::unique_ptr<RodModel> model  = scene.build_model();
-      const std::vector<Probe>  probes = scene.probes(*model);
+      const std::unique_ptr<RodModel> model =
+        build_with_progress(scene, log, [&] { return scene.build_model(); });
+      const std::vector<Probe> probes = scene.probes(*model);
 
       StaticSolver::Parameters parameters = scene.solver;
       for (const Probe &p : probes)
@@ -111,6 +189,17 @@ namespace rodnet
       StaticSolver solver(*model, parameters, log);
       try
         {
+          // Step 0: the unloaded state, where every run starts.
+          recorder.record(0,
+                          0.0,
+                          evaluate_probes(probes,
+                                          *model,
+                                          u,
+                                          0.0,
+                                          parameters.track_lowest_eigenvalue ?
+                                            solver.lowest_eigenvalue(u, 0.0) :
+                                            std::nan("")),
+                          &u);
           solver.run(u,
                      [&](const StaticSolver::StepInfo &info,
                          const VectorType             &solution) {
@@ -128,6 +217,10 @@ namespace rodnet
         {
           summary.failure = e.what();
         }
+      catch (const StopRequested &e)
+        {
+          summary.stopped_by = e.signal;
+        }
       summary.critical_load_factor = solver.critical_load_factor();
       recorder.finish(output_directory);
       return summary;
@@ -138,7 +231,8 @@ namespace rodnet
                            const std::string &output_directory,
                            std::ostream      *log)
     {
-      const DrScene            dr     = scene.build_dr_model();
+      const DrScene dr =
+        build_with_progress(scene, log, [&] { return scene.build_dr_model(); });
       const DrModel           &model  = *dr.model;
       const std::vector<Probe> probes = scene.probes(model);
       // The VTU files are those of the rod model of the same scene: its
@@ -166,6 +260,11 @@ namespace rodnet
       DynamicRelaxation solver(model, scene.relaxation, log);
       try
         {
+          // Step 0: the unloaded state (rod_state is zero).
+          recorder.record(0,
+                          0.0,
+                          evaluate_probes(probes, model, u, 0.0),
+                          rods ? &rod_state : nullptr);
           solver.run(u,
                      [&](const DynamicRelaxation::StepInfo &info,
                          const DrVector                    &solution) {
@@ -195,6 +294,10 @@ namespace rodnet
         {
           summary.failure = e.what();
         }
+      catch (const StopRequested &e)
+        {
+          summary.stopped_by = e.signal;
+        }
       recorder.finish(output_directory);
       return summary;
     }
@@ -204,8 +307,9 @@ namespace rodnet
                       const std::string &output_directory,
                       std::ostream      *log)
     {
-      std::unique_ptr<RodModel> model  = scene.build_model();
-      const std::vector<Probe>  probes = scene.probes(*model);
+      const std::unique_ptr<RodModel> model =
+        build_with_progress(scene, log, [&] { return scene.build_model(); });
+      const std::vector<Probe> probes = scene.probes(*model);
       for (const Probe &p : probes)
         if (p.kind == Probe::Kind::eigenvalue)
           throw std::invalid_argument(
@@ -247,16 +351,16 @@ namespace rodnet
       };
       VectorType u, v;
       scene.initial_state(*model, u, v);
-      // Without a preload the history begins with the initial state.
-      if (parameters.preload_time == 0)
-        {
-          const double load_factor =
-            parameters.load_factor(parameters.start_time);
-          model->apply_boundary_values(u, load_factor);
-          record(0, parameters.start_time, load_factor, u);
-        }
       try
         {
+          // Without a preload the history begins with the initial state.
+          if (parameters.preload_time == 0)
+            {
+              const double load_factor =
+                parameters.load_factor(parameters.start_time);
+              model->apply_boundary_values(u, load_factor);
+              record(0, parameters.start_time, load_factor, u);
+            }
           integrator.run(u,
                          v,
                          [&](const TimeIntegrator::StepInfo &info,
@@ -272,12 +376,62 @@ namespace rodnet
         {
           summary.failure = e.what();
         }
+      catch (const StopRequested &e)
+        {
+          summary.stopped_by = e.signal;
+        }
       // The preload's rows stay in probes.csv; the plot shows the motion,
       // whose time scale is usually far shorter.
       recorder.finish(output_directory,
                       std::make_pair(parameters.start_time,
                                      parameters.end_time));
       return summary;
+    }
+
+    /// "1 rod(s), 100 segments, 403 DoFs, memory about 200 MB (15 GB
+    /// available)".
+    std::string
+    describe_size(const ProblemSize &size)
+    {
+      std::ostringstream text;
+      text << std::fixed << std::setprecision(0) << size.rods << " rod(s), "
+           << size.segments << " segments, " << size.dofs()
+           << " DoFs, memory about " << format_bytes(size.memory());
+      if (const double available = available_memory(); available > 0)
+        text << " (" << format_bytes(available) << " available)";
+      return text.str();
+    }
+
+    /**
+     * Throws std::invalid_argument naming "Output/VTU interval" if the VTU
+     * files of the run would not fit on the disk of @p directory. A file
+     * takes at most 60 bytes per vertex, its fields uncompressed (measured:
+     * 10 bytes compressed at rest).
+     */
+    void
+    check_output_space(const Scene &scene, const std::string &directory)
+    {
+      const double files = scene.planned_vtu_files();
+      if (files == 0)
+        return;
+      const double          bytes = files * (2000 + 60 * scene.size().vertices);
+      std::error_code       error;
+      std::filesystem::path existing = std::filesystem::absolute(directory);
+      while (!std::filesystem::exists(existing, error) &&
+             existing.has_parent_path() && existing != existing.parent_path())
+        existing = existing.parent_path();
+      const auto space = std::filesystem::space(existing, error);
+      if (error || bytes <= space.available)
+        return;
+      std::ostringstream text;
+      text << std::fixed << std::setprecision(0)
+           << "entry \"Output/VTU interval\": the " << files
+           << " VTU files of the run would take up to " << format_bytes(bytes)
+           << ", more than the " << format_bytes(space.available)
+           << " free at \"" << existing.string()
+           << "\"; raise the interval, set \"Write VTU = false\" or write "
+              "elsewhere (--output)";
+      throw std::invalid_argument(text.str());
     }
   } // namespace
 
@@ -286,6 +440,9 @@ namespace rodnet
             const std::string &output_directory,
             std::ostream      *log)
   {
+    if (log != nullptr)
+      *log << "rodnet: " << describe_size(scene.size()) << std::endl;
+    check_output_space(scene, output_directory);
     switch (scene.method)
       {
         case SolutionMethod::newton:

@@ -19,22 +19,33 @@ namespace rodnet
     /// What the first entry of every row is: "load_factor" for load
     /// stepping, "time" for time stepping.
     std::string abscissa = "load_factor";
-    /// Per converged step: the abscissa, then the probe values.
+    /// Per recorded step (step 0, the unloaded or initial state, and every
+    /// converged step): the abscissa, then the probe values.
     std::vector<std::vector<double>> rows;
     /// Empty if the run completed; the solver's message otherwise.
     std::string failure;
+    /// The signal that stopped the run between two steps (see
+    /// stop_cleanly_on_signals()), 0 if none did.
+    int stopped_by = 0;
+    /// The files written into the output directory: "probes.csv", and
+    /// "probes.png" and "solution.pvd" (with its .vtu files) if written.
+    std::vector<std::string> outputs;
   };
 
   /**
-   * Runs a scene: builds the model, steps the load (or the time), and after
-   * every converged step writes the VTU/PVD files and a row of probes.csv
-   * into @p output_directory (created if needed), and finally probes.png.
-   * Time stepping also records the initial state (step 0) when there is no
-   * preload, and every preload step (at times up to the start time). A
-   * solver failure ends the run with RunSummary::failure set; everything
-   * written before stays. Bad input throws std::invalid_argument before any
-   * step, except a "Load factor" expression that is not finite at some
-   * time, which throws when the run gets there.
+   * Runs a scene: prints its size to @p log, builds the model, steps the
+   * load (or the time), and after every step writes the VTU/PVD files and
+   * a row of probes.csv into @p output_directory (created if needed), and
+   * finally probes.png. Step 0 is the unloaded state of load stepping and
+   * the initial state of time stepping without preload; time stepping
+   * also records every preload step (at times up to the start time).
+   * Rotation probes are continuous over the steps (unwrap_rotations()). A
+   * solver failure ends the run with RunSummary::failure set, a stop
+   * signal with RunSummary::stopped_by set; everything written before
+   * stays, complete. Bad input throws std::invalid_argument before any
+   * step (also VTU files that would not fit on the disk), except a "Load
+   * factor" expression that is not finite at some time, which throws when
+   * the run gets there.
    */
   RunSummary
   run_scene(const Scene       &scene,

@@ -2,6 +2,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <materials/cross_section.h>
+#include <materials/input_limits.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,13 +30,46 @@ namespace rodnet
                          const std::string &entry,
                          const double       value)
     {
+      static_assert(max_input_magnitude == 1e100, "the message says");
       // AssertThrow builds its exception only on failure.
-      AssertThrow(
-        value > 0. && std::isfinite(value),
-        dealii::ExcMessage(
-          entry_message(context, entry, "must be positive and finite", value)));
+      AssertThrow(value > 0. && value <= max_input_magnitude,
+                  dealii::ExcMessage(
+                    entry_message(context,
+                                  entry,
+                                  "must be positive and at most 1e100",
+                                  value)));
+    }
+
+    void
+    check_derived_value(const std::string &context,
+                        const std::string &inputs,
+                        const std::string &name,
+                        const double       value)
+    {
+      std::ostringstream text;
+      text << context << ": " << name << " = " << value << " from " << inputs
+           << " is beyond 1e100; give them in SI units (Pa, m)";
+      AssertThrow(std::abs(value) <= max_input_magnitude,
+                  dealii::ExcMessage(text.str()));
     }
   } // namespace internal
+
+  namespace
+  {
+    /// @p section, after checking that @p inputs did not make any of its
+    /// constants overflow (a radius of 1e90 m has I = inf).
+    CrossSection
+    checked(const CrossSection &section,
+            const std::string  &context,
+            const std::string  &inputs)
+    {
+      internal::check_derived_value(context, inputs, "the area", section.area);
+      internal::check_derived_value(context, inputs, "I1", section.I1);
+      internal::check_derived_value(context, inputs, "I2", section.I2);
+      internal::check_derived_value(context, inputs, "J", section.J);
+      return section;
+    }
+  } // namespace
 
 
   CrossSection
@@ -44,7 +78,10 @@ namespace rodnet
     internal::check_positive_entry("circle cross section", "Radius", radius);
     const double r2 = radius * radius;
     const double pi = dealii::numbers::PI;
-    return {pi * r2, pi * r2 * r2 / 4., pi * r2 * r2 / 4., pi * r2 * r2 / 2.};
+    return checked(
+      {pi * r2, pi * r2 * r2 / 4., pi * r2 * r2 / 4., pi * r2 * r2 / 2.},
+      "circle cross section",
+      "\"Radius\"");
   }
 
 
@@ -66,10 +103,12 @@ namespace rodnet
     const double J =
       a * b * b * b / 3. * (1. - 192. / std::pow(pi, 5) * (b / a) * sum);
 
-    return {width * height,
-            width * height * height * height / 12.,
-            height * width * width * width / 12.,
-            J};
+    return checked({width * height,
+                    width * height * height * height / 12.,
+                    height * width * width * width / 12.,
+                    J},
+                   "rectangle cross section",
+                   "\"Width\" and \"Height\"");
   }
 
 

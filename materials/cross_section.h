@@ -93,11 +93,21 @@ namespace rodnet
                   double             value);
 
     /// Throws dealii::ExcMessage(entry_message(...)) unless @p value is
-    /// positive and finite.
+    /// positive and at most max_input_magnitude (so finite).
     void
     check_positive_entry(const std::string &context,
                          const std::string &entry,
                          double             value);
+
+    /// Throws dealii::ExcMessage naming the entries @p inputs unless the
+    /// value @p name = @p value they gave is finite and at most
+    /// max_input_magnitude in magnitude: a product of admissible entries
+    /// may still overflow.
+    void
+    check_derived_value(const std::string &context,
+                        const std::string &inputs,
+                        const std::string &name,
+                        double             value);
   } // namespace internal
 } // namespace rodnet
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/signaling_nan.h>
 
+#include <materials/input_limits.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <cctype>
@@ -28,7 +29,16 @@ namespace rodnet
   {
     internal::check_positive_entry(context, "Young's modulus", E);
     internal::check_positive_entry(context, "Shear modulus", G);
-    return {E * section.area, E * section.I1, E * section.I2, G * section.J};
+    const RodStiffness stiffness = {E * section.area,
+                                    E * section.I1,
+                                    E * section.I2,
+                                    G * section.J};
+    const std::string  inputs    = "the modulus and the cross section";
+    internal::check_derived_value(context, inputs, "EA", stiffness.EA);
+    internal::check_derived_value(context, inputs, "EI1", stiffness.EI1);
+    internal::check_derived_value(context, inputs, "EI2", stiffness.EI2);
+    internal::check_derived_value(context, inputs, "GJ", stiffness.GJ);
+    return stiffness;
   }
 
 
@@ -104,10 +114,12 @@ namespace rodnet
     internal::check_positive_entry(context, "GJ", stiffness.GJ);
 
     const auto check_finite = [](const char *entry, const double value) {
-      AssertThrow(
-        std::isfinite(value),
-        dealii::ExcMessage(
-          internal::entry_message(context, entry, "must be finite", value)));
+      AssertThrow(std::abs(value) <= max_input_magnitude,
+                  dealii::ExcMessage(
+                    internal::entry_message(context,
+                                            entry,
+                                            "must be finite and at most 1e100",
+                                            value)));
     };
     check_finite("Natural curvature 1", natural_shape.curvature1);
     check_finite("Natural curvature 2", natural_shape.curvature2);
@@ -115,7 +127,7 @@ namespace rodnet
 
     // The stress-free length (1 + eps0) l0 of a segment must stay positive.
     AssertThrow(natural_shape.axial_eigenstrain > -1. &&
-                  std::isfinite(natural_shape.axial_eigenstrain),
+                  natural_shape.axial_eigenstrain <= max_input_magnitude,
                 dealii::ExcMessage(
                   internal::entry_message(context,
                                           "Axial eigenstrain",

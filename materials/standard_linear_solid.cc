@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/signaling_nan.h>
 
+#include <materials/input_limits.h>
 #include <materials/standard_linear_solid.h>
 
 #include <cmath>
@@ -160,19 +161,20 @@ namespace rodnet
     // Either degenerate Maxwell branch is an elastic rod that would carry
     // internal variables doing nothing; more likely an entry was forgotten
     // (they default to 0), so both are refused with the alternative named.
-    AssertThrow(modulus_ratio > 0. && std::isfinite(modulus_ratio),
-                dealii::ExcMessage(internal::entry_message(
-                  context,
-                  "Modulus ratio E2/E1",
-                  "must be positive and finite (without the spring E2 the "
-                  "dashpot carries no stress: use \"linear elastic\" with "
-                  "E1)",
-                  modulus_ratio)));
-    AssertThrow(relaxation_time > 0. && std::isfinite(relaxation_time),
+    AssertThrow(
+      modulus_ratio > 0. && modulus_ratio <= max_input_magnitude,
+      dealii::ExcMessage(internal::entry_message(
+        context,
+        "Modulus ratio E2/E1",
+        "must be positive and at most 1e100 (without the spring E2 the "
+        "dashpot carries no stress: use \"linear elastic\" with "
+        "E1)",
+        modulus_ratio)));
+    AssertThrow(relaxation_time > 0. && relaxation_time <= max_input_magnitude,
                 dealii::ExcMessage(internal::entry_message(
                   context,
                   "Relaxation time",
-                  "must be positive and finite (t_r = eta/E2 = 0 is a "
+                  "must be positive and at most 1e100 (t_r = eta/E2 = 0 is a "
                   "dashpot without viscosity, the \"linear elastic\" rod "
                   "with E1; an infinite t_r is the one with E1 + E2)",
                   relaxation_time)));

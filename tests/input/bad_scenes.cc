@@ -1,6 +1,8 @@
 // Bad input gives one clear error naming the entry and a non-zero exit of
 // rodnet-run, never a crash; a solver failure keeps every earlier output.
-#include <array>
+#include <common/run_driver.h>
+#include <common/scene_pieces.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,40 +12,10 @@
 
 namespace
 {
-  struct Outcome
-  {
-    int         exit_code;
-    std::string output;
-  };
+  using Outcome = rodnet::testing::DriverOutcome;
+  using rodnet::testing::run_driver;
 
-  /// Writes @p scene to a file and runs rodnet-run on it.
-  Outcome
-  run_driver(const std::string &name, const std::string &scene)
-  {
-    const std::string path = name + ".prm";
-    std::ofstream(path) << scene;
-    const std::string command = std::string(RODNET_BINARY_DIR) +
-                                "/rodnet-run " + path + " --output out_" +
-                                name + " 2>&1";
-    FILE *pipe = popen(command.c_str(), "r");
-    EXPECT_NE(pipe, nullptr);
-    std::string           output;
-    std::array<char, 512> buffer;
-    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
-      output += buffer.data();
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-  }
-
-  const std::string material = "subsection Material\n"
-                               "  subsection linear elastic\n"
-                               "    set Stiffness input = direct\n"
-                               "    set EA = 1e4\n"
-                               "    set EI1 = 1\n"
-                               "    set EI2 = 1\n"
-                               "    set GJ = 1\n"
-                               "  end\n"
-                               "end\n";
+  const std::string material = rodnet::testing::direct_material();
 
   /// Expects exit code 1 and a message that contains @p needle.
   void
@@ -339,8 +311,8 @@ namespace
     // The elastica with four Newton iterations per step, no predictor and
     // no room to cut steps: the nearly linear pre-buckling steps converge,
     // the step across the bifurcation cannot, and the run stops with exit
-    // code 2. Every
-    // converged step is in probes.csv and has its VTU file.
+    // code 2. The unloaded state (step 0) and every converged step are in
+    // probes.csv and have their VTU files.
     const Outcome o =
       run_driver("solver_failure",
                  "subsection Geometry\n"
@@ -368,6 +340,8 @@ namespace
     unsigned int  rows = 0;
     std::getline(csv, line);
     EXPECT_EQ(line, "step,load_factor,tip_y");
+    std::getline(csv, line);
+    EXPECT_EQ(line, "0,0,0");
     while (std::getline(csv, line))
       {
         ++rows;
@@ -378,6 +352,8 @@ namespace
                       rows);
         EXPECT_TRUE(std::filesystem::exists(name)) << name;
       }
+    EXPECT_TRUE(
+      std::filesystem::exists("out_solver_failure/solution-00000.vtu"));
     EXPECT_GE(rows, 1u);
     EXPECT_LT(rows, 10u);
   }

@@ -94,8 +94,9 @@ namespace
         "reaction_z: reaction start z"),
       "cantilever_" + GetParam());
     ASSERT_TRUE(run.failure.empty()) << run.failure;
-    ASSERT_EQ(run.rows.size(), 1u);
-    const auto  &row        = run.rows[0];
+    // Step 0 (unloaded) and the one load step.
+    ASSERT_EQ(run.rows.size(), 2u);
+    const auto  &row        = run.rows[1];
     const double deflection = -row[probe_column(run, "tip_z")];
     std::cout << GetParam() << ": tip deflection " << deflection
               << ", P L^3/(3EI) = " << P / 3 << ", relative error "

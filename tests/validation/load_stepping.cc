@@ -66,8 +66,9 @@ namespace
       run_scene_text(frame_scene(40, false), "load_stepping_plain");
     ASSERT_TRUE(predicted.failure.empty()) << predicted.failure;
     ASSERT_TRUE(plain.failure.empty()) << plain.failure;
-    EXPECT_EQ(predicted.rows.size(), 20u);
-    EXPECT_GT(plain.rows.size(), 20u);
+    // Step 0 and the 20 load steps.
+    EXPECT_EQ(predicted.rows.size(), 21u);
+    EXPECT_GT(plain.rows.size(), 21u);
     const std::size_t f = probe_column(predicted, "force_z");
     // Cut steps never skip a point of the load grid k / 20: every one has
     // its row, to rounding (the sum of cut steps is snapped onto it).

@@ -1,0 +1,51 @@
+#include <io/interrupt.h>
+
+#include <csignal>
+#include <string>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// Written by the signal handler, read between steps: sig_atomic_t is
+    /// the only type a handler may write portably.
+    volatile std::sig_atomic_t requested_by = 0;
+
+    extern "C" void
+    record_signal(const int signal)
+    {
+      requested_by = signal;
+    }
+  } // namespace
+
+  void
+  stop_cleanly_on_signals()
+  {
+    struct sigaction action = {};
+    action.sa_handler       = record_signal;
+    sigemptyset(&action.sa_mask);
+    // One-shot: the second signal finds the default action again.
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+  }
+
+  int
+  stop_signal()
+  {
+    return requested_by;
+  }
+
+  StopRequested::StopRequested(const int signal_)
+      : std::runtime_error("stopped by signal " + std::to_string(signal_))
+      , signal(signal_)
+  {
+  }
+
+  void
+  throw_if_stop_requested()
+  {
+    if (requested_by != 0)
+      throw StopRequested(requested_by);
+  }
+} // namespace rodnet

@@ -1,0 +1,59 @@
+#ifndef RODNET_TESTS_RUN_DRIVER_H
+#define RODNET_TESTS_RUN_DRIVER_H
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace rodnet::testing
+{
+  /// What rodnet-run did: its exit code (-1 if it did not exit) and its
+  /// stdout and stderr together.
+  struct DriverOutcome
+  {
+    int         exit_code;
+    std::string output;
+  };
+
+  /// The contents of the file @p path ("" if it cannot be read).
+  inline std::string
+  read_file(const std::string &path)
+  {
+    std::ifstream      in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  /// Runs rodnet-run with the arguments @p arguments (shell words).
+  inline DriverOutcome
+  run_driver_with(const std::string &arguments)
+  {
+    const std::string command =
+      std::string(RODNET_BINARY_DIR) + "/rodnet-run " + arguments + " 2>&1";
+    FILE *pipe = popen(command.c_str(), "r");
+    EXPECT_NE(pipe, nullptr);
+    std::string           output;
+    std::array<char, 512> buffer;
+    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
+      output += buffer.data();
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  }
+
+  /// Writes @p scene to @p name.prm and runs rodnet-run on it with the
+  /// output directory out_@p name.
+  inline DriverOutcome
+  run_driver(const std::string &name, const std::string &scene)
+  {
+    const std::string path = name + ".prm";
+    std::ofstream(path) << scene;
+    return run_driver_with(path + " --output out_" + name);
+  }
+} // namespace rodnet::testing
+
+#endif

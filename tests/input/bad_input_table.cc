@@ -1,0 +1,380 @@
+// The "bad input" table of doc/validation.md: each row is an input given
+// to rodnet-run, the exit code it must end with and a fragment of the one
+// line that says what is wrong, where, and what to do. None may reach the
+// solver, print deal.II's assertion text or a stack trace.
+#include <common/run_driver.h>
+#include <common/scene_pieces.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using rodnet::testing::run_driver_with;
+
+  /// One row of the table.
+  struct BadInput
+  {
+    std::string name;
+    /// Contents of the scene file name + extension; none if empty.
+    std::string scene;
+    std::string extension;
+    /// Arguments after the scene file (or instead of it if there is none).
+    std::string arguments;
+    int         exit_code;
+    std::string fragment;
+  };
+
+  std::ostream &
+  operator<<(std::ostream &out, const BadInput &b)
+  {
+    return out << b.name;
+  }
+
+  /// A cantilever that runs as it is: every case breaks one thing of it.
+  const std::string cantilever =
+    rodnet::testing::direct_material() +
+    "subsection Geometry\n  set Segments = 10\nend\n"
+    "subsection Supports\n  set Clamped ends = start\nend\n"
+    "subsection Output\n  set Write VTU = false\n"
+    "  set Plot = false\nend\n";
+
+  std::string
+  section(const std::string &name, const std::string &entries)
+  {
+    return "subsection " + name + "\n" + entries + "end\n";
+  }
+
+  /// cantilever with the lines @p entries in subsection @p name (given
+  /// last, they override).
+  std::string
+  with(const std::string &name, const std::string &entries)
+  {
+    return cantilever + section(name, entries);
+  }
+
+  const std::string time_stepping =
+    section("Solver",
+            "  set Method = time stepping\n"
+            "  subsection Time stepping\n"
+            "    set Integrator = quasi-static\n"
+            "    set Time step = 0.1\n"
+            "  end\n");
+
+  const std::string data = RODNET_SOURCE_DIR "/tests/input/data/";
+
+  const std::vector<BadInput> bad_inputs = {
+    // Non-finite and absurd numbers, in every kind of entry.
+    {"nan_force",
+     with("Loads", "  set Point forces = end: nan, 0, 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Point forces\": in \"end: nan, 0, 0\", \"nan\" is not a "
+     "finite number"},
+    {"huge_force",
+     with("Loads", "  set Point forces = end: 1e308, 0, 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Point forces\": in \"end: 1e308, 0, 0\", 1e308 exceeds "
+     "1e100"},
+    {"huge_stiffness",
+     with("Material",
+          "  subsection linear elastic\n    set EA = 1e308\n  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Material/linear elastic/EA\": in \"1e308\", 1e308 exceeds 1e100"},
+    {"overflowing_section",
+     cantilever + section("Material",
+                          "  subsection linear elastic\n"
+                          "    set Stiffness input = section\n"
+                          "    set Young's modulus = 1\n"
+                          "    set Radius = 1e90\n"
+                          "  end\n"),
+     ".prm",
+     "",
+     1,
+     "subsection \"Material\": circle cross section: the area = "
+     "3.14159e+180 from \"Radius\" is beyond 1e100"},
+    {"overflowing_moment",
+     with("Loads", "  set Moments = end: 0,0,1 1e400\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Moments\": in \"end: 0,0,1 1e400\", 1e400 is beyond the "
+     "range of a double"},
+    {"infinite_displacement",
+     with("Supports", "  set Prescribed displacements = end: x=-inf\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Prescribed displacements\": in \"end: x=-inf\", "
+     "\"inf\" is not a finite number"},
+    {"nan_vector",
+     with("Loads", "  set Gravity = 0, NaN, 0\n"),
+     ".prm",
+     "",
+     1,
+     "Gravity"},
+    {"huge_point",
+     cantilever + section("Geometry",
+                          "  set Generator = polyline\n"
+                          "  set Points = 0,0,0; 1e200,0,0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Points\": in \"0,0,0; 1e200,0,0\", 1e200 exceeds "
+     "1e100"},
+    {"huge_expression",
+     with("Loads", "  set Point forces = end: 0, 1, 0\n") + time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Load factor = 1e300*t\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Solver/Time stepping/Load factor\": in \"1e300*t\", 1e300 "
+     "exceeds 1e100"},
+    // Runs that cannot end in reasonable time or fit in memory.
+    {"billion_load_steps",
+     with("Loads", "  set Steps = 1000000000\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Steps\": 1000000000 load steps are more than the 100000"},
+    {"billion_time_steps",
+     cantilever + time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Time step = 1e-9\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Solver/Time stepping/Time step\": 1e-09 s from 0 to 1 s are "
+     "1e+09 time steps, more than the 1e+06"},
+    {"too_many_vtu_files",
+     with("Loads", "  set Steps = 50000\n") +
+       section("Output", "  set Write VTU = true\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Output/VTU interval\": the run would write 50001 VTU files, "
+     "more than the 10000 a run may write; set the interval to 6 or more"},
+    {"billion_segments",
+     with("Geometry", "  set Segments = 1000000000\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Segments\": the model would have 1000000000 segments "
+     "and 4000000003 DoFs and need about"},
+    {"huge_lattice",
+     cantilever + section("Geometry",
+                          "  set Generator = square lattice\n"
+                          "  set Cells = 3000, 3000\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Cells\": the model would have 180060000 segments"},
+    // Errors that used to say too little.
+    {"empty_scene", "", ".prm", "", 1, "the scene sets no entry"},
+    {"comments_only", "# nothing here\n\n", ".prm", "", 1, "sets no entry"},
+    {"no_material",
+     section("Supports", "  set Clamped ends = start\n"),
+     ".prm",
+     "",
+     1,
+     "subsection \"Material/linear elastic\" sets no entry, so the rods have "
+     "no stiffness"},
+    {"json_value_for_subsection",
+     "{\"Geometry\": 5}",
+     ".json",
+     "",
+     1,
+     "\"Geometry\" is a subsection: give an object of its entries"},
+    {"json_array_for_entry",
+     "{\"Geometry\": {\"Segments\": [1, 2]}}",
+     ".json",
+     "",
+     1,
+     "entry \"Geometry/Segments\" takes one string or number (e.g. \"100\"), "
+     "not a JSON array"},
+    {"json_array_scene",
+     "[1, 2]",
+     ".json",
+     "",
+     1,
+     "the scene is a JSON array or value"},
+    {"json_unknown_entry",
+     "{\"Geometry\": {\"Segmnts\": \"5\"}}",
+     ".json",
+     "",
+     1,
+     "\"Geometry/Segmnts\" is no subsection or entry of a scene"},
+    {"json_syntax", "{\"Geometry\": {", ".json", "", 1, "not valid JSON"},
+    {"branched_gmsh_mesh",
+     cantilever + section("Geometry",
+                          "  set Generator = gmsh\n"
+                          "  set Mesh file = " +
+                            data + "frame_v41.msh\n"),
+     ".prm",
+     "",
+     1,
+     "as rods: More than one tag is not supported!; if it is a network of "
+     "beams meeting at junctions, use \"Generator = gmsh network\""},
+    {"lattice_as_gmsh_rods",
+     cantilever + section("Geometry",
+                          "  set Generator = gmsh\n"
+                          "  set Mesh file = " +
+                            data + "square_lattice_2x2.msh\n"),
+     ".prm",
+     "",
+     1,
+     "use \"Generator = gmsh network\""},
+    {"output_without_directory",
+     cantilever,
+     ".prm",
+     "--output",
+     1,
+     "rodnet-run: --output needs a directory, e.g. --output my_run"},
+    {"output_is_a_file",
+     cantilever,
+     ".prm",
+     "--output " + data + "frame.net",
+     1,
+     "cannot create the output directory"},
+    {"scene_is_a_directory",
+     "",
+     "",
+     data,
+     1,
+     "this is a directory, not a scene file"},
+    {"missing_scene", "", "", "no_such_scene.prm", 1, "does not exist"},
+    {"unknown_option", "", "", "--frobnicate", 1, "unexpected argument"},
+    {"zero_director",
+     with("Geometry", "  set Director d1 = 0, 0, 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Director d1\": \"0, 0, 0\" has no direction"},
+    {"parallel_arc_axes",
+     with("Geometry",
+          "  set Generator = arc\n"
+          "  set Plane axis 1 = 1, 0, 0\n"
+          "  set Plane axis 2 = 2, 0, 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Plane axis 2\": \"2, 0, 0\" makes 0 deg with \"Plane "
+     "axis 1\" = \"1, 0, 0\"; the axes of the circle's plane must be "
+     "orthogonal"},
+    {"zero_ring_axis",
+     with("Geometry",
+          "  set Generator = ring\n"
+          "  set Plane axis 1 = 0, 0, 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Plane axis 1\": \"0, 0, 0\" has no direction"},
+    {"unknown_probe_kind",
+     with("Output", "  set Probes = a: angle end\n"),
+     ".prm",
+     "",
+     1,
+     "unknown probe kind \"angle\"; known: position <vertex> <x|y|z> [m], "
+     "reaction <vertex> <x|y|z> [N], energy [J], eigenvalue [mixed], "
+     "rotation <junction> <ax>,<ay>,<az> [rad], moment <junction> <x|y|z> "
+     "[N m]"},
+  };
+
+  class BadInputTable : public ::testing::TestWithParam<BadInput>
+  {
+  };
+
+  TEST_P(BadInputTable, RefusedWithOneClearLine)
+  {
+    const BadInput &b         = GetParam();
+    std::string     arguments = b.arguments;
+    if (!b.extension.empty())
+      {
+        const std::string path = "bad_input_" + b.name + b.extension;
+        std::ofstream(path) << b.scene;
+        arguments = path + " " +
+                    (b.arguments.empty() ? "--output out_bad_input_" + b.name :
+                                           b.arguments);
+      }
+    const rodnet::testing::DriverOutcome o = run_driver_with(arguments);
+    EXPECT_EQ(o.exit_code, b.exit_code) << o.output;
+    EXPECT_NE(o.output.find(b.fragment), std::string::npos)
+      << "message lacks \"" << b.fragment << "\":\n"
+      << o.output;
+    // One line of error, after the size lines ("rodnet: ...") of a scene
+    // refused once its model is built; a usage text follows errors of the
+    // arguments only.
+    const bool argument_error =
+      b.extension.empty() || b.arguments == "--output";
+    std::istringstream lines(o.output);
+    std::string        line;
+    unsigned int       n_lines = 0;
+    while (std::getline(lines, line))
+      n_lines += line.rfind("rodnet: ", 0) != 0;
+    if (!argument_error)
+      {
+        EXPECT_EQ(n_lines, 1u) << o.output;
+      }
+    for (const char *noise : {"Stacktrace", "An error occurred", "Aborting"})
+      EXPECT_EQ(o.output.find(noise), std::string::npos) << o.output;
+  }
+
+  INSTANTIATE_TEST_SUITE_P(Cases,
+                           BadInputTable,
+                           ::testing::ValuesIn(bad_inputs),
+                           [](const auto &info) { return info.param.name; });
+
+  TEST(BadInputTable, VtuFilesBeyondTheDisk)
+  {
+    // 10000 VTU files of 1e6 segments, at most 60 bytes per vertex each:
+    // up to 600 GB, refused before the model is built where the disk has
+    // less (the memory check must pass first: 4e6 DoFs, about 3.4 GB).
+    const double vtu_bytes = 10000 * (2000 + 60 * 1000001.0);
+    if (std::filesystem::space(".").available > vtu_bytes / 2)
+      GTEST_SKIP() << "the disk has room for the files";
+    std::ifstream meminfo("/proc/meminfo");
+    std::string   key;
+    double        available = 0;
+    while (meminfo >> key >> available && key != "MemAvailable:")
+      meminfo.ignore(100, '\n');
+    if (available * 1024 < 5e9)
+      GTEST_SKIP() << "too little memory for the scene to pass that check";
+    std::ofstream("bad_input_disk.prm")
+      << with("Geometry", "  set Segments = 1000000\n") +
+           section("Loads", "  set Steps = 9999\n") +
+           section("Output", "  set Write VTU = true\n");
+    const rodnet::testing::DriverOutcome o =
+      run_driver_with("bad_input_disk.prm --output out_bad_input_disk");
+    EXPECT_EQ(o.exit_code, 1) << o.output;
+    EXPECT_NE(o.output.find("entry \"Output/VTU interval\": the 10000 VTU "
+                            "files of the run would take up to 600 GB"),
+              std::string::npos)
+      << o.output;
+    EXPECT_EQ(o.output.find("building"), std::string::npos) << o.output;
+  }
+
+  TEST(BadInputTable, ByteOrderMarkIsSkipped)
+  {
+    // A UTF-8 byte-order mark, as some editors write, before a valid scene.
+    std::ofstream("bom.prm") << "\xEF\xBB\xBF" << cantilever;
+    const rodnet::testing::DriverOutcome o =
+      run_driver_with("bom.prm --output out_bom");
+    EXPECT_EQ(o.exit_code, 0) << o.output;
+    EXPECT_TRUE(std::filesystem::exists("out_bom/probes.csv"));
+  }
+} // namespace
