@@ -111,7 +111,8 @@ namespace rodnet
                                             "  set Plot = false\n"
                                             "end\n");
       const RunSummary run = run_scene(Scene(prm), "helical_spring", nullptr);
-      if (!run.failure.empty() || run.rows.size() != 1)
+      // Two rows: the unloaded state (step 0) and the one load step.
+      if (!run.failure.empty() || run.rows.size() != 2)
         throw std::runtime_error("helical spring: " + run.failure);
       return run.rows.back()[probe_column(run, "force")] / spring::displacement;
     }
