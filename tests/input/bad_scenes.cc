@@ -1,39 +1,16 @@
 // Bad input gives one clear error naming the entry and a non-zero exit of
 // rodnet-run, never a crash; a solver failure keeps every earlier output.
-#include <array>
+#include <common/run_driver.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <sys/wait.h>
 
 namespace
 {
-  struct Outcome
-  {
-    int         exit_code;
-    std::string output;
-  };
-
-  /// Writes @p scene to a file and runs rodnet-run on it.
-  Outcome
-  run_driver(const std::string &name, const std::string &scene)
-  {
-    const std::string path = name + ".prm";
-    std::ofstream(path) << scene;
-    const std::string command = std::string(RODNET_BINARY_DIR) +
-                                "/rodnet-run " + path + " --output out_" +
-                                name + " 2>&1";
-    FILE *pipe = popen(command.c_str(), "r");
-    EXPECT_NE(pipe, nullptr);
-    std::string           output;
-    std::array<char, 512> buffer;
-    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
-      output += buffer.data();
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-  }
+  using namespace rodnet::testing;
 
   const std::string material = "subsection Material\n"
                                "  subsection linear elastic\n"
@@ -44,20 +21,6 @@ namespace
                                "    set GJ = 1\n"
                                "  end\n"
                                "end\n";
-
-  /// Expects exit code 1 and a message that contains @p needle.
-  void
-  expect_input_error(const std::string &name,
-                     const std::string &scene,
-                     const std::string &needle)
-  {
-    const Outcome o = run_driver(name, scene);
-    EXPECT_EQ(o.exit_code, 1) << o.output;
-    EXPECT_NE(o.output.find(needle), std::string::npos)
-      << "message lacks \"" << needle << "\":\n"
-      << o.output;
-    EXPECT_EQ(o.output.find("Aborting"), std::string::npos) << o.output;
-  }
 
   TEST(BadScene, UnknownEntry)
   {

@@ -1,0 +1,68 @@
+#ifndef RODNET_TESTS_RUN_DRIVER_H
+#define RODNET_TESTS_RUN_DRIVER_H
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace rodnet::testing
+{
+  /// What a run of rodnet-run gave: its exit code and its output (stdout
+  /// and stderr together).
+  struct Outcome
+  {
+    int         exit_code;
+    std::string output;
+  };
+
+  /// Writes @p scene to @p name.prm and runs rodnet-run on it, with the
+  /// output directory out_@p name.
+  inline Outcome
+  run_driver(const std::string &name, const std::string &scene)
+  {
+    const std::string path = name + ".prm";
+    std::ofstream(path) << scene;
+    const std::string command = std::string(RODNET_BINARY_DIR) +
+                                "/rodnet-run " + path + " --output out_" +
+                                name + " 2>&1";
+    FILE *pipe = popen(command.c_str(), "r");
+    EXPECT_NE(pipe, nullptr);
+    std::string           output;
+    std::array<char, 512> buffer;
+    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
+      output += buffer.data();
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  }
+
+  /// Expects exit code 1 (bad input) and a message that contains every one
+  /// of @p needles, without deal.II's abort text.
+  inline void
+  expect_input_error_naming(const std::string              &name,
+                            const std::string              &scene,
+                            const std::vector<std::string> &needles)
+  {
+    const Outcome o = run_driver(name, scene);
+    EXPECT_EQ(o.exit_code, 1) << o.output;
+    for (const std::string &needle : needles)
+      EXPECT_NE(o.output.find(needle), std::string::npos)
+        << "message lacks \"" << needle << "\":\n"
+        << o.output;
+    EXPECT_EQ(o.output.find("Aborting"), std::string::npos) << o.output;
+  }
+
+  /// As expect_input_error_naming() with one needle.
+  inline void
+  expect_input_error(const std::string &name,
+                     const std::string &scene,
+                     const std::string &needle)
+  {
+    expect_input_error_naming(name, scene, {needle});
+  }
+} // namespace rodnet::testing
+
+#endif
