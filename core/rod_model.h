@@ -100,9 +100,9 @@ namespace rodnet
     void
     clamp_end(const std::string &name, unsigned int rod, bool at_start);
 
-    /// Turns the clamps called @p name (clamp_end()) rigidly about their
-    /// end vertex by @p angle (rad) about the unit @p axis at load factor
-    /// 1, ramped with the load factor.
+    /// Turns the clamp called @p name (clamp_end()), and every other clamp
+    /// of the same rod end, rigidly about its end vertex by @p angle (rad)
+    /// about the unit @p axis at load factor 1, ramped with the load factor.
     void
     rotate_clamp(const std::string &name, const Vector3 &axis, double angle);
 
@@ -344,13 +344,6 @@ namespace rodnet
     }
 
   private:
-    std::unique_ptr<RodNetwork>                     network_;
-    std::vector<std::shared_ptr<const RodMaterial>> materials;
-    std::vector<std::unique_ptr<HingeKernel>>       kernels;
-    std::vector<std::unique_ptr<JunctionKernel>>    junction_kernels;
-    std::unique_ptr<DofLayout>                      layout_;
-    std::unique_ptr<Configuration>                  configuration_;
-    std::vector<Support>                            support_list;
     /// A support's hold on a position DoF at load factor 1. Holds that
     /// yield (the position of a clamp's end or a junction) take the value
     /// of any other hold there, or zero.
@@ -362,7 +355,7 @@ namespace rodnet
       double       value;
       bool         yields;
     };
-    std::multimap<global_dof_index, Hold> holds;
+
     /// A clamp of a rod end and its rigid motion at load factor 1: the
     /// translation of its end vertex (from the holds there, set by
     /// finalize()) and a rotation about it.
@@ -376,24 +369,7 @@ namespace rodnet
       Vector3                     axis        = Vector3::UnitZ();
       double                      angle       = 0;
     };
-    std::vector<Clamp> clamps;
-    /// Per junction: whether its rotation is held (clamped, prescribed).
-    std::vector<bool> rotation_held;
-    /// Fixed DoF -> prescribed value at load factor 1 (finalize()).
-    std::map<global_dof_index, double> fixed_dofs;
-    dealii::AffineConstraints<double>  homogeneous_constraints;
-    /// Per DoF: fixed by a support (the same DoFs as the constraints).
-    std::vector<bool>                 fixed_dof_mask;
-    dealii::AffineConstraints<double> no_constraints;
-    DeadLoads                         loads;
-    struct AxisLoad
-    {
-      unsigned int junction;
-      Vector3      axis;
-      double       value; ///< moment (N m) or angle (rad) at load factor 1
-    };
-    std::vector<AxisLoad> moments;
-    std::vector<AxisLoad> prescribed_rotations;
+
     /// A support called @p name of the masked components of @p vertex,
     /// held at @p displacement (at load factor 1) or, if it @p yields, at
     /// the value of any other support there.
@@ -425,6 +401,32 @@ namespace rodnet
                        unsigned int v,
                        double       load_factor) const;
 
+    std::unique_ptr<RodNetwork>                     network_;
+    std::vector<std::shared_ptr<const RodMaterial>> materials;
+    std::vector<std::unique_ptr<HingeKernel>>       kernels;
+    std::vector<std::unique_ptr<JunctionKernel>>    junction_kernels;
+    std::unique_ptr<DofLayout>                      layout_;
+    std::unique_ptr<Configuration>                  configuration_;
+    std::vector<Support>                            support_list;
+    std::multimap<global_dof_index, Hold>           holds;
+    std::vector<Clamp>                              clamps;
+    /// Per junction: whether its rotation is held (clamped, prescribed).
+    std::vector<bool> rotation_held;
+    /// Fixed DoF -> prescribed value at load factor 1 (finalize()).
+    std::map<global_dof_index, double> fixed_dofs;
+    dealii::AffineConstraints<double>  homogeneous_constraints;
+    /// Per DoF: fixed by a support (the same DoFs as the constraints).
+    std::vector<bool>                 fixed_dof_mask;
+    dealii::AffineConstraints<double> no_constraints;
+    DeadLoads                         loads;
+    struct AxisLoad
+    {
+      unsigned int junction;
+      Vector3      axis;
+      double       value; ///< moment (N m) or angle (rad) at load factor 1
+    };
+    std::vector<AxisLoad>                     moments;
+    std::vector<AxisLoad>                     prescribed_rotations;
     VectorType                                f_ext;
     InternalVariables                         history;
     double                                    step_length = 0;

@@ -6,6 +6,7 @@
 #include <core/rod_model.h>
 #include <elements/junction_moment.h>
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -150,9 +151,16 @@ namespace rodnet
   {
     const std::string where = "rotation of clamp " + in_quotes(name);
     require_unit_axis(axis, where);
-    bool found = false;
-    for (Clamp &clamp : clamps)
+    // Every clamp of the same rod end turns with it.
+    std::vector<unsigned int> segments;
+    for (const Clamp &clamp : clamps)
       if (support_list[clamp.support].name == name)
+        segments.push_back(clamp.segment);
+    if (segments.empty())
+      throw std::invalid_argument(where + ": there is no such clamp");
+    for (Clamp &clamp : clamps)
+      if (std::find(segments.begin(), segments.end(), clamp.segment) !=
+          segments.end())
         {
           if (clamp.angle != 0 &&
               !same_rotation(clamp.axis, clamp.angle, axis, angle))
@@ -160,10 +168,7 @@ namespace rodnet
               where + ": the clamp is turned twice, by different rotations");
           clamp.axis  = axis;
           clamp.angle = angle;
-          found       = true;
         }
-    if (!found)
-      throw std::invalid_argument(where + ": there is no such clamp");
   }
 
   void
