@@ -48,7 +48,15 @@ namespace rodnet
       if (network.junctions()[j].has_rotation())
         rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
 
-    const auto &rods = network.rods();
+    // Handles inside a rod replace the hinge at their vertex.
+    const auto                    &rods = network.rods();
+    std::vector<std::vector<bool>> handle_inside(rods.size());
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      handle_inside[r].assign(rods[r].vertices.size(), false);
+    for (const Junction &junction : network.junctions())
+      if (junction.interior)
+        handle_inside[junction.interior->rod][junction.interior->index] = true;
+
     for (unsigned int r = 0; r < rods.size(); ++r)
       {
         const Rod         &rod = rods[r];
@@ -72,6 +80,8 @@ namespace rodnet
         const unsigned int last  = rod.closed ? n : n - 1;
         for (unsigned int i = first; i < last; ++i)
           {
+            if (handle_inside[r][i % n])
+              continue;
             const unsigned int prev_segment =
               (i + rod.segments.size() - 1) % rod.segments.size();
             HingeStencil h;
@@ -94,32 +104,58 @@ namespace rodnet
       }
 
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
-      if (has_rotation_dofs(j))
-        for (const RodEnd &end : network.junctions()[j].ends)
+      {
+        if (!has_rotation_dofs(j))
+          continue;
+        const Junction &junction = network.junctions()[j];
+        for (const RodEnd &end : junction.ends)
           {
-            const Rod         &rod = rods[end.rod];
-            const unsigned int n   = rod.vertices.size();
-            JunctionStencil    s;
-            s.rod         = end.rod;
-            s.junction    = j;
-            s.ghost_first = end.at_start;
-            s.vertices    = end.at_start ?
-                              std::array<unsigned int, 2>{
-                                {rod.vertices[0], rod.vertices[1]}} :
-                              std::array<unsigned int, 2>{
-                                {rod.vertices[n - 2], rod.vertices[n - 1]}};
-            s.segment =
-              end.at_start ? rod.segments.front() : rod.segments.back();
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                s.dofs[c]     = vertex_dofs[s.vertices[0]][c];
-                s.dofs[3 + c] = vertex_dofs[s.vertices[1]][c];
-              }
-            s.dofs[6] = twist_dofs[s.segment];
-            for (unsigned int c = 0; c < 4; ++c)
-              s.dofs[7 + c] = rotation_dof(j, c);
-            junction_list.push_back(s);
+            const Rod &rod = rods[end.rod];
+            add_junction_stencil(j,
+                                 end.rod,
+                                 rod,
+                                 end.at_start ? 0 : rod.segments.size() - 1,
+                                 end.at_start);
           }
+        // A handle inside a rod ties the segment before its vertex (the
+        // ghost follows it) and the one after (the ghost comes first).
+        if (junction.interior)
+          {
+            const auto [r, i]             = *junction.interior;
+            const unsigned int n_segments = rods[r].segments.size();
+            add_junction_stencil(j,
+                                 r,
+                                 rods[r],
+                                 (i + n_segments - 1) % n_segments,
+                                 false);
+            add_junction_stencil(j, r, rods[r], i % n_segments, true);
+          }
+      }
+  }
+
+  void
+  DofLayout::add_junction_stencil(const unsigned int junction,
+                                  const unsigned int rod_index,
+                                  const Rod         &rod,
+                                  const unsigned int segment,
+                                  const bool         ghost_first)
+  {
+    const unsigned int n = rod.vertices.size();
+    JunctionStencil    s;
+    s.rod         = rod_index;
+    s.junction    = junction;
+    s.ghost_first = ghost_first;
+    s.vertices    = {{rod.vertices[segment], rod.vertices[(segment + 1) % n]}};
+    s.segment     = rod.segments[segment];
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        s.dofs[c]     = vertex_dofs[s.vertices[0]][c];
+        s.dofs[3 + c] = vertex_dofs[s.vertices[1]][c];
+      }
+    s.dofs[6] = twist_dofs[s.segment];
+    for (unsigned int c = 0; c < 4; ++c)
+      s.dofs[7 + c] = rotation_dof(junction, c);
+    junction_list.push_back(s);
   }
 
   void

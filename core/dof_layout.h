@@ -68,6 +68,8 @@ namespace rodnet
    * position DoFs of the junction's vertex: vertex_dof() returns those for
    * every end, and the DoFs the DoFHandler gave the other ends are unused
    * (shared_copies() lists them with the DoF whose value they mirror).
+   * A rotation handle inside a rod has a junction element on each of the
+   * two segments that meet at its vertex and no hinge there.
    *
    * Quaternion DoFs store q - (1, 0, 0, 0), so that the zero vector is the
    * reference configuration.
@@ -158,6 +160,16 @@ namespace rodnet
       const dealii::AffineConstraints<double> &constraints) const;
 
   private:
+    /// Adds the junction element of junction @p junction on segment
+    /// @p segment (index along rod @p rod_index, which is @p rod), with
+    /// the ghost before (@p ghost_first) or after it.
+    void
+    add_junction_stencil(unsigned int junction,
+                         unsigned int rod_index,
+                         const Rod   &rod,
+                         unsigned int segment,
+                         bool         ghost_first);
+
     dealii::FESystem<1, 3>                       fe;
     dealii::DoFHandler<1, 3>                     handler;
     std::vector<std::array<global_dof_index, 3>> vertex_dofs;

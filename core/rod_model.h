@@ -17,6 +17,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ namespace rodnet
     std::vector<unsigned int> vertices;
     /// Fixed position components per vertex (same order as vertices).
     std::vector<std::array<bool, 3>> fixed;
+    /// A clamp of a rod end (RodModel::clamp_end()): the cell of the end
+    /// segment whose twist it holds; its end vertex is vertices[0].
+    std::optional<unsigned int> clamped_segment;
   };
 
   /**
@@ -73,20 +77,57 @@ namespace rodnet
              std::vector<std::shared_ptr<const RodMaterial>> materials,
              GhostSpin ghost_spin = GhostSpin::exact);
 
-    /// @name Supports (before finalize())
+    /**
+     * @name Supports (before finalize())
+     *
+     * A support holds DoFs at values that are ramped with the load factor.
+     * The same DoF may be held by several supports only at the same value:
+     * finalize() refuses two different values, naming both supports. A
+     * clamp (clamp_end(), a clamped junction, clamp_junction()) moves
+     * rigidly: the displacement that fix_components() prescribes at its
+     * end vertex translates it, a prescribed rotation turns it about that
+     * vertex (doc/junctions.md, "Supports").
+     */
     /// @{
-    /// Clamp by fixing the first (or last) two vertices and the end twist
-    /// (Korner et al. section 5a).
+    /**
+     * Clamps the first (or last) end of rod @p rod by holding its end
+     * segment: both its vertices and its twist (Korner et al. section 5a).
+     * The clamp moves rigidly with its end vertex (see above and
+     * rotate_clamp()). A rod of a single segment is refused: the clamp
+     * would hold it whole, and every load on it would vanish into the
+     * support.
+     */
     void
     clamp_end(const std::string &name, unsigned int rod, bool at_start);
 
+    /// Turns the clamp called @p name (clamp_end()), and every other clamp
+    /// of the same rod end, rigidly about its end vertex by @p angle (rad)
+    /// about the unit @p axis at load factor 1, ramped with the load factor.
+    void
+    rotate_clamp(const std::string &name, const Vector3 &axis, double angle);
+
+    /**
+     * Holds junction @p junction as a clamped junction: its position
+     * (moved by fix_components() at its vertex) and its rotation (the
+     * identity, or prescribe_rotation()); a support called @p name. A
+     * pinned junction has no rotation of its own and is refused.
+     */
+    void
+    clamp_junction(const std::string &name, unsigned int junction);
+
     /// Fixes the masked position components of @p vertex; their value
     /// moves with the load factor to @p displacement (at load factor 1).
+    /// At the end vertex of a clamp or the vertex of a junction that holds
+    /// its position this moves the clamp or junction.
     void
     fix_components(const std::string         &name,
                    unsigned int               vertex,
                    const std::array<bool, 3> &mask,
                    const Vector3             &displacement = Vector3::Zero());
+
+    /// The clamp (clamp_end()) whose end vertex is @p vertex, or null.
+    const Support *
+    clamp_at(unsigned int vertex) const;
     /// @}
 
     /// @name Dead loads at load factor 1 (before finalize())
@@ -102,14 +143,21 @@ namespace rodnet
     /**
      * Moment @p moment about the fixed unit @p axis at junction
      * @p junction (Lestringant & Kochmann appendix C): the load potential
-     * -lambda M theta_u(q). The junction must have a free rotation.
+     * -lambda M theta_u(q). The junction must have a free rotation:
+     * finalize() refuses one whose rotation is held. A moment at a rod end
+     * or inside a rod acts on a rotation handle there
+     * (RodNetwork::add_rotation_handle()).
      */
     void
     add_moment(unsigned int junction, const Vector3 &axis, double moment);
 
     /**
-     * Turns clamped junction @p junction about the unit @p axis by
-     * @p angle (rad) at load factor 1, ramped with the load factor.
+     * Turns junction @p junction about the unit @p axis by @p angle (rad)
+     * at load factor 1, ramped with the load factor, and holds its
+     * rotation there. The junction must carry a rotation; its position
+     * stays as its kind says (free for a welded junction, e.g. a rotation
+     * handle at a free rod end). Prescribing a junction twice is refused
+     * unless both rotations are the same.
      */
     void
     prescribe_rotation(unsigned int   junction,
@@ -160,6 +208,18 @@ namespace rodnet
     /// Reaction force of support @p s at the converged @p u.
     Vector3
     reaction(const Support &s, const VectorType &u, double load_factor) const;
+
+    /**
+     * Reaction moment of support @p s at the converged @p u about its
+     * first vertex (a clamp's end vertex): the moment of the reaction
+     * forces, and for a clamp the torque conjugate to its twist,
+     * M = sum_k (x_k - x_0) x F_k + r_phi t, the moment conjugate to a
+     * rigid rotation of the support.
+     */
+    Vector3
+    reaction_moment(const Support    &s,
+                    const VectorType &u,
+                    double            load_factor) const;
 
     /**
      * Moment vector that junction @p junction's rotation DoFs transmit at
@@ -284,6 +344,63 @@ namespace rodnet
     }
 
   private:
+    /// A support's hold on a position DoF at load factor 1. Holds that
+    /// yield (the position of a clamp's end or a junction) take the value
+    /// of any other hold there, or zero.
+    struct Hold
+    {
+      unsigned int support;
+      unsigned int vertex;
+      unsigned int component;
+      double       value;
+      bool         yields;
+    };
+
+    /// A clamp of a rod end and its rigid motion at load factor 1: the
+    /// translation of its end vertex (from the holds there, set by
+    /// finalize()) and a rotation about it.
+    struct Clamp
+    {
+      unsigned int                support;
+      std::array<unsigned int, 2> vertices; ///< end vertex, inner vertex
+      unsigned int                segment;  ///< cell
+      Quaternion                  undeformed_frame;
+      Vector3                     translation = Vector3::Zero();
+      Vector3                     axis        = Vector3::UnitZ();
+      double                      angle       = 0;
+    };
+
+    /// A support called @p name of the masked components of @p vertex,
+    /// held at @p displacement (at load factor 1) or, if it @p yields, at
+    /// the value of any other support there.
+    void
+    add_position_support(const std::string         &name,
+                         unsigned int               vertex,
+                         const std::array<bool, 3> &mask,
+                         const Vector3             &displacement,
+                         bool                       yields);
+
+    /// Resolves the holds, clamps and held rotations into fixed_dofs;
+    /// throws naming the supports that hold a DoF at different values and
+    /// moments on held rotations.
+    void
+    resolve_supports();
+
+    /// Position holds and clamps into fixed_dofs (see resolve_supports()).
+    void
+    resolve_position_holds();
+
+    /// The force that support @p s exerts at its @p k-th vertex, from the
+    /// unconstrained residual @p r.
+    Vector3
+    support_force(const Support &s, unsigned int k, const VectorType &r) const;
+
+    /// The displacement of vertex @p v of clamp @p c at @p load_factor.
+    Vector3
+    clamp_displacement(const Clamp &c,
+                       unsigned int v,
+                       double       load_factor) const;
+
     std::unique_ptr<RodNetwork>                     network_;
     std::vector<std::shared_ptr<const RodMaterial>> materials;
     std::vector<std::unique_ptr<HingeKernel>>       kernels;
@@ -291,7 +408,11 @@ namespace rodnet
     std::unique_ptr<DofLayout>                      layout_;
     std::unique_ptr<Configuration>                  configuration_;
     std::vector<Support>                            support_list;
-    /// Fixed DoF -> prescribed value at load factor 1.
+    std::multimap<global_dof_index, Hold>           holds;
+    std::vector<Clamp>                              clamps;
+    /// Per junction: whether its rotation is held (clamped, prescribed).
+    std::vector<bool> rotation_held;
+    /// Fixed DoF -> prescribed value at load factor 1 (finalize()).
     std::map<global_dof_index, double> fixed_dofs;
     dealii::AffineConstraints<double>  homogeneous_constraints;
     /// Per DoF: fixed by a support (the same DoFs as the constraints).

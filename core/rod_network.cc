@@ -258,6 +258,69 @@ namespace rodnet
     throw std::invalid_argument("there is no junction \"" + name + "\"");
   }
 
+  namespace
+  {
+    /// The rod and position along it of vertex @p v (every vertex belongs
+    /// to one rod; rods number their vertices consecutively).
+    RodVertex
+    locate(const std::vector<Rod> &rods, const unsigned int v)
+    {
+      for (unsigned int r = 0; r < rods.size(); ++r)
+        if (v >= rods[r].vertices.front() && v <= rods[r].vertices.back())
+          return {r, v - rods[r].vertices.front()};
+      throw std::invalid_argument("vertex " + std::to_string(v) +
+                                  " does not exist");
+    }
+  } // namespace
+
+  std::string
+  RodNetwork::describe_vertex(const unsigned int v) const
+  {
+    const RodVertex where = locate(rod_list, v);
+    return "vertex " + std::to_string(where.index) + " of rod " +
+           std::to_string(where.rod);
+  }
+
+  std::optional<unsigned int>
+  RodNetwork::junction_at(const unsigned int v) const
+  {
+    for (unsigned int j = 0; j < junction_list.size(); ++j)
+      {
+        if (junction_list[j].vertex == v)
+          return j;
+        for (const RodEnd &end : junction_list[j].ends)
+          if (end_vertex(end) == v)
+            return j;
+      }
+    return std::nullopt;
+  }
+
+  unsigned int
+  RodNetwork::add_rotation_handle(const std::string &name, const unsigned int v)
+  {
+    const RodVertex where = locate(rod_list, v);
+    if (const auto j = junction_at(v))
+      throw std::invalid_argument(
+        "rotation handle \"" + name + "\": " + describe_vertex(v) +
+        " is already in junction \"" + junction_list[*j].name + "\"");
+    const Rod &rod      = rod_list[where.rod];
+    const bool at_start = where.index == 0;
+    if (!rod.closed && (at_start || v == rod.vertices.back()))
+      return add_junction(name, JunctionKind::welded, {{where.rod, at_start}});
+    for (const Junction &j : junction_list)
+      if (j.name == name)
+        throw std::invalid_argument("rotation handle \"" + name +
+                                    "\": the name is used twice");
+    name_vertex(name, v);
+    Junction handle;
+    handle.name     = name;
+    handle.kind     = JunctionKind::welded;
+    handle.interior = where;
+    handle.vertex   = v;
+    junction_list.push_back(handle);
+    return junction_list.size() - 1;
+  }
+
   void
   RodNetwork::create_triangulation()
   {

@@ -6,6 +6,7 @@
 #include <elements/quaternion.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,12 +94,27 @@ namespace rodnet
     bool         at_start;
   };
 
-  /// Rod ends tied at one point.
+  /// A vertex of a rod by its position along the rod.
+  struct RodVertex
+  {
+    unsigned int rod;
+    unsigned int index; ///< into Rod::vertices
+  };
+
+  /**
+   * Rod ends tied at one point, or a rotation handle inside a rod: a
+   * junction whose rotation is welded to the two segments that meet at an
+   * interior vertex (add_rotation_handle()), which then have no hinge
+   * between them.
+   */
   struct Junction
   {
-    std::string         name;
-    JunctionKind        kind;
+    std::string  name;
+    JunctionKind kind;
+    /// Rod ends tied here; empty for a handle inside a rod.
     std::vector<RodEnd> ends;
+    /// The interior vertex of a handle inside a rod.
+    std::optional<RodVertex> interior;
     /// Triangulation vertex of the first end: the other ends' vertices
     /// share its position DoFs.
     unsigned int vertex;
@@ -167,6 +183,27 @@ namespace rodnet
     /// Index of the junction called @p name; throws naming it if unknown.
     unsigned int
     junction_index(const std::string &name) const;
+
+    /**
+     * A welded junction called @p name at vertex @p v that only gives it a
+     * rotation, where a moment or a prescribed rotation can act (Lestringant
+     * & Kochmann appendix C) without a stub beam: at a free rod end a
+     * junction of that end, at an interior vertex (or any vertex of a
+     * closed rod) a junction welded to both segments that meet there, which
+     * replaces the hinge between them. Throws naming the vertex where it is
+     * already part of a junction. Returns the junction's index.
+     */
+    unsigned int
+    add_rotation_handle(const std::string &name, unsigned int v);
+
+    /// The junction that vertex @p v belongs to (as a rod end or as the
+    /// vertex of a handle inside a rod), if any.
+    std::optional<unsigned int>
+    junction_at(unsigned int v) const;
+
+    /// Where vertex @p v lies, for messages: "vertex 3 of rod 1".
+    std::string
+    describe_vertex(unsigned int v) const;
 
     /// Gives vertex @p v the name @p name (junctions name their vertex);
     /// scenes refer to it as "@name". Throws if the name is taken.

@@ -134,21 +134,24 @@ namespace rodnet
               throw std::invalid_argument(
                 context + ": expected \"" + kind + " <junction> " +
                 (kind == "rotation" ? "<ax>,<ay>,<az>" : "<x|y|z>") + "\"");
-            try
-              {
-                probe.junction = model.network().junction_index(vertex);
-              }
-            catch (const std::invalid_argument &e)
-              {
-                throw std::invalid_argument(context + ": " + e.what());
-              }
+            const RotationTarget target =
+              select_rotation_target(model.network(), vertex, context);
             if constexpr (std::is_same_v<Model, RodModel>)
               {
-                if (!model.layout().has_rotation_dofs(probe.junction))
+                // A clamp of a rod end has a reaction moment, no junction.
+                const Support *clamp = model.clamp_at(target.vertex);
+                if (kind == "moment" && clamp != nullptr)
+                  probe.support = clamp->name;
+                else if (!target.junction)
+                  throw std::invalid_argument(
+                    context + ": \"" + vertex + "\" is no junction" +
+                    (kind == "moment" ? " or clamped end" : ""));
+                else if (!model.layout().has_rotation_dofs(*target.junction))
                   throw std::invalid_argument(context + ": junction \"" +
                                               vertex +
                                               "\" is pinned and has no "
                                               "rotation");
+                probe.junction = target.junction.value_or(0);
               }
             else
               throw std::invalid_argument(
@@ -274,7 +277,11 @@ namespace rodnet
             }
           case Probe::Kind::moment:
             values.push_back(
-              model.reaction_moment(p.junction, u, load_factor)[p.component]);
+              (p.support.empty() ?
+                 model.reaction_moment(p.junction, u, load_factor) :
+                 model.reaction_moment(model.support(p.support),
+                                       u,
+                                       load_factor))[p.component]);
             break;
         }
     return values;

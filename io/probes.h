@@ -26,8 +26,9 @@ namespace rodnet
     Kind         kind;
     unsigned int vertex    = 0;
     unsigned int component = 0;
-    std::string  support;      ///< for reactions: the support's name
-    unsigned int junction = 0; ///< for rotations and moments
+    /// For reactions, and moments of a clamped rod end: the support's name.
+    std::string  support;
+    unsigned int junction = 0; ///< for rotations and moments of junctions
     Vector3      axis     = Vector3::UnitZ(); ///< for rotations
   };
 
@@ -60,8 +61,9 @@ namespace rodnet
    * holding that vertex), `energy`, `eigenvalue`, `rotation <junction>
    * <ax>,<ay>,<az>` (angle of the junction's rotation about the axis, rad,
    * in (-2 pi, 2 pi]; see unwrap_rotations()) and `moment <junction>
-   * <x|y|z>` (reaction moment, N m). Vertices as in
-   * select_vertex(), junctions by name. @p model is a RodModel or a
+   * <x|y|z>` (reaction moment, N m; also of a clamped rod end, about its
+   * end vertex). Vertices as in select_vertex(), junctions by name or as a
+   * vertex of theirs (select_rotation_target()). @p model is a RodModel or a
    * DrModel (which has no rotations, moments or eigenvalue). Throws
    * std::invalid_argument naming @p entry and the offending probe.
    */

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -585,9 +586,12 @@ namespace rodnet
       prm.declare_entry("Clamped ends",
                         "",
                         Anything(),
-                        "Rod ends clamped by fixing their two last vertices "
-                        "and end twist (Korner et al. 5a), e.g. \"start\" or "
-                        "\"0:start, 1:end\". [-]");
+                        "Rod ends clamped by holding their end segment (two "
+                        "vertices and the twist; Korner et al. 5a), e.g. "
+                        "\"start\" or \"0:start, 1:end\", or \"@name\" of a "
+                        "free network end or of a junction (held whole). A "
+                        "clamp moves rigidly with the prescribed "
+                        "displacement and rotation of its end vertex. [-]");
       prm.declare_entry(
         "Pinned vertices",
         "",
@@ -604,9 +608,10 @@ namespace rodnet
         "Prescribed rotations",
         "",
         Anything(),
-        "Rotations of clamped junctions reached at load factor 1 and ramped "
-        "with it: \"<junction>: <ax>,<ay>,<az> <angle>; ...\" (angle in "
-        "degrees about the axis). [deg]");
+        "Rotations reached at load factor 1 and ramped with it: \"<where>: "
+        "<ax>,<ay>,<az> <angle>; ...\" (angle in degrees about the axis), "
+        "where is a clamped end (turned about its end vertex), a junction "
+        "or any vertex (a rotation handle there, its position free). [deg]");
       prm.declare_entry("Prescribed displacements",
                         "",
                         Anything(),
@@ -631,9 +636,10 @@ namespace rodnet
       prm.declare_entry("Moments",
                         "",
                         Anything(),
-                        "Moments about fixed axes at junctions with a free "
-                        "rotation, at load factor 1: \"<junction>: "
-                        "<ax>,<ay>,<az> <M>; ...\". [N m]");
+                        "Moments about fixed axes at load factor 1: "
+                        "\"<where>: <ax>,<ay>,<az> <M>; ...\", where is a "
+                        "junction with a free rotation or any vertex that no "
+                        "clamp holds (a rotation handle there). [N m]");
       prm.declare_entry("Distributed force",
                         "0, 0, 0",
                         vector_pattern,
@@ -1289,6 +1295,7 @@ namespace rodnet
   Scene::build_model() const
   {
     auto [network, materials] = build_network();
+    add_rotation_handles(*network);
     auto model =
       std::make_unique<RodModel>(std::move(network), materials, ghost_spin);
     apply_supports_and_loads(*model);
@@ -1328,6 +1335,32 @@ namespace rodnet
       }
   }
 
+  void
+  Scene::add_rotation_handles(RodNetwork &network) const
+  {
+    // Clamped rod ends turn with their clamp and take no moment.
+    std::set<unsigned int> clamped;
+    for (const std::string &end :
+         dealii::Utilities::split_string_list(clamped_ends, ','))
+      {
+        const auto target =
+          select_rod_end(network, end, "Supports/Clamped ends");
+        if (const auto *rod_end = std::get_if<RodEnd>(&target))
+          clamped.insert(network.end_vertex(*rod_end));
+      }
+    for (const auto &[entry, text] :
+         {std::make_pair("Supports/Prescribed rotations", prescribed_rotations),
+          std::make_pair("Loads/Moments", moments)})
+      for (const auto &[name, value] : split_items(text, entry))
+        {
+          const RotationTarget target =
+            select_rotation_target(network, name, entry);
+          if (!target.junction && clamped.count(target.vertex) == 0)
+            network.add_rotation_handle(name[0] == '@' ? name.substr(1) : name,
+                                        target.vertex);
+        }
+  }
+
   DrScene
   Scene::build_dr_model() const
   {
@@ -1363,61 +1396,95 @@ namespace rodnet
 
   template <class Model>
   void
+  Scene::apply_clamps(Model &model) const
+  {
+    const RodNetwork &net = model.network();
+    for (const std::string &end :
+         dealii::Utilities::split_string_list(clamped_ends, ','))
+      {
+        const std::string entry  = "Supports/Clamped ends";
+        const std::string name   = "Clamped ends: " + end;
+        const auto        target = select_rod_end(net, end, entry);
+        if (const auto *rod_end = std::get_if<RodEnd>(&target))
+          model.clamp_end(name, rod_end->rod, rod_end->at_start);
+        else
+          {
+            const Junction &j = net.junctions()[std::get<unsigned int>(target)];
+            if (!j.has_rotation())
+              throw std::invalid_argument(
+                "entry \"" + entry + "\": \"" + end +
+                "\" is the pinned junction \"" + j.name +
+                "\", where each rod end turns on its own; clamp the ends "
+                "one by one (<rod>:start or <rod>:end)");
+            // A DrModel junction is one node, held by clamping any end.
+            if constexpr (std::is_same_v<Model, RodModel>)
+              model.clamp_junction(name, std::get<unsigned int>(target));
+            else
+              model.clamp_end(name,
+                              j.ends.front().rod,
+                              j.ends.front().at_start);
+          }
+      }
+  }
+
+  void
+  Scene::apply_rotational_loads(RodModel &model) const
+  {
+    const RodNetwork &net       = model.network();
+    const std::string rotations = "Supports/Prescribed rotations";
+    for (const auto &[name, value] :
+         split_items(prescribed_rotations, rotations))
+      {
+        const auto [axis, degrees] = parse_axis_value(value, rotations);
+        const RotationTarget target =
+          select_rotation_target(net, name, rotations);
+        if (const Support *clamp = model.clamp_at(target.vertex))
+          model.rotate_clamp(clamp->name, axis, degrees * M_PI / 180);
+        else
+          model.prescribe_rotation(target.junction.value(),
+                                   axis,
+                                   degrees * M_PI / 180);
+      }
+    for (const auto &[name, value] : split_items(moments, "Loads/Moments"))
+      {
+        const auto [axis, moment] = parse_axis_value(value, "Loads/Moments");
+        const RotationTarget target =
+          select_rotation_target(net, name, "Loads/Moments");
+        if (const Support *clamp = model.clamp_at(target.vertex))
+          throw std::invalid_argument(
+            "entry \"Loads/Moments\": \"" + name +
+            "\" is held by the clamp \"" + clamp->name +
+            "\", which would take up the whole moment; load a free "
+            "vertex, or prescribe a rotation of the clamp instead");
+        model.add_moment(target.junction.value(), axis, moment);
+      }
+  }
+
+  template <class Model>
+  void
   Scene::apply_supports_and_loads(Model &model) const
   {
     const RodNetwork  &net    = model.network();
     const unsigned int n_rods = net.rods().size();
 
-    const auto junction = [&net](const std::string &name,
-                                 const std::string &entry) {
-      try
-        {
-          return net.junction_index(name);
-        }
-      catch (const std::invalid_argument &e)
-        {
-          throw std::invalid_argument("entry \"" + entry + "\": " + e.what());
-        }
-    };
+    // Clamps first: prescribed rotations and moments look them up.
+    apply_clamps(model);
     if constexpr (std::is_same_v<Model, RodModel>)
-      {
-        for (const auto &[name, value] :
-             split_items(prescribed_rotations, "Supports/Prescribed rotations"))
-          {
-            const std::string entry    = "Supports/Prescribed rotations";
-            const auto [axis, degrees] = parse_axis_value(value, entry);
-            model.prescribe_rotation(junction(name, entry),
-                                     axis,
-                                     degrees * M_PI / 180);
-          }
-        for (const auto &[name, value] : split_items(moments, "Loads/Moments"))
-          {
-            const auto [axis, moment] =
-              parse_axis_value(value, "Loads/Moments");
-            model.add_moment(junction(name, "Loads/Moments"), axis, moment);
-          }
-      }
+      apply_rotational_loads(model);
     else if (!split_items(prescribed_rotations, "Supports/Prescribed rotations")
                 .empty() ||
              !split_items(moments, "Loads/Moments").empty())
       throw std::invalid_argument(
         "Supports/Prescribed rotations and Loads/Moments act on junction "
         "quaternions, which the dynamic relaxation element does not have");
-    for (const std::string &end :
-         dealii::Utilities::split_string_list(clamped_ends, ','))
-      {
-        const auto [rod, at_start] =
-          select_rod_end(net, end, "Supports/Clamped ends");
-        model.clamp_end(end, rod, at_start);
-      }
     for (const std::string &v :
          dealii::Utilities::split_string_list(pinned_vertices, ','))
-      model.fix_components(v,
+      model.fix_components("Pinned vertices: " + v,
                            select_vertex(net, v, "Supports/Pinned vertices"),
                            {{true, true, true}});
     for (const auto &[v, components] :
          split_items(fixed_components, "Supports/Fixed components"))
-      model.fix_components(v,
+      model.fix_components("Fixed components: " + v + ": " + components,
                            select_vertex(net, v, "Supports/Fixed components"),
                            parse_mask(components, "Supports/Fixed components"));
     for (const auto &[v, values] :
@@ -1450,7 +1517,10 @@ namespace rodnet
                                             "y=<value> or z=<value>");
               }
           }
-        model.fix_components(v, select_vertex(net, v, entry), mask, d);
+        model.fix_components("Prescribed displacements: " + v + ": " + values,
+                             select_vertex(net, v, entry),
+                             mask,
+                             d);
       }
 
     for (const auto &[v, value] :

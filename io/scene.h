@@ -184,6 +184,19 @@ namespace rodnet
     /// "Clamp at first segment midpoint").
     void
     check_midpoint_clamps(const RodModel &model) const;
+    /// Rotation handles (RodNetwork::add_rotation_handle()) at the free
+    /// vertices that moments and prescribed rotations name.
+    void
+    add_rotation_handles(RodNetwork &network) const;
+
+    /// The clamped ends of the scene, onto a RodModel or a DrModel.
+    template <class Model>
+    void
+    apply_clamps(Model &model) const;
+
+    /// Prescribed rotations and moments (after apply_clamps()).
+    void
+    apply_rotational_loads(RodModel &model) const;
 
     /// Supports and loads of the scene, onto a RodModel or a DrModel.
     template <class Model>

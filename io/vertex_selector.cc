@@ -84,19 +84,49 @@ namespace rodnet
     throw std::invalid_argument(
       "entry \"" + entry + "\": \"" + text +
       "\" names no vertex; use [rod:]start, end, mid or an index in [" +
-      std::to_string(-n) + ", " + std::to_string(n - 1) + "]");
+      std::to_string(-n) + ", " + std::to_string(n - 1) +
+      "], or @<name> of a named vertex");
   }
 
-  std::pair<unsigned int, bool>
+  std::variant<RodEnd, unsigned int>
   select_rod_end(const RodNetwork  &network,
                  const std::string &text,
                  const std::string &entry)
   {
+    const std::string trimmed = dealii::Utilities::trim(text);
+    if (!trimmed.empty() && trimmed[0] == '@')
+      {
+        const unsigned int v = select_vertex(network, trimmed, entry);
+        if (const auto junction = network.junction_at(v))
+          return *junction;
+        const auto &rods = network.rods();
+        for (unsigned int r = 0; r < rods.size(); ++r)
+          if (!rods[r].closed &&
+              (v == rods[r].vertices.front() || v == rods[r].vertices.back()))
+            return RodEnd{r, v == rods[r].vertices.front()};
+        throw std::invalid_argument("entry \"" + entry + "\": \"" + text +
+                                    "\" is " + network.describe_vertex(v) +
+                                    ", neither a rod end nor a junction");
+      }
     const auto [rod, where] = split_rod(network, text, entry);
     if (where != "start" && where != "end")
       throw std::invalid_argument("entry \"" + entry + "\": \"" + text +
-                                  "\" names no rod end; use [rod:]start or "
-                                  "[rod:]end");
-    return {rod, where == "start"};
+                                  "\" names no rod end; use [rod:]start, "
+                                  "[rod:]end or @<name> of a rod end or "
+                                  "junction");
+    return RodEnd{rod, where == "start"};
+  }
+
+  RotationTarget
+  select_rotation_target(const RodNetwork  &network,
+                         const std::string &text,
+                         const std::string &entry)
+  {
+    const std::string name = dealii::Utilities::trim(text);
+    for (unsigned int j = 0; j < network.junctions().size(); ++j)
+      if (network.junctions()[j].name == name)
+        return {network.junctions()[j].vertex, j};
+    const unsigned int v = select_vertex(network, text, entry);
+    return {v, network.junction_at(v)};
   }
 } // namespace rodnet

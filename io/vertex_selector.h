@@ -3,7 +3,9 @@
 
 #include <core/rod_network.h>
 
+#include <optional>
 #include <string>
+#include <variant>
 
 namespace rodnet
 {
@@ -20,12 +22,33 @@ namespace rodnet
                 const std::string &text,
                 const std::string &entry);
 
-  /// As select_vertex(), returning the rod index and whether @p text names
-  /// its start (true) or end (false); anything else throws.
-  std::pair<unsigned int, bool>
+  /**
+   * Resolves a rod end named in a scene: `[rod:]start` or `[rod:]end`, or
+   * `@name` of a vertex that is a free rod end (a network node where one
+   * beam ends) or that belongs to a junction. Returns the rod end, or the
+   * junction's index; throws std::invalid_argument naming @p entry and the
+   * text for anything else.
+   */
+  std::variant<RodEnd, unsigned int>
   select_rod_end(const RodNetwork  &network,
                  const std::string &text,
                  const std::string &entry);
+
+  /// Where a moment or a prescribed rotation named in a scene acts.
+  struct RotationTarget
+  {
+    /// The vertex (a junction's own vertex for a junction name).
+    unsigned int vertex;
+    /// The junction named, or the one the vertex belongs to.
+    std::optional<unsigned int> junction;
+  };
+
+  /// Resolves @p text, a junction name or a vertex as select_vertex()
+  /// takes it, to a RotationTarget; throws as select_vertex().
+  RotationTarget
+  select_rotation_target(const RodNetwork  &network,
+                         const std::string &text,
+                         const std::string &entry);
 } // namespace rodnet
 
 #endif

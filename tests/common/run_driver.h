@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace rodnet::testing
 {
@@ -53,6 +54,30 @@ namespace rodnet::testing
     const std::string path = name + ".prm";
     std::ofstream(path) << scene;
     return run_driver_with(path + " --output out_" + name);
+  }
+  /// Expects exit code 1 (bad input) and a message that contains every one
+  /// of @p needles, without deal.II's abort text.
+  inline void
+  expect_input_error_naming(const std::string              &name,
+                            const std::string              &scene,
+                            const std::vector<std::string> &needles)
+  {
+    const DriverOutcome o = run_driver(name, scene);
+    EXPECT_EQ(o.exit_code, 1) << o.output;
+    for (const std::string &needle : needles)
+      EXPECT_NE(o.output.find(needle), std::string::npos)
+        << "message lacks \"" << needle << "\":\n"
+        << o.output;
+    EXPECT_EQ(o.output.find("Aborting"), std::string::npos) << o.output;
+  }
+
+  /// As expect_input_error_naming() with one needle.
+  inline void
+  expect_input_error(const std::string &name,
+                     const std::string &scene,
+                     const std::string &needle)
+  {
+    expect_input_error_naming(name, scene, {needle});
   }
 } // namespace rodnet::testing
 

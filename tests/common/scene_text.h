@@ -39,6 +39,38 @@ namespace rodnet::testing
     return text.str();
   }
 
+  /// The same with the axial rigidity @p EA as scene text (bad-input tests
+  /// pass values such as "nan") and unit bending and torsional rigidities.
+  inline std::string
+  direct_material(const std::string &EA = "1e4")
+  {
+    return "subsection Material\n"
+           "  subsection linear elastic\n"
+           "    set Stiffness input = direct\n"
+           "    set EA = " +
+           EA +
+           "\n"
+           "    set EI1 = 1\n"
+           "    set EI2 = 1\n"
+           "    set GJ = 1\n"
+           "  end\n"
+           "end\n";
+  }
+
+  /// The subsection Output of a scene that writes probes.csv alone, with
+  /// the probes @p probes.
+  inline std::string
+  probes_only(const std::string &probes)
+  {
+    return "subsection Output\n"
+           "  set Write VTU = false\n"
+           "  set Plot = false\n"
+           "  set Probes = " +
+           probes +
+           "\n"
+           "end\n";
+  }
+
   /// Writes the open chain @p points as an ASCII Gmsh 2.2 line mesh of one
   /// physical line to @p path; returns @p path.
   inline std::string

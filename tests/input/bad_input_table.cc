@@ -3,7 +3,7 @@
 // line that says what is wrong, where, and what to do. None may reach the
 // solver, print deal.II's assertion text or a stack trace.
 #include <common/run_driver.h>
-#include <common/scene_pieces.h>
+#include <common/scene_text.h>
 
 #include <algorithm>
 #include <filesystem>

@@ -1,35 +1,20 @@
 // Bad input gives one clear error naming the entry and a non-zero exit of
 // rodnet-run, never a crash; a solver failure keeps every earlier output.
 #include <common/run_driver.h>
-#include <common/scene_pieces.h>
+#include <common/scene_text.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <sys/wait.h>
 
 namespace
 {
   using Outcome = rodnet::testing::DriverOutcome;
-  using rodnet::testing::run_driver;
+  using namespace rodnet::testing;
 
-  const std::string material = rodnet::testing::direct_material();
-
-  /// Expects exit code 1 and a message that contains @p needle.
-  void
-  expect_input_error(const std::string &name,
-                     const std::string &scene,
-                     const std::string &needle)
-  {
-    const Outcome o = run_driver(name, scene);
-    EXPECT_EQ(o.exit_code, 1) << o.output;
-    EXPECT_NE(o.output.find(needle), std::string::npos)
-      << "message lacks \"" << needle << "\":\n"
-      << o.output;
-    EXPECT_EQ(o.output.find("Aborting"), std::string::npos) << o.output;
-  }
+  const std::string material = direct_material();
 
   TEST(BadScene, UnknownEntry)
   {

@@ -3,7 +3,7 @@
 // complete and exit code 128 + signal, and "outputs in DIR: ..." lists the
 // files written and no others.
 #include <common/run_driver.h>
-#include <common/scene_pieces.h>
+#include <common/scene_text.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,7 +1,7 @@
 // Bad junction input gives one clear std::invalid_argument naming the
 // junction: ends that do not meet, a pinned junction of one rod, a non-unit
-// prescribed quaternion or axis, a moment on a clamp, a zero-length segment
-// at a junction.
+// prescribed quaternion or axis, a prescribed rotation of a pinned junction,
+// a moment on a clamp, a zero-length segment at a junction.
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
@@ -105,7 +105,7 @@ namespace
     auto network = two_rods(0);
     network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
     network->add_junction("knee",
-                          JunctionKind::welded,
+                          JunctionKind::pinned,
                           {{0, false}, {1, true}});
     RodModel model(
       std::move(network),
@@ -116,7 +116,7 @@ namespace
     expect_error([&] { model.prescribe_rotation(0, Vector3(0, 0, 2), 1.0); },
                  {"\"clamp\"", "unit vector"});
     expect_error([&] { model.prescribe_rotation(1, Vector3::UnitZ(), 1.0); },
-                 {"\"knee\"", "only clamped"});
+                 {"\"knee\"", "pinned junction has no rotation"});
     expect_error([&] { model.add_moment(0, Vector3::UnitZ(), 1.0); },
                  {"\"clamp\"", "no free rotation"});
     // A unit quaternion is accepted.

@@ -1,8 +1,11 @@
 // The same rod read three ways gives the same result: built by the
-// straight generator, read from a Gmsh line mesh, and from a .json scene.
+// straight generator, read from a Gmsh line mesh, and from a .json scene;
+// and the same supports named two ways: by a node's name and by the
+// network's own declaration or the rod end.
 #include <deal.II/base/parameter_handler.h>
 
 #include <common/run_scene_text.h>
+#include <common/scene_text.h>
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -84,5 +87,77 @@ namespace
     const RunSummary a = run_scene(Scene(prm), "formats_prm", nullptr);
     const RunSummary b = run_scene(Scene(from_json), "formats_json", nullptr);
     expect_same_rows(a, b);
+  }
+
+  /// A scene with @p geometry (Geometry entries), @p supports (Supports
+  /// entries), a force down at @p loaded and probes of its position and of
+  /// the reaction and clamp moment at @p clamped.
+  std::string
+  supported(const std::string &geometry,
+            const std::string &supports,
+            const std::string &loaded,
+            const std::string &clamped)
+  {
+    return "subsection Geometry\n" + geometry + "end\n" +
+           direct_material(1e4, 1, 1, 1) + "subsection Supports\n" + supports +
+           "end\n"
+           "subsection Loads\n"
+           "  set Steps = 2\n"
+           "  set Point forces = " +
+           loaded + ": 0, 0, -0.05\nend\n" +
+           probes_only("z: position " + loaded + " z; force: reaction " +
+                       clamped + " z; moment: moment " + clamped + " y");
+  }
+
+  // Lattice node names work in every entry: a square cell clamped at
+  // "@n_0_0" (a junction, held whole) and pinned at "@n_1_0" behaves as the
+  // same cell read from a node list that declares those nodes clamped and
+  // welded-and-pinned.
+  TEST(SceneFormats, LatticeNodeNamesMatchDeclaredSupports)
+  {
+    const std::string cell = "  set Generator = square lattice\n"
+                             "  set Cells = 1, 1\n"
+                             "  set Segments = 6\n";
+    const RunSummary  named =
+      run_scene_text(supported(cell,
+                               "  set Clamped ends = @n_0_0\n"
+                               "  set Pinned vertices = @n_1_0\n",
+                               "@n_1_1",
+                               "@n_0_0"),
+                     "formats_lattice_named");
+    std::ofstream("lattice_cell.net") << "node n_0_0 0 0 0 clamped\n"
+                                         "node n_1_0 1 0 0 welded-and-pinned\n"
+                                         "node n_0_1 0 1 0\n"
+                                         "node n_1_1 1 1 0\n"
+                                         "beam n_0_0 n_1_0\n"
+                                         "beam n_0_1 n_1_1\n"
+                                         "beam n_0_0 n_0_1\n"
+                                         "beam n_1_0 n_1_1\n";
+    const RunSummary declared =
+      run_scene_text(supported("  set Generator = network file\n"
+                               "  set Network file = lattice_cell.net\n"
+                               "  set Segments = 6\n",
+                               "",
+                               "@n_1_1",
+                               "@n_0_0"),
+                     "formats_lattice_declared");
+    expect_same_rows(named, declared);
+    EXPECT_LT(named.rows.back()[1], -0.01);
+  }
+
+  // A free end of a network, "@tip" of the frame, is a rod end: clamped as
+  // "@tip" it is the clamp of "1:end".
+  TEST(SceneFormats, FreeEndNameIsTheRodEnd)
+  {
+    const std::string frame   = "  set Generator = frame\n"
+                                "  set Segments = 8\n";
+    const RunSummary  by_name = run_scene_text(
+      supported(frame, "  set Clamped ends = @tip\n", "@corner", "@tip"),
+      "formats_frame_named");
+    const RunSummary by_end = run_scene_text(
+      supported(frame, "  set Clamped ends = 1:end\n", "@corner", "1:end"),
+      "formats_frame_end");
+    expect_same_rows(by_name, by_end);
+    EXPECT_LT(by_name.rows.back()[1], -0.001);
   }
 } // namespace

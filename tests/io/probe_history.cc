@@ -2,7 +2,7 @@
 // 0) under Newton and dynamic relaxation, rotations continuous over the
 // steps beyond a half turn, and units on the plot's axes.
 #include <common/run_scene_text.h>
-#include <common/scene_pieces.h>
+#include <common/scene_text.h>
 
 #include <cmath>
 #include <fstream>

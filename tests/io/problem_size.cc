@@ -2,7 +2,7 @@
 // model built: DoFs against the DoF layout, for rods and networks.
 #include <deal.II/base/parameter_handler.h>
 
-#include <common/scene_pieces.h>
+#include <common/scene_text.h>
 #include <io/scene.h>
 #include <io/scene_runner.h>
 

@@ -2,10 +2,10 @@
 // Kochmann section 3): a clamp by a junction against the clamp by two fixed
 // vertices, a cantilever bent into a circle by an end moment, the
 // right-angle frame of Fig. 3a and the windmill of Fig. 3b.
+#include <common/solve_model.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -14,23 +14,12 @@
 namespace
 {
   using namespace rodnet;
+  using namespace rodnet::testing;
 
   std::shared_ptr<const RodMaterial>
   elastic(const double EA, const double EI, const double GJ)
   {
     return std::make_shared<LinearElasticRod>(RodStiffness{EA, EI, EI, GJ});
-  }
-
-  /// Solves @p model in @p steps load steps and returns the final state.
-  VectorType
-  solve(RodModel &model, const unsigned int steps)
-  {
-    model.finalize();
-    VectorType               u = model.create_vector();
-    StaticSolver::Parameters parameters;
-    parameters.n_steps = steps;
-    StaticSolver(model, parameters).run(u, [](const auto &, const auto &) {});
-    return u;
   }
 
   class Junctions : public ::testing::TestWithParam<std::string>

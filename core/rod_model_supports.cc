@@ -1,0 +1,509 @@
+// The supports and rotational loads of a RodModel: clamps that move
+// rigidly, fixed and prescribed position components, held and prescribed
+// junction rotations and moments, their resolution into fixed DoFs with
+// the checks that no DoF is held at two values and no rod is held
+// entirely, and the reactions (doc/junctions.md, "Supports").
+#include <core/rod_model.h>
+#include <elements/junction_moment.h>
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    const char *const component_names[3] = {"x", "y", "z"};
+
+    std::string
+    in_quotes(const std::string &name)
+    {
+      return "\"" + name + "\"";
+    }
+
+    std::string
+    number(const double value)
+    {
+      std::ostringstream s;
+      s << value;
+      return s.str();
+    }
+
+    /// Junction @p j of @p network; throws for @p what ("moment at") if
+    /// there is none.
+    const Junction &
+    existing_junction(const RodNetwork  &network,
+                      const unsigned int j,
+                      const std::string &what)
+    {
+      if (j >= network.junctions().size())
+        throw std::invalid_argument(what + " junction " + std::to_string(j) +
+                                    ", which does not exist");
+      return network.junctions()[j];
+    }
+
+    void
+    require_unit_axis(const Vector3 &axis, const std::string &where)
+    {
+      if (!(std::abs(axis.norm() - 1.0) < 1e-9))
+        throw std::invalid_argument(where + ": the axis must be a unit vector");
+    }
+
+    /// Whether two rotations given as axis and angle are the same.
+    bool
+    same_rotation(const Vector3 &axis_a,
+                  const double   angle_a,
+                  const Vector3 &axis_b,
+                  const double   angle_b)
+    {
+      return (angle_a * axis_a - angle_b * axis_b).norm() <=
+             1e-12 * (std::abs(angle_a) + std::abs(angle_b));
+    }
+  } // namespace
+
+  void
+  RodModel::add_position_support(const std::string         &name,
+                                 const unsigned int         vertex,
+                                 const std::array<bool, 3> &mask,
+                                 const Vector3             &displacement,
+                                 const bool                 yields)
+  {
+    if (vertex >= network_->n_vertices())
+      throw std::invalid_argument("support " + in_quotes(name) + ": vertex " +
+                                  std::to_string(vertex) + " does not exist");
+    Support s;
+    s.name     = name;
+    s.vertices = {vertex};
+    s.fixed    = {mask};
+    for (unsigned int c = 0; c < 3; ++c)
+      if (mask[c])
+        holds.emplace(layout_->vertex_dof(vertex, c),
+                      Hold{static_cast<unsigned int>(support_list.size()),
+                           vertex,
+                           c,
+                           displacement[c],
+                           yields});
+    support_list.push_back(s);
+  }
+
+  void
+  RodModel::fix_components(const std::string         &name,
+                           const unsigned int         vertex,
+                           const std::array<bool, 3> &mask,
+                           const Vector3             &displacement)
+  {
+    add_position_support(name, vertex, mask, displacement, false);
+  }
+
+  void
+  RodModel::clamp_end(const std::string &name,
+                      const unsigned int rod_index,
+                      const bool         at_start)
+  {
+    if (rod_index >= network_->rods().size())
+      throw std::invalid_argument("support " + in_quotes(name) + ": rod " +
+                                  std::to_string(rod_index) +
+                                  " does not exist");
+    const Rod &rod = network_->rods()[rod_index];
+    if (rod.closed)
+      throw std::invalid_argument("support " + in_quotes(name) + ": rod " +
+                                  std::to_string(rod_index) +
+                                  " is closed and has no end to clamp");
+    // Both vertices of a single segment held: nothing of the rod could
+    // move, and every load on it would vanish into the clamp.
+    if (rod.segments.size() < 2)
+      throw std::invalid_argument(
+        "support " + in_quotes(name) + ": rod " + std::to_string(rod_index) +
+        " has a single segment, which a clamp would hold whole (a clamp "
+        "holds the two vertices of the end segment), and every load on the "
+        "rod would go into the support; give the rod at least 2 segments");
+    const unsigned int n = rod.vertices.size();
+    Clamp              clamp;
+    clamp.support = support_list.size();
+    clamp.vertices =
+      at_start ?
+        std::array<unsigned int, 2>{{rod.vertices[0], rod.vertices[1]}} :
+        std::array<unsigned int, 2>{{rod.vertices[n - 1], rod.vertices[n - 2]}};
+    clamp.segment = at_start ? rod.segments.front() : rod.segments.back();
+    // Before any solve the reference is the undeformed configuration.
+    clamp.undeformed_frame =
+      configuration_->director_frame(create_vector(), clamp.segment);
+    clamps.push_back(clamp);
+
+    // The end vertex yields to a prescribed displacement there, which
+    // moves the clamp; the inner vertex and the twist follow the clamp.
+    add_position_support(name,
+                         clamp.vertices[0],
+                         {{true, true, true}},
+                         Vector3::Zero(),
+                         true);
+    Support &s = support_list.back();
+    s.vertices.push_back(clamp.vertices[1]);
+    s.fixed.push_back({{true, true, true}});
+    s.clamped_segment = clamp.segment;
+  }
+
+  void
+  RodModel::rotate_clamp(const std::string &name,
+                         const Vector3     &axis,
+                         const double       angle)
+  {
+    const std::string where = "rotation of clamp " + in_quotes(name);
+    require_unit_axis(axis, where);
+    // Every clamp of the same rod end turns with it.
+    std::vector<unsigned int> segments;
+    for (const Clamp &clamp : clamps)
+      if (support_list[clamp.support].name == name)
+        segments.push_back(clamp.segment);
+    if (segments.empty())
+      throw std::invalid_argument(where + ": there is no such clamp");
+    for (Clamp &clamp : clamps)
+      if (std::find(segments.begin(), segments.end(), clamp.segment) !=
+          segments.end())
+        {
+          if (clamp.angle != 0 &&
+              !same_rotation(clamp.axis, clamp.angle, axis, angle))
+            throw std::invalid_argument(
+              where + ": the clamp is turned twice, by different rotations");
+          clamp.axis  = axis;
+          clamp.angle = angle;
+        }
+  }
+
+  void
+  RodModel::clamp_junction(const std::string &name, const unsigned int junction)
+  {
+    const Junction &j = existing_junction(*network_,
+                                          junction,
+                                          "support " + in_quotes(name) + ":");
+    if (!j.has_rotation())
+      throw std::invalid_argument(
+        "support " + in_quotes(name) + ": junction " + in_quotes(j.name) +
+        " is pinned, so each rod end turns on its own there and there is no "
+        "rotation to hold; clamp the rod ends one by one (<rod>:start or "
+        "<rod>:end) or make the junction clamped");
+    rotation_held[junction] = true;
+    add_position_support(name,
+                         j.vertex,
+                         {{true, true, true}},
+                         Vector3::Zero(),
+                         true);
+  }
+
+  const Support *
+  RodModel::clamp_at(const unsigned int vertex) const
+  {
+    for (const Clamp &clamp : clamps)
+      if (clamp.vertices[0] == vertex)
+        return &support_list[clamp.support];
+    return nullptr;
+  }
+
+  void
+  RodModel::add_moment(const unsigned int junction,
+                       const Vector3     &axis,
+                       const double       moment)
+  {
+    const Junction &j = existing_junction(*network_, junction, "moment at");
+    if (!j.has_rotation() || j.kind == JunctionKind::clamped)
+      throw std::invalid_argument("moment at junction " + in_quotes(j.name) +
+                                  ": a " + to_string(j.kind) +
+                                  " junction has no free rotation to load");
+    require_unit_axis(axis, "moment at junction " + in_quotes(j.name));
+    moments.push_back({junction, axis, moment});
+  }
+
+  void
+  RodModel::prescribe_rotation(const unsigned int junction,
+                               const Vector3     &axis,
+                               const double       angle)
+  {
+    const Junction &j =
+      existing_junction(*network_, junction, "prescribed rotation of");
+    const std::string where =
+      "prescribed rotation of junction " + in_quotes(j.name);
+    if (!j.has_rotation())
+      throw std::invalid_argument(where +
+                                  ": a pinned junction has no rotation of its "
+                                  "own to prescribe");
+    require_unit_axis(axis, where);
+    for (const AxisLoad &p : prescribed_rotations)
+      if (p.junction == junction)
+        {
+          if (same_rotation(p.axis, p.value, axis, angle))
+            return;
+          throw std::invalid_argument(
+            where + ": the junction is turned twice, by different rotations");
+        }
+    rotation_held[junction] = true;
+    prescribed_rotations.push_back({junction, axis, angle});
+  }
+
+  void
+  RodModel::prescribe_rotation(const unsigned int junction,
+                               const Quaternion  &rotation)
+  {
+    if (!(std::abs(rotation.norm() - 1.0) < 1e-9))
+      throw std::invalid_argument("prescribed rotation of junction " +
+                                  std::to_string(junction) +
+                                  ": the quaternion has norm " +
+                                  std::to_string(rotation.norm()) + ", not 1");
+    const Eigen::AngleAxisd angle_axis(rotation);
+    prescribe_rotation(junction, angle_axis.axis(), angle_axis.angle());
+  }
+
+  const Support &
+  RodModel::support(const std::string &name) const
+  {
+    for (const Support &s : support_list)
+      if (s.name == name)
+        return s;
+    throw std::invalid_argument("no support named " + in_quotes(name));
+  }
+
+  Vector3
+  RodModel::clamp_displacement(const Clamp       &clamp,
+                               const unsigned int vertex,
+                               const double       load_factor) const
+  {
+    const Vector3 arm =
+      network_->vertex(vertex) - network_->vertex(clamp.vertices[0]);
+    return load_factor * clamp.translation +
+           rotation_about(clamp.axis, load_factor * clamp.angle) * arm - arm;
+  }
+
+  void
+  RodModel::resolve_position_holds()
+  {
+    const auto same_value = [this](const double a, const double b) {
+      return std::abs(a - b) <= 1e-12 * (length + std::abs(a) + std::abs(b));
+    };
+    for (auto first = holds.begin(); first != holds.end();
+         first      = holds.upper_bound(first->first))
+      {
+             const Hold *set   = nullptr;
+             const auto  range = holds.equal_range(first->first);
+             for (auto h = range.first; h != range.second; ++h)
+          {
+                 if (h->second.yields)
+              continue;
+            if (set != nullptr && !same_value(set->value, h->second.value))
+              throw std::invalid_argument(
+                "the supports " + in_quotes(support_list[set->support].name) +
+                " and " + in_quotes(support_list[h->second.support].name) +
+                " hold " + component_names[set->component] + " of " +
+                network_->describe_vertex(set->vertex) +
+                " at different values, " + number(set->value) + " m and " +
+                number(h->second.value) +
+                " m at load factor 1; a position may be held twice only at "
+                     "the same value");
+            if (set == nullptr)
+              set = &h->second;
+          }
+             fixed_dofs[first->first] = set != nullptr ? set->value : 0.0;
+      }
+
+    // A clamp moves with its end vertex, and whatever else holds its inner
+    // vertex must move with it.
+    for (Clamp &clamp : clamps)
+      for (unsigned int c = 0; c < 3; ++c)
+        clamp.translation[c] =
+          fixed_dofs.at(layout_->vertex_dof(clamp.vertices[0], c));
+    for (const Clamp &clamp : clamps)
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            const global_dof_index dof =
+              layout_->vertex_dof(clamp.vertices[1], c);
+            const auto range = holds.equal_range(dof);
+            for (auto h = range.first; h != range.second; ++h)
+              for (const double load_factor : {0.5, 1.0})
+                if (!h->second.yields)
+                  {
+                    const double moved = clamp_displacement(clamp,
+                                                            clamp.vertices[1],
+                                                            load_factor)[c];
+                    if (!same_value(load_factor * h->second.value, moved))
+                      throw std::invalid_argument(
+                        "the support " +
+                        in_quotes(support_list[h->second.support].name) +
+                        " holds " + component_names[c] + " of " +
+                        network_->describe_vertex(clamp.vertices[1]) + " at " +
+                        number(load_factor * h->second.value) +
+                        " m, but the clamp " +
+                        in_quotes(support_list[clamp.support].name) +
+                        " holds that vertex and moves it to " + number(moved) +
+                        " m (at load factor " + number(load_factor) +
+                        "); a clamp moves rigidly: prescribe the displacement "
+                        "of its end vertex instead");
+                  }
+            fixed_dofs[dof] = 0.0;
+          }
+        for (const Clamp &other : clamps)
+          if (other.segment == clamp.segment &&
+              !same_rotation(clamp.axis, clamp.angle, other.axis, other.angle))
+            throw std::invalid_argument(
+              "the clamps " + in_quotes(support_list[clamp.support].name) +
+              " and " + in_quotes(support_list[other.support].name) +
+              " hold the same rod end but turn it differently");
+        fixed_dofs[layout_->twist_dof(clamp.segment)] = 0.0;
+      }
+  }
+
+  void
+  RodModel::resolve_supports()
+  {
+    resolve_position_holds();
+    // The gauge of every junction quaternion: the real part of every
+    // increment stays 1 (stored as 0); held rotations fix the rest.
+    for (unsigned int j = 0; j < network_->junctions().size(); ++j)
+      if (layout_->has_rotation_dofs(j))
+        for (unsigned int c = 0; c < (rotation_held[j] ? 4 : 1); ++c)
+          fixed_dofs[layout_->rotation_dof(j, c)] = 0.0;
+    for (const AxisLoad &m : moments)
+      if (rotation_held[m.junction])
+        throw std::invalid_argument(
+          "moment at junction " +
+          in_quotes(network_->junctions()[m.junction].name) +
+          ": its rotation is held (by a prescribed rotation or a clamp), "
+          "which would take up the whole moment; remove one of the two");
+  }
+
+  void
+  RodModel::apply_boundary_values(VectorType &u, const double load_factor) const
+  {
+    // A turned clamp's twist continues from its current value (below).
+    std::vector<double> clamp_twists;
+    for (const Clamp &clamp : clamps)
+      clamp_twists.push_back(u[layout_->twist_dof(clamp.segment)]);
+    for (const auto &[dof, value] : fixed_dofs)
+      u[dof] = load_factor * value;
+    // A prescribed rotation is reached from the reference rotation by an
+    // increment (1, v) in the gauge of the quaternion DoFs.
+    for (const AxisLoad &p : prescribed_rotations)
+      {
+        Quaternion increment =
+          rotation_about(p.axis, load_factor * p.value) *
+          configuration_->reference_rotation(p.junction).conjugate();
+        if (increment.w() < 0)
+          increment.coeffs() *= -1.0;
+        if (!(increment.w() > 1e-3))
+          throw std::runtime_error(
+            "the prescribed rotation of junction \"" +
+            network_->junctions()[p.junction].name +
+            "\" turns by nearly 180 degrees or more within one step; use "
+            "more load steps");
+        u[layout_->rotation_dof(p.junction, 0)] = 0.0;
+        for (unsigned int c = 1; c < 4; ++c)
+          u[layout_->rotation_dof(p.junction, c)] =
+            increment.vec()[c - 1] / increment.w();
+      }
+    for (unsigned int i = 0; i < clamps.size(); ++i)
+      {
+        const Clamp  &clamp = clamps[i];
+        const Vector3 inner =
+          clamp_displacement(clamp, clamp.vertices[1], load_factor);
+        for (unsigned int c = 0; c < 3; ++c)
+          u[layout_->vertex_dof(clamp.vertices[1], c)] = inner[c];
+        if (clamp.angle != 0)
+          u[layout_->twist_dof(clamp.segment)] = clamp_twists[i];
+      }
+    u.compress(dealii::VectorOperation::insert);
+
+    // The end segment of a turned clamp has the tangent R t0 now; its
+    // twist turns the director frame there from the parallel-transported
+    // one to R D0 (both share d3, so the angle between their d1 about it).
+    std::vector<double> twists(clamps.size());
+    for (unsigned int i = 0; i < clamps.size(); ++i)
+      if (clamps[i].angle != 0)
+        {
+          const Clamp  &clamp = clamps[i];
+          const Matrix3 frame =
+            configuration_->director_frame(u, clamp.segment).toRotationMatrix();
+          const Matrix3 target =
+            (rotation_about(clamp.axis, load_factor * clamp.angle) *
+             clamp.undeformed_frame)
+              .toRotationMatrix();
+          twists[i] =
+            clamp_twists[i] +
+            std::atan2(frame.col(0).cross(target.col(0)).dot(target.col(2)),
+                       frame.col(0).dot(target.col(0)));
+        }
+    for (unsigned int i = 0; i < clamps.size(); ++i)
+      if (clamps[i].angle != 0)
+        u[layout_->twist_dof(clamps[i].segment)] = twists[i];
+    u.compress(dealii::VectorOperation::insert);
+  }
+
+  Vector3
+  RodModel::reaction(const Support    &s,
+                     const VectorType &u,
+                     const double      load_factor) const
+  {
+    VectorType r = create_vector();
+    assemble(u, load_factor, &r, nullptr, false);
+    Vector3 total = Vector3::Zero();
+    for (unsigned int k = 0; k < s.vertices.size(); ++k)
+      total += support_force(s, k, r);
+    return total;
+  }
+
+  Vector3
+  RodModel::support_force(const Support     &s,
+                          const unsigned int k,
+                          const VectorType  &r) const
+  {
+    // At a fixed DoF the support force F balances the residual:
+    // dPhi/du - F = 0, so F is the residual there.
+    Vector3 force = Vector3::Zero();
+    for (unsigned int c = 0; c < 3; ++c)
+      if (s.fixed[k][c])
+        force[c] = r[layout_->vertex_dof(s.vertices[k], c)];
+    return force;
+  }
+
+  Vector3
+  RodModel::reaction_moment(const Support    &s,
+                            const VectorType &u,
+                            const double      load_factor) const
+  {
+    VectorType r = create_vector();
+    assemble(u, load_factor, &r, nullptr, false);
+    // Virtual work of a rigid rotation omega of the support about x_0:
+    // dx_k = omega x (x_k - x_0), dphi = omega . t (a rotation normal to
+    // the tangent is the parallel transport, which leaves the twist).
+    const Vector3 pivot = configuration_->position(u, s.vertices[0]);
+    Vector3       total = Vector3::Zero();
+    for (unsigned int k = 0; k < s.vertices.size(); ++k)
+      total += (configuration_->position(u, s.vertices[k]) - pivot)
+                 .cross(support_force(s, k, r));
+    if (s.clamped_segment)
+      total += r[layout_->twist_dof(*s.clamped_segment)] *
+               configuration_->director_frame(u, *s.clamped_segment)
+                 .toRotationMatrix()
+                 .col(2);
+    return total;
+  }
+
+  Vector3
+  RodModel::reaction_moment(const unsigned int junction,
+                            const VectorType  &u,
+                            const double       load_factor) const
+  {
+    if (junction >= network_->junctions().size() ||
+        !layout_->has_rotation_dofs(junction))
+      throw std::invalid_argument("reaction moment: junction " +
+                                  std::to_string(junction) +
+                                  " does not exist or has no rotation");
+    VectorType r = create_vector();
+    assemble(u, load_factor, &r, nullptr, false);
+    Eigen::Vector4d q, gradient;
+    for (unsigned int c = 0; c < 4; ++c)
+      {
+        q[c]        = u[layout_->rotation_dof(junction, c)] + (c == 0);
+        gradient[c] = r[layout_->rotation_dof(junction, c)];
+      }
+    return spatial_moment(q, gradient);
+  }
+} // namespace rodnet

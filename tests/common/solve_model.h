@@ -1,0 +1,23 @@
+#ifndef RODNET_TESTS_SOLVE_MODEL_H
+#define RODNET_TESTS_SOLVE_MODEL_H
+
+#include <core/rod_model.h>
+#include <solvers/static_solver.h>
+
+namespace rodnet::testing
+{
+  /// Finalizes @p model and solves it in @p steps equal load steps from
+  /// the undeformed state; returns the final state.
+  inline VectorType
+  solve(RodModel &model, const unsigned int steps)
+  {
+    model.finalize();
+    VectorType               u = model.create_vector();
+    StaticSolver::Parameters parameters;
+    parameters.n_steps = steps;
+    StaticSolver(model, parameters).run(u, [](const auto &, const auto &) {});
+    return u;
+  }
+} // namespace rodnet::testing
+
+#endif

@@ -1,0 +1,167 @@
+// Supports that cannot do what they say are refused by rodnet-run with
+// exit code 1 and one line naming them: a clamp of a one-segment rod,
+// a DoF held twice at different values (naming both supports), a clamp's
+// inner vertex held elsewhere, a moment into a clamp or onto a prescribed
+// rotation, a rod end name that is no rod end.
+#include <common/run_driver.h>
+#include <common/scene_text.h>
+
+#include <gtest/gtest.h>
+#include <string>
+
+namespace
+{
+  using namespace rodnet::testing;
+
+  const std::string material = direct_material(1e4, 1, 1, 1);
+
+  /// A straight rod of @p segments segments with @p supports_and_loads.
+  std::string
+  rod(const unsigned int segments, const std::string &supports_and_loads)
+  {
+    return "subsection Geometry\n"
+           "  set Segments = " +
+           std::to_string(segments) +
+           "\n"
+           "end\n" +
+           material + supports_and_loads;
+  }
+
+  std::string
+  supports(const std::string &entries)
+  {
+    return "subsection Supports\n" + entries + "end\n";
+  }
+
+  TEST(SupportErrors, ClampOfAOneSegmentRod)
+  {
+    // Both vertices of the only segment held: every load would vanish.
+    expect_input_error_naming("clamp_one_segment",
+                              rod(1,
+                                  supports("  set Clamped ends = start\n") +
+                                    "subsection Loads\n"
+                                    "  set Point forces = end: 0, 1, 0\n"
+                                    "end\n"),
+                              {"\"Clamped ends: start\"",
+                               "rod 0 has a single segment",
+                               "at least 2 segments"});
+  }
+
+  TEST(SupportErrors, ClampedEndPinnedAndPrescribed)
+  {
+    expect_input_error_naming(
+      "clamp_pinned_prescribed",
+      rod(10,
+          supports("  set Clamped ends = start\n"
+                   "  set Pinned vertices = start\n"
+                   "  set Prescribed displacements = start: x=0.1\n")),
+      {"\"Pinned vertices: start\"",
+       "\"Prescribed displacements: start: x=0.1\"",
+       "x of vertex 0 of rod 0",
+       "0 m and 0.1 m"});
+  }
+
+  TEST(SupportErrors, TwoPrescribedDisplacementsOfOneVertex)
+  {
+    // "end" and "0:10" are the same vertex.
+    expect_input_error_naming("two_displacements",
+                              rod(10,
+                                  supports(
+                                    "  set Clamped ends = start\n"
+                                    "  set Prescribed displacements = end: "
+                                    "y=0.1; 0:10: y=0.2\n")),
+                              {"\"Prescribed displacements: end: y=0.1\"",
+                               "\"Prescribed displacements: 0:10: y=0.2\"",
+                               "y of vertex 10 of rod 0"});
+  }
+
+  TEST(SupportErrors, MovedJunctionAndPin)
+  {
+    // The frame's clamped junction moved by a prescribed displacement and
+    // held by a pin.
+    expect_input_error_naming("junction_and_pin",
+                              "subsection Geometry\n"
+                              "  set Generator = frame\n"
+                              "  set Segments = 4\n"
+                              "end\n" +
+                                material +
+                                supports(
+                                  "  set Pinned vertices = @clamp\n"
+                                  "  set Prescribed displacements = @clamp: "
+                                  "z=0.01\n"),
+                              {"\"Pinned vertices: @clamp\"",
+                               "\"Prescribed displacements: @clamp: z=0.01\"",
+                               "z of vertex 0 of rod 0"});
+  }
+
+  TEST(SupportErrors, InnerVertexOfAMovingClamp)
+  {
+    // The clamp moves rigidly with its end vertex; a pin of its second
+    // vertex would tear it.
+    expect_input_error_naming("clamp_inner_vertex",
+                              rod(10,
+                                  supports(
+                                    "  set Clamped ends = start\n"
+                                    "  set Pinned vertices = 0:1\n"
+                                    "  set Prescribed displacements = start: "
+                                    "y=0.1\n")),
+                              {"\"Pinned vertices: 0:1\"",
+                               "the clamp \"Clamped ends: start\"",
+                               "moves rigidly"});
+  }
+
+  TEST(SupportErrors, ClampTurnedTwice)
+  {
+    expect_input_error_naming(
+      "clamp_turned_twice",
+      rod(10,
+          supports("  set Clamped ends = start\n"
+                   "  set Prescribed rotations = start: "
+                   "0,0,1 10; 0:start: 0,0,1 20\n")),
+      {"clamp \"Clamped ends: start\"", "turned twice"});
+  }
+
+  TEST(SupportErrors, MomentIntoAClamp)
+  {
+    expect_input_error_naming("moment_at_clamp",
+                              rod(10,
+                                  supports(
+                                    "  set Clamped ends = start, end\n") +
+                                    "subsection Loads\n"
+                                    "  set Moments = end: 0,0,1 1\n"
+                                    "end\n"),
+                              {"entry \"Loads/Moments\"",
+                               "\"Clamped ends: end\"",
+                               "take up the whole moment"});
+  }
+
+  TEST(SupportErrors, MomentOnAPrescribedRotation)
+  {
+    expect_input_error_naming(
+      "moment_on_prescribed_rotation",
+      rod(10,
+          supports("  set Clamped ends = start\n"
+                   "  set Prescribed rotations = end: 0,0,1 "
+                   "10\n") +
+            "subsection Loads\n"
+            "  set Moments = end: 0,0,1 1\n"
+            "end\n"),
+      {"moment at junction \"end\"", "rotation is held"});
+  }
+
+  TEST(SupportErrors, ClampedEndThatIsNoEnd)
+  {
+    expect_input_error_naming("clamp_mid",
+                              rod(10, supports("  set Clamped ends = mid\n")),
+                              {"entry \"Supports/Clamped ends\"",
+                               "\"mid\" names no rod end"});
+    expect_input_error_naming("clamp_unknown_name",
+                              "subsection Geometry\n"
+                              "  set Generator = square lattice\n"
+                              "  set Segments = 2\n"
+                              "end\n" +
+                                material +
+                                supports("  set Clamped ends = @n_9_9\n"),
+                              {"entry \"Supports/Clamped ends\"", "\"n_9_9\""});
+  }
+} // namespace
