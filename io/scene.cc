@@ -961,6 +961,22 @@ namespace rodnet
     return result;
   }
 
+  std::vector<double>
+  Scene::fiber_distances() const
+  {
+    std::vector<double> result;
+    for (const unsigned int g : rod_groups())
+      {
+        const std::optional<CrossSection> &section =
+          material_groups[g].section;
+        result.push_back(
+          section ?
+            2 * std::sqrt(std::max(section->I1, section->I2) / section->area) :
+            std::nan(""));
+      }
+    return result;
+  }
+
   void
   Scene::initial_state(const RodModel &model,
                        VectorType     &u,

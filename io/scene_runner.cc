@@ -18,15 +18,16 @@ namespace rodnet
     class StepRecorder
     {
     public:
-      StepRecorder(const Scene              &scene,
-                   const std::string        &output_directory,
-                   const std::vector<Probe> &probes,
-                   const RodModel           *vtu_model,
-                   RunSummary               &summary,
-                   const std::string        &abscissa = "load_factor")
+      StepRecorder(const Scene                    &scene,
+                   const std::string              &output_directory,
+                   const std::vector<Probe>       &probes,
+                   const RodModel                 *vtu_model,
+                   RunSummary                     &summary,
+                   const std::string              &abscissa = "load_factor",
+                   const std::vector<std::string> &check_columns = {})
           : scene(scene)
           , csv(csv_path(output_directory))
-          , table(csv, probes, abscissa)
+          , table(csv, probes, abscissa, check_columns)
           , summary(summary)
       {
         summary.abscissa = abscissa;
@@ -38,14 +39,16 @@ namespace rodnet
 
       /// Records step @p step at load factor or time @p abscissa (also the
       /// "time" of the PVD record); @p u is the state for the VTU files in
-      /// the layout of the RodModel given to the constructor.
+      /// the layout of the RodModel given to the constructor, @p checks the
+      /// values of the check columns.
       void
       record(const unsigned int         step,
              const double               abscissa,
              const std::vector<double> &values,
-             const VectorType          *u)
+             const VectorType          *u,
+             const std::vector<double> &checks = {})
       {
-        table.add_row(step, abscissa, values);
+        table.add_row(step, abscissa, values, checks);
         std::vector<double> row{abscissa};
         row.insert(row.end(), values.begin(), values.end());
         summary.rows.push_back(row);
@@ -95,13 +98,16 @@ namespace rodnet
       for (const Probe &p : probes)
         if (p.kind == Probe::Kind::eigenvalue)
           parameters.track_lowest_eigenvalue = true;
+      parameters.strain_limits.fiber_distance = scene.fiber_distances();
 
       RunSummary   summary;
       StepRecorder recorder(scene,
                             output_directory,
                             probes,
                             model.get(),
-                            summary);
+                            summary,
+                            "load_factor",
+                            {"stable", "in_range"});
       if (log != nullptr)
         *log << "rodnet: " << model->network().rods().size() << " rod(s), "
              << model->layout().n_dofs() << " DoFs, "
@@ -114,6 +120,8 @@ namespace rodnet
           solver.run(u,
                      [&](const StaticSolver::StepInfo &info,
                          const VectorType             &solution) {
+                       summary.unstable_steps += !info.stable;
+                       summary.out_of_range_steps += !info.strain.in_range;
                        recorder.record(info.step,
                                        info.load_factor,
                                        evaluate_probes(probes,
@@ -121,7 +129,9 @@ namespace rodnet
                                                        solution,
                                                        info.load_factor,
                                                        info.lowest_eigenvalue),
-                                       &solution);
+                                       &solution,
+                                       {double(info.stable),
+                                        double(info.strain.in_range)});
                      });
         }
       catch (const SolverFailure &e)
@@ -212,7 +222,8 @@ namespace rodnet
             "entry \"Output/Probes\", probe \"" + p.name +
             "\": the lowest eigenvalue is tracked by Newton load stepping "
             "only, not by time stepping");
-      const TimeIntegrator::Parameters &parameters = scene.time_stepping;
+      TimeIntegrator::Parameters parameters   = scene.time_stepping;
+      parameters.strain_limits.fiber_distance = scene.fiber_distances();
       const bool dynamic = parameters.integrator != Integrator::quasi_static;
       TimeIntegrator integrator(*model,
                                 dynamic ? scene.inertia() :
@@ -220,13 +231,18 @@ namespace rodnet
                                 parameters,
                                 log);
 
-      RunSummary   summary;
+      RunSummary summary;
+      // Dynamic steps do not check stability: inertia holds their tangent.
+      const std::vector<std::string> checks =
+        dynamic ? std::vector<std::string>{"in_range"} :
+                  std::vector<std::string>{"stable", "in_range"};
       StepRecorder recorder(scene,
                             output_directory,
                             probes,
                             model.get(),
                             summary,
-                            "time");
+                            "time",
+                            checks);
       if (log != nullptr)
         *log << "rodnet (time stepping, " << to_string(parameters.integrator)
              << "): " << model->network().rods().size() << " rod(s), "
@@ -235,15 +251,27 @@ namespace rodnet
              << parameters.end_time << " s in steps of " << parameters.time_step
              << " s" << std::endl;
 
-      const auto record = [&](const unsigned int step,
-                              const double       time,
-                              const double       load_factor,
-                              const VectorType  &u) {
+      // The initial state (step 0) is not checked: NaN in its columns.
+      const auto record = [&](const unsigned int              step,
+                              const double                    time,
+                              const double                    load_factor,
+                              const VectorType               &u,
+                              const TimeIntegrator::StepInfo *info) {
+        std::vector<double> values(checks.size(), std::nan(""));
+        if (info != nullptr)
+          {
+            summary.unstable_steps += !info->stable;
+            summary.out_of_range_steps += !info->strain.in_range;
+            values.back() = info->strain.in_range;
+            if (!dynamic)
+              values.front() = info->stable;
+          }
         recorder.record(
           step,
           time,
           evaluate_probes(probes, *model, u, load_factor, std::nan("")),
-          &u);
+          &u,
+          values);
       };
       VectorType u, v;
       scene.initial_state(*model, u, v);
@@ -253,20 +281,18 @@ namespace rodnet
           const double load_factor =
             parameters.load_factor(parameters.start_time);
           model->apply_boundary_values(u, load_factor);
-          record(0, parameters.start_time, load_factor, u);
+          record(0, parameters.start_time, load_factor, u, nullptr);
         }
       try
         {
-          integrator.run(u,
-                         v,
-                         [&](const TimeIntegrator::StepInfo &info,
-                             const VectorType               &state,
-                             const VectorType &) {
-                           record(info.step,
-                                  info.time,
-                                  info.load_factor,
-                                  state);
-                         });
+          integrator.run(
+            u,
+            v,
+            [&](const TimeIntegrator::StepInfo &info,
+                const VectorType               &state,
+                const VectorType &) {
+              record(info.step, info.time, info.load_factor, state, &info);
+            });
         }
       catch (const SolverFailure &e)
         {

@@ -21,6 +21,12 @@ namespace rodnet
     std::string abscissa = "load_factor";
     /// Per converged step: the abscissa, then the probe values.
     std::vector<std::vector<double>> rows;
+    /// Converged steps whose equilibrium is unstable (probes.csv column
+    /// "stable" 0; Newton and quasi-static runs).
+    unsigned int unstable_steps = 0;
+    /// Converged steps with a strain past the rod model's range (column
+    /// "in_range" 0).
+    unsigned int out_of_range_steps = 0;
     /// Empty if the run completed; the solver's message otherwise.
     std::string failure;
   };
@@ -29,6 +35,9 @@ namespace rodnet
    * Runs a scene: builds the model, steps the load (or the time), and after
    * every converged step writes the VTU/PVD files and a row of probes.csv
    * into @p output_directory (created if needed), and finally probes.png.
+   * The rows of rod models end with the solver's checks of the state:
+   * "stable" (Newton and quasi-static runs) and "in_range" (1 or 0; the
+   * warnings on @p log say where).
    * Time stepping also records the initial state (step 0) when there is no
    * preload, and every preload step (at times up to the start time). A
    * solver failure ends the run with RunSummary::failure set; everything

@@ -2,6 +2,7 @@
 #include <solvers/stability.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <stdexcept>
 
@@ -41,6 +42,113 @@ namespace rodnet
       return {dense, global};
     }
   } // namespace
+
+  namespace
+  {
+    /// The tangent restricted to the free DoFs as an Eigen sparse matrix
+    /// (lower triangle: all SimplicialLDLT reads), the map from free to
+    /// global indices and the magnitudes of the diagonal.
+    struct FreeBlock
+    {
+      Eigen::SparseMatrix<double> matrix;
+      std::vector<unsigned int>   global;
+      Eigen::VectorXd             diagonal;
+    };
+
+    FreeBlock
+    sparse_free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                      const dealii::AffineConstraints<double>      &constraints)
+    {
+      const unsigned int n_dofs = tangent.m();
+      std::vector<int>   free_index(n_dofs, -1);
+      FreeBlock          block;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        if (!constraints.is_constrained(i))
+          {
+            free_index[i] = block.global.size();
+            block.global.push_back(i);
+          }
+      const unsigned int                  n = block.global.size();
+      std::vector<Eigen::Triplet<double>> entries;
+      block.diagonal = Eigen::VectorXd::Zero(n);
+      for (unsigned int k = 0; k < n; ++k)
+        for (auto entry = tangent.begin(block.global[k]);
+             entry != tangent.end(block.global[k]);
+             ++entry)
+          {
+            const int column = free_index[entry->column()];
+            if (column == int(k))
+              block.diagonal[k] = std::abs(entry->value());
+            if (column >= 0 && column <= int(k))
+              entries.emplace_back(k, column, entry->value());
+          }
+      block.matrix.resize(n, n);
+      block.matrix.setFromTriplets(entries.begin(), entries.end());
+      return block;
+    }
+  } // namespace
+
+  Inertia
+  tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                  const dealii::AffineConstraints<double>      &constraints,
+                  const double                                  zero_ratio)
+  {
+    const FreeBlock block = sparse_free_block(tangent, constraints);
+    Inertia         inertia;
+    if (block.global.empty())
+      return inertia;
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(block.matrix);
+    if (ldlt.info() != Eigen::Success)
+      {
+        // An exactly zero pivot stops the factorization.
+        inertia.zero          = 1;
+        inertia.weakest_ratio = 0;
+        return inertia;
+      }
+    // Pivot k of P K P^T belongs to the free DoF i with P(i) = k.
+    const Eigen::VectorXd &pivots = ldlt.vectorD();
+    const auto            &order  = ldlt.permutationP().indices();
+    for (unsigned int i = 0; i < block.global.size(); ++i)
+      {
+        const double pivot = pivots[order[i]];
+        const double ratio = block.diagonal[i] > 0 ?
+                               std::abs(pivot) / block.diagonal[i] :
+                               std::abs(pivot);
+        if (ratio < inertia.weakest_ratio)
+          {
+            inertia.weakest_ratio = ratio;
+            inertia.weakest_dof   = block.global[i];
+          }
+        if (ratio < zero_ratio)
+          ++inertia.zero;
+        else if (pivot < 0)
+          ++inertia.negative;
+        else
+          ++inertia.positive;
+      }
+    return inertia;
+  }
+
+  std::vector<double>
+  solve_free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                   const dealii::AffineConstraints<double>      &constraints,
+                   const std::vector<double>                    &rhs)
+  {
+    const FreeBlock     block = sparse_free_block(tangent, constraints);
+    std::vector<double> solution(tangent.m(), 0.0);
+    if (block.global.empty())
+      return solution;
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(block.matrix);
+    Eigen::VectorXd b(block.global.size());
+    for (unsigned int k = 0; k < block.global.size(); ++k)
+      b[k] = rhs[block.global[k]];
+    const Eigen::VectorXd x = ldlt.solve(b);
+    if (ldlt.info() != Eigen::Success || !x.allFinite())
+      throw std::runtime_error("the tangent is singular");
+    for (unsigned int k = 0; k < block.global.size(); ++k)
+      solution[block.global[k]] = x[k];
+    return solution;
+  }
 
   std::vector<double>
   lowest_eigenvalues(const dealii::TrilinosWrappers::SparseMatrix &tangent,

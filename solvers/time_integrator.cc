@@ -1,5 +1,7 @@
 #include <deal.II/base/timer.h>
 
+#include <solvers/free_motions.h>
+#include <solvers/stability.h>
 #include <solvers/time_integrator.h>
 
 #include <algorithm>
@@ -76,6 +78,8 @@ namespace rodnet
       : model(model)
       , parameters(parameters)
       , log(log)
+      , criterion(model)
+      , strains(model, parameters.strain_limits)
   {
     const Parameters &p = parameters;
     if (!(p.time_step > 0) || !std::isfinite(p.time_step))
@@ -133,6 +137,12 @@ namespace rodnet
   TimeIntegrator::run(VectorType &u, VectorType &v, const Observer &observer)
   {
     const Parameters &p = parameters;
+    if (p.integrator == Integrator::quasi_static || p.preload_time > 0)
+      {
+        const std::string free_motions = describe_free_motions(model, u);
+        if (!free_motions.empty())
+          throw std::invalid_argument(free_motions);
+      }
     if (p.preload_time > 0)
       {
         // Steps end at start - preload_time + (k - 1) h, k = 1..n: all
@@ -200,11 +210,11 @@ namespace rodnet
         // A step that reaches the grid point ends exactly on it, so that
         // the load factor is evaluated there and not a rounding error
         // before (which matters for discontinuous loads).
-        const bool           to_grid = attempt >= grid - t - on_grid;
-        const double         end     = to_grid ? grid : t + attempt;
-        const double         length  = end - t;
-        dealii::Timer        timer;
-        NewtonSolver::Result result;
+        const bool    to_grid = attempt >= grid - t - on_grid;
+        const double  end     = to_grid ? grid : t + attempt;
+        const double  length  = end - t;
+        dealii::Timer timer;
+        JudgedResult  result;
         if (!step(method, t, end, u, v, result))
           {
             attempt = length / 2;
@@ -228,16 +238,17 @@ namespace rodnet
         ++n_steps;
 
         StepInfo info;
-        info.step          = n_steps;
-        info.time          = t;
-        info.time_step     = length;
-        info.load_factor   = parameters.load_factor(t);
-        info.iterations    = result.iterations;
-        info.residual_norm = result.residual_norm;
+        info.step        = n_steps;
+        info.time        = t;
+        info.time_step   = length;
+        info.load_factor = parameters.load_factor(t);
+        info.iterations  = result.iterations;
+        info.residual    = result.residual;
         info.potential_energy =
           model.assemble(u, info.load_factor, nullptr, nullptr);
         if (method != Integrator::quasi_static)
           info.kinetic_energy = kinetic_energy(mass, v);
+        check_state(method, u, info);
         info.wall_time = timer.wall_time();
         if (!std::isfinite(info.potential_energy) ||
             !std::isfinite(info.kinetic_energy))
@@ -275,13 +286,35 @@ namespace rodnet
       }
   }
 
+  void
+  TimeIntegrator::check_state(const Integrator  method,
+                              const VectorType &u,
+                              StepInfo         &info)
+  {
+    if (method == Integrator::quasi_static)
+      {
+        model.assemble(u, info.load_factor, nullptr, &tangent, true);
+        const unsigned int negative =
+          tangent_inertia(tangent, model.constraints()).negative;
+        info.stable = negative == 0;
+        if (!info.stable && log != nullptr)
+          *log << "warning: the equilibrium at t = " << info.time
+               << " s is unstable: its tangent has " << negative
+               << " negative eigenvalue(s); any imperfection leaves it\n";
+      }
+    info.strain               = strains.evaluate(u);
+    const std::string warning = strains.warning(info.strain);
+    if (!warning.empty() && log != nullptr)
+      *log << "t = " << info.time << " s: " << warning << "\n";
+  }
+
   bool
-  TimeIntegrator::step(const Integrator      method,
-                       const double          time,
-                       const double          end_time,
-                       VectorType           &u,
-                       VectorType           &v,
-                       NewtonSolver::Result &result)
+  TimeIntegrator::step(const Integrator method,
+                       const double     time,
+                       const double     end_time,
+                       VectorType      &u,
+                       VectorType      &v,
+                       JudgedResult    &result)
   {
     const double h           = end_time - time;
     const double c           = mass_coefficient(method, h);
@@ -420,18 +453,42 @@ namespace rodnet
         model.set_time_step(h);
         if (midpoint)
           start_energy = model.assemble(u, load_factor, nullptr, nullptr);
-        // Tolerance from the force scale of the step, as in statics.
+        // The scales of statics, or the out-of-balance force of the
+        // predictor where inertia is what the residual balances.
         VectorType r = model.create_vector();
         problem.residual(x, r);
         problem.tangent(x, tangent);
-        const double scale =
-          std::max(std::abs(load_factor) * model.external_force().l2_norm(),
-                   r.l2_norm());
-        NewtonSolver::Parameters newton = parameters.newton;
-        newton.tolerance = std::max({parameters.relative_tolerance * scale,
-                                     residual_roundoff_floor(model, tangent),
-                                     std::numeric_limits<double>::min()});
-        result           = NewtonSolver(newton).solve(problem, x, tangent);
+        const ResidualParts loads     = criterion.load_scale(x, load_factor);
+        const ResidualParts predicted = criterion.norms(x, r);
+        const double        length    = model.length_scale();
+        const double        force =
+          std::max({loads.force, predicted.force, predicted.moment / length});
+        const ResidualParts scale{force, force * length};
+        const RoundoffNoise noise = criterion.roundoff_noise(x, load_factor);
+        const std::string   limited =
+          criterion.attainability(tangent,
+                                  noise,
+                                  scale,
+                                  parameters.roundoff_limit,
+                                  parameters.state_roundoff_limit);
+        if (!limited.empty())
+          {
+            result.converged = false;
+            result.failure   = limited;
+            return false;
+          }
+        const ResidualParts tolerance =
+          ResidualCriterion::tolerance(scale,
+                                       noise.floor,
+                                       parameters.relative_tolerance);
+        ResidualParts reached;
+        problem.converged = criterion.newton_test(tolerance, reached);
+        static_cast<NewtonSolver::Result &>(result) =
+          NewtonSolver(parameters.newton).solve(problem, x, tangent);
+        result.residual = reached;
+        if (!result.converged)
+          result.failure +=
+            "; " + ResidualCriterion::describe(reached, tolerance);
       }
     catch (const std::exception &e)
       {
