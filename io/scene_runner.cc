@@ -120,7 +120,7 @@ namespace rodnet
           solver.run(u,
                      [&](const StaticSolver::StepInfo &info,
                          const VectorType             &solution) {
-                       summary.unstable_steps += !info.stable;
+                       summary.unstable_steps += !info.check.stable;
                        summary.out_of_range_steps += !info.strain.in_range;
                        recorder.record(info.step,
                                        info.load_factor,
@@ -130,7 +130,7 @@ namespace rodnet
                                                        info.load_factor,
                                                        info.lowest_eigenvalue),
                                        &solution,
-                                       {double(info.stable),
+                                       {double(info.check.stable),
                                         double(info.strain.in_range)});
                      });
         }

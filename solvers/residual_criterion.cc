@@ -252,11 +252,8 @@ namespace rodnet
   }
 
   double
-  ResidualCriterion::state_noise(const MatrixType          &tangent,
-                                 const std::vector<double> &noise) const
+  ResidualCriterion::state_change(const std::vector<double> &change) const
   {
-    const std::vector<double> change =
-      solve_free_block(tangent, model.constraints(), noise);
     double largest = 0;
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
       switch (dof_roles.kind(i))
@@ -279,45 +276,23 @@ namespace rodnet
   }
 
   std::string
-  ResidualCriterion::attainability(const MatrixType    &tangent,
+  ResidualCriterion::rounding_hint(const MatrixType    &tangent,
                                    const RoundoffNoise &noise,
-                                   const ResidualParts &scale,
-                                   const double         residual_limit,
-                                   const double         state_limit) const
+                                   const ResidualParts &scale) const
   {
-    const ResidualParts &floor = noise.floor;
-    const bool           force_limited =
-      scale.force > 0 && floor.force > residual_limit * scale.force;
-    const bool moment_limited =
-      scale.moment > 0 && floor.moment > residual_limit * scale.moment;
-    if (!force_limited && !moment_limited)
-      return "";
-
-    // A residual floor near the loads is harmless where it stays in stiff
-    // modes: what counts is how far it leaves the state undetermined.
-    std::string uncertainty;
-    try
-      {
-        const double change = state_noise(tangent, noise.rows);
-        if (change <= state_limit)
-          return "";
-        uncertainty = " and leaves the state uncertain by " +
-                      scientific(change) + " (of the model size, or rad; " +
-                      scientific(state_limit) + " allowed)";
-      }
-    catch (const std::exception &e)
-      {
-        uncertainty = " and " + std::string(e.what());
-      }
-
-    // The row of that part where rounding weighs most.
+    // The part whose floor weighs most against its loads, and its row
+    // where the noise is largest.
+    const auto ratio = [](const double floor, const double loads) {
+      return loads > 0 ? floor / loads : floor;
+    };
+    const bool force = ratio(noise.floor.force, scale.force) >=
+                       ratio(noise.floor.moment, scale.moment);
     global_dof_index worst = 0;
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
       {
-        const bool in_part = force_limited ?
-                               dof_roles.kind(i) == Kind::position :
-                               (dof_roles.kind(i) == Kind::twist ||
-                                dof_roles.kind(i) == Kind::quaternion);
+        const bool in_part = force ? dof_roles.kind(i) == Kind::position :
+                                     (dof_roles.kind(i) == Kind::twist ||
+                                      dof_roles.kind(i) == Kind::quaternion);
         if (in_part && std::abs(noise.rows[i]) > std::abs(noise.rows[worst]))
           worst = i;
       }
@@ -332,19 +307,17 @@ namespace rodnet
     const double median    = diagonal[diagonal.size() / 2];
     const double stiffness = std::abs(tangent.diag_element(worst));
 
-    const std::string part  = force_limited ? "force" : "moment";
-    const std::string unit  = force_limited ? " N" : " N m";
-    const double      value = force_limited ? floor.force : floor.moment;
-    const double      loads = force_limited ? scale.force : scale.moment;
-    const std::string stiffness_unit =
-      dof_roles.kind(worst) == Kind::position ? " N/m" : " N m";
-    return "rounding limits the " + part + " residual to " + scientific(value) +
-           unit + " against loads of " + scientific(loads) + unit +
-           uncertainty + ": the stiffest rows, at " +
-           dof_roles.describe(worst) +
-           ", have K_ii = " + scientific(stiffness) + stiffness_unit + ", " +
+    const std::string unit = force ? " N" : " N m";
+    return std::string("rounding limits the ") + (force ? "force" : "moment") +
+           " residual to " +
+           scientific(force ? noise.floor.force : noise.floor.moment) + unit +
+           " against loads of " +
+           scientific(force ? scale.force : scale.moment) + unit +
+           "; the noisiest rows, at " + dof_roles.describe(worst) +
+           ", have a stiffness K_ii = " + scientific(stiffness) +
+           (dof_roles.kind(worst) == Kind::position ? " N/m" : " N m") + ", " +
            scientific(stiffness / median) +
-           " times the median of the tangent's diagonal; use fewer, longer "
+           " times the median of the tangent's diagonal: use fewer, longer "
            "segments there or a smaller EA";
   }
 } // namespace rodnet

@@ -31,11 +31,18 @@ namespace rodnet
     std::vector<double> rows;
   };
 
-  /// A Newton solve judged by a ResidualCriterion: Newton's result and the
-  /// parts of the final residual.
+  /// A Newton solve judged by a ResidualCriterion: Newton's result, the
+  /// parts of the final residual, and what judged it.
   struct JudgedResult : NewtonSolver::Result
   {
     ResidualParts residual;
+    /// The loads' scales and the rounding noise of the solve.
+    ResidualParts scale;
+    RoundoffNoise noise;
+    /// Whether a floor is not well below the loads in some part
+    /// (ResidualCriterion::inconclusive()): the residual then cannot show
+    /// equilibrium alone.
+    bool rounding_limited = false;
   };
 
   /**
@@ -58,10 +65,10 @@ namespace rodnet
    * (roundoff_noise()). A stiff segment, whose strain |e| / l - 1 rounds to
    * eps |x| / l, makes it large on its rows. Where a floor is not well
    * below the loads, a residual that small does not show equilibrium by
-   * itself; the state is then as good as rounding allows only if that noise
-   * leaves it well determined: attainability() solves the tangent for the
-   * measured noise and refuses a state that it moves by more than a limit,
-   * naming the segment where rounding weighs most.
+   * itself: the solvers then check the Newton correction K^-1 r of the
+   * accepted state, the distance to the exact discrete equilibrium, and
+   * warn where it exceeds a limit (rounding_hint() names the segment where
+   * the noise is largest).
    */
   class ResidualCriterion
   {
@@ -97,28 +104,40 @@ namespace rodnet
                    double            load_factor,
                    const VectorType *extra_force = nullptr) const;
 
+    /// Largest entry of a change of the state: positions over the model
+    /// size, angles in rad (a quaternion increment v turns by 2 |v|).
+    double
+    state_change(const std::vector<double> &change) const;
+
     /**
-     * Empty where the floor of the @p noise is at most @p residual_limit
-     * times the @p scale in both parts (or the scale is zero), or else
-     * where the noise moves the state by at most @p state_limit (positions
-     * over the model size, angles in rad; state_noise() with the constrained
-     * @p tangent). Otherwise one line saying why the accuracy is limited:
-     * the part, the floor, the scale and the state's uncertainty, and the
-     * row where rounding weighs most, with its rod and segment, stiffness
-     * and its ratio to the median stiffness of the tangent.
+     * Why rounding limits the accuracy, in one line: the part of the
+     * residual whose floor (of @p noise) is largest against the loads
+     * (@p scale), the floor and the loads, and the row where the noise is
+     * largest, with its rod and segment, its stiffness in the constrained
+     * @p tangent and the ratio to the median stiffness, and what to do.
      */
     std::string
-    attainability(const MatrixType    &tangent,
+    rounding_hint(const MatrixType    &tangent,
                   const RoundoffNoise &noise,
-                  const ResidualParts &scale,
-                  double               residual_limit,
-                  double               state_limit) const;
+                  const ResidualParts &scale) const;
 
     /// The tolerance max(@p rtol scale, floor) of each part (never zero).
     static ResidualParts
     tolerance(const ResidualParts &scale,
               const ResidualParts &floor,
               double               rtol);
+
+    /// Whether a @p floor exceeds @p limit times its @p scale in some part
+    /// (a part without loads has nothing to compare with): a residual that
+    /// small does not show equilibrium by itself.
+    static bool
+    inconclusive(const ResidualParts &floor,
+                 const ResidualParts &scale,
+                 double               limit)
+    {
+      return (scale.force > 0 && floor.force > limit * scale.force) ||
+             (scale.moment > 0 && floor.moment > limit * scale.moment);
+    }
 
     /// Whether both parts of @p norms are within @p tolerance.
     static bool
@@ -149,13 +168,6 @@ namespace rodnet
     }
 
   private:
-    /// Largest change of the state (positions over the model size, angles
-    /// in rad) under the residual @p noise: K^-1 noise, by a sparse LDL^T
-    /// of @p tangent. Throws std::runtime_error if the tangent is singular.
-    double
-    state_noise(const MatrixType          &tangent,
-                const std::vector<double> &noise) const;
-
     /// The moment (N m) that rows @p g (w, x, y, z) of junction
     /// @p junction's quaternion stand for at @p u; the w row is completed
     /// from the gauge invariance g . q = 0.

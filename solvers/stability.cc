@@ -88,66 +88,87 @@ namespace rodnet
     }
   } // namespace
 
-  Inertia
-  tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                  const dealii::AffineConstraints<double>      &constraints,
-                  const double                                  zero_ratio)
+  struct ConstrainedFactorization::Data
   {
-    const FreeBlock block = sparse_free_block(tangent, constraints);
-    Inertia         inertia;
+    FreeBlock                                          block;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  };
+
+  ConstrainedFactorization::ConstrainedFactorization(
+    const dealii::TrilinosWrappers::SparseMatrix &tangent,
+    const dealii::AffineConstraints<double>      &constraints)
+      : data(std::make_unique<Data>())
+  {
+    data->block = sparse_free_block(tangent, constraints);
+    if (!data->block.global.empty())
+      data->ldlt.compute(data->block.matrix);
+  }
+
+  ConstrainedFactorization::~ConstrainedFactorization() = default;
+
+  Inertia
+  ConstrainedFactorization::inertia(const double zero_ratio) const
+  {
+    const FreeBlock &block = data->block;
+    Inertia          result;
     if (block.global.empty())
-      return inertia;
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(block.matrix);
-    if (ldlt.info() != Eigen::Success)
+      return result;
+    if (data->ldlt.info() != Eigen::Success)
       {
-        // An exactly zero pivot stops the factorization.
-        inertia.zero          = 1;
-        inertia.weakest_ratio = 0;
-        return inertia;
+        // An exactly zero pivot stops the factorization, wherever it is.
+        result.zero          = 1;
+        result.weakest_ratio = 0;
+        result.weakest_dof   = dealii::numbers::invalid_unsigned_int;
+        return result;
       }
     // Pivot k of P K P^T belongs to the free DoF i with P(i) = k.
-    const Eigen::VectorXd &pivots = ldlt.vectorD();
-    const auto            &order  = ldlt.permutationP().indices();
+    const Eigen::VectorXd &pivots = data->ldlt.vectorD();
+    const auto            &order  = data->ldlt.permutationP().indices();
     for (unsigned int i = 0; i < block.global.size(); ++i)
       {
         const double pivot = pivots[order[i]];
         const double ratio = block.diagonal[i] > 0 ?
                                std::abs(pivot) / block.diagonal[i] :
                                std::abs(pivot);
-        if (ratio < inertia.weakest_ratio)
+        if (ratio < result.weakest_ratio)
           {
-            inertia.weakest_ratio = ratio;
-            inertia.weakest_dof   = block.global[i];
+            result.weakest_ratio = ratio;
+            result.weakest_dof   = block.global[i];
           }
         if (ratio < zero_ratio)
-          ++inertia.zero;
+          ++result.zero;
         else if (pivot < 0)
-          ++inertia.negative;
+          ++result.negative;
         else
-          ++inertia.positive;
+          ++result.positive;
       }
-    return inertia;
+    return result;
   }
 
   std::vector<double>
-  solve_free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                   const dealii::AffineConstraints<double>      &constraints,
-                   const std::vector<double>                    &rhs)
+  ConstrainedFactorization::solve(const std::vector<double> &rhs) const
   {
-    const FreeBlock     block = sparse_free_block(tangent, constraints);
-    std::vector<double> solution(tangent.m(), 0.0);
+    const FreeBlock    &block = data->block;
+    std::vector<double> solution(rhs.size(), 0.0);
     if (block.global.empty())
       return solution;
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(block.matrix);
     Eigen::VectorXd b(block.global.size());
     for (unsigned int k = 0; k < block.global.size(); ++k)
       b[k] = rhs[block.global[k]];
-    const Eigen::VectorXd x = ldlt.solve(b);
-    if (ldlt.info() != Eigen::Success || !x.allFinite())
+    const Eigen::VectorXd x = data->ldlt.solve(b);
+    if (data->ldlt.info() != Eigen::Success || !x.allFinite())
       throw std::runtime_error("the tangent is singular");
     for (unsigned int k = 0; k < block.global.size(); ++k)
       solution[block.global[k]] = x[k];
     return solution;
+  }
+
+  Inertia
+  tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                  const dealii::AffineConstraints<double>      &constraints,
+                  const double                                  zero_ratio)
+  {
+    return ConstrainedFactorization(tangent, constraints).inertia(zero_ratio);
   }
 
   std::vector<double>

@@ -3,6 +3,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <solvers/equilibrium_check.h>
 #include <solvers/free_motions.h>
 #include <solvers/stability.h>
 #include <solvers/static_solver.h>
@@ -82,9 +83,9 @@ namespace rodnet
     // on from the solution. The noise hardly changes within a step: it is
     // measured at the start only.
     unsigned int iterations = 0;
+    outcome.noise           = noise;
     for (unsigned int round = 0; round < 3; ++round)
       {
-        require_attainable(load_factor, noise, scale);
         tolerance = ResidualCriterion::tolerance(scale,
                                                  noise.floor,
                                                  parameters.relative_tolerance);
@@ -109,36 +110,23 @@ namespace rodnet
             outcome.failure   = e.what();
             return outcome;
           }
-        if (far_start ||
-            ResidualCriterion::within(
-              reached,
-              ResidualCriterion::tolerance(scale,
-                                           noise.floor,
-                                           parameters.relative_tolerance)))
+        const ResidualParts judged =
+          ResidualCriterion::tolerance(scale,
+                                       noise.floor,
+                                       parameters.relative_tolerance);
+        if (far_start || ResidualCriterion::within(reached, judged))
           {
-            require_attainable(load_factor, noise, scale);
+            outcome.scale = scale;
+            outcome.rounding_limited =
+              ResidualCriterion::inconclusive(noise.floor,
+                                              scale,
+                                              parameters.rounding_floor_limit);
             return outcome;
           }
       }
     outcome.converged = false;
     outcome.failure   = "the reactions kept changing the tolerance";
     return outcome;
-  }
-
-  void
-  StaticSolver::require_attainable(const double         load_factor,
-                                   const RoundoffNoise &noise,
-                                   const ResidualParts &scale) const
-  {
-    const std::string reason =
-      criterion.attainability(tangent,
-                              noise,
-                              scale,
-                              parameters.roundoff_limit,
-                              parameters.state_roundoff_limit);
-    if (!reason.empty())
-      throw SolverFailure("at load factor " + std::to_string(load_factor) +
-                          ", " + reason);
   }
 
   bool
@@ -181,34 +169,11 @@ namespace rodnet
   }
 
   void
-  StaticSolver::refuse_unsolvable(const VectorType &u,
-                                  const double      first_load_factor)
+  StaticSolver::refuse_unsolvable(const VectorType &u)
   {
     const std::string free_motions = describe_free_motions(model, u);
     if (!free_motions.empty())
       throw std::invalid_argument(free_motions);
-    std::string reason;
-    try
-      {
-        VectorType start = u;
-        model.apply_boundary_values(start, first_load_factor);
-        model.assemble(start, first_load_factor, nullptr, &tangent, true);
-        reason = criterion.attainability(
-          tangent,
-          criterion.roundoff_noise(start, first_load_factor),
-          criterion.load_scale(start, first_load_factor),
-          parameters.roundoff_limit,
-          parameters.state_roundoff_limit);
-      }
-    catch (const std::exception &)
-      {
-        // A start that cannot be evaluated fails in the first step, with
-        // its own message.
-      }
-    if (!reason.empty())
-      throw std::invalid_argument("the first load step cannot be solved "
-                                  "meaningfully: " +
-                                  reason);
   }
 
   ResidualParts
@@ -228,25 +193,40 @@ namespace rodnet
   }
 
   void
-  StaticSolver::check_state(const VectorType &u, StepInfo &info)
+  StaticSolver::check_state(const VectorType   &u,
+                            const JudgedResult &result,
+                            StepInfo           &info)
   {
-    info.negative_eigenvalues = negative_eigenvalues(u, info.load_factor);
-    info.stable               = info.negative_eigenvalues == 0;
-    info.strain               = strains.evaluate(u);
+    info.check  = check_equilibrium(model,
+                                   criterion,
+                                   u,
+                                   info.load_factor,
+                                   tangent,
+                                   result,
+                                   parameters.rounding_uncertainty_limit);
+    info.strain = strains.evaluate(u);
   }
 
   void
   StaticSolver::log_warnings(const StepInfo &info) const
   {
-    if (!info.stable)
+    if (!info.check.stable)
       *log << "warning: the equilibrium at load factor " << info.load_factor
-           << " is unstable: its tangent has " << info.negative_eigenvalues
+           << " is unstable: its tangent has "
+           << info.check.negative_eigenvalues
            << " negative eigenvalue(s); any imperfection leaves it (Solver/"
               "Branch switching amplitude follows a stable branch)"
            << std::endl;
     const std::string strain_warning = strains.warning(info.strain);
     if (!strain_warning.empty())
       *log << strain_warning << std::endl;
+    if (!info.check.rounding_warning.empty())
+      *log << "warning: rounding leaves the state at load factor "
+           << info.load_factor << " uncertain by "
+           << info.check.rounding_uncertainty
+           << " of the model size (the Newton correction of its residual; "
+           << parameters.rounding_uncertainty_limit
+           << " allowed): " << info.check.rounding_warning << std::endl;
   }
 
   std::string
@@ -266,9 +246,13 @@ namespace rodnet
       return "";
     char ratio[32];
     std::snprintf(ratio, sizeof(ratio), "%.1e", inertia.weakest_ratio);
+    const std::string where =
+      inertia.weakest_dof == dealii::numbers::invalid_unsigned_int ?
+        "an exactly zero pivot" :
+        "a pivot of " + std::string(ratio) + " times its diagonal, at " +
+          criterion.roles().describe(inertia.weakest_dof);
     return "; the tangent at load factor " + std::to_string(load_factor) +
-           " is singular (a pivot of " + ratio + " times its diagonal, at " +
-           criterion.roles().describe(inertia.weakest_dof) +
+           " is singular (" + where +
            "): part of the structure can move without deforming (a "
            "mechanism); hold it with a support or stiffen its joints";
   }
@@ -298,7 +282,7 @@ namespace rodnet
     VectorType increment = u;
     increment            = 0;
     double last_step     = 0;
-    refuse_unsolvable(u, std::min(nominal, 1.0));
+    refuse_unsolvable(u);
 
     while (lambda < 1.0 - 1e-12)
       {
@@ -434,7 +418,7 @@ namespace rodnet
                                "no stable branch found nearby")
                    << std::endl;
           }
-        check_state(u, info);
+        check_state(u, result, info);
         info.wall_time = timer.wall_time();
 
         if (log != nullptr)
@@ -458,7 +442,7 @@ namespace rodnet
           }
         on_converged(info, u);
 
-        previous_stable = info.stable;
+        previous_stable = info.check.stable;
         lambda          = target;
         step            = std::min(2 * step, nominal);
       }

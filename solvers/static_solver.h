@@ -2,6 +2,7 @@
 #define RODNET_SOLVERS_STATIC_SOLVER_H
 
 #include <core/rod_model.h>
+#include <solvers/equilibrium_check.h>
 #include <solvers/newton_solver.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/strain_range.h>
@@ -50,15 +51,15 @@ namespace rodnet
       /// moment part at most this times S L, or each is at its round-off
       /// floor if that is larger (ResidualCriterion).
       double relative_tolerance = 1e-9;
-      /// Where the round-off floor of the residual exceeds this fraction
-      /// of the loads (in either part), the residual cannot show
-      /// equilibrium by itself, and the state must be determined to within
-      /// state_roundoff_limit instead, or the run is refused up front (or
-      /// stops at that step) with the reason (ResidualCriterion).
-      double roundoff_limit = 1e-3;
-      /// Largest change of the state, over the model size (positions) or
-      /// in rad (angles), that rounding noise may cause.
-      double state_roundoff_limit = 1e-6;
+      /// Where the round-off floor of a part exceeds this fraction of its
+      /// loads, the residual cannot show equilibrium by itself
+      /// (ResidualCriterion::inconclusive()); the Newton correction of the
+      /// accepted residual is then checked against the next limit.
+      double rounding_floor_limit = 1e-3;
+      /// Largest Newton correction of such a state (positions over the
+      /// model size, angles in rad) without a warning that names where
+      /// rounding weighs most (ResidualCriterion::rounding_hint()).
+      double rounding_uncertainty_limit = 1e-6;
       /// Strains past these get a warning (StrainMonitor).
       StrainLimits strain_limits;
       /// Start each step from a prediction: the previous state plus the
@@ -88,11 +89,9 @@ namespace rodnet
       ResidualParts residual;
       double        wall_time         = 0; ///< seconds spent on this step
       double        lowest_eigenvalue = std::nan("");
-      /// Negative eigenvalues of the constrained tangent (its inertia).
-      unsigned int negative_eigenvalues = 0;
-      /// No negative eigenvalue: a perturbation does not grow.
-      bool        stable = true;
-      StrainRange strain;
+      /// Stability and rounding of the converged state.
+      EquilibriumCheck check;
+      StrainRange      strain;
     };
 
     using Observer =
@@ -105,9 +104,7 @@ namespace rodnet
     /**
      * Runs the load steps from the state @p u (usually zero) at load factor
      * 0. Throws std::invalid_argument before the first step for a model
-     * that cannot be solved: a rigid motion that no support stops
-     * (describe_free_motions()), or rounding that already limits the
-     * residual of the first step to more than roundoff_limit of its loads.
+     * with a rigid motion that no support stops (describe_free_motions()).
      * Throws SolverFailure naming the load factor and the reason when a
      * step cannot be completed (a singular tangent, a mechanism, is named
      * as such).
@@ -170,29 +167,25 @@ namespace rodnet
                       double            load_factor,
                       VectorType       &trial);
 
-    /// Throws SolverFailure at @p load_factor unless the rounding @p noise
-    /// (with the tangent in #tangent) leaves the state well determined
-    /// under loads of @p scale (ResidualCriterion::attainability()).
-    void
-    require_attainable(double               load_factor,
-                       const RoundoffNoise &noise,
-                       const ResidualParts &scale) const;
-
     /// Throws std::invalid_argument for a model that cannot be solved
     /// from @p u (see run()).
     void
-    refuse_unsolvable(const VectorType &u, double first_load_factor);
+    refuse_unsolvable(const VectorType &u);
 
     /// Force and moment norms of the residual at (@p u, @p load_factor).
     ResidualParts
     solved_residual(const VectorType &u, double load_factor);
 
-    /// Stability (the inertia of the tangent) and the strain range of the
+    /// Stability (the inertia of the tangent), the Newton correction where
+    /// @p result was rounding-limited, and the strain range of the
     /// converged @p u at info.load_factor, into @p info.
     void
-    check_state(const VectorType &u, StepInfo &info);
+    check_state(const VectorType   &u,
+                const JudgedResult &result,
+                StepInfo           &info);
 
-    /// Warning lines for an unstable state or strains out of range.
+    /// Warning lines for an unstable state, strains out of range, or a
+    /// state that rounding leaves uncertain.
     void
     log_warnings(const StepInfo &info) const;
 

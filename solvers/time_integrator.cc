@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <solvers/equilibrium_check.h>
 #include <solvers/free_motions.h>
 #include <solvers/stability.h>
 #include <solvers/time_integrator.h>
@@ -248,7 +249,7 @@ namespace rodnet
           model.assemble(u, info.load_factor, nullptr, nullptr);
         if (method != Integrator::quasi_static)
           info.kinetic_energy = kinetic_energy(mass, v);
-        check_state(method, u, info);
+        check_state(method, u, result, info);
         info.wall_time = timer.wall_time();
         if (!std::isfinite(info.potential_energy) ||
             !std::isfinite(info.kinetic_energy))
@@ -287,20 +288,31 @@ namespace rodnet
   }
 
   void
-  TimeIntegrator::check_state(const Integrator  method,
-                              const VectorType &u,
-                              StepInfo         &info)
+  TimeIntegrator::check_state(const Integrator    method,
+                              const VectorType   &u,
+                              const JudgedResult &result,
+                              StepInfo           &info)
   {
     if (method == Integrator::quasi_static)
       {
-        model.assemble(u, info.load_factor, nullptr, &tangent, true);
-        const unsigned int negative =
-          tangent_inertia(tangent, model.constraints()).negative;
-        info.stable = negative == 0;
+        const EquilibriumCheck check =
+          check_equilibrium(model,
+                            criterion,
+                            u,
+                            info.load_factor,
+                            tangent,
+                            result,
+                            parameters.rounding_uncertainty_limit);
+        info.stable = check.stable;
         if (!info.stable && log != nullptr)
           *log << "warning: the equilibrium at t = " << info.time
-               << " s is unstable: its tangent has " << negative
+               << " s is unstable: its tangent has "
+               << check.negative_eigenvalues
                << " negative eigenvalue(s); any imperfection leaves it\n";
+        if (!check.rounding_warning.empty() && log != nullptr)
+          *log << "warning: rounding leaves the state at t = " << info.time
+               << " s uncertain by " << check.rounding_uncertainty
+               << " of the model size: " << check.rounding_warning << "\n";
       }
     info.strain               = strains.evaluate(u);
     const std::string warning = strains.warning(info.strain);
@@ -464,18 +476,13 @@ namespace rodnet
         const double        force =
           std::max({loads.force, predicted.force, predicted.moment / length});
         const ResidualParts scale{force, force * length};
-        const RoundoffNoise noise = criterion.roundoff_noise(x, load_factor);
-        const std::string   limited =
-          criterion.attainability(tangent,
-                                  noise,
-                                  scale,
-                                  parameters.roundoff_limit,
-                                  parameters.state_roundoff_limit);
-        if (!limited.empty())
+        // The noise follows the slowly changing shape: measured every
+        // noise_interval steps (and after a failed step) rather than at
+        // every one of thousands.
+        if (noise.rows.empty() || steps_since_noise >= noise_interval)
           {
-            result.converged = false;
-            result.failure   = limited;
-            return false;
+            noise             = criterion.roundoff_noise(x, load_factor);
+            steps_since_noise = 0;
           }
         const ResidualParts tolerance =
           ResidualCriterion::tolerance(scale,
@@ -486,6 +493,12 @@ namespace rodnet
         static_cast<NewtonSolver::Result &>(result) =
           NewtonSolver(parameters.newton).solve(problem, x, tangent);
         result.residual = reached;
+        result.scale    = scale;
+        result.noise    = noise;
+        result.rounding_limited =
+          ResidualCriterion::inconclusive(noise.floor,
+                                          scale,
+                                          parameters.rounding_floor_limit);
         if (!result.converged)
           result.failure +=
             "; " + ResidualCriterion::describe(reached, tolerance);
@@ -501,7 +514,11 @@ namespace rodnet
         result.failure   = "the state is not finite";
       }
     if (!result.converged)
-      return false;
+      {
+        noise.rows.clear();
+        return false;
+      }
+    ++steps_since_noise;
 
     // Velocities and Newmark's inertial force at the new state.
     difference = x;

@@ -119,10 +119,10 @@ namespace rodnet
       /// reactions or R at the predictor, or at their round-off floors
       /// (ResidualCriterion, as in statics).
       double relative_tolerance = 1e-9;
-      /// Rounding limits of a step, as StaticSolver::Parameters::
-      /// roundoff_limit and state_roundoff_limit.
-      double roundoff_limit       = 1e-3;
-      double state_roundoff_limit = 1e-6;
+      /// As StaticSolver::Parameters::rounding_floor_limit and
+      /// rounding_uncertainty_limit (quasi-static steps).
+      double rounding_floor_limit       = 1e-3;
+      double rounding_uncertainty_limit = 1e-6;
       /// Strains past these get a warning (StrainMonitor).
       StrainLimits             strain_limits;
       NewtonSolver::Parameters newton;
@@ -201,10 +201,14 @@ namespace rodnet
          VectorType   &v,
          JudgedResult &result);
 
-    /// Stability (quasi-static steps) and strain range of the converged
-    /// @p u into @p info, with warnings on the log.
+    /// Stability and rounding (quasi-static steps, check_equilibrium()) and
+    /// the strain range of the converged @p u that @p result accepted into
+    /// @p info, with warnings on the log.
     void
-    check_state(Integrator method, const VectorType &u, StepInfo &info);
+    check_state(Integrator          method,
+                const VectorType   &u,
+                const JudgedResult &result,
+                StepInfo           &info);
 
     /// Runs steps of @p method from @p from to @p to, nominally @p h long.
     void
@@ -225,9 +229,13 @@ namespace rodnet
     std::ostream     *log;
     ResidualCriterion criterion;
     StrainMonitor     strains;
-    MatrixType        mass;             ///< unconstrained
-    MatrixType        constrained_mass; ///< fixed rows and columns zero
-    MatrixType        tangent;
+    /// Rounding noise of the residual, measured every noise_interval steps.
+    RoundoffNoise                 noise;
+    unsigned int                  steps_since_noise = 0;
+    static constexpr unsigned int noise_interval    = 20;
+    MatrixType                    mass; ///< unconstrained
+    MatrixType constrained_mass;        ///< fixed rows and columns zero
+    MatrixType tangent;
     /// Rows with a nonzero mass diagonal.
     std::vector<bool> has_mass;
     /// Newmark's inertial force M a at the current state.

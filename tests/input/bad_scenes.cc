@@ -1,39 +1,16 @@
 // Bad input gives one clear error naming the entry and a non-zero exit of
 // rodnet-run, never a crash; a solver failure keeps every earlier output.
-#include <array>
-#include <cstdio>
+#include <common/run_driver.h>
+
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <sys/wait.h>
 
 namespace
 {
-  struct Outcome
-  {
-    int         exit_code;
-    std::string output;
-  };
-
-  /// Writes @p scene to a file and runs rodnet-run on it.
-  Outcome
-  run_driver(const std::string &name, const std::string &scene)
-  {
-    const std::string path = name + ".prm";
-    std::ofstream(path) << scene;
-    const std::string command = std::string(RODNET_BINARY_DIR) +
-                                "/rodnet-run " + path + " --output out_" +
-                                name + " 2>&1";
-    FILE *pipe = popen(command.c_str(), "r");
-    EXPECT_NE(pipe, nullptr);
-    std::string           output;
-    std::array<char, 512> buffer;
-    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr)
-      output += buffer.data();
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-  }
+  using Outcome = rodnet::testing::DriverOutcome;
+  using rodnet::testing::run_driver;
 
   const std::string material = "subsection Material\n"
                                "  subsection linear elastic\n"

@@ -1,0 +1,108 @@
+// The units of the residual's parts (ResidualCriterion): a quaternion
+// residual is the moment it stands for, forces and moments get the scales
+// of the loads and reactions, and the round-off floor tracks the stiffness
+// of the stiffest segment.
+#include <core/rod_generators.h>
+#include <core/rod_model.h>
+#include <materials/linear_elastic_rod.h>
+#include <solvers/residual_criterion.h>
+#include <solvers/static_solver.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace rodnet;
+
+  /// A cantilever of length 1 along x (20 segments, EA = @p EA, EI = GJ =
+  /// 1) clamped by a junction at its start, with a welded rotation handle
+  /// "tip" at its end.
+  std::unique_ptr<RodModel>
+  cantilever(const double EA = 1e4)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::straight(Vector3(0, 0, 0),
+                                          Vector3(1, 0, 0),
+                                          20),
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
+    network->add_junction("tip", JunctionKind::welded, {{0, false}});
+    return std::make_unique<RodModel>(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>{
+        std::make_shared<LinearElasticRod>(RodStiffness{EA, 1, 1, 1})});
+  }
+
+  TEST(ResidualCriterion, QuaternionResidualIsTheAppliedMoment)
+  {
+    // Unloaded state, moment M at the tip: the residual is -M grad theta
+    // on the handle's quaternion rows, 2 M in their own units, and M in
+    // N m; the forces are zero.
+    const double M     = 0.3;
+    auto         model = cantilever();
+    model->add_moment(1, Vector3(0, 0.6, 0.8), M);
+    model->finalize();
+    const ResidualCriterion criterion(*model);
+    const VectorType        u = model->create_vector();
+    VectorType              r = model->create_vector();
+    model->assemble(u, 1.0, &r, nullptr);
+    const ResidualParts parts = criterion.norms(u, r);
+    EXPECT_NEAR(parts.moment, M, 1e-12);
+    EXPECT_NEAR(parts.force, 0, 1e-12);
+    EXPECT_NEAR(r.l2_norm(), 2 * M, 1e-12);
+
+    // No force, no reaction yet: the force scale is M / L and the moment
+    // scale M (L the length scale of the model, 1 here).
+    const ResidualParts scale = criterion.load_scale(u, 1.0);
+    EXPECT_NEAR(scale.moment, M, 1e-12);
+    EXPECT_NEAR(scale.force, M / model->length_scale(), 1e-12);
+  }
+
+  TEST(ResidualCriterion, ReactionsSetTheScaleOfATipForce)
+  {
+    // At the solved state of a tip force P the clamp carries P and P L:
+    // the scales are P and P L, whatever the (tiny) deflection.
+    const double P     = 1e-3;
+    auto         model = cantilever();
+    model->add_point_force(model->network().rods()[0].vertices.back(),
+                           Vector3(0, 0, P));
+    model->finalize();
+    VectorType u = model->create_vector();
+    StaticSolver(*model, StaticSolver::Parameters())
+      .run(u, [](const auto &, const auto &) {});
+    const ResidualCriterion criterion(*model);
+    const ResidualParts     scale = criterion.load_scale(u, 1.0);
+    EXPECT_NEAR(scale.force, P, 1e-9);
+    EXPECT_NEAR(scale.moment, P * model->length_scale(), 1e-9);
+  }
+
+  TEST(ResidualCriterion, FloorGrowsWithTheAxialStiffness)
+  {
+    // A bent state (positions off the axes): the force noise is that of
+    // strains rounded to eps |x| / l, times EA / l, so it grows in
+    // proportion to EA; the estimate stays within an order of magnitude
+    // of eps |x| EA / l times sqrt(n).
+    for (const double EA : {1e4, 1e8})
+      {
+        auto model = cantilever(EA);
+        model->add_point_force(model->network().rods()[0].vertices.back(),
+                               Vector3(0, 0.5, 0.5));
+        model->finalize();
+        VectorType u = model->create_vector();
+        StaticSolver(*model, StaticSolver::Parameters())
+          .run(u, [](const auto &, const auto &) {});
+        const ResidualCriterion criterion(*model);
+        const double floor    = criterion.roundoff_noise(u, 1.0).floor.force;
+        const double l        = 1.0 / 20,
+                     estimate = std::numeric_limits<double>::epsilon() * EA /
+                                l * std::sqrt(20.0);
+        std::cout << "EA = " << EA << ": force floor " << floor
+                  << ", eps EA / l sqrt(n) " << estimate << std::endl;
+        EXPECT_GT(floor, 0.1 * estimate);
+        EXPECT_LT(floor, 10 * estimate);
+      }
+  }
+} // namespace
