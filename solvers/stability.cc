@@ -3,6 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
+#include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <stdexcept>
 
@@ -71,17 +72,27 @@ namespace rodnet
       const unsigned int                  n = block.global.size();
       std::vector<Eigen::Triplet<double>> entries;
       block.diagonal = Eigen::VectorXd::Zero(n);
+      // Epetra's row views: deal.II's entry iterators cost more than the
+      // factorization on large tangents.
+      const Epetra_CrsMatrix &matrix = tangent.trilinos_matrix();
       for (unsigned int k = 0; k < n; ++k)
-        for (auto entry = tangent.begin(block.global[k]);
-             entry != tangent.end(block.global[k]);
-             ++entry)
-          {
-            const int column = free_index[entry->column()];
-            if (column == int(k))
-              block.diagonal[k] = std::abs(entry->value());
-            if (column >= 0 && column <= int(k))
-              entries.emplace_back(k, column, entry->value());
-          }
+        {
+          int     length;
+          double *values;
+          int    *columns;
+          matrix.ExtractMyRowView(matrix.LRID(int(block.global[k])),
+                                  length,
+                                  values,
+                                  columns);
+          for (int e = 0; e < length; ++e)
+            {
+              const int column = free_index[matrix.GCID(columns[e])];
+              if (column == int(k))
+                block.diagonal[k] = std::abs(values[e]);
+              if (column >= 0 && column <= int(k))
+                entries.emplace_back(k, column, values[e]);
+            }
+        }
       block.matrix.resize(n, n);
       block.matrix.setFromTriplets(entries.begin(), entries.end());
       return block;
