@@ -227,6 +227,9 @@ namespace rodnet
         VectorType moved = u;
         for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
           {
+            // Per coordinate: an exact zero (a rod along an axis) rounds
+            // to nothing, and a floor from the vertex's distance would
+            // accept a real transverse residual as noise.
             const double magnitude =
               dof_roles.kind(i) == Kind::position ?
                 std::abs(model.network().vertex(

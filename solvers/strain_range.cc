@@ -1,30 +1,18 @@
 #include <elements/stretch_kernel.h>
 #include <solvers/strain_range.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace rodnet
 {
   namespace
   {
-    /// Index of triangulation vertex @p v along @p rod.
+    /// Position of @p value in @p list (rod vertices or segments).
     unsigned int
-    index_along(const Rod &rod, const unsigned int v)
+    index_of(const std::vector<unsigned int> &list, const unsigned int value)
     {
-      for (unsigned int k = 0; k < rod.vertices.size(); ++k)
-        if (rod.vertices[k] == v)
-          return k;
-      return 0;
-    }
-
-    /// Index of the segment on cell @p cell along @p rod.
-    unsigned int
-    segment_along(const Rod &rod, const unsigned int cell)
-    {
-      for (unsigned int k = 0; k < rod.segments.size(); ++k)
-        if (rod.segments[k] == cell)
-          return k;
-      return 0;
+      return std::find(list.begin(), list.end(), value) - list.begin();
     }
   } // namespace
 
@@ -60,7 +48,7 @@ namespace rodnet
             range.axial     = stretch.strain;
             range.axial_rod = s.rod;
             range.axial_segment =
-              segment_along(model.network().rods()[s.rod], s.cell);
+              index_of(model.network().rods()[s.rod].segments, s.cell);
           }
       }
 
@@ -84,7 +72,8 @@ namespace rodnet
             range.bending     = strain;
             range.bending_rod = rod;
             range.bending_vertex =
-              index_along(model.network().rods()[rod], hinges[h].vertices[1]);
+              index_of(model.network().rods()[rod].vertices,
+                       hinges[h].vertices[1]);
           }
       }
     range.in_range =

@@ -1,6 +1,7 @@
 // A structure that can move freely is a bad scene (exit code 1, naming the
 // motion), not a solver failure; a mechanism inside a held structure stops
 // the solver (exit code 2) with a message that says so.
+#include <common/rod_models.h>
 #include <common/run_driver.h>
 
 #include <fstream>
@@ -11,23 +12,17 @@ namespace
 {
   using rodnet::testing::run_driver;
 
+  /// No files but probes.csv: these runs are about their messages.
+  const std::string quiet = "subsection Output\n"
+                            "  set Write VTU = false\n"
+                            "  set Plot = false\n"
+                            "end\n";
+
   const std::string rod = "subsection Geometry\n"
                           "  set Segments = 20\n"
                           "  set Director d1 = 0, 0, 1\n"
-                          "end\n"
-                          "subsection Material\n"
-                          "  subsection linear elastic\n"
-                          "    set Stiffness input = direct\n"
-                          "    set EA = 1e4\n"
-                          "    set EI1 = 1\n"
-                          "    set EI2 = 1\n"
-                          "    set GJ = 1\n"
-                          "  end\n"
-                          "end\n"
-                          "subsection Output\n"
-                          "  set Write VTU = false\n"
-                          "  set Plot = false\n"
-                          "end\n";
+                          "end\n" +
+                          rodnet::testing::direct_material() + quiet;
 
   /// The straight rod with @p supports and a transverse force at @p vertex.
   std::string
@@ -96,31 +91,20 @@ namespace
                  "  set Generator = network file\n"
                  "  set Network file = four_bar.net\n"
                  "  set Segments = 4\n"
-                 "end\n"
-                 "subsection Material\n"
-                 "  subsection linear elastic\n"
-                 "    set Stiffness input = direct\n"
-                 "    set EA = 1e4\n"
-                 "    set EI1 = 1\n"
-                 "    set EI2 = 1\n"
-                 "    set GJ = 1\n"
-                 "  end\n"
-                 "end\n"
-                 "subsection Supports\n"
-                 "  set Pinned vertices = @A, @D\n"
-                 "  set Fixed components = @B: z; @C: z\n"
-                 "end\n"
-                 "subsection Loads\n"
-                 "  set Steps = 2\n"
-                 "  set Point forces = @B: 1e-3, 0, 0\n"
-                 "end\n"
-                 "subsection Solver\n"
-                 "  set Minimum step fraction = 0.25\n"
-                 "end\n"
-                 "subsection Output\n"
-                 "  set Write VTU = false\n"
-                 "  set Plot = false\n"
-                 "end\n");
+                 "end\n" +
+                   rodnet::testing::direct_material() +
+                   "subsection Supports\n"
+                   "  set Pinned vertices = @A, @D\n"
+                   "  set Fixed components = @B: z; @C: z\n"
+                   "end\n"
+                   "subsection Loads\n"
+                   "  set Steps = 2\n"
+                   "  set Point forces = @B: 1e-3, 0, 0\n"
+                   "end\n"
+                   "subsection Solver\n"
+                   "  set Minimum step fraction = 0.25\n"
+                   "end\n" +
+                   quiet);
     EXPECT_EQ(o.exit_code, 2) << o.output;
     EXPECT_NE(o.output.find("is singular"), std::string::npos) << o.output;
     EXPECT_NE(o.output.find("(a mechanism)"), std::string::npos) << o.output;

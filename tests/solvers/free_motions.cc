@@ -2,9 +2,7 @@
 // of the issue gets the motion a hand analysis of its supports gives, and a
 // held structure gets none; StaticSolver refuses a free one before the
 // first step.
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
-#include <materials/linear_elastic_rod.h>
+#include <common/rod_models.h>
 #include <solvers/free_motions.h>
 #include <solvers/static_solver.h>
 
@@ -15,18 +13,12 @@ namespace
 {
   using namespace rodnet;
 
-  /// A straight rod from the origin along x (length 1, 10 segments), or a
+  /// A straight rod from the origin along x (length 1, 10 segments), and a
   /// second, separate one beside it when @p two_rods.
   std::unique_ptr<RodModel>
   straight_rods(const bool two_rods = false)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(1, 0, 0),
-                                          10),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
+    auto network = rodnet::testing::straight_network(10);
     if (two_rods)
       network->add_rod(generators::straight(Vector3(0, 1, 0),
                                             Vector3(1, 1, 0),
@@ -34,12 +26,8 @@ namespace
                        false,
                        Vector3::UnitZ(),
                        "simple");
-    const auto material =
-      std::make_shared<LinearElasticRod>(RodStiffness{1e4, 1, 1, 1});
-    return std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>(two_rods ? 2 : 1,
-                                                      material));
+    return rodnet::testing::elastic_model(std::move(network),
+                                          RodStiffness{1e4, 1, 1, 1});
   }
 
   std::string

@@ -2,9 +2,7 @@
 // residual is the moment it stands for, forces and moments get the scales
 // of the loads and reactions, and the round-off floor tracks the stiffness
 // of the stiffest segment.
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
-#include <materials/linear_elastic_rod.h>
+#include <common/rod_models.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
 
@@ -21,19 +19,11 @@ namespace
   std::unique_ptr<RodModel>
   cantilever(const double EA = 1e4)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(1, 0, 0),
-                                          20),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
+    auto network = rodnet::testing::straight_network(20);
     network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
     network->add_junction("tip", JunctionKind::welded, {{0, false}});
-    return std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>{
-        std::make_shared<LinearElasticRod>(RodStiffness{EA, 1, 1, 1})});
+    return rodnet::testing::elastic_model(std::move(network),
+                                          RodStiffness{EA, 1, 1, 1});
   }
 
   TEST(ResidualCriterion, QuaternionResidualIsTheAppliedMoment)

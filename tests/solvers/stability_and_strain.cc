@@ -4,9 +4,7 @@
 // it); the axial strain of a bar is F / EA; the bending strain of a rod
 // bent by an end moment is M r / EI; strains past the rod model's range are
 // named in a warning.
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
-#include <materials/linear_elastic_rod.h>
+#include <common/rod_models.h>
 #include <solvers/stability.h>
 #include <solvers/static_solver.h>
 
@@ -27,18 +25,14 @@ namespace
   std::unique_ptr<RodModel>
   cantilever(const unsigned int n, const bool handle = false)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(
-      generators::straight(Vector3(0, 0, 0), Vector3(1, 0, 0), n, true),
-      false,
-      Vector3::UnitZ(),
-      "simple");
+    auto network = rodnet::testing::straight_network(n,
+                                                     Vector3(0, 0, 0),
+                                                     Vector3(1, 0, 0),
+                                                     true);
     if (handle)
       network->add_junction("tip", JunctionKind::welded, {{0, false}});
-    auto model = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>{
-        std::make_shared<LinearElasticRod>(RodStiffness{EA, EI, EI, EI})});
+    auto model = rodnet::testing::elastic_model(std::move(network),
+                                                RodStiffness{EA, EI, EI, EI});
     model->clamp_end("clamp", 0, true);
     return model;
   }

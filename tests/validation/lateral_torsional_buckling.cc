@@ -8,9 +8,7 @@
 // round-off floor let steps pass without iterating, and the dense lowest
 // eigenvalue is only accurate to eps |K|. Now N = 200 must be at least as
 // accurate as N = 100.
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
-#include <materials/linear_elastic_rod.h>
+#include <common/rod_models.h>
 #include <solvers/static_solver.h>
 
 #include <cmath>
@@ -65,24 +63,21 @@ namespace
   double
   discrete_critical_load(const unsigned int n)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(
-      generators::straight(Vector3(0, 0, 0), Vector3(1, 0, 0), n, true),
-      false,
-      Vector3::UnitZ(),
-      "simple");
-    RodModel model(std::move(network),
-                   {std::make_shared<LinearElasticRod>(
-                     RodStiffness{1e7, 1e6, 1, 1})});
-    model.clamp_end("clamp", 0, true);
-    model.add_point_force(model.network().rods()[0].vertices.back(),
-                          Vector3(0, -5, 0));
-    model.finalize();
+    auto model = rodnet::testing::elastic_model(
+      rodnet::testing::straight_network(n,
+                                        Vector3(0, 0, 0),
+                                        Vector3(1, 0, 0),
+                                        true),
+      RodStiffness{1e7, 1e6, 1, 1});
+    model->clamp_end("clamp", 0, true);
+    model->add_point_force(model->network().rods()[0].vertices.back(),
+                           Vector3(0, -5, 0));
+    model->finalize();
     StaticSolver::Parameters parameters;
     parameters.n_steps            = 10;
     parameters.find_critical_load = true;
-    StaticSolver solver(model, parameters);
-    VectorType   u = model.create_vector();
+    StaticSolver solver(*model, parameters);
+    VectorType   u = model->create_vector();
     solver.run(u, [](const auto &, const auto &) {});
     return 5 * solver.critical_load_factor();
   }
