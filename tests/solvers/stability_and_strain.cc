@@ -5,11 +5,14 @@
 // bent by an end moment is M r / EI; strains past the rod model's range are
 // named in a warning.
 #include <common/rod_models.h>
+#include <common/run_scene_text.h>
 #include <solvers/stability.h>
 #include <solvers/static_solver.h>
+#include <solvers/time_integrator.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -191,5 +194,57 @@ namespace
                   M * r / EI > 0.1)
           << log.str();
       }
+  }
+  TEST(Stability, SceneRecordsTheStableColumn)
+  {
+    // The case: a rod left on the straight branch at 200 times its
+    // critical load (clamped column, P_cr = pi^2 / 4, no imperfection):
+    // probes.csv says stable 0 from the step past P_cr on, 1 before it.
+    const RunSummary summary = rodnet::testing::run_scene_text(
+      "subsection Geometry\n"
+      "  set Segments = 50\n"
+      "  set Director d1 = 0, 0, 1\n"
+      "  set Clamp at first segment midpoint = true\n"
+      "end\n" +
+        rodnet::testing::direct_material("1e7") +
+        "subsection Supports\n  set Clamped ends = start\nend\n"
+        "subsection Loads\n"
+        "  set Steps = 400\n"
+        "  set Point forces = end: -493.48022005446793, 0, 0\n"
+        "end\n"
+        "subsection Output\n"
+        "  set Write VTU = false\n"
+        "  set Plot = false\n"
+        "end\n",
+      "straight_column");
+    ASSERT_TRUE(summary.failure.empty()) << summary.failure;
+    // Load factors k / 400: P / P_cr = k / 2 passes 1 at step 3.
+    EXPECT_EQ(summary.unstable_steps, 398u);
+    std::ifstream csv("straight_column/probes.csv");
+    std::string   header, line, last;
+    std::getline(csv, header);
+    EXPECT_EQ(header, "step,load_factor,stable,in_range");
+    std::getline(csv, line);
+    EXPECT_EQ(line, "1,0.0025,1,1");
+    while (std::getline(csv, line))
+      last = line;
+    EXPECT_EQ(last, "400,1,0,1");
+  }
+
+  TEST(StrainRange, QuasiStaticTimeSteppingRefusesAFreeRod)
+  {
+    // Without inertia nothing holds a free rod either.
+    auto model =
+      rodnet::testing::elastic_model(rodnet::testing::straight_network(10),
+                                     RodStiffness{EA, EI, EI, EI});
+    model->add_point_force(10, Vector3(0, 0, 1e-3));
+    model->finalize();
+    TimeIntegrator::Parameters parameters;
+    parameters.integrator = Integrator::quasi_static;
+    parameters.time_step  = 0.1;
+    parameters.end_time   = 1;
+    TimeIntegrator integrator(*model, {}, parameters);
+    VectorType     u = model->create_vector(), v = model->create_vector();
+    EXPECT_THROW(integrator.run(u, v, {}), std::invalid_argument);
   }
 } // namespace
