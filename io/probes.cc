@@ -287,9 +287,10 @@ namespace rodnet
     return values;
   }
 
-  ProbeTable::ProbeTable(const std::string        &path,
-                         const std::vector<Probe> &probes,
-                         const std::string        &abscissa)
+  ProbeTable::ProbeTable(const std::string              &path,
+                         const std::vector<Probe>       &probes,
+                         const std::string              &abscissa,
+                         const std::vector<std::string> &check_columns)
       : file(path)
   {
     if (!file)
@@ -297,17 +298,22 @@ namespace rodnet
     file << "step," << abscissa;
     for (const Probe &p : probes)
       file << ',' << p.name;
+    for (const std::string &name : check_columns)
+      file << ',' << name;
     file << std::endl;
   }
 
   void
   ProbeTable::add_row(const unsigned int         step,
                       const double               abscissa,
-                      const std::vector<double> &values)
+                      const std::vector<double> &values,
+                      const std::vector<double> &checks)
   {
     file << step << ',' << std::setprecision(10) << abscissa;
     for (const double v : values)
       file << ',' << std::setprecision(12) << v;
+    for (const double c : checks)
+      file << ',' << c;
     file << std::endl;
   }
 } // namespace rodnet

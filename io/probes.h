@@ -93,19 +93,24 @@ namespace rodnet
    * The file `probes.csv`: a header `step,<abscissa>,<probe names>` and one
    * row per converged step, flushed at once so that a later failure loses
    * nothing. The abscissa is the load factor of load stepping
-   * ("load_factor") or the time of time stepping ("time").
+   * ("load_factor") or the time of time stepping ("time"). The solver's
+   * checks of each state follow the probes as further columns
+   * (@p check_columns, e.g. "stable" and "in_range", 1 or 0).
    */
   class ProbeTable
   {
   public:
-    ProbeTable(const std::string        &path,
-               const std::vector<Probe> &probes,
-               const std::string        &abscissa = "load_factor");
+    ProbeTable(const std::string              &path,
+               const std::vector<Probe>       &probes,
+               const std::string              &abscissa      = "load_factor",
+               const std::vector<std::string> &check_columns = {});
 
+    /// A row: the probes' @p values, then the @p checks.
     void
     add_row(unsigned int               step,
             double                     abscissa,
-            const std::vector<double> &values);
+            const std::vector<double> &values,
+            const std::vector<double> &checks = {});
 
   private:
     std::ofstream file;

@@ -21,9 +21,11 @@ namespace rodnet
   }
 
   double
-  memory_per_dof(const bool newton, const bool time_stepping, const bool vtu)
+  memory_per_dof(const bool static_checks,
+                 const bool time_stepping,
+                 const bool vtu)
   {
-    const double solver = newton ? 650 : time_stepping ? 1000 : 250;
+    const double solver = static_checks ? 1650 : time_stepping ? 1000 : 250;
     return solver + (vtu ? 150 : 0);
   }
 

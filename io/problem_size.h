@@ -37,13 +37,17 @@ namespace rodnet
 
   /**
    * Peak memory per DoF measured on straight rods and a square lattice of
-   * 1e5 to 4e6 DoFs (Release build): Newton 0.62 kB (the tangent, its
-   * unconstrained copy, KLU's factors), time stepping 0.95 kB (the mass
-   * matrix and the integrator's vectors besides), dynamic relaxation 0.24
-   * kB; VTU output adds 0.13 kB. The values returned round these up.
+   * 1e5 to 4e6 DoFs (Release build): Newton 1.6 kB (the tangent, its
+   * unconstrained copy, KLU's factors: 0.62 kB; the sparse LDL^T that
+   * checks the stability of every converged state: 1 kB), dynamic time
+   * stepping 0.95 kB (the mass matrix and the integrator's vectors
+   * besides), quasi-static time stepping as Newton, dynamic relaxation
+   * 0.24 kB; VTU output adds 0.13 kB. The values returned round these up.
+   * @p static_checks: Newton or quasi-static steps, whose states are
+   * checked for stability.
    */
   double
-  memory_per_dof(bool newton, bool time_stepping, bool vtu);
+  memory_per_dof(bool static_checks, bool time_stepping, bool vtu);
 
   /// @p n_rods rods of @p n_segments segments in all, @p n_closed of them
   /// closed (a closed rod has as many vertices as segments).

@@ -808,7 +808,10 @@ namespace rodnet
                          "Output/Directory"});
     const std::string solution_method = prm.get({"Solver"}, "Method");
     const double      bytes_per_dof =
-      memory_per_dof(solution_method == "newton",
+      memory_per_dof(solution_method == "newton" ||
+                       (solution_method == "time stepping" &&
+                        prm.get({"Solver", "Time stepping"}, "Integrator") ==
+                          "quasi-static"),
                      solution_method == "time stepping",
                      prm.get_bool({"Output"}, "Write VTU"));
     // What cannot fit in memory is refused before it is generated.
@@ -1223,6 +1226,22 @@ namespace rodnet
             "cross-section, which \"direct\" rigidities do not give; use "
             "\"section\"");
         result.push_back(rod_inertia(*group.section, group.density));
+      }
+    return result;
+  }
+
+  std::vector<double>
+  Scene::fiber_distances() const
+  {
+    std::vector<double> result;
+    for (const unsigned int g : rod_groups())
+      {
+        const std::optional<CrossSection> &section =
+          material_groups[g].section;
+        result.push_back(
+          section ?
+            2 * std::sqrt(std::max(section->I1, section->I2) / section->area) :
+            std::nan(""));
       }
     return result;
   }

@@ -113,6 +113,16 @@ namespace rodnet
     inertia() const;
 
     /**
+     * Per rod of build_model(): the distance from the centerline to the
+     * farthest fiber of its section, 2 sqrt(max(I1, I2) / A) (the radius
+     * of a circle; 1.15 times the half depth of a rectangle, on the safe
+     * side), for the bending strain check (StrainLimits); NaN where the
+     * rigidities are given directly and there is no section.
+     */
+    std::vector<double>
+    fiber_distances() const;
+
+    /**
      * The start of a time-stepping run on @p model (built by
      * build_model()): @p u and @p v take "Initial displacement" and
      * "Initial velocity" at the undeformed position of every vertex; twists

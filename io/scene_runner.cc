@@ -27,16 +27,17 @@ namespace rodnet
     class StepRecorder
     {
     public:
-      StepRecorder(const Scene              &scene,
-                   const std::string        &output_directory,
-                   const std::vector<Probe> &probes,
-                   const RodModel           *vtu_model,
-                   RunSummary               &summary,
-                   const std::string        &abscissa = "load_factor")
+      StepRecorder(const Scene                    &scene,
+                   const std::string              &output_directory,
+                   const std::vector<Probe>       &probes,
+                   const RodModel                 *vtu_model,
+                   RunSummary                     &summary,
+                   const std::string              &abscissa = "load_factor",
+                   const std::vector<std::string> &check_columns = {})
           : scene(scene)
           , probes(probes)
           , csv(csv_path(output_directory))
-          , table(csv, probes, abscissa)
+          , table(csv, probes, abscissa, check_columns)
           , summary(summary)
           , units{abscissa == "time" ? "s" : "-"}
       {
@@ -53,16 +54,18 @@ namespace rodnet
 
       /// Records step @p step at load factor or time @p abscissa (also the
       /// "time" of the PVD record); @p u is the state for the VTU files in
-      /// the layout of the RodModel given to the constructor.
+      /// the layout of the RodModel given to the constructor, @p checks the
+      /// values of the check columns.
       void
-      record(const unsigned int  step,
-             const double        abscissa,
-             std::vector<double> values,
-             const VectorType   *u)
+      record(const unsigned int         step,
+             const double               abscissa,
+             std::vector<double>        values,
+             const VectorType          *u,
+             const std::vector<double> &checks = {})
       {
         unwrap_rotations(probes, previous_values, values);
         previous_values = values;
-        table.add_row(step, abscissa, values);
+        table.add_row(step, abscissa, values, checks);
         std::vector<double> row{abscissa};
         row.insert(row.end(), values.begin(), values.end());
         summary.rows.push_back(row);
@@ -173,13 +176,16 @@ namespace rodnet
       for (const Probe &p : probes)
         if (p.kind == Probe::Kind::eigenvalue)
           parameters.track_lowest_eigenvalue = true;
+      parameters.strain_limits.fiber_distance = scene.fiber_distances();
 
       RunSummary   summary;
       StepRecorder recorder(scene,
                             output_directory,
                             probes,
                             model.get(),
-                            summary);
+                            summary,
+                            "load_factor",
+                            {"stable", "in_range"});
       if (log != nullptr)
         *log << "rodnet: " << model->network().rods().size() << " rod(s), "
              << model->layout().n_dofs() << " DoFs, "
@@ -189,7 +195,8 @@ namespace rodnet
       StaticSolver solver(*model, parameters, log);
       try
         {
-          // Step 0: the unloaded state, where every run starts.
+          // Step 0: the unloaded state, where every run starts; it is not
+          // checked (NaN in the check columns).
           recorder.record(0,
                           0.0,
                           evaluate_probes(probes,
@@ -199,10 +206,13 @@ namespace rodnet
                                           parameters.track_lowest_eigenvalue ?
                                             solver.lowest_eigenvalue(u, 0.0) :
                                             std::nan("")),
-                          &u);
+                          &u,
+                          {std::nan(""), std::nan("")});
           solver.run(u,
                      [&](const StaticSolver::StepInfo &info,
                          const VectorType             &solution) {
+                       summary.unstable_steps += !info.check.stable;
+                       summary.out_of_range_steps += !info.strain.in_range;
                        recorder.record(info.step,
                                        info.load_factor,
                                        evaluate_probes(probes,
@@ -210,7 +220,9 @@ namespace rodnet
                                                        solution,
                                                        info.load_factor,
                                                        info.lowest_eigenvalue),
-                                       &solution);
+                                       &solution,
+                                       {double(info.check.stable),
+                                        double(info.strain.in_range)});
                      });
         }
       catch (const SolverFailure &e)
@@ -316,7 +328,8 @@ namespace rodnet
             "entry \"Output/Probes\", probe \"" + p.name +
             "\": the lowest eigenvalue is tracked by Newton load stepping "
             "only, not by time stepping");
-      const TimeIntegrator::Parameters &parameters = scene.time_stepping;
+      TimeIntegrator::Parameters parameters   = scene.time_stepping;
+      parameters.strain_limits.fiber_distance = scene.fiber_distances();
       const bool dynamic = parameters.integrator != Integrator::quasi_static;
       TimeIntegrator integrator(*model,
                                 dynamic ? scene.inertia() :
@@ -324,13 +337,18 @@ namespace rodnet
                                 parameters,
                                 log);
 
-      RunSummary   summary;
+      RunSummary summary;
+      // Dynamic steps do not check stability: inertia holds their tangent.
+      const std::vector<std::string> checks =
+        dynamic ? std::vector<std::string>{"in_range"} :
+                  std::vector<std::string>{"stable", "in_range"};
       StepRecorder recorder(scene,
                             output_directory,
                             probes,
                             model.get(),
                             summary,
-                            "time");
+                            "time",
+                            checks);
       if (log != nullptr)
         *log << "rodnet (time stepping, " << to_string(parameters.integrator)
              << "): " << model->network().rods().size() << " rod(s), "
@@ -339,15 +357,27 @@ namespace rodnet
              << parameters.end_time << " s in steps of " << parameters.time_step
              << " s" << std::endl;
 
-      const auto record = [&](const unsigned int step,
-                              const double       time,
-                              const double       load_factor,
-                              const VectorType  &u) {
+      // The initial state (step 0) is not checked: NaN in its columns.
+      const auto record = [&](const unsigned int              step,
+                              const double                    time,
+                              const double                    load_factor,
+                              const VectorType               &u,
+                              const TimeIntegrator::StepInfo *info) {
+        std::vector<double> values(checks.size(), std::nan(""));
+        if (info != nullptr)
+          {
+            summary.unstable_steps += !info->stable;
+            summary.out_of_range_steps += !info->strain.in_range;
+            values.back() = info->strain.in_range;
+            if (!dynamic)
+              values.front() = info->stable;
+          }
         recorder.record(
           step,
           time,
           evaluate_probes(probes, *model, u, load_factor, std::nan("")),
-          &u);
+          &u,
+          values);
       };
       VectorType u, v;
       scene.initial_state(*model, u, v);
@@ -359,18 +389,16 @@ namespace rodnet
               const double load_factor =
                 parameters.load_factor(parameters.start_time);
               model->apply_boundary_values(u, load_factor);
-              record(0, parameters.start_time, load_factor, u);
+              record(0, parameters.start_time, load_factor, u, nullptr);
             }
-          integrator.run(u,
-                         v,
-                         [&](const TimeIntegrator::StepInfo &info,
-                             const VectorType               &state,
-                             const VectorType &) {
-                           record(info.step,
-                                  info.time,
-                                  info.load_factor,
-                                  state);
-                         });
+          integrator.run(
+            u,
+            v,
+            [&](const TimeIntegrator::StepInfo &info,
+                const VectorType               &state,
+                const VectorType &) {
+              record(info.step, info.time, info.load_factor, state, &info);
+            });
         }
       catch (const SolverFailure &e)
         {

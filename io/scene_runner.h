@@ -22,6 +22,12 @@ namespace rodnet
     /// Per recorded step (step 0, the unloaded or initial state, and every
     /// converged step): the abscissa, then the probe values.
     std::vector<std::vector<double>> rows;
+    /// Converged steps whose equilibrium is unstable (probes.csv column
+    /// "stable" 0; Newton and quasi-static runs).
+    unsigned int unstable_steps = 0;
+    /// Converged steps with a strain past the rod model's range (column
+    /// "in_range" 0).
+    unsigned int out_of_range_steps = 0;
     /// Empty if the run completed; the solver's message otherwise.
     std::string failure;
     /// The signal that stopped the run between two steps (see
@@ -39,6 +45,9 @@ namespace rodnet
    * finally probes.png. Step 0 is the unloaded state of load stepping and
    * the initial state of time stepping without preload; time stepping
    * also records every preload step (at times up to the start time).
+   * The rows of rod models end with the solver's checks of the state:
+   * "stable" (Newton and quasi-static runs) and "in_range" (1 or 0; the
+   * warnings on @p log say where).
    * Rotation probes are continuous over the steps (unwrap_rotations()). A
    * solver failure ends the run with RunSummary::failure set, a stop
    * signal with RunSummary::stopped_by set; everything written before

@@ -103,12 +103,14 @@ namespace rodnet
       }
 
     // Rounding errors of the positions, eps L, times the stiffness row sums
-    // S = 2 m / scaling bound what residual can be reached.
+    // S_i = 2 m_i / scaling bound what residual row i can reach; the floor
+    // sums them row by row (the largest row times sqrt(n) would let one
+    // stiff element excuse every other row, as in Newton's statics).
     const double applied = load_factor * free_norm(model.external_force());
     const double floor =
       std::max(std::numeric_limits<double>::epsilon() *
-                 (2 * masses.linfty_norm() / parameters.mass_scaling) *
-                 model.length_scale() * std::sqrt(double(free_dofs.size())),
+                 (2 * free_norm(masses) / parameters.mass_scaling) *
+                 model.length_scale(),
                std::numeric_limits<double>::min());
 
     double       kinetic_energy_before = 0;

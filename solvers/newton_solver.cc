@@ -189,6 +189,63 @@ namespace rodnet
       Teuchos::RCP<NoxInterface> interface;
     };
 
+    /// NOX's view of Problem::converged: the iterate and its residual,
+    /// copied into deal.II vectors, judged by the problem's own test.
+    class CallbackTest : public NOX::StatusTest::Generic
+    {
+    public:
+      CallbackTest(const NewtonSolver::Problem &problem,
+                   const VectorType            &layout)
+          : problem(problem)
+          , x(layout)
+          , r(layout)
+      {
+      }
+
+      NOX::StatusTest::StatusType
+      checkStatus(const NOX::Solver::Generic      &solver,
+                  const NOX::StatusTest::CheckType check) override
+      {
+        const NOX::Abstract::Group &group = solver.getSolutionGroup();
+        if (check == NOX::StatusTest::None || !group.isF())
+          return status = NOX::StatusTest::Unevaluated;
+        copy(group.getX(), x);
+        copy(group.getF(), r);
+        status = problem.converged(x, r) ? NOX::StatusTest::Converged :
+                                           NOX::StatusTest::Unconverged;
+        return status;
+      }
+
+      NOX::StatusTest::StatusType
+      getStatus() const override
+      {
+        return status;
+      }
+
+      std::ostream &
+      print(std::ostream &stream, int indent = 0) const override
+      {
+        return stream << std::string(indent, ' ') << status
+                      << " residual test of the problem" << std::endl;
+      }
+
+    private:
+      static void
+      copy(const NOX::Abstract::Vector &from, VectorType &to)
+      {
+        const Epetra_Vector &source =
+          dynamic_cast<const NOX::Epetra::Vector &>(from).getEpetraVector();
+        Epetra_MultiVector &target = to.trilinos_vector();
+        for (int i = 0; i < source.MyLength(); ++i)
+          target[0][i] = source[i];
+      }
+
+      const NewtonSolver::Problem &problem;
+      VectorType                   x;
+      VectorType                   r;
+      NOX::StatusTest::StatusType  status = NOX::StatusTest::Unevaluated;
+    };
+
     std::string
     nox_line_search_name(const std::string &name)
     {
@@ -259,9 +316,13 @@ namespace rodnet
     auto group = rcp(
       new NOX::Epetra::Group(printing, required, initial_guess, linear_system));
 
-    auto converged =
-      rcp(new NOX::StatusTest::NormF(parameters.tolerance,
-                                     NOX::StatusTest::NormF::Unscaled));
+    RCP<NOX::StatusTest::Generic> converged;
+    if (problem.converged)
+      converged = rcp(new CallbackTest(problem, x));
+    else
+      converged =
+        rcp(new NOX::StatusTest::NormF(parameters.tolerance,
+                                       NOX::StatusTest::NormF::Unscaled));
     auto max_iterations =
       rcp(new NOX::StatusTest::MaxIters(parameters.max_iterations));
     auto finite = rcp(new NOX::StatusTest::FiniteValue);

@@ -23,7 +23,8 @@ namespace rodnet
 
     struct Parameters
     {
-      /// Converged when |residual|_2 <= tolerance (an absolute force).
+      /// Converged when |residual|_2 <= tolerance (an absolute force),
+      /// unless the problem brings its own test (Problem::converged).
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 25;
       /// "backtrack", "polynomial" or "full step".
@@ -55,6 +56,14 @@ namespace rodnet
        */
       std::function<void(const VectorType &x, VectorType &a, VectorType &b)>
         rank_one;
+      /**
+       * Optional convergence test in place of |residual|_2 <= tolerance:
+       * called with every iterate, the initial guess included, and its
+       * residual; returns whether the iterate is converged. StaticSolver
+       * uses it to judge forces and moments separately (ResidualCriterion).
+       */
+      std::function<bool(const VectorType &x, const VectorType &residual)>
+        converged;
     };
 
     explicit NewtonSolver(const Parameters &parameters);

@@ -3,6 +3,8 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <solvers/equilibrium_check.h>
+#include <solvers/free_motions.h>
 #include <solvers/stability.h>
 #include <solvers/static_solver.h>
 
@@ -19,6 +21,8 @@ namespace rodnet
       : model(model)
       , parameters(parameters)
       , log(log)
+      , criterion(model)
+      , strains(model, parameters.strain_limits)
   {
     if (parameters.n_steps < 1)
       throw std::invalid_argument("the number of load steps must be >= 1");
@@ -32,13 +36,15 @@ namespace rodnet
     model.initialize_matrix(tangent);
   }
 
-  NewtonSolver::Result
+  JudgedResult
   StaticSolver::solve_at(VectorType       &u,
                          const double      load_factor,
                          const VectorType *extra_force,
-                         const VectorType *scale_state)
+                         const VectorType *scale_state,
+                         const bool        far_start)
   {
     model.apply_boundary_values(u, load_factor);
+    ResidualParts         tolerance, reached;
     NewtonSolver::Problem problem;
     problem.residual = [&](const VectorType &x, VectorType &r) {
       model.assemble(x, load_factor, &r, nullptr, true, extra_force);
@@ -46,37 +52,81 @@ namespace rodnet
     problem.tangent = [&](const VectorType &x, MatrixType &k) {
       model.assemble(x, load_factor, nullptr, &k, true, extra_force);
     };
+    problem.converged = criterion.newton_test(tolerance, reached);
 
-    // The force scale of the step: the applied load, or the out-of-balance
-    // force of the first iterate (displacement-driven steps).
-    VectorType r     = model.create_vector();
-    double     scale = load_factor * model.external_force().l2_norm();
-    double     floor = 0;
+    JudgedResult  outcome;
+    ResidualParts scale;
+    RoundoffNoise noise;
     try
       {
-        if (scale_state != nullptr)
-          {
-            VectorType start = *scale_state;
-            model.apply_boundary_values(start, load_factor);
-            model.assemble(start, load_factor, &r, nullptr, true, extra_force);
-            scale = std::max(scale, r.l2_norm());
-          }
+        VectorType start = scale_state != nullptr ? *scale_state : u;
+        model.apply_boundary_values(start, load_factor);
+        scale        = criterion.load_scale(start, load_factor, extra_force);
+        VectorType r = model.create_vector();
         model.assemble(u, load_factor, &r, &tangent, true, extra_force);
-        if (scale_state == nullptr)
-          scale = std::max(scale, r.l2_norm());
-        floor = residual_roundoff_floor(model, tangent);
+        noise = criterion.roundoff_noise(u, load_factor, extra_force);
+        if (far_start)
+          {
+            const ResidualParts out_of_balance = criterion.norms(u, r);
+            scale.force  = std::max(scale.force, out_of_balance.force);
+            scale.moment = std::max(scale.moment, out_of_balance.moment);
+          }
       }
     catch (const std::exception &e)
       {
-        NewtonSolver::Result failed;
-        failed.failure = e.what();
-        return failed;
+        outcome.failure = e.what();
+        return outcome;
       }
-    NewtonSolver::Parameters newton = parameters.newton;
-    newton.tolerance = std::max({parameters.relative_tolerance * scale,
-                                 floor,
-                                 std::numeric_limits<double>::min()});
-    return NewtonSolver(newton).solve(problem, u, tangent);
+
+    // The reactions in the scale are those of the start; the solution's
+    // are what counts. Where they ask for a tighter tolerance, Newton goes
+    // on from the solution. The noise hardly changes within a step: it is
+    // measured at the start only.
+    unsigned int iterations = 0;
+    outcome.noise           = noise;
+    for (unsigned int round = 0; round < 3; ++round)
+      {
+        tolerance = ResidualCriterion::tolerance(scale,
+                                                 noise.floor,
+                                                 parameters.relative_tolerance);
+        static_cast<NewtonSolver::Result &>(outcome) =
+          NewtonSolver(parameters.newton).solve(problem, u, tangent);
+        iterations += outcome.iterations;
+        outcome.iterations = iterations;
+        outcome.residual   = reached;
+        if (!outcome.converged)
+          {
+            outcome.failure +=
+              "; " + ResidualCriterion::describe(reached, tolerance);
+            return outcome;
+          }
+        try
+          {
+            scale = criterion.load_scale(u, load_factor, extra_force);
+          }
+        catch (const std::exception &e)
+          {
+            outcome.converged = false;
+            outcome.failure   = e.what();
+            return outcome;
+          }
+        const ResidualParts judged =
+          ResidualCriterion::tolerance(scale,
+                                       noise.floor,
+                                       parameters.relative_tolerance);
+        if (far_start || ResidualCriterion::within(reached, judged))
+          {
+            outcome.scale = scale;
+            outcome.rounding_limited =
+              ResidualCriterion::inconclusive(noise.floor,
+                                              scale,
+                                              parameters.rounding_floor_limit);
+            return outcome;
+          }
+      }
+    outcome.converged = false;
+    outcome.failure   = "the reactions kept changing the tolerance";
+    return outcome;
   }
 
   bool
@@ -118,16 +168,97 @@ namespace rodnet
       }
   }
 
-  double
-  residual_roundoff_floor(const RodModel &model, const MatrixType &tangent)
+  void
+  StaticSolver::refuse_unsolvable(const VectorType &u)
   {
-    double max_diagonal = 0;
-    for (unsigned int i = 0; i < tangent.m(); ++i)
-      if (!model.constraints().is_constrained(i))
-        max_diagonal =
-          std::max(max_diagonal, std::abs(tangent.diag_element(i)));
-    return std::numeric_limits<double>::epsilon() * max_diagonal *
-           model.length_scale() * std::sqrt(double(tangent.m()));
+    const std::string free_motions = describe_free_motions(model, u);
+    if (!free_motions.empty())
+      throw std::invalid_argument(free_motions);
+  }
+
+  ResidualParts
+  StaticSolver::solved_residual(const VectorType &u, const double load_factor)
+  {
+    VectorType r = model.create_vector();
+    model.assemble(u, load_factor, &r, nullptr, true);
+    return criterion.norms(u, r);
+  }
+
+  unsigned int
+  StaticSolver::negative_eigenvalues(const VectorType &u,
+                                     const double      load_factor)
+  {
+    model.assemble(u, load_factor, nullptr, &tangent, true);
+    return tangent_inertia(tangent, model.constraints()).negative;
+  }
+
+  void
+  StaticSolver::check_state(const VectorType   &u,
+                            const JudgedResult &result,
+                            StepInfo           &info)
+  {
+    info.check  = check_equilibrium(model,
+                                   criterion,
+                                   u,
+                                   info.load_factor,
+                                   tangent,
+                                   result,
+                                   parameters.rounding_uncertainty_limit);
+    refuse_undetermined_state(info.check,
+                              parameters.rounding_failure_limit,
+                              "load factor " +
+                                std::to_string(info.load_factor));
+    info.strain = strains.evaluate(u);
+  }
+
+  void
+  StaticSolver::log_warnings(const StepInfo &info) const
+  {
+    if (!info.check.stable)
+      *log << "warning: the equilibrium at load factor " << info.load_factor
+           << " is unstable: its tangent has "
+           << info.check.negative_eigenvalues
+           << " negative eigenvalue(s); any imperfection leaves it (Solver/"
+              "Branch switching amplitude follows a stable branch)"
+           << std::endl;
+    const std::string strain_warning = strains.warning(info.strain);
+    if (!strain_warning.empty())
+      *log << strain_warning << std::endl;
+    if (!info.check.rounding_warning.empty())
+      *log << "warning: rounding leaves the state at load factor "
+           << info.load_factor << " uncertain by "
+           << info.check.rounding_uncertainty
+           << " of the model size (the Newton correction of its residual; "
+           << parameters.rounding_uncertainty_limit
+           << " allowed): " << info.check.rounding_warning << std::endl;
+  }
+
+  std::string
+  StaticSolver::singular_tangent(const VectorType &u, const double load_factor)
+  {
+    Inertia inertia;
+    try
+      {
+        model.assemble(u, load_factor, nullptr, &tangent, true);
+        inertia = tangent_inertia(tangent, model.constraints());
+      }
+    catch (const std::exception &)
+      {
+        return "";
+      }
+    if (inertia.zero == 0)
+      return "";
+    char ratio[32];
+    std::snprintf(ratio, sizeof(ratio), "%.1e", inertia.weakest_ratio);
+    const std::string where =
+      inertia.weakest_dof == dealii::numbers::invalid_unsigned_int ?
+        "an exactly zero pivot" :
+        "a pivot of " + std::string(ratio) + " times its diagonal, at " +
+          criterion.roles().describe(inertia.weakest_dof);
+    return "; the tangent at load factor " + std::to_string(load_factor) +
+           " is singular (" + where +
+           "): part of the structure can move without deforming (a "
+           "mechanism); hold it with a support or stiffen its joints";
   }
 
   double
@@ -142,19 +273,20 @@ namespace rodnet
   void
   StaticSolver::run(VectorType &u, const Observer &on_converged)
   {
-    const double nominal             = 1.0 / parameters.n_steps;
-    const double minimum             = nominal * parameters.min_step_fraction;
-    double       lambda              = 0;
-    double       step                = nominal;
-    unsigned int count               = 0;
-    double       previous_eigenvalue = std::nan("");
-    VectorType   previous            = u;
+    const double nominal         = 1.0 / parameters.n_steps;
+    const double minimum         = nominal * parameters.min_step_fraction;
+    double       lambda          = 0;
+    double       step            = nominal;
+    unsigned int count           = 0;
+    bool         previous_stable = true;
+    VectorType   previous        = u;
     // Change of the state over the last converged step (of length
     // last_step), quaternion increments included: they are zeroed by the
     // reference reset, so they are taken before it.
     VectorType increment = u;
     increment            = 0;
     double last_step     = 0;
+    refuse_unsolvable(u);
 
     while (lambda < 1.0 - 1e-12)
       {
@@ -168,9 +300,9 @@ namespace rodnet
           std::min((std::floor((lambda + snap) / nominal) + 1) * nominal, 1.0);
         const double target =
           lambda + step > next_grid - snap ? next_grid : lambda + step;
-        step                       = target - lambda;
-        VectorType           trial = u;
-        NewtonSolver::Result result;
+        step               = target - lambda;
+        VectorType   trial = u;
+        JudgedResult result;
         if (parameters.predict)
           {
             // With an increment to follow, extrapolate it; without one
@@ -207,7 +339,8 @@ namespace rodnet
                                  mu))
               {
                 trial                 = start;
-                result                = NewtonSolver::Result{true, 0, 0, ""};
+                result.converged      = true;
+                result.residual       = solved_residual(trial, target);
                 followed_mode         = true;
                 model.configuration() = previous_configuration;
                 if (log != nullptr)
@@ -229,7 +362,8 @@ namespace rodnet
                 " failed: " + result.failure +
                 "; the step was cut below "
                 "the minimum " +
-                std::to_string(minimum) + " (Solver/Minimum step fraction)");
+                std::to_string(minimum) + " (Solver/Minimum step fraction)" +
+                singular_tangent(u, lambda));
             continue;
           }
 
@@ -242,17 +376,16 @@ namespace rodnet
         model.reset_reference(u);
 
         StepInfo info;
-        info.step          = ++count;
-        info.load_factor   = target;
-        info.iterations    = result.iterations;
-        info.residual_norm = result.residual_norm;
+        info.step        = ++count;
+        info.load_factor = target;
+        info.iterations  = result.iterations;
+        info.residual    = result.residual;
         if (parameters.track_lowest_eigenvalue ||
-            parameters.find_critical_load ||
             parameters.branch_switch_amplitude > 0)
           info.lowest_eigenvalue = lowest_eigenvalue(u, target);
 
         if (parameters.find_critical_load && std::isnan(critical_load) &&
-            previous_eigenvalue > 0 && info.lowest_eigenvalue <= 0)
+            previous_stable && negative_eigenvalues(u, target) > 0)
           {
             const Configuration unstable_configuration = model.configuration();
             try
@@ -260,9 +393,7 @@ namespace rodnet
                 bisect_critical_load(previous,
                                      stable_configuration,
                                      lambda,
-                                     previous_eigenvalue,
-                                     target,
-                                     info.lowest_eigenvalue);
+                                     target);
               }
             catch (const SolverFailure &e)
               {
@@ -291,6 +422,7 @@ namespace rodnet
                                "no stable branch found nearby")
                    << std::endl;
           }
+        check_state(u, result, info);
         info.wall_time = timer.wall_time();
 
         if (log != nullptr)
@@ -299,22 +431,24 @@ namespace rodnet
             std::snprintf(line,
                           sizeof(line),
                           "step %4u  load factor %.6f  iterations %2u  "
-                          "residual %.2e  time %.3f s",
+                          "residual %.2e N, %.2e N m  time %.3f s",
                           info.step,
                           info.load_factor,
                           info.iterations,
-                          info.residual_norm,
+                          info.residual.force,
+                          info.residual.moment,
                           info.wall_time);
             *log << line;
             if (!std::isnan(info.lowest_eigenvalue))
               *log << "  lowest eigenvalue " << info.lowest_eigenvalue;
             *log << std::endl;
+            log_warnings(info);
           }
         on_converged(info, u);
 
-        previous_eigenvalue = info.lowest_eigenvalue;
-        lambda              = target;
-        step                = std::min(2 * step, nominal);
+        previous_stable = info.check.stable;
+        lambda          = target;
+        step            = std::min(2 * step, nominal);
       }
   }
 
@@ -348,7 +482,7 @@ namespace rodnet
         for (unsigned int i = 0; i < mode.size(); ++i)
           trial[i] += sign * amplitude * mode[i];
         trial.compress(dealii::VectorOperation::add);
-        if (!solve_at(trial, load_factor).converged)
+        if (!solve_at(trial, load_factor, nullptr, nullptr, true).converged)
           continue;
         model.reset_reference(trial);
         const double energy =
@@ -372,9 +506,7 @@ namespace rodnet
   StaticSolver::bisect_critical_load(const VectorType    &u_stable,
                                      const Configuration &stable_configuration,
                                      double               lambda_stable,
-                                     double               eigenvalue_stable,
-                                     double               lambda_unstable,
-                                     double               eigenvalue_unstable)
+                                     double               lambda_unstable)
   {
     VectorType    u_lo   = u_stable;
     Configuration config = stable_configuration;
@@ -390,26 +522,18 @@ namespace rodnet
                               std::to_string(lambda_mid) + ": " +
                               result.failure);
         model.reset_reference(u_mid);
-        const double mu = lowest_eigenvalue(u_mid, lambda_mid);
-        if (mu > 0)
+        if (negative_eigenvalues(u_mid, lambda_mid) == 0)
           {
-            lambda_stable     = lambda_mid;
-            eigenvalue_stable = mu;
-            u_lo              = u_mid;
-            config            = model.configuration();
+            lambda_stable = lambda_mid;
+            u_lo          = u_mid;
+            config        = model.configuration();
           }
         else
-          {
-            lambda_unstable     = lambda_mid;
-            eigenvalue_unstable = mu;
-          }
+          lambda_unstable = lambda_mid;
       }
-    // Linear interpolation of the eigenvalue inside the final bracket.
-    critical_load = lambda_stable + (lambda_unstable - lambda_stable) *
-                                      eigenvalue_stable /
-                                      (eigenvalue_stable - eigenvalue_unstable);
+    critical_load = 0.5 * (lambda_stable + lambda_unstable);
     if (log != nullptr)
       *log << "critical load factor " << critical_load
-           << " (lowest eigenvalue crosses zero)" << std::endl;
+           << " (the tangent's lowest eigenvalue crosses zero)" << std::endl;
   }
 } // namespace rodnet

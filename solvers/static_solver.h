@@ -2,7 +2,10 @@
 #define RODNET_SOLVERS_STATIC_SOLVER_H
 
 #include <core/rod_model.h>
+#include <solvers/equilibrium_check.h>
 #include <solvers/newton_solver.h>
+#include <solvers/residual_criterion.h>
+#include <solvers/strain_range.h>
 
 #include <cmath>
 #include <functional>
@@ -20,23 +23,20 @@ namespace rodnet
   };
 
   /**
-   * Smallest residual norm that rounding errors let a state of @p model
-   * reach, from its constrained @p tangent: an axial force EA (|e|/l - 1)
-   * carries the rounding error of the positions, eps |x|, times EA / l, the
-   * scale of the tangent's diagonal; summed over the DoFs, no residual
-   * norm below eps max|K_ii| L sqrt(n_dofs) is meaningful.
-   */
-  double
-  residual_roundoff_floor(const RodModel &model, const MatrixType &tangent);
-
-  /**
    * Static equilibrium by load stepping: the load factor goes from 0 to 1
    * in equal steps, each solved by NewtonSolver from the previous
    * equilibrium moved by a predictor (see Parameters::predict); a failed step
    * is halved until it converges or falls below the minimum. After every
    * converged step the reference configuration is reset and the observer is
    * called. Optionally tracks the lowest eigenvalue of the constrained tangent
-   * and locates the load factor where it first crosses zero by bisection.
+   * (dense) and locates the load factor where the state first turns unstable
+   * by bisection (on the inertia of the tangent, sparse).
+   *
+   * A step converges when the force and the moment parts of the residual
+   * are each small against the loads (ResidualCriterion). Every converged
+   * state is checked for stability (the inertia of the constrained tangent)
+   * and for strains past the range of the rod model (StrainMonitor); either
+   * prints a warning on the log and shows in StepInfo.
    */
   class StaticSolver
   {
@@ -46,10 +46,26 @@ namespace rodnet
       unsigned int n_steps = 10;
       /// Smallest load step, as a fraction of the nominal 1 / n_steps.
       double min_step_fraction = 1.0 / 1024;
-      /// Newton converges when |residual| <= tolerance * max(|lambda f|,
-      /// |initial residual of the step|), or below the rounding-error floor
-      /// eps * max|K_ii| * L * sqrt(n_dofs), whichever is larger.
+      /// Newton converges when the force part of the residual is at most
+      /// this times the force scale S of the loads and reactions, and the
+      /// moment part at most this times S L, or each is at its round-off
+      /// floor if that is larger (ResidualCriterion).
       double relative_tolerance = 1e-9;
+      /// Where the round-off floor of a part exceeds this fraction of its
+      /// loads, the residual cannot show equilibrium by itself
+      /// (ResidualCriterion::inconclusive()); the Newton correction of the
+      /// accepted residual is then checked against the next limit.
+      double rounding_floor_limit = 1e-3;
+      /// Largest Newton correction of such a state (positions over the
+      /// model size, angles in rad) without a warning that names where
+      /// rounding weighs most (ResidualCriterion::rounding_hint()).
+      double rounding_uncertainty_limit = 1e-6;
+      /// Newton correction of such a state beyond which the step is not
+      /// accepted: the run stops with SolverFailure
+      /// (refuse_undetermined_state()).
+      double rounding_failure_limit = 1e-3;
+      /// Strains past these get a warning (StrainMonitor).
+      StrainLimits strain_limits;
       /// Start each step from a prediction: the previous state plus the
       /// last converged increment scaled to the step, or, without one, the
       /// linear response to the moved prescribed DoFs (falling back to the
@@ -70,12 +86,16 @@ namespace rodnet
 
     struct StepInfo
     {
-      unsigned int step              = 0;
-      double       load_factor       = 0;
-      unsigned int iterations        = 0;
-      double       residual_norm     = 0;
-      double       wall_time         = 0; ///< seconds spent on this step
-      double       lowest_eigenvalue = std::nan("");
+      unsigned int step        = 0;
+      double       load_factor = 0;
+      unsigned int iterations  = 0;
+      /// Force (N) and moment (N m) norms of the final residual.
+      ResidualParts residual;
+      double        wall_time         = 0; ///< seconds spent on this step
+      double        lowest_eigenvalue = std::nan("");
+      /// Stability and rounding of the converged state.
+      EquilibriumCheck check;
+      StrainRange      strain;
     };
 
     using Observer =
@@ -87,8 +107,11 @@ namespace rodnet
 
     /**
      * Runs the load steps from the state @p u (usually zero) at load factor
-     * 0. Throws SolverFailure naming the load factor and the reason when a
-     * step cannot be completed.
+     * 0. Throws std::invalid_argument before the first step for a model
+     * with a rigid motion that no support stops (describe_free_motions()).
+     * Throws SolverFailure naming the load factor and the reason when a
+     * step cannot be completed (a singular tangent, a mechanism, is named
+     * as such).
      */
     void
     run(VectorType &u, const Observer &on_converged);
@@ -107,18 +130,20 @@ namespace rodnet
 
   private:
     /**
-     * Newton from @p u at @p load_factor; @p u holds the result. The force
-     * scale of the tolerance is the larger of the applied load and the
-     * residual at @p u, or at @p scale_state instead if given: the
-     * unextrapolated start, so that the predictor changes neither way the
-     * tolerance (a good prediction would tighten it, one that stretches
-     * stiff segments would loosen it).
+     * Newton from @p u at @p load_factor; @p u holds the result. The scales
+     * of the tolerance are those of the loads and reactions at @p u, or at
+     * @p scale_state instead if given: the unextrapolated start, so that
+     * the predictor does not change the tolerance. The reactions of the
+     * solution are what counts: if the solution's tolerance is tighter,
+     * Newton continues from there. Throws SolverFailure if rounding limits
+     * the residual to more than roundoff_limit of the loads.
      */
-    NewtonSolver::Result
+    JudgedResult
     solve_at(VectorType       &u,
              double            load_factor,
              const VectorType *extra_force = nullptr,
-             const VectorType *scale_state = nullptr);
+             const VectorType *scale_state = nullptr,
+             bool              far_start   = false);
 
     /**
      * Newton at @p load_factor from @p u displaced both ways along the
@@ -146,18 +171,59 @@ namespace rodnet
                       double            load_factor,
                       VectorType       &trial);
 
+    /// Throws std::invalid_argument for a model that cannot be solved
+    /// from @p u (see run()).
+    void
+    refuse_unsolvable(const VectorType &u);
+
+    /// Force and moment norms of the residual at (@p u, @p load_factor).
+    ResidualParts
+    solved_residual(const VectorType &u, double load_factor);
+
+    /// Stability (the inertia of the tangent), the Newton correction where
+    /// @p result was rounding-limited, and the strain range of the
+    /// converged @p u at info.load_factor, into @p info.
+    void
+    check_state(const VectorType   &u,
+                const JudgedResult &result,
+                StepInfo           &info);
+
+    /// Warning lines for an unstable state, strains out of range, or a
+    /// state that rounding leaves uncertain.
+    void
+    log_warnings(const StepInfo &info) const;
+
+    /// Why a step from (@p u, @p load_factor) could fail for good: a
+    /// singular tangent (a mechanism), naming where; empty otherwise.
+    std::string
+    singular_tangent(const VectorType &u, double load_factor);
+
+    /**
+     * Bisects the load factor between the stable equilibrium @p u_stable
+     * (with its @p stable_configuration) at @p lambda_stable and an
+     * unstable one at @p lambda_unstable, down to critical_load_tolerance,
+     * by the inertia of the tangent (tangent_inertia(): the count of
+     * negative pivots is exact where a dense eigenvalue of a stiff tangent
+     * is only accurate to eps |K|); the critical load is the bracket's
+     * midpoint.
+     */
     void
     bisect_critical_load(const VectorType    &u_stable,
                          const Configuration &stable_configuration,
                          double               lambda_stable,
-                         double               eigenvalue_stable,
-                         double               lambda_unstable,
-                         double               eigenvalue_unstable);
+                         double               lambda_unstable);
 
-    RodModel     &model;
-    Parameters    parameters;
-    std::ostream *log;
-    MatrixType    tangent;
+    /// Negative eigenvalues of the constrained tangent at (@p u,
+    /// @p load_factor), from its inertia.
+    unsigned int
+    negative_eigenvalues(const VectorType &u, double load_factor);
+
+    RodModel         &model;
+    Parameters        parameters;
+    std::ostream     *log;
+    ResidualCriterion criterion;
+    StrainMonitor     strains;
+    MatrixType        tangent;
     /// Tangent without the support constraints, for linear_prediction().
     MatrixType unconstrained_tangent;
     double     critical_load = std::nan("");

@@ -1,5 +1,8 @@
 #include <deal.II/base/timer.h>
 
+#include <solvers/equilibrium_check.h>
+#include <solvers/free_motions.h>
+#include <solvers/stability.h>
 #include <solvers/time_integrator.h>
 
 #include <algorithm>
@@ -76,6 +79,8 @@ namespace rodnet
       : model(model)
       , parameters(parameters)
       , log(log)
+      , criterion(model)
+      , strains(model, parameters.strain_limits)
   {
     const Parameters &p = parameters;
     if (!(p.time_step > 0) || !std::isfinite(p.time_step))
@@ -133,6 +138,12 @@ namespace rodnet
   TimeIntegrator::run(VectorType &u, VectorType &v, const Observer &observer)
   {
     const Parameters &p = parameters;
+    if (p.integrator == Integrator::quasi_static || p.preload_time > 0)
+      {
+        const std::string free_motions = describe_free_motions(model, u);
+        if (!free_motions.empty())
+          throw std::invalid_argument(free_motions);
+      }
     if (p.preload_time > 0)
       {
         // Steps end at start - preload_time + (k - 1) h, k = 1..n: all
@@ -200,11 +211,11 @@ namespace rodnet
         // A step that reaches the grid point ends exactly on it, so that
         // the load factor is evaluated there and not a rounding error
         // before (which matters for discontinuous loads).
-        const bool           to_grid = attempt >= grid - t - on_grid;
-        const double         end     = to_grid ? grid : t + attempt;
-        const double         length  = end - t;
-        dealii::Timer        timer;
-        NewtonSolver::Result result;
+        const bool    to_grid = attempt >= grid - t - on_grid;
+        const double  end     = to_grid ? grid : t + attempt;
+        const double  length  = end - t;
+        dealii::Timer timer;
+        JudgedResult  result;
         if (!step(method, t, end, u, v, result))
           {
             attempt = length / 2;
@@ -228,16 +239,17 @@ namespace rodnet
         ++n_steps;
 
         StepInfo info;
-        info.step          = n_steps;
-        info.time          = t;
-        info.time_step     = length;
-        info.load_factor   = parameters.load_factor(t);
-        info.iterations    = result.iterations;
-        info.residual_norm = result.residual_norm;
+        info.step        = n_steps;
+        info.time        = t;
+        info.time_step   = length;
+        info.load_factor = parameters.load_factor(t);
+        info.iterations  = result.iterations;
+        info.residual    = result.residual;
         info.potential_energy =
           model.assemble(u, info.load_factor, nullptr, nullptr);
         if (method != Integrator::quasi_static)
           info.kinetic_energy = kinetic_energy(mass, v);
+        check_state(method, u, result, info);
         info.wall_time = timer.wall_time();
         if (!std::isfinite(info.potential_energy) ||
             !std::isfinite(info.kinetic_energy))
@@ -275,13 +287,49 @@ namespace rodnet
       }
   }
 
+  void
+  TimeIntegrator::check_state(const Integrator    method,
+                              const VectorType   &u,
+                              const JudgedResult &result,
+                              StepInfo           &info)
+  {
+    if (method == Integrator::quasi_static)
+      {
+        const EquilibriumCheck check =
+          check_equilibrium(model,
+                            criterion,
+                            u,
+                            info.load_factor,
+                            tangent,
+                            result,
+                            parameters.rounding_uncertainty_limit);
+        refuse_undetermined_state(check,
+                                  parameters.rounding_failure_limit,
+                                  "t = " + time_string(info.time) + " s");
+        info.stable = check.stable;
+        if (!info.stable && log != nullptr)
+          *log << "warning: the equilibrium at t = " << info.time
+               << " s is unstable: its tangent has "
+               << check.negative_eigenvalues
+               << " negative eigenvalue(s); any imperfection leaves it\n";
+        if (!check.rounding_warning.empty() && log != nullptr)
+          *log << "warning: rounding leaves the state at t = " << info.time
+               << " s uncertain by " << check.rounding_uncertainty
+               << " of the model size: " << check.rounding_warning << "\n";
+      }
+    info.strain               = strains.evaluate(u);
+    const std::string warning = strains.warning(info.strain);
+    if (!warning.empty() && log != nullptr)
+      *log << "t = " << info.time << " s: " << warning << "\n";
+  }
+
   bool
-  TimeIntegrator::step(const Integrator      method,
-                       const double          time,
-                       const double          end_time,
-                       VectorType           &u,
-                       VectorType           &v,
-                       NewtonSolver::Result &result)
+  TimeIntegrator::step(const Integrator method,
+                       const double     time,
+                       const double     end_time,
+                       VectorType      &u,
+                       VectorType      &v,
+                       JudgedResult    &result)
   {
     const double h           = end_time - time;
     const double c           = mass_coefficient(method, h);
@@ -420,18 +468,43 @@ namespace rodnet
         model.set_time_step(h);
         if (midpoint)
           start_energy = model.assemble(u, load_factor, nullptr, nullptr);
-        // Tolerance from the force scale of the step, as in statics.
+        // The scales of statics, or the out-of-balance force of the
+        // predictor where inertia is what the residual balances.
         VectorType r = model.create_vector();
         problem.residual(x, r);
         problem.tangent(x, tangent);
-        const double scale =
-          std::max(std::abs(load_factor) * model.external_force().l2_norm(),
-                   r.l2_norm());
-        NewtonSolver::Parameters newton = parameters.newton;
-        newton.tolerance = std::max({parameters.relative_tolerance * scale,
-                                     residual_roundoff_floor(model, tangent),
-                                     std::numeric_limits<double>::min()});
-        result           = NewtonSolver(newton).solve(problem, x, tangent);
+        const ResidualParts loads     = criterion.load_scale(x, load_factor);
+        const ResidualParts predicted = criterion.norms(x, r);
+        const double        length    = model.length_scale();
+        const double        force =
+          std::max({loads.force, predicted.force, predicted.moment / length});
+        const ResidualParts scale{force, force * length};
+        // The noise follows the slowly changing shape: measured every
+        // noise_interval steps (and after a failed step) rather than at
+        // every one of thousands.
+        if (noise.rows.empty() || steps_since_noise >= noise_interval)
+          {
+            noise             = criterion.roundoff_noise(x, load_factor);
+            steps_since_noise = 0;
+          }
+        const ResidualParts tolerance =
+          ResidualCriterion::tolerance(scale,
+                                       noise.floor,
+                                       parameters.relative_tolerance);
+        ResidualParts reached;
+        problem.converged = criterion.newton_test(tolerance, reached);
+        static_cast<NewtonSolver::Result &>(result) =
+          NewtonSolver(parameters.newton).solve(problem, x, tangent);
+        result.residual = reached;
+        result.scale    = scale;
+        result.noise    = noise;
+        result.rounding_limited =
+          ResidualCriterion::inconclusive(noise.floor,
+                                          scale,
+                                          parameters.rounding_floor_limit);
+        if (!result.converged)
+          result.failure +=
+            "; " + ResidualCriterion::describe(reached, tolerance);
       }
     catch (const std::exception &e)
       {
@@ -444,7 +517,11 @@ namespace rodnet
         result.failure   = "the state is not finite";
       }
     if (!result.converged)
-      return false;
+      {
+        noise.rows.clear();
+        return false;
+      }
+    ++steps_since_noise;
 
     // Velocities and Newmark's inertial force at the new state.
     difference = x;

@@ -4,7 +4,9 @@
 #include <core/mass_matrix.h>
 #include <core/rod_model.h>
 #include <solvers/newton_solver.h>
+#include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
+#include <solvers/strain_range.h>
 
 #include <cmath>
 #include <functional>
@@ -112,10 +114,19 @@ namespace rodnet
       MassKind     mass          = MassKind::consistent;
       /// Smallest step after halving, as a fraction of time_step.
       double min_step_fraction = 1.0 / 64;
-      /// Newton converges when |R| <= relative_tolerance * max(lambda |f|,
-      /// |R at the predictor|), or below the round-off floor
-      /// (residual_roundoff_floor()).
-      double                   relative_tolerance = 1e-9;
+      /// Newton converges when the force and moment parts of R are at
+      /// most relative_tolerance times their scales, the loads and
+      /// reactions or R at the predictor, or at their round-off floors
+      /// (ResidualCriterion, as in statics).
+      double relative_tolerance = 1e-9;
+      /// As StaticSolver::Parameters::rounding_floor_limit,
+      /// rounding_uncertainty_limit and rounding_failure_limit (quasi-static
+      /// steps).
+      double rounding_floor_limit       = 1e-3;
+      double rounding_uncertainty_limit = 1e-6;
+      double rounding_failure_limit     = 1e-3;
+      /// Strains past these get a warning (StrainMonitor).
+      StrainLimits             strain_limits;
       NewtonSolver::Parameters newton;
       /**
        * Dynamic runs stop as unstable (SolverFailure) where, over steps with
@@ -133,13 +144,18 @@ namespace rodnet
       unsigned int step      = 0; ///< converged steps so far, preload included
       double       time      = 0;
       double       time_step = 0; ///< length of this step
-      double       load_factor    = 0;
-      unsigned int iterations     = 0;
-      double       residual_norm  = 0;
-      double       kinetic_energy = 0; ///< 1/2 v.Mv (0 quasi-statically)
+      double       load_factor = 0;
+      unsigned int iterations  = 0;
+      /// Force (N) and moment (N m) norms of the final residual.
+      ResidualParts residual;
+      double        kinetic_energy = 0; ///< 1/2 v.Mv (0 quasi-statically)
       /// Stored energy minus load potential at the end of the step.
       double potential_energy = 0;
       double wall_time        = 0; ///< seconds spent on this step
+      /// Quasi-static steps: the constrained tangent has no negative
+      /// eigenvalue (always true for dynamic steps, which do not check).
+      bool        stable = true;
+      StrainRange strain;
     };
 
     using Observer = std::function<
@@ -162,6 +178,9 @@ namespace rodnet
      * (after the preload, if any, which overwrites @p v with zero) to
      * end_time; both hold the last converged state on return or on a
      * throw. Prescribed DoFs of @p u are set to their values at the start.
+     * Quasi-static runs and preloads throw std::invalid_argument first if
+     * a rigid motion is free (describe_free_motions()): without inertia
+     * nothing holds it.
      */
     void
     run(VectorType &u, VectorType &v, const Observer &on_converged);
@@ -177,12 +196,21 @@ namespace rodnet
     /// One attempt of a step with @p method from the state (u, v, p) at
     /// @p time to @p end_time; on success updates them and returns true.
     bool
-    step(Integrator            method,
-         double                time,
-         double                end_time,
-         VectorType           &u,
-         VectorType           &v,
-         NewtonSolver::Result &result);
+    step(Integrator    method,
+         double        time,
+         double        end_time,
+         VectorType   &u,
+         VectorType   &v,
+         JudgedResult &result);
+
+    /// Stability and rounding (quasi-static steps, check_equilibrium()) and
+    /// the strain range of the converged @p u that @p result accepted into
+    /// @p info, with warnings on the log.
+    void
+    check_state(Integrator          method,
+                const VectorType   &u,
+                const JudgedResult &result,
+                StepInfo           &info);
 
     /// Runs steps of @p method from @p from to @p to, nominally @p h long.
     void
@@ -198,12 +226,18 @@ namespace rodnet
     void
     equilibrium_inertial_force(const VectorType &u, double load_factor);
 
-    RodModel     &model;
-    Parameters    parameters;
-    std::ostream *log;
-    MatrixType    mass;             ///< unconstrained
-    MatrixType    constrained_mass; ///< fixed rows and columns zero
-    MatrixType    tangent;
+    RodModel         &model;
+    Parameters        parameters;
+    std::ostream     *log;
+    ResidualCriterion criterion;
+    StrainMonitor     strains;
+    /// Rounding noise of the residual, measured every noise_interval steps.
+    RoundoffNoise                 noise;
+    unsigned int                  steps_since_noise = 0;
+    static constexpr unsigned int noise_interval    = 20;
+    MatrixType                    mass; ///< unconstrained
+    MatrixType constrained_mass;        ///< fixed rows and columns zero
+    MatrixType tangent;
     /// Rows with a nonzero mass diagonal.
     std::vector<bool> has_mass;
     /// Newmark's inertial force M a at the current state.

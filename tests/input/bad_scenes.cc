@@ -324,9 +324,9 @@ namespace
     std::string   line;
     unsigned int  rows = 0;
     std::getline(csv, line);
-    EXPECT_EQ(line, "step,load_factor,tip_y");
+    EXPECT_EQ(line, "step,load_factor,tip_y,stable,in_range");
     std::getline(csv, line);
-    EXPECT_EQ(line, "0,0,0");
+    EXPECT_EQ(line, "0,0,0,nan,nan");
     while (std::getline(csv, line))
       {
         ++rows;
@@ -367,7 +367,7 @@ namespace
     std::ifstream csv("out_time_stepping_failure/probes.csv");
     std::string   line;
     std::getline(csv, line);
-    EXPECT_EQ(line, "step,time,tip_z");
+    EXPECT_EQ(line, "step,time,tip_z,in_range");
     unsigned int rows = 0;
     while (std::getline(csv, line))
       {

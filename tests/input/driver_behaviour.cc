@@ -136,15 +136,16 @@ namespace
     // Every row complete, from step 0 on, and the message names the last.
     const std::vector<std::string> csv =
       lines_of(read_file(out + "/probes.csv"));
-    EXPECT_EQ(csv.front(), "step,time,tip_y");
+    EXPECT_EQ(csv.front(), "step,time,tip_y,in_range");
     unsigned int last = 0;
     for (std::size_t r = 1; r < csv.size(); ++r)
       {
         std::istringstream row(csv[r]);
-        std::string        step, time, tip;
+        std::string        step, time, tip, in_range;
         ASSERT_TRUE(std::getline(row, step, ',') &&
-                    std::getline(row, time, ',') && std::getline(row, tip) &&
-                    !tip.empty())
+                    std::getline(row, time, ',') &&
+                    std::getline(row, tip, ',') && !tip.empty() &&
+                    std::getline(row, in_range) && !in_range.empty())
           << csv[r];
         EXPECT_EQ(std::stoul(step), r - 1);
         last = std::stoul(step);

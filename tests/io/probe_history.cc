@@ -121,7 +121,9 @@ namespace
     std::string   header, first;
     std::getline(csv, header);
     std::getline(csv, first);
-    EXPECT_EQ(first, "0,0,1,0,0,0");
+    // Newton rows end with the checks of the state, not made at step 0.
+    EXPECT_EQ(first,
+              GetParam() == "newton" ? "0,0,1,0,0,0,nan,nan" : "0,0,1,0,0,0");
   }
 
   INSTANTIATE_TEST_SUITE_P(Methods,

@@ -81,8 +81,9 @@ namespace
   TEST(ProblemSize, MemoryEstimateOfANewtonRun)
   {
     // 30000 segments (120003 DoFs), one Newton step: the peak memory grows
-    // by the estimate per DoF within 50% (measured 0.62 kB per DoF on
-    // 1e5 to 4e6 DoFs; the estimate is 0.65 kB).
+    // by the estimate per DoF within 50% (measured 1.6 kB per DoF on
+    // 4e5 and 2e6 DoFs, 1 kB of it the stability check's LDL^T; the
+    // estimate is 1.65 kB).
     const auto scene =
       scene_of("  set Segments = 30000\n  set End = 30, 0, 0\n",
                "subsection Supports\n  set Clamped ends = start\nend\n"

@@ -1,0 +1,149 @@
+// What the checks of issue 11 cost against a Newton iteration, on a large
+// gridshell: the square lattice of scenes/gridshell.prm with n x n cells
+// (8 segments per lath, welded), its two edges pushed together by a tenth of
+// the span and a small uplift, solved to the first load step. At the
+// converged state the program times, median (min-max) of the repeats:
+//   residual / tangent: RodModel::assemble with the residual or the tangent,
+//   KLU: the factorization and solve of one Newton iteration,
+//   load scale:  ResidualCriterion::load_scale (two residual assemblies),
+//   noise:       ResidualCriterion::roundoff_noise (three),
+//   equilibrium: check_equilibrium (tangent assembly, sparse LDL^T, inertia,
+//                Newton correction),
+//   strains:     StrainMonitor::evaluate,
+//   free motions: describe_free_motions (once per run),
+// and the wall time of the first load step with all the checks.
+//
+// Usage: solver_checks [--cells n] [--repeats n] (defaults 12 and 5).
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <io/scene.h>
+#include <solvers/equilibrium_check.h>
+#include <solvers/free_motions.h>
+#include <solvers/static_solver.h>
+
+#include <bench/options.h>
+#include <bench/timing.h>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+using namespace rodnet;
+
+namespace
+{
+  /// The gridshell scene with @p cells x @p cells cells of span 1.
+  std::string
+  gridshell_scene(const unsigned int cells)
+  {
+    std::ostringstream s;
+    s << "subsection Geometry\n  set Generator = square lattice\n"
+      << "  set Cells = " << cells << ", " << cells << "\n"
+      << "  set Beam length = " << 1.0 / cells << "\n"
+      << "  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
+      << "subsection Material\n  subsection linear elastic\n"
+      << "    set Stiffness input = direct\n    set EA = 1000\n"
+      << "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
+      << "subsection Supports\n  set Prescribed displacements = ";
+    for (unsigned int j = 0; j <= cells; ++j)
+      s << (j == 0 ? "" : "; ") << "@n_0_" << j << ": x=0.1 y=0 z=0; @n_"
+        << cells << "_" << j << ": x=-0.1 y=0 z=0";
+    s << "\nend\nsubsection Loads\n  set Steps = 40\n"
+      << "  set Distributed force = 0, 0, 0.01\nend\n";
+    return s.str();
+  }
+
+  void
+  print(const std::string &what, const std::vector<double> &samples)
+  {
+    std::printf("%-28s %s s\n",
+                what.c_str(),
+                bench::format_time(bench::statistics(samples)).c_str());
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  unsigned int                             cells = 12, repeats = 5;
+  bench::parse(argc,
+               argv,
+               {bench::number("--cells", cells, 1),
+                bench::number("--repeats", repeats, 1)});
+
+  dealii::ParameterHandler prm;
+  Scene::declare_parameters(prm);
+  prm.parse_input_from_string(gridshell_scene(cells));
+  const Scene               scene(prm);
+  std::unique_ptr<RodModel> model = scene.build_model();
+  std::printf("gridshell of %u x %u cells: %u DoFs\n",
+              cells,
+              cells,
+              static_cast<unsigned int>(model->layout().n_dofs()));
+
+  // The first load step, with every check.
+  StaticSolver::Parameters parameters = scene.solver;
+  parameters.n_steps                  = 40;
+  VectorType   u                      = model->create_vector();
+  double       step_time = 0, load_factor = 0;
+  unsigned int iterations = 0;
+  try
+    {
+      StaticSolver(*model, parameters)
+        .run(u, [&](const StaticSolver::StepInfo &info, const VectorType &) {
+          step_time   = info.wall_time;
+          load_factor = info.load_factor;
+          iterations  = info.iterations;
+          throw std::runtime_error("first step done");
+        });
+    }
+  catch (const std::runtime_error &)
+    {
+    }
+  std::printf("first load step (load factor %g): %u iterations, %.3g s\n",
+              load_factor,
+              iterations,
+              step_time);
+
+  VectorType r = model->create_vector();
+  MatrixType tangent;
+  model->initialize_matrix(tangent);
+  const ResidualCriterion criterion(*model);
+  const StrainMonitor     strains(*model, StrainLimits());
+  print("residual", bench::time_repeats(repeats, [&] {
+          model->assemble(u, load_factor, &r, nullptr);
+        }));
+  print("tangent", bench::time_repeats(repeats, [&] {
+          model->assemble(u, load_factor, nullptr, &tangent);
+        }));
+  print("KLU", bench::time_repeats(repeats, [&] {
+          VectorType                             du = model->create_vector();
+          dealii::SolverControl                  control(1, 0);
+          dealii::TrilinosWrappers::SolverDirect direct(control);
+          direct.solve(tangent, du, r);
+        }));
+  print("load scale", bench::time_repeats(repeats, [&] {
+          criterion.load_scale(u, load_factor);
+        }));
+  print("noise", bench::time_repeats(repeats, [&] {
+          criterion.roundoff_noise(u, load_factor);
+        }));
+  JudgedResult limited;
+  limited.rounding_limited = true;
+  limited.noise            = criterion.roundoff_noise(u, load_factor);
+  limited.scale            = criterion.load_scale(u, load_factor);
+  print("equilibrium", bench::time_repeats(repeats, [&] {
+          check_equilibrium(*model,
+                            criterion,
+                            u,
+                            load_factor,
+                            tangent,
+                            limited,
+                            1e-6);
+        }));
+  print("strains", bench::time_repeats(repeats, [&] { strains.evaluate(u); }));
+  print("free motions", bench::time_repeats(repeats, [&] {
+          describe_free_motions(*model, u);
+        }));
+}

@@ -1,0 +1,105 @@
+#include <solvers/dof_roles.h>
+
+namespace rodnet
+{
+  DofRoles::DofRoles(const RodModel &model)
+      : model(model)
+  {
+    const DofLayout  &layout  = model.layout();
+    const RodNetwork &network = model.network();
+    kinds.assign(layout.n_dofs(), Kind::inert);
+    owners.assign(layout.n_dofs(), 0);
+    components.assign(layout.n_dofs(), 0);
+    for (unsigned int v = 0; v < network.n_vertices(); ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          const global_dof_index d = layout.vertex_dof(v, c);
+          kinds[d]                 = Kind::position;
+          owners[d]                = v;
+          components[d]            = c;
+        }
+    for (const auto &copy : layout.shared_copies())
+      kinds[copy.first] = Kind::inert;
+
+    // A twist that no hinge or junction element sees carries nothing.
+    const unsigned int n_cells = network.triangulation().n_active_cells();
+    std::vector<bool>  seen(n_cells, false);
+    for (const HingeStencil &h : layout.hinges())
+      seen[h.segment_prev] = seen[h.segment_next] = true;
+    for (const JunctionStencil &e : layout.junctions())
+      seen[e.segment] = true;
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
+      {
+        owners[layout.twist_dof(cell)] = cell;
+        if (seen[cell])
+          kinds[layout.twist_dof(cell)] = Kind::twist;
+      }
+    for (unsigned int j = 0; j < network.junctions().size(); ++j)
+      if (layout.has_rotation_dofs(j))
+        for (unsigned int c = 1; c < 4; ++c)
+          {
+            const global_dof_index d = layout.rotation_dof(j, c);
+            kinds[d]                 = Kind::quaternion;
+            owners[d]                = j;
+            components[d]            = c;
+          }
+
+    vertex_places.resize(network.n_vertices());
+    cell_places.resize(n_cells);
+    for (unsigned int r = 0; r < network.rods().size(); ++r)
+      {
+        const Rod &rod = network.rods()[r];
+        for (unsigned int k = 0; k < rod.vertices.size(); ++k)
+          vertex_places[rod.vertices[k]] = {r, k};
+        for (unsigned int k = 0; k < rod.segments.size(); ++k)
+          cell_places[rod.segments[k]] = {r, k};
+      }
+  }
+
+  std::string
+  DofRoles::vertex_name(const unsigned int v) const
+  {
+    const auto [r, k]     = vertex_places[v];
+    const Rod        &rod = model.network().rods()[r];
+    const std::string where =
+      k == 0 ?
+        "start" :
+        (k + 1 == rod.vertices.size() && !rod.closed ? "end" :
+                                                       std::to_string(k));
+    return std::to_string(r) + ":" + where;
+  }
+
+  std::string
+  DofRoles::describe(const global_dof_index dof) const
+  {
+    const RodNetwork &network = model.network();
+    switch (kinds[dof])
+      {
+        case Kind::quaternion:
+          return "junction \"" + network.junctions()[owners[dof]].name + "\"";
+        case Kind::position:
+          {
+            const auto [r, k]          = vertex_places[owners[dof]];
+            const Rod         &rod     = network.rods()[r];
+            const unsigned int n       = rod.segments.size();
+            unsigned int       segment = k < n ? k : n - 1;
+            if ((k > 0 || rod.closed) && k < n)
+              {
+                const unsigned int before = (k + n - 1) % n;
+                if (model.configuration().rest_length(rod.segments[before]) <
+                    model.configuration().rest_length(rod.segments[k]))
+                  segment = before;
+              }
+            return "rod " + std::to_string(r) + " segment " +
+                   std::to_string(segment) + " (vertex " + std::to_string(k) +
+                   ")";
+          }
+        default:
+          {
+            const auto [r, s] = cell_places[owners[dof]];
+            return "rod " + std::to_string(r) + " segment " +
+                   std::to_string(s) + " (its twist)";
+          }
+      }
+  }
+} // namespace rodnet

@@ -1,0 +1,44 @@
+#ifndef RODNET_TESTS_ROD_MODELS_H
+#define RODNET_TESTS_ROD_MODELS_H
+
+#include <core/rod_generators.h>
+#include <core/rod_model.h>
+#include <materials/linear_elastic_rod.h>
+
+#include <memory>
+
+namespace rodnet::testing
+{
+  /// A network with one straight rod from @p start to @p end in @p n
+  /// segments (d1 = e_z, the simple kernel), the chain started half a
+  /// segment behind @p start where @p midpoint_clamp.
+  inline std::unique_ptr<RodNetwork>
+  straight_network(const unsigned int n,
+                   const Vector3     &start          = Vector3(0, 0, 0),
+                   const Vector3     &end            = Vector3(1, 0, 0),
+                   const bool         midpoint_clamp = false)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::straight(start, end, n, midpoint_clamp),
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    return network;
+  }
+
+  /// A RodModel of @p network whose rods all have the linear elastic
+  /// rigidities @p stiffness.
+  inline std::unique_ptr<RodModel>
+  elastic_model(std::unique_ptr<RodNetwork> network,
+                const RodStiffness         &stiffness)
+  {
+    const std::size_t n_rods = network->rods().size();
+    return std::make_unique<RodModel>(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>(
+        n_rods,
+        std::make_shared<LinearElasticRod>(stiffness)));
+  }
+} // namespace rodnet::testing
+
+#endif
