@@ -6,6 +6,9 @@
 extern "C" int
 LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
 {
-  rodnet::fuzz::fuzz_graph_reader(data, size, ".msh", rodnet::read_gmsh_network);
+  rodnet::fuzz::fuzz_graph_reader(data,
+                                  size,
+                                  ".msh",
+                                  rodnet::read_gmsh_network);
   return 0;
 }

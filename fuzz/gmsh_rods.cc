@@ -10,15 +10,14 @@ extern "C" int
 LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
 {
   const rodnet::fuzz::InputFile file(data, size, ".msh");
-  rodnet::fuzz::expect_accepted_or_refused(
-    [&] {
-      rodnet::RodNetwork network;
-      for (const rodnet::RodChain &rod : rodnet::read_gmsh_rods(file.path()))
-        network.add_rod(rod.points,
-                        rod.closed,
-                        rodnet::Vector3(0, 1, 0),
-                        "simple");
-      network.create_triangulation();
-    });
+  rodnet::fuzz::expect_accepted_or_refused([&] {
+    rodnet::RodNetwork network;
+    for (const rodnet::RodChain &rod : rodnet::read_gmsh_rods(file.path()))
+      network.add_rod(rod.points,
+                      rod.closed,
+                      rodnet::Vector3(0, 1, 0),
+                      "simple");
+    network.create_triangulation();
+  });
   return 0;
 }

@@ -6,6 +6,9 @@
 extern "C" int
 LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
 {
-  rodnet::fuzz::fuzz_graph_reader(data, size, ".net", rodnet::read_network_file);
+  rodnet::fuzz::fuzz_graph_reader(data,
+                                  size,
+                                  ".net",
+                                  rodnet::read_network_file);
   return 0;
 }

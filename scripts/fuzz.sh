@@ -52,8 +52,9 @@ for t in "${targets[@]}"; do
   mkdir -p "$grown" "$seed" "$artifacts" "$corpus"
   cp $(seeds "$t") "$seed/"
   echo "fuzz: $t for $seconds s (log $log)"
-  # -timeout: an input that takes 10 s is a hang; -rss_limit_mb: memory.
-  if ! nice -n 19 "$fuzzer" -max_total_time="$seconds" -timeout=10 \
+  # -timeout (wall clock): an input that takes 60 s is a hang; at nice 19
+  # on a busy machine a unit of 1 s CPU can take 10 s. -rss_limit_mb: memory.
+  if ! nice -n 19 "$fuzzer" -max_total_time="$seconds" -timeout=60 \
       -rss_limit_mb=2048 -max_len=4096 -dict="$(dictionary "$t")" \
       -print_final_stats=1 -artifact_prefix="$artifacts" \
       "$grown" "$corpus" "$seed" > "$log" 2>&1; then

@@ -14,11 +14,7 @@ namespace
 {
   using namespace rodnet;
 
-  std::string
-  finding(const std::string &name)
-  {
-    return RODNET_SOURCE_DIR "/tests/input/fuzz/findings/" + name;
-  }
+  const std::string findings = RODNET_SOURCE_DIR "/tests/input/fuzz/findings/";
 
   /// The message with which @p read refuses its input; fails the test if
   /// it accepts it or throws anything but std::invalid_argument.
@@ -51,7 +47,7 @@ namespace
   TEST(FuzzFindings, GmshRodsEmptyFile)
   {
     // Was deal.II's GridIn exception: source location and stack trace.
-    const std::string path = finding("gmsh_rods_empty.msh");
+    const std::string path = findings + "gmsh_rods_empty.msh";
     expect_clear(refusal([&] { read_gmsh_rods(path); }),
                  {path, "no line elements"});
   }
@@ -60,7 +56,7 @@ namespace
   {
     // $PhysicalNames announces 5 names and loses its $End line: GridIn
     // read on forever.
-    const std::string path = finding("gmsh_rods_truncated_section.msh");
+    const std::string path = findings + "gmsh_rods_truncated_section.msh";
     expect_clear(refusal([&] { read_gmsh_rods(path); }),
                  {path + ":9:", "expected at least 3 fields"});
   }
