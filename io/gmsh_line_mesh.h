@@ -36,8 +36,9 @@ namespace rodnet
    * read_gmsh_network() documents for the file's syntax: it throws
    * std::invalid_argument naming the file and line for an unreadable or
    * binary file, another version, a malformed or truncated section, and
-   * element types other than lines and points, and for a line element
-   * whose nodes are not defined or are one node twice.
+   * element types other than lines and points, for a line element whose
+   * nodes are not defined or are one node twice, and for a mesh without
+   * line elements.
    */
   GmshLineMesh
   read_gmsh_line_mesh(const std::string &path);

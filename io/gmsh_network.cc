@@ -386,8 +386,6 @@ namespace rodnet
             incident[mesh.lines[e].nodes[0]].push_back(e);
             incident[mesh.lines[e].nodes[1]].push_back(e);
           }
-        if (mesh.lines.empty())
-          fail("the mesh has no line elements");
       }
 
       RodGraph
@@ -574,6 +572,9 @@ namespace rodnet
         if (line.nodes[0] == line.nodes[1])
           fail(" joins node " + std::to_string(line.nodes[0]) + " to itself");
       }
+    if (mesh.lines.empty())
+      throw std::invalid_argument("mesh \"" + path +
+                                  "\": the mesh has no line elements");
     return mesh;
   }
 

@@ -26,9 +26,6 @@ namespace rodnet
         graph[line.nodes[0]].push_back(line.nodes[1]);
         graph[line.nodes[1]].push_back(line.nodes[0]);
       }
-    if (mesh.lines.empty())
-      throw std::invalid_argument("mesh \"" + path +
-                                  "\": the mesh has no line elements");
 
     std::vector<RodChain> rods;
     for (const auto &[tag, graph] : neighbours)

@@ -8,6 +8,7 @@
 # scripts/test.sh runs this after the Release suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/setup.sh
 jobs=$(nproc)
 
 cmake -S . -B build/debug -DCMAKE_BUILD_TYPE=Debug \
