@@ -3,6 +3,7 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <sstream>
+#include <stdexcept>
 
 namespace rodnet
 {
@@ -56,6 +57,28 @@ namespace rodnet
     return nullptr;
   }
 
+  namespace
+  {
+    /// The name of the JSON object that line @p line (from 1) of the
+    /// listing @p text is in: the last line at or before it that opens
+    /// one, "Name": {.
+    std::string
+    entry_at_line(const std::string &text, const unsigned long line)
+    {
+      std::istringstream lines(text);
+      std::string        current, name = "?";
+      for (unsigned long n = 1; n <= line && std::getline(lines, current); ++n)
+        {
+          const auto open = current.find('"');
+          const auto close = current.find("\": {");
+          if (open != std::string::npos && close != std::string::npos &&
+              close > open)
+            name = current.substr(open + 1, close - open - 1);
+        }
+      return name;
+    }
+  } // namespace
+
   EntryNode
   entry_tree(const dealii::ParameterHandler &prm)
   {
@@ -64,8 +87,22 @@ namespace rodnet
                          dealii::ParameterHandler::OutputStyle(
                            dealii::ParameterHandler::JSON |
                            dealii::ParameterHandler::KeepDeclarationOrder));
+    const std::string           text = listing.str();
+    std::istringstream          in(text);
     boost::property_tree::ptree tree;
-    boost::property_tree::read_json(listing, tree);
+    try
+      {
+        boost::property_tree::read_json(in, tree);
+      }
+    catch (const boost::property_tree::json_parser_error &e)
+      {
+        // deal.II writes what it read; only a value that is not UTF-8
+        // makes its listing unreadable (found by fuzz/scene).
+        throw std::invalid_argument(
+          "the value of entry \"" + entry_at_line(text, e.line()) +
+          "\" is not UTF-8 text (" + e.message() +
+          "); a scene is ASCII or UTF-8 text");
+      }
     return to_node("", tree);
   }
 

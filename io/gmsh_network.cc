@@ -1,3 +1,4 @@
+#include <io/gmsh_line_mesh.h>
 #include <io/gmsh_network.h>
 
 #include <algorithm>
@@ -17,24 +18,8 @@ namespace rodnet
 {
   namespace
   {
-    /// A line element (Gmsh type 1) and its physical group (0: none).
-    struct LineElement
-    {
-      long tag;
-      int  physical;
-      long nodes[2];
-    };
-
-    /// What a network needs of a .msh file.
-    struct LineMesh
-    {
-      std::map<long, Vector3>  nodes;
-      std::vector<LineElement> lines;
-      /// Physical point groups (tags) on each node.
-      std::map<long, std::set<int>> node_points;
-      /// Names of the physical groups, by (dimension, tag).
-      std::map<std::pair<int, int>, std::string> physical_names;
-    };
+    using LineElement = GmshLineElement;
+    using LineMesh    = GmshLineMesh;
 
     /// The lines of a .msh file as token lists, with their line numbers
     /// for error messages.
@@ -398,20 +383,9 @@ namespace rodnet
       {
         for (unsigned int e = 0; e < mesh.lines.size(); ++e)
           {
-            const LineElement &line = mesh.lines[e];
-            for (const long node : line.nodes)
-              if (mesh.nodes.count(node) == 0)
-                fail("element " + std::to_string(line.tag) +
-                     " refers to node " + std::to_string(node) +
-                     ", which $Nodes does not define");
-            if (line.nodes[0] == line.nodes[1])
-              fail("element " + std::to_string(line.tag) + " joins node " +
-                   std::to_string(line.nodes[0]) + " to itself");
-            incident[line.nodes[0]].push_back(e);
-            incident[line.nodes[1]].push_back(e);
+            incident[mesh.lines[e].nodes[0]].push_back(e);
+            incident[mesh.lines[e].nodes[1]].push_back(e);
           }
-        if (mesh.lines.empty())
-          fail("the mesh has no line elements");
       }
 
       RodGraph
@@ -581,10 +555,33 @@ namespace rodnet
     };
   } // namespace
 
+  GmshLineMesh
+  read_gmsh_line_mesh(const std::string &path)
+  {
+    const LineMesh mesh = read_line_mesh(path);
+    for (const LineElement &line : mesh.lines)
+      {
+        const auto fail = [&](const std::string &message) {
+          throw std::invalid_argument("mesh \"" + path + "\": element " +
+                                      std::to_string(line.tag) + message);
+        };
+        for (const long node : line.nodes)
+          if (mesh.nodes.count(node) == 0)
+            fail(" refers to node " + std::to_string(node) +
+                 ", which $Nodes does not define");
+        if (line.nodes[0] == line.nodes[1])
+          fail(" joins node " + std::to_string(line.nodes[0]) + " to itself");
+      }
+    if (mesh.lines.empty())
+      throw std::invalid_argument("mesh \"" + path +
+                                  "\": the mesh has no line elements");
+    return mesh;
+  }
+
   RodGraph
   read_gmsh_network(const std::string &path)
   {
-    const LineMesh mesh = read_line_mesh(path);
+    const LineMesh mesh = read_gmsh_line_mesh(path);
     return ChainBuilder(mesh, path).build();
   }
 } // namespace rodnet

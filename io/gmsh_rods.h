@@ -17,12 +17,14 @@ namespace rodnet
   };
 
   /**
-   * Reads a Gmsh line mesh (.msh, ASCII formats 2 and 4) through deal.II's
-   * GridIn<1,3> and returns one rod per physical tag: the tag's segments
-   * must form a single chain, open or closed; an open rod starts at the end
-   * where its line elements begin (their node order). Throws
-   * std::invalid_argument naming the file and tag where they do not (branches
-   * belong to rod networks with junctions), or where the file cannot be read.
+   * Reads a Gmsh line mesh (.msh, ASCII formats 2.2 and 4.1, through
+   * read_gmsh_line_mesh()) and returns one rod per physical tag (lines
+   * without a physical group: tag 0): the tag's segments must form a single
+   * chain, open or closed; an open rod starts at the end where its line
+   * elements begin (their node order). Throws std::invalid_argument naming
+   * the file and tag where they do not (branches belong to rod networks
+   * with junctions), or naming the file and line where the file cannot be
+   * read (see read_gmsh_line_mesh()).
    */
   std::vector<RodChain>
   read_gmsh_rods(const std::string &path);

@@ -144,22 +144,33 @@ namespace rodnet
   } // namespace
 
   void
-  read_scene_file(dealii::ParameterHandler &prm, const std::string &path)
+  read_scene_text(dealii::ParameterHandler &prm,
+                  const std::string        &text,
+                  const std::string        &name,
+                  const bool                json)
   {
-    const std::string text = read_text(path);
     try
       {
-        if (std::filesystem::path(path).extension() == ".json")
+        if (json)
           return parse_json(prm, text);
         if (!sets_an_entry(text))
           refuse_empty();
         std::istringstream in(text);
-        prm.parse_input(in, path);
+        prm.parse_input(in, name);
       }
     catch (const dealii::ExceptionBase &e)
       {
         // What deal.II's parser found, without its source location.
         throw std::invalid_argument(error_message(e));
       }
+  }
+
+  void
+  read_scene_file(dealii::ParameterHandler &prm, const std::string &path)
+  {
+    read_scene_text(prm,
+                    read_text(path),
+                    path,
+                    std::filesystem::path(path).extension() == ".json");
   }
 } // namespace rodnet

@@ -20,6 +20,18 @@ namespace rodnet
    */
   void
   read_scene_file(dealii::ParameterHandler &prm, const std::string &path);
+
+  /**
+   * Reads the scene @p text into @p prm as read_scene_file() reads a file's
+   * contents (after its byte-order mark): as JSON if @p json, as .prm text
+   * otherwise, whose messages name the file @p name. The same refusals,
+   * each a std::invalid_argument with one line.
+   */
+  void
+  read_scene_text(dealii::ParameterHandler &prm,
+                  const std::string        &text,
+                  const std::string        &name,
+                  bool                      json);
 } // namespace rodnet
 
 #endif

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages rodnet needs; does nothing when all are
-# present. Safe to run any number of times.
+# Installs the Debian 12 packages rodnet needs, and those named as
+# arguments; does nothing when all are present. Safe to run any number of
+# times.
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,8 @@ packages=(
   numdiff                   # tolerant comparison of numeric outputs
   gnuplot-nox               # PNG plots of probes and benchmark charts
 )
+# Callers add what only they need (scripts/fuzz.sh: clang and libFuzzer).
+packages+=("$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -2,7 +2,7 @@
 # Quick start 2: set up, build, and pass every test: the whole suite against
 # deal.II's Release library, then all but the slow validation tests against
 # its Debug library (libdeal.ii.g.so), where deal.II's internal checks are
-# active.
+# active, built with AddressSanitizer and UndefinedBehaviorSanitizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -16,7 +16,5 @@ cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release \
 cmake --build build/release -j "$jobs"
 (cd build/release && ctest --output-on-failure --no-tests=error -j "$jobs")
 
-cmake -S . -B build/debug -DCMAKE_BUILD_TYPE=Debug \
-  -DRODNET_BUILD_TESTS=ON -DRODNET_BUILD_BENCHMARKS=OFF
-cmake --build build/debug -j "$jobs"
-(cd build/debug && ctest --output-on-failure --no-tests=error -j "$jobs" -L debug)
+# Debug library and AddressSanitizer + UndefinedBehaviorSanitizer at once.
+bash scripts/sanitize.sh

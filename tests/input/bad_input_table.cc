@@ -220,7 +220,16 @@ namespace
      1,
      "\"Geometry/Segmnts\" is no subsection or entry of a scene"},
     {"json_syntax", "{\"Geometry\": {", ".json", "", 1, "not valid JSON"},
-    {"branched_gmsh_mesh",
+    // Found by fuzz/scene: a value that is not UTF-8 (a Latin-1 byte).
+    {"value_not_utf8",
+     cantilever + section("Output", "  set Probes = tip\xff: position end x\n"),
+     ".prm",
+     "",
+     1,
+     "the value of entry \"Probes\" is not UTF-8 text"},
+    // A portal frame (several tags per entity) read as one kinked rod,
+    // whose columns run along the default director.
+    {"gmsh_frame_director_along_a_column",
      cantilever + section("Geometry",
                           "  set Generator = gmsh\n"
                           "  set Mesh file = " +
@@ -228,8 +237,8 @@ namespace
      ".prm",
      "",
      1,
-     "as rods: More than one tag is not supported!; if it is a network of "
-     "beams meeting at junctions, use \"Generator = gmsh network\""},
+     "rod 0, segment 2: the director d1 hint is parallel to the segment; "
+     "choose another \"Director d1\""},
     {"lattice_as_gmsh_rods",
      cantilever + section("Geometry",
                           "  set Generator = gmsh\n"
