@@ -13,6 +13,7 @@ jobs=$(nproc)
 
 cmake -S . -B build/debug -DCMAKE_BUILD_TYPE=Debug \
   -DRODNET_BUILD_TESTS=ON -DRODNET_BUILD_BENCHMARKS=OFF \
+  -DRODNET_BUILD_VALIDATION_TESTS=OFF \
   -DRODNET_SANITIZE=address,undefined
 cmake --build build/debug -j "$jobs"
 (cd build/debug && ctest --output-on-failure --no-tests=error -j "$jobs" -L debug)

@@ -240,7 +240,7 @@ namespace rodnet
               moved[i] += std::numeric_limits<double>::epsilon() * magnitude *
                           unit(random);
           }
-        moved.compress(dealii::VectorOperation::insert);
+        moved.compress(dealii::VectorOperation::add);
         model
           .assemble(moved, load_factor, &perturbed, nullptr, true, extra_force);
         perturbed -= reference;
