@@ -187,6 +187,69 @@ namespace rodnet
         }
       return motions;
     }
+
+    /// The rows of the fixed DoFs of the rods marked in @p in_part: each
+    /// DoF's change under a rigid motion (t, w L) about @p center, with
+    /// @p length the part's size; the position of every held vertex and
+    /// its name are added to @p held.
+    StackedRows
+    fixed_dof_rows(const RodModel                               &model,
+                   const DofRoles                               &roles,
+                   const VectorType                             &u,
+                   const std::vector<bool>                      &in_part,
+                   const Vector3                                &center,
+                   const double                                  length,
+                   std::vector<std::pair<Vector3, std::string>> &held)
+    {
+      const RodNetwork &network = model.network();
+      StackedRows       rows;
+      for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+        {
+          if (roles.kind(d) == Kind::inert ||
+              !model.constraints().is_constrained(d))
+            continue;
+          Row row = Row::Zero();
+          switch (roles.kind(d))
+            {
+              case Kind::position:
+                {
+                  const unsigned int v = roles.owner(d);
+                  if (!in_part[roles.vertex_place(v).first])
+                    continue;
+                  const Vector3 x = model.configuration().position(u, v);
+                  const Vector3 e = Vector3::Unit(roles.component(d));
+                  row.head<3>()   = e.transpose();
+                  row.tail<3>()   = (x - center).cross(e).transpose() / length;
+                  held.emplace_back(x, roles.vertex_name(v));
+                  break;
+                }
+              case Kind::twist:
+                {
+                  const auto [r, k] = roles.cell_place(roles.owner(d));
+                  if (!in_part[r])
+                    continue;
+                  const std::vector<unsigned int> &chain =
+                    network.rods()[r].vertices;
+                  const Vector3 tangent =
+                    model.configuration()
+                      .position(u, chain[(k + 1) % chain.size()]) -
+                    model.configuration().position(u, chain[k]);
+                  row.tail<3>() = tangent.normalized().transpose();
+                  break;
+                }
+              default:
+                {
+                  const Junction &j = network.junctions()[roles.owner(d)];
+                  if (!in_part[j.ends.front().rod])
+                    continue;
+                  row[2 + roles.component(d)] = 1;
+                  break;
+                }
+            }
+          rows.add(row);
+        }
+      return rows;
+    }
   } // namespace
 
   std::string
@@ -223,56 +286,12 @@ namespace rodnet
 
         // One row per fixed DoF of the part: its change under the motion
         // (t, w L), which must vanish.
-        StackedRows                                  rows;
-        std::vector<std::pair<Vector3, std::string>> held;
         std::vector<bool> in_part(network.rods().size(), false);
         for (const unsigned int r : rods)
           in_part[r] = true;
-        for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
-          {
-            if (roles.kind(d) == Kind::inert ||
-                !model.constraints().is_constrained(d))
-              continue;
-            Row row = Row::Zero();
-            switch (roles.kind(d))
-              {
-                case Kind::position:
-                  {
-                    const unsigned int v = roles.owner(d);
-                    if (!in_part[roles.vertex_place(v).first])
-                      continue;
-                    const Vector3 x = model.configuration().position(u, v);
-                    const Vector3 e = Vector3::Unit(roles.component(d));
-                    row.head<3>()   = e.transpose();
-                    row.tail<3>() = (x - center).cross(e).transpose() / length;
-                    held.emplace_back(x, roles.vertex_name(v));
-                    break;
-                  }
-                case Kind::twist:
-                  {
-                    const auto [r, k] = roles.cell_place(roles.owner(d));
-                    if (!in_part[r])
-                      continue;
-                    const std::vector<unsigned int> &chain =
-                      network.rods()[r].vertices;
-                    const Vector3 tangent =
-                      model.configuration()
-                        .position(u, chain[(k + 1) % chain.size()]) -
-                      model.configuration().position(u, chain[k]);
-                    row.tail<3>() = tangent.normalized().transpose();
-                    break;
-                  }
-                default:
-                  {
-                    const Junction &j = network.junctions()[roles.owner(d)];
-                    if (!in_part[j.ends.front().rod])
-                      continue;
-                    row[2 + roles.component(d)] = 1;
-                    break;
-                  }
-              }
-            rows.add(row);
-          }
+        std::vector<std::pair<Vector3, std::string>> held;
+        StackedRows                                  rows =
+          fixed_dof_rows(model, roles, u, in_part, center, length, held);
 
         const Eigen::JacobiSVD<Eigen::MatrixXd> svd   = rows.svd();
         const Eigen::VectorXd                  &sigma = svd.singularValues();
