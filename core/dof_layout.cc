@@ -157,31 +157,4 @@ namespace rodnet
       s.dofs[7 + c] = rotation_dof(junction, c);
     junction_list.push_back(s);
   }
-
-  void
-  DofLayout::make_sparsity_pattern(
-    dealii::DynamicSparsityPattern          &dsp,
-    const dealii::AffineConstraints<double> &constraints) const
-  {
-    std::vector<global_dof_index> dofs;
-    for (const HingeStencil &h : hinge_list)
-      {
-        dofs.assign(h.dofs.begin(), h.dofs.end());
-        constraints.add_entries_local_to_global(dofs, dsp, false);
-      }
-    for (const SegmentStencil &s : segment_list)
-      {
-        dofs.assign(s.dofs.begin(), s.dofs.end());
-        constraints.add_entries_local_to_global(dofs, dsp, false);
-      }
-    for (const JunctionStencil &s : junction_list)
-      {
-        dofs.assign(s.dofs.begin(), s.dofs.end());
-        constraints.add_entries_local_to_global(dofs, dsp, false);
-      }
-    // DoFs that no stencil sees (the twist of a one-segment rod, unused
-    // copies of shared vertices) still need their diagonal entry.
-    for (global_dof_index i = 0; i < n_dofs(); ++i)
-      dsp.add(i, i);
-  }
 } // namespace rodnet

@@ -3,8 +3,6 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
@@ -152,12 +150,6 @@ namespace rodnet
     {
       return segment_list;
     }
-
-    /// Sparsity of the tangent: every pair of DoFs of a common stencil.
-    void
-    make_sparsity_pattern(
-      dealii::DynamicSparsityPattern          &dsp,
-      const dealii::AffineConstraints<double> &constraints) const;
 
   private:
     /// Adds the junction element of junction @p junction on segment

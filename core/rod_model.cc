@@ -1,6 +1,10 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <core/rod_model.h>
+#include <families/axis_moment_family.h>
+#include <families/hinge_family.h>
+#include <families/junction_family.h>
+#include <families/stretch_family.h>
 
 #include <stdexcept>
 
@@ -35,6 +39,11 @@ namespace rodnet
                                                      *layout_,
                                                      rod_kernels,
                                                      rod_junction_kernels);
+    families.push_back(
+      std::make_unique<HingeFamily>(*layout_, kernels, materials));
+    families.push_back(
+      std::make_unique<JunctionFamily>(*layout_, junction_kernels, materials));
+    families.push_back(std::make_unique<StretchFamily>(*layout_, materials));
 
     std::vector<std::vector<unsigned int>> sizes(3);
     for (const HingeStencil &h : layout_->hinges())
@@ -99,6 +108,40 @@ namespace rodnet
   }
 
   void
+  RodModel::add_element_family(std::unique_ptr<ElementFamily> family)
+  {
+    if (finalized)
+      throw std::logic_error("RodModel: element family \"" + family->name() +
+                             "\" added after finalize(); add it before");
+    families.push_back(std::move(family));
+  }
+
+
+  void
+  RodModel::make_sparsity_pattern()
+  {
+    dealii::DynamicSparsityPattern dsp(layout_->n_dofs());
+    std::vector<global_dof_index>  dofs;
+    for (const auto &family : families)
+      for (unsigned int s = 0; s < family->n_stencils(); ++s)
+        {
+          family->get_dofs(s, dofs);
+          for (const global_dof_index i : dofs)
+            for (const global_dof_index j : dofs)
+              dsp.add(i, j);
+        }
+    // DoFs that no stencil sees (the twist of a one-segment rod, unused
+    // copies of shared vertices) still need their diagonal entry.
+    for (global_dof_index i = 0; i < layout_->n_dofs(); ++i)
+      dsp.add(i, i);
+    sparsity.reinit(dealii::complete_index_set(layout_->n_dofs()),
+                    MPI_COMM_WORLD);
+    sparsity.copy_from(dsp);
+    sparsity.compress();
+  }
+
+
+  void
   RodModel::finalize()
   {
     if (finalized)
@@ -138,11 +181,13 @@ namespace rodnet
     no_constraints.reinit(all);
     no_constraints.close();
 
-    dealii::DynamicSparsityPattern dsp(layout_->n_dofs());
-    layout_->make_sparsity_pattern(dsp, no_constraints);
-    sparsity.reinit(all, MPI_COMM_WORLD);
-    sparsity.copy_from(dsp);
-    sparsity.compress();
+    std::vector<AxisMoment> axis_moments;
+    for (const AxisLoad &m : moments)
+      axis_moments.push_back({m.junction, m.axis, m.value});
+    if (!axis_moments.empty())
+      families.push_back(
+        std::make_unique<AxisMomentFamily>(*layout_, std::move(axis_moments)));
+    make_sparsity_pattern();
 
     // Dead loads: point forces, and distributed forces lumped with the
     // undeformed Voronoi lengths (half of each adjacent segment).

@@ -9,12 +9,14 @@
 #include <core/configuration.h>
 #include <core/dead_loads.h>
 #include <core/dof_layout.h>
+#include <core/element_family.h>
 #include <core/internal_variables.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -169,6 +171,22 @@ namespace rodnet
     void
     prescribe_rotation(unsigned int junction, const Quaternion &rotation);
     /// @}
+
+    /**
+     * Adds @p family to the energy (before finalize()): an elastic
+     * foundation, or any other ElementFamily. The hinges, segments and
+     * junction elements of the rods and the applied moments are families
+     * the model makes itself.
+     */
+    void
+    add_element_family(std::unique_ptr<ElementFamily> family);
+
+    /// The families of the energy, in the order they are assembled.
+    const std::vector<std::unique_ptr<ElementFamily>> &
+    element_families() const
+    {
+      return families;
+    }
 
     /// Builds constraints, sparsity pattern, matrices and vectors.
     void
@@ -395,6 +413,21 @@ namespace rodnet
     Vector3
     support_force(const Support &s, unsigned int k, const VectorType &r) const;
 
+    /// Assembles the stencils of @p family at @p state, handing each
+    /// stencil's contribution to @p copier (serially); rethrows the first
+    /// exception of a stencil after the loop.
+    void
+    assemble_family(
+      const ElementFamily                                  &family,
+      const StencilState                                   &state,
+      Derivatives                                           derivatives,
+      const std::function<void(const LocalContribution &)> &copier) const;
+
+    /// Every pair of DoFs of a common stencil of any family, and the
+    /// diagonal.
+    void
+    make_sparsity_pattern();
+
     /// The displacement of vertex @p v of clamp @p c at @p load_factor.
     Vector3
     clamp_displacement(const Clamp &c,
@@ -407,6 +440,7 @@ namespace rodnet
     std::vector<std::unique_ptr<JunctionKernel>>    junction_kernels;
     std::unique_ptr<DofLayout>                      layout_;
     std::unique_ptr<Configuration>                  configuration_;
+    std::vector<std::unique_ptr<ElementFamily>>     families;
     std::vector<Support>                            support_list;
     std::multimap<global_dof_index, Hold>           holds;
     std::vector<Clamp>                              clamps;

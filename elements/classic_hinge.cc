@@ -86,4 +86,8 @@ namespace rodnet
       result.gradient,
       with_hessian ? &result.hessian : nullptr);
   }
+
+  RODNET_REGISTER_HINGE_KERNEL(ClassicHinge,
+                               "classic",
+                               "Lestringant & Kochmann (2020): curvature binormal and reference twist")
 } // namespace rodnet

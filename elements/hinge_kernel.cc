@@ -1,30 +1,27 @@
-#include <elements/classic_hinge.h>
 #include <elements/hinge_kernel.h>
-#include <elements/simple_hinge.h>
-
-#include <stdexcept>
 
 namespace rodnet
 {
+  Registry<HingeKernel> &
+  hinge_kernel_registry()
+  {
+    // Built on first use, before any registration of another translation
+    // unit can reach it.
+    static Registry<HingeKernel> registry("hinge kernel", "kernels");
+    return registry;
+  }
+
+
   std::unique_ptr<HingeKernel>
   create_hinge_kernel(const std::string &name)
   {
-    if (name == "simple")
-      return std::make_unique<SimpleHinge>();
-    if (name == "classic")
-      return std::make_unique<ClassicHinge>();
-
-    std::string known;
-    for (const std::string &n : hinge_kernel_names())
-      known += (known.empty() ? "\"" : ", \"") + n + "\"";
-    throw std::invalid_argument("unknown hinge kernel \"" + name +
-                                "\"; known kernels: " + known);
+    return hinge_kernel_registry().create(name);
   }
 
 
   std::vector<std::string>
   hinge_kernel_names()
   {
-    return {"simple", "classic"};
+    return hinge_kernel_registry().names();
   }
 } // namespace rodnet

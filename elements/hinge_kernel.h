@@ -1,6 +1,7 @@
 #ifndef RODNET_ELEMENTS_HINGE_KERNEL_H
 #define RODNET_ELEMENTS_HINGE_KERNEL_H
 
+#include <base/registry.h>
 #include <elements/quaternion.h>
 
 #include <array>
@@ -78,14 +79,33 @@ namespace rodnet
              bool                  with_hessian) const = 0;
   };
 
-  /// Creates the kernel called @p name ("simple" or "classic"); throws
+  /// The registry of hinge measures. A new measure is a HingeKernel in a
+  /// file pair of its own, registered there with one
+  /// RODNET_REGISTER_HINGE_KERNEL line.
+  Registry<HingeKernel> &
+  hinge_kernel_registry();
+
+  /// Creates the kernel called @p name ("simple", "classic", ...); throws
   /// std::invalid_argument listing the known names otherwise.
   std::unique_ptr<HingeKernel>
   create_hinge_kernel(const std::string &name);
 
-  /// The names accepted by create_hinge_kernel().
+  /// The names accepted by create_hinge_kernel(), sorted.
   std::vector<std::string>
   hinge_kernel_names();
 } // namespace rodnet
+
+/// Registers HingeKernel class @p classname (unqualified, inside namespace
+/// rodnet) under @p name.
+#define RODNET_REGISTER_HINGE_KERNEL(classname, name, description)        \
+  namespace                                                               \
+  {                                                                       \
+    const bool rodnet_registered_##classname = [] {                       \
+      rodnet::hinge_kernel_registry().add(name, description, [] {         \
+        return std::unique_ptr<rodnet::HingeKernel>(new classname());     \
+      });                                                                 \
+      return true;                                                        \
+    }();                                                                  \
+  }
 
 #endif

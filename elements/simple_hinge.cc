@@ -205,4 +205,8 @@ namespace rodnet
           to_hinge_dofs<n_hinge_dofs>(to_hinge_dofs<8>(h).transpose());
       }
   }
+
+  RODNET_REGISTER_HINGE_KERNEL(SimpleHinge,
+                               "simple",
+                               "Korner, Audoly & Bhattacharya (2021): simple bending and twisting measures")
 } // namespace rodnet

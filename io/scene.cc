@@ -14,6 +14,7 @@
 #include <io/network_file.h>
 #include <io/run_limits.h>
 #include <io/scene.h>
+#include <io/scene_families.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
 
@@ -795,6 +796,7 @@ namespace rodnet
                         "gnuplot). [-]");
     }
     prm.leave_subsection();
+    declare_element_family_parameters(prm);
   }
 
   Scene::Scene(dealii::ParameterHandler &prm,
@@ -1048,6 +1050,7 @@ namespace rodnet
     probe_text       = prm.get("Probes");
     plot             = prm.get_bool("Plot");
     prm.leave_subsection();
+    family_requests = parse_element_family_requests(prm);
     check_run_length();
   }
 
@@ -1317,6 +1320,8 @@ namespace rodnet
     add_rotation_handles(*network);
     auto model =
       std::make_unique<RodModel>(std::move(network), materials, ghost_spin);
+    for (const RequestedFamily &family : family_requests)
+      model->add_element_family(family.request->create(*model));
     apply_supports_and_loads(*model);
     model->finalize();
     if (midpoint_clamp)
@@ -1388,6 +1393,11 @@ namespace rodnet
         "entry \"Geometry/Clamp at first segment midpoint\": the "
         "bending-active element of dynamic relaxation clamps at a node, "
         "which is the rod's start without the option; set it to false");
+    if (!family_requests.empty())
+      throw std::invalid_argument(
+        "section \"" + family_requests.front().name +
+        "\": the bending-active element of dynamic relaxation has no "
+        "element families; use Solver/Method = newton");
     auto [network, materials] = build_network();
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)

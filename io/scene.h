@@ -10,6 +10,7 @@
 #include <core/rod_model.h>
 #include <io/probes.h>
 #include <io/problem_size.h>
+#include <io/scene_families.h>
 #include <materials/cross_section.h>
 #include <solvers/dynamic_relaxation.h>
 #include <solvers/static_solver.h>
@@ -144,6 +145,9 @@ namespace rodnet
     bool                       write_vtu    = true;
     unsigned int               vtu_interval = 1;
     bool                       plot         = true;
+    /// The element families the scene asks for beyond the rods' own
+    /// (an elastic foundation, ...).
+    std::vector<RequestedFamily> family_requests;
 
   private:
     /// What a material subsection defines.

@@ -1,9 +1,12 @@
 // The assembled residual is the gradient of the assembled total potential
 // energy and the assembled tangent is the gradient of the residual (central
-// finite differences), for both kernels, on a rod in a random state: this
-// checks the DoF maps, the chain rule and the constraint handling together.
+// finite differences), for both kernels, with and without an elastic
+// foundation (in every direction, or along one), on a rod in a random
+// state: this checks the DoF maps, the chain rule, the constraint handling
+// and the loop over element families together.
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <families/elastic_foundation.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <gtest/gtest.h>
@@ -13,8 +16,16 @@ namespace
 {
   using namespace rodnet;
 
+  /// No foundation, one in every direction, one along a skew direction.
+  enum class Foundation
+  {
+    none,
+    isotropic,
+    directional
+  };
+
   std::unique_ptr<RodModel>
-  make_model(const std::string &kernel)
+  make_model(const std::string &kernel, const Foundation foundation)
   {
     auto network = std::make_unique<RodNetwork>();
     network->add_rod(generators::helix(0.5, 0.1, 0.5, 12),
@@ -31,17 +42,28 @@ namespace
     model->add_point_force(model->network().rods()[0].vertices.back(),
                            Vector3(0.1, -0.2, 0.3));
     model->add_distributed_force(0, Vector3(0, 0, -0.5));
+    if (foundation != Foundation::none)
+      {
+        ElasticFoundationParameters parameters;
+        parameters.stiffness = 40;
+        if (foundation == Foundation::directional)
+          parameters.direction = Vector3(0.2, 0.3, 1.0);
+        model->add_element_family(std::make_unique<ElasticFoundation>(
+          model->network(), model->layout(), parameters));
+      }
     model->finalize();
     return model;
   }
 
-  class GlobalDerivatives : public ::testing::TestWithParam<std::string>
+  class GlobalDerivatives
+    : public ::testing::TestWithParam<std::tuple<std::string, Foundation>>
   {
   };
 
   TEST_P(GlobalDerivatives, ResidualAndTangentMatchFiniteDifferences)
   {
-    const auto                             model = make_model(GetParam());
+    const auto [kernel, foundation]              = GetParam();
+    const auto                             model = make_model(kernel, foundation);
     VectorType                             u     = model->create_vector();
     std::mt19937                           random(7);
     std::uniform_real_distribution<double> small(-0.05, 0.05);
@@ -82,7 +104,8 @@ namespace
             err_k             = std::max(err_k, std::abs(fd_k - kij));
           }
       }
-    std::cout << GetParam() << ": residual error " << err_r / max_r
+    std::cout << kernel << ", foundation " << static_cast<int>(foundation)
+              << ": residual error " << err_r / max_r
               << ", tangent error " << err_k / max_k << std::endl;
     EXPECT_LT(err_r / max_r, 1e-6);
     EXPECT_LT(err_k / max_k, 1e-6);
@@ -90,5 +113,9 @@ namespace
 
   INSTANTIATE_TEST_SUITE_P(HingeKernels,
                            GlobalDerivatives,
-                           ::testing::Values("simple", "classic"));
+                           ::testing::Combine(
+                             ::testing::Values("simple", "classic"),
+                             ::testing::Values(Foundation::none,
+                                               Foundation::isotropic,
+                                               Foundation::directional)));
 } // namespace

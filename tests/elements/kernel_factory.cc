@@ -13,7 +13,7 @@ namespace
   TEST(KernelFactory, CreatesKnownKernels)
   {
     const std::vector<std::string> names = hinge_kernel_names();
-    EXPECT_EQ(names, (std::vector<std::string>{"simple", "classic"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"classic", "simple"}));
     for (const std::string &name : names)
       EXPECT_EQ(create_hinge_kernel(name)->name(), name);
   }

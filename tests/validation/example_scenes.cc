@@ -108,6 +108,13 @@ namespace
     // post-buckled tip; the tip moves by about 1 along both axes.
     {"elastica", "tip_x", 0.059784, 5e-4, 1},
     {"elastica", "tip_y", 0.795217, 5e-4, 1},
+    // Beam on a Winkler foundation (Hetenyi): -P beta / (2 k) under the
+    // load, times exp(-beta x)(cos beta x + sin beta x) at x = 1.6 (beta = 1).
+    // Measured +6.2e-4 at beta h = 0.05 (second order).
+    {"beam_on_elastic_foundation", "mid_z", -1.25e-4, 1e-3},
+    {"beam_on_elastic_foundation", "x16_z",
+     -1.25e-4 * std::exp(-1.6) * (std::cos(1.6) + std::sin(1.6)), 1e-3,
+     1.25e-4},
     // The right-angle frame with its tip moved by a small u_z = 1e-4 (the
     // shipped u_z = L has no closed form): F = (6/13) EI u_z / L^3
     // (VALIDATION.md, doc/junctions.md).

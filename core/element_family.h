@@ -1,0 +1,116 @@
+#ifndef RODNET_CORE_ELEMENT_FAMILY_H
+#define RODNET_CORE_ELEMENT_FAMILY_H
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <core/configuration.h>
+#include <core/dof_layout.h>
+#include <core/internal_variables.h>
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /// The state a stencil is evaluated at: the DoFs, the reference data, the
+  /// committed internal variables, the time step and the load factor.
+  struct StencilState
+  {
+    const dealii::TrilinosWrappers::MPI::Vector &u;
+    const Configuration                         &configuration;
+    const InternalVariables                     &history;
+    /// Time step of the materials' incremental update (0: stored energy).
+    double time_step;
+    /// Load factor of the assembly (load-like families scale with it).
+    double load_factor;
+  };
+
+  /// What one stencil contributes to the global energy, gradient and
+  /// Hessian; the local vectors in the order of its DoFs.
+  struct LocalContribution
+  {
+    dealii::FullMatrix<double>    matrix;
+    dealii::Vector<double>        vector;
+    std::vector<global_dof_index> dofs;
+    double                        energy = 0;
+
+    /// Copies an Eigen gradient (and Hessian, if not null) of any size.
+    template <class Gradient, class Hessian>
+    void
+    store(const Gradient &gradient, const Hessian *hessian);
+  };
+
+  /// The derivatives an assembly asks for.
+  enum class Derivatives
+  {
+    energy,
+    gradient,
+    hessian
+  };
+
+  /**
+   * A family of stencils of the total potential energy: the extension point
+   * of the assembly (doc/architecture.md). Stretch, hinge and junction
+   * elements, applied moments and the elastic foundation are families; each
+   * says which global DoFs its stencils couple (any number, including DoF
+   * blocks of its own) and evaluates a stencil's energy, gradient and
+   * Hessian at a state. The assembly runs one loop over all families
+   * (RodModel::assemble()); the sparsity pattern comes from the same DoF
+   * lists, so a new family needs no change outside its own file pair.
+   *
+   * Implementations are thread-safe: evaluate() is const and keeps its
+   * scratch data per thread.
+   */
+  class ElementFamily
+  {
+  public:
+    virtual ~ElementFamily() = default;
+
+    /// Name in messages and output ("hinges", "elastic foundation", ...).
+    virtual std::string
+    name() const = 0;
+
+    /// Number of stencils.
+    virtual unsigned int
+    n_stencils() const = 0;
+
+    /// Global DoFs of stencil @p s, in the order of its local vectors.
+    virtual void
+    get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const = 0;
+
+    /**
+     * Energy of stencil @p s at @p state into @p local.energy and, as
+     * @p derivatives asks, its gradient into @p local.vector and Hessian
+     * into @p local.matrix, sized to the stencil's DoFs (local.dofs is set
+     * by the caller). May throw where the state is outside the kernel's
+     * domain (e.g. a flipped tangent); the assembly rethrows it.
+     */
+    virtual void
+    evaluate(unsigned int       s,
+             const StencilState &state,
+             Derivatives        derivatives,
+             LocalContribution &local) const = 0;
+  };
+
+
+  template <class Gradient, class Hessian>
+  void
+  LocalContribution::store(const Gradient &gradient, const Hessian *hessian)
+  {
+    const unsigned int n = gradient.size();
+    vector.reinit(n, /*omit_zeroing_entries=*/true);
+    for (unsigned int i = 0; i < n; ++i)
+      vector[i] = gradient[i];
+    if (hessian == nullptr)
+      return;
+    matrix.reinit(n, n, /*omit_default_initialization=*/true);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        matrix(i, j) = (*hessian)(i, j);
+  }
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,56 @@
+#ifndef RODNET_FAMILIES_AXIS_MOMENT_FAMILY_H
+#define RODNET_FAMILIES_AXIS_MOMENT_FAMILY_H
+
+#include <core/element_family.h>
+
+#include <vector>
+
+namespace rodnet
+{
+  /// A moment @p moment (N m, at load factor 1) about the fixed unit
+  /// @p axis, applied at the quaternion of junction @p junction.
+  struct AxisMoment
+  {
+    unsigned int junction;
+    Vector3      axis;
+    double       moment;
+  };
+
+  /**
+   * Applied moments about fixed axes at junction quaternions: the load
+   * potential -lambda M theta_u(q) of each (Lestringant & Kochmann
+   * eqs. 32-33), a stencil of the junction's four quaternion DoFs.
+   */
+  class AxisMomentFamily : public ElementFamily
+  {
+  public:
+    AxisMomentFamily(const DofLayout &layout, std::vector<AxisMoment> moments);
+
+    std::string
+    name() const override
+    {
+      return "applied moments";
+    }
+
+    unsigned int
+    n_stencils() const override
+    {
+      return moments.size();
+    }
+
+    void
+    get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const override;
+
+    void
+    evaluate(unsigned int        s,
+             const StencilState &state,
+             Derivatives         derivatives,
+             LocalContribution  &local) const override;
+
+  private:
+    const DofLayout        &layout;
+    std::vector<AxisMoment> moments;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,84 @@
+#ifndef RODNET_FAMILIES_BENDING_RESPONSE_H
+#define RODNET_FAMILIES_BENDING_RESPONSE_H
+
+#include <core/element_family.h>
+#include <elements/hinge_kernel.h>
+#include <materials/rod_material.h>
+
+namespace rodnet
+{
+  /// What a bending-and-twisting stencil (a hinge or a junction element)
+  /// hands to evaluate_bending(): its material data and committed state.
+  struct BendingStencilData
+  {
+    const RodMaterial &material;
+    /// Undeformed Voronoi length, turning integrated strains into densities.
+    double voronoi_length;
+    /// Committed internal variables of the stencil (null for none).
+    const double *committed;
+    /// Natural strains: the material sees kappa - natural.
+    Vector3 natural;
+  };
+
+  /**
+   * The energy of a bending-and-twisting stencil with its derivatives:
+   * kernel strains minus natural strains -> material (energy, stress,
+   * tangent) -> chain rule, with the elastic part J^T C J and the geometric
+   * part sum_k s_k d2kappa_k of the Hessian (Korner et al. eq. 4.5).
+   * Hinges and junction elements differ only in their kernel and reference:
+   * @p Kernel is a HingeKernel or a JunctionKernel. The material sees the
+   * committed internal variables and the time step and writes nothing back
+   * (see RodModel::commit_internal_variables()).
+   */
+  template <class Kernel, class Reference>
+  void
+  evaluate_bending(const Kernel             &kernel,
+                   const HingeVector        &dofs,
+                   const Reference          &reference,
+                   const BendingStencilData &data,
+                   double                    time_step,
+                   Derivatives               derivatives,
+                   LocalContribution        &local)
+  {
+    if (derivatives == Derivatives::energy)
+      {
+        local.energy = data.material
+                         .hinge_increment(kernel.strains(dofs, reference) -
+                                            data.natural,
+                                          data.voronoi_length,
+                                          data.committed,
+                                          time_step,
+                                          nullptr)
+                         .energy;
+        return;
+      }
+    // Per-thread scratch: three 11 x 11 Hessians are too large to build
+    // per stencil.
+    thread_local HingeStrains strains;
+    const bool                with_hessian = derivatives == Derivatives::hessian;
+    kernel.evaluate(dofs, reference, strains, with_hessian);
+    strains.kappa -= data.natural;
+    const MaterialResponse<3> w =
+      data.material.hinge_increment(strains.kappa,
+                                    data.voronoi_length,
+                                    data.committed,
+                                    time_step,
+                                    nullptr);
+    local.energy               = w.energy;
+    const HingeVector gradient = strains.gradient.transpose() * w.stress;
+    if (!with_hessian)
+      {
+        local.store(gradient, static_cast<const HingeMatrix *>(nullptr));
+        return;
+      }
+    const Eigen::Matrix<double, 3, n_hinge_dofs> cj =
+      w.tangent * strains.gradient;
+    HingeMatrix hessian;
+    hessian.noalias() = strains.gradient.transpose() * cj;
+    for (unsigned int c = 0; c < 3; ++c)
+      hessian += w.stress[c] * strains.hessian[c];
+    local.store(gradient, &hessian);
+  }
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,49 @@
+#ifndef RODNET_FAMILIES_STRETCH_FAMILY_H
+#define RODNET_FAMILIES_STRETCH_FAMILY_H
+
+#include <core/element_family.h>
+#include <materials/rod_material.h>
+
+#include <memory>
+#include <vector>
+
+namespace rodnet
+{
+  /**
+   * The segments of every rod: axial strain l/l0 - 1 of each segment
+   * (elements/stretch_kernel.h) priced by its rod's material. Internal
+   * variables: InternalVariables::Owner::segment.
+   */
+  class StretchFamily : public ElementFamily
+  {
+  public:
+    /// Per rod: @p materials (must outlive the family).
+    StretchFamily(
+      const DofLayout                                       &layout,
+      const std::vector<std::shared_ptr<const RodMaterial>> &materials);
+
+    std::string
+    name() const override
+    {
+      return "segments";
+    }
+
+    unsigned int
+    n_stencils() const override;
+
+    void
+    get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const override;
+
+    void
+    evaluate(unsigned int        s,
+             const StencilState &state,
+             Derivatives         derivatives,
+             LocalContribution  &local) const override;
+
+  private:
+    const DofLayout                                       &layout;
+    const std::vector<std::shared_ptr<const RodMaterial>> &materials;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,148 @@
+// The elastic foundation family: its energy is the sum of the Winkler
+// springs sum_v k l_v / 2 |P u_v|^2 written out here by hand (Voronoi
+// lengths of a polyline with unequal segments, a junction vertex shared by
+// two rods, a rod left off the foundation), it is added only before
+// finalize(), and bad constants and unknown family names are refused with
+// a message naming them. Derivatives: tests/assembly/global_derivatives.
+#include <core/family_request.h>
+#include <core/rod_model.h>
+#include <families/elastic_foundation.h>
+#include <materials/linear_elastic_rod.h>
+
+#include <gtest/gtest.h>
+#include <random>
+
+namespace
+{
+  using namespace rodnet;
+
+  /// Rod 0: (0,0,0)-(1,0,0)-(3,0,0); rod 1: (3,0,0)-(3,2,0)-(3,2.5,0),
+  /// welded to rod 0 at (3,0,0); rod 2 far away: (0,5,0)-(1,5,0).
+  std::unique_ptr<RodModel>
+  make_model()
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod({Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(3, 0, 0)},
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->add_rod({Vector3(3, 0, 0), Vector3(3, 2, 0), Vector3(3, 2.5, 0)},
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->add_rod({Vector3(0, 5, 0), Vector3(1, 5, 0)},
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->add_junction("knee",
+                          JunctionKind::welded,
+                          {{0, false}, {1, true}});
+    auto material =
+      std::make_shared<LinearElasticRod>(RodStiffness{100, 2, 3, 1.5});
+    return std::make_unique<RodModel>(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>(3, material));
+  }
+
+  TEST(ElasticFoundation, EnergyIsTheSumOfTheSprings)
+  {
+    const double k = 7;
+    const Vector3 n = Vector3(1, 2, 2) / 3;
+    auto          bare = make_model(), founded = make_model();
+    ElasticFoundationParameters parameters;
+    parameters.stiffness = k;
+    parameters.direction = Vector3(1, 2, 2);
+    parameters.rods      = {0, 1};
+    founded->add_element_family(std::make_unique<ElasticFoundation>(
+      founded->network(), founded->layout(), parameters));
+    bare->finalize();
+    founded->finalize();
+
+    VectorType   u = founded->create_vector();
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> small(-0.1, 0.1);
+    for (unsigned int i = 0; i < u.size(); ++i)
+      u[i] = small(random);
+    // Vertices of rods 0 and 1 along them, with their Voronoi lengths:
+    // halves of the adjacent segments; the knee gets 1 (rod 0) + 1 (rod 1).
+    const RodNetwork &net = founded->network();
+    const std::vector<std::pair<unsigned int, double>> springs = {
+      {net.rods()[0].vertices[0], 0.5},
+      {net.rods()[0].vertices[1], 1.5},
+      {net.rods()[0].vertices[2], 2.0},
+      {net.rods()[1].vertices[1], 1.25},
+      {net.rods()[1].vertices[2], 0.25}};
+    double expected = 0;
+    for (const auto &[v, length] : springs)
+      {
+        Vector3 displacement;
+        for (unsigned int c = 0; c < 3; ++c)
+          displacement[c] = u[founded->layout().vertex_dof(v, c)];
+        expected += 0.5 * k * length * std::pow(n.dot(displacement), 2);
+      }
+    const double energy =
+      founded->elastic_energy(u) - bare->elastic_energy(u);
+    EXPECT_NEAR(energy, expected, 1e-12 * expected);
+    EXPECT_GT(expected, 0);
+  }
+
+  TEST(ElasticFoundation, IsAddedBeforeFinalizeOnly)
+  {
+    auto model = make_model();
+    model->finalize();
+    ElasticFoundationParameters parameters;
+    parameters.stiffness = 1;
+    EXPECT_THROW(model->add_element_family(std::make_unique<ElasticFoundation>(
+                   model->network(), model->layout(), parameters)),
+                 std::logic_error);
+  }
+
+  /// The message of the std::invalid_argument that @p build throws.
+  template <class Build>
+  std::string
+  refusal(const Build &build)
+  {
+    try
+      {
+        build();
+      }
+    catch (const std::invalid_argument &e)
+      {
+        return e.what();
+      }
+    return "(no exception)";
+  }
+
+  TEST(ElasticFoundation, RefusesBadConstants)
+  {
+    const auto  model = make_model();
+    const auto &net   = model->network();
+    const auto &dofs  = model->layout();
+    ElasticFoundationParameters parameters;
+    parameters.stiffness = -1;
+    EXPECT_NE(refusal([&] { ElasticFoundation(net, dofs, parameters); })
+                .find("modulus k must be finite and not negative"),
+              std::string::npos);
+    parameters.stiffness = 1;
+    parameters.rods      = {3};
+    EXPECT_NE(refusal([&] { ElasticFoundation(net, dofs, parameters); })
+                .find("rod 3 does not exist; the network has 3 rods"),
+              std::string::npos);
+    parameters.rods      = {};
+    parameters.direction = Vector3::Zero();
+    EXPECT_NE(refusal([&] { ElasticFoundation(net, dofs, parameters); })
+                .find("direction of the springs must be a nonzero vector"),
+              std::string::npos);
+  }
+
+  TEST(ElementFamilyRegistry, KnowsTheFoundationAndListsItForUnknownNames)
+  {
+    EXPECT_TRUE(element_family_registry().contains("Elastic foundation"));
+    const std::string message =
+      refusal([] { element_family_registry().create("Pasternak"); });
+    EXPECT_NE(message.find("unknown element family \"Pasternak\"; known "
+                           "element families: \"Elastic foundation\""),
+              std::string::npos)
+      << message;
+  }
+} // namespace
