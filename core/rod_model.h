@@ -10,6 +10,7 @@
 #include <core/dead_loads.h>
 #include <core/dof_layout.h>
 #include <core/internal_variables.h>
+#include <core/model_state.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
@@ -272,6 +273,15 @@ namespace rodnet
     {
       return history;
     }
+
+    /// A copy of the reference configuration, the committed internal
+    /// variables and the time step (see ModelState).
+    ModelState
+    state() const;
+
+    /// Installs @p state, taken from this model by state(), as it was.
+    void
+    set_state(const ModelState &state);
     /// @}
 
     /// A zero vector with the model's layout.
