@@ -11,6 +11,7 @@
 #include <core/dof_layout.h>
 #include <core/element_family.h>
 #include <core/internal_variables.h>
+#include <core/model_state.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
@@ -290,6 +291,15 @@ namespace rodnet
     {
       return history;
     }
+
+    /// A copy of the reference configuration, the committed internal
+    /// variables and the time step (see ModelState).
+    ModelState
+    state() const;
+
+    /// Installs @p state, taken from this model by state(), as it was.
+    void
+    set_state(const ModelState &state);
     /// @}
 
     /// A zero vector with the model's layout.

@@ -1,6 +1,7 @@
-// The RodModel's side of history-dependent materials: the time step of
-// the incremental update and the commit of internal variables after a
-// converged step.
+// The RodModel's side of history-dependent materials and of the state a
+// solver advances: the time step of the incremental update, the commit of
+// internal variables after a converged step, and taking and installing a
+// ModelState.
 #include <core/rod_model.h>
 #include <elements/stretch_kernel.h>
 
@@ -14,6 +15,20 @@ namespace rodnet
     if (has_internal_variables())
       RodMaterial::check_time_step(time_step);
     step_length = time_step;
+  }
+
+  ModelState
+  RodModel::state() const
+  {
+    return ModelState{*configuration_, history, step_length};
+  }
+
+  void
+  RodModel::set_state(const ModelState &state)
+  {
+    *configuration_ = state.configuration;
+    history         = state.committed;
+    step_length     = state.time_step;
   }
 
   void

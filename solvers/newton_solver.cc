@@ -259,6 +259,108 @@ namespace rodnet
         "unknown line search \"" + name +
         "\"; known: backtrack, polynomial, full step");
     }
+
+    /// NOX's parameters: a Newton direction by KLU, the named line search.
+    Teuchos::RCP<Teuchos::ParameterList>
+    nox_parameters(const NewtonSolver::Parameters &parameters)
+    {
+      auto list = Teuchos::rcp(new Teuchos::ParameterList);
+      list->set("Nonlinear Solver", "Line Search Based");
+      Teuchos::ParameterList &printing = list->sublist("Printing");
+      // RODNET_NOX_DEBUG in the environment prints NOX's iteration history.
+      printing.set("Output Information",
+                   std::getenv("RODNET_NOX_DEBUG") != nullptr ?
+                     NOX::Utils::OuterIteration + NOX::Utils::Error :
+                     NOX::Utils::Error);
+      Teuchos::ParameterList &search = list->sublist("Line Search");
+      search.set("Method", nox_line_search_name(parameters.line_search));
+      Teuchos::ParameterList &direction = list->sublist("Direction");
+      direction.set("Method", "Newton");
+      Teuchos::ParameterList &linear =
+        direction.sublist("Newton").sublist("Linear Solver");
+      linear.set("Amesos Solver", "Amesos_Klu");
+      return list;
+    }
+
+    /// KLU on the tangent, with Sherman-Morrison where the problem has a
+    /// rank-one part.
+    Teuchos::RCP<NOX::Epetra::LinearSystem>
+    linear_system(Teuchos::ParameterList           &nox,
+                  const Teuchos::RCP<NoxInterface> &interface,
+                  const NewtonSolver::Problem      &problem,
+                  MatrixType                       &tangent,
+                  const NOX::Epetra::Vector        &initial_guess)
+    {
+      Teuchos::ParameterList &printing = nox.sublist("Printing");
+      Teuchos::ParameterList &linear =
+        nox.sublist("Direction").sublist("Newton").sublist("Linear Solver");
+      Teuchos::RCP<Epetra_Operator> jacobian_operator = Teuchos::rcp(
+        const_cast<Epetra_CrsMatrix *>(&tangent.trilinos_matrix()), false);
+      if (problem.rank_one)
+        return Teuchos::rcp(new RankOneAmesos(
+          printing, linear, interface, jacobian_operator, initial_guess));
+      Teuchos::RCP<NOX::Epetra::Interface::Required> required = interface;
+      Teuchos::RCP<NOX::Epetra::Interface::Jacobian> jacobian = interface;
+      return Teuchos::rcp(new NOX::Epetra::LinearSystemAmesos(printing,
+                                                              linear,
+                                                              required,
+                                                              jacobian,
+                                                              jacobian_operator,
+                                                              initial_guess));
+    }
+
+    /// Stop when the state is not finite, when converged (the problem's
+    /// test, or |R| below the tolerance), or after max_iterations.
+    Teuchos::RCP<NOX::StatusTest::Generic>
+    status_tests(const NewtonSolver::Problem    &problem,
+                 const VectorType               &x,
+                 const NewtonSolver::Parameters &parameters)
+    {
+      Teuchos::RCP<NOX::StatusTest::Generic> converged;
+      if (problem.converged)
+        converged = Teuchos::rcp(new CallbackTest(problem, x));
+      else
+        converged = Teuchos::rcp(
+          new NOX::StatusTest::NormF(parameters.tolerance,
+                                     NOX::StatusTest::NormF::Unscaled));
+      auto status = Teuchos::rcp(
+        new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+      status->addStatusTest(Teuchos::rcp(new NOX::StatusTest::FiniteValue));
+      status->addStatusTest(converged);
+      status->addStatusTest(
+        Teuchos::rcp(new NOX::StatusTest::MaxIters(parameters.max_iterations)));
+      return status;
+    }
+
+    /// The result of a finished solve, with the reason of a failure.
+    NewtonSolver::Result
+    judge(const NOX::Solver::Generic     &solver,
+          const NOX::StatusTest::StatusType outcome,
+          const NoxInterface             &interface,
+          const NewtonSolver::Parameters &parameters)
+    {
+      const NOX::Abstract::Group &group = solver.getSolutionGroup();
+      NewtonSolver::Result        result;
+      result.iterations    = solver.getNumIterations();
+      result.residual_norm = group.isF() ? group.getNormF() : NAN;
+      result.converged     = outcome == NOX::StatusTest::Converged &&
+                         std::isfinite(result.residual_norm);
+      if (result.converged)
+        return result;
+      if (!interface.failure.empty())
+        result.failure = interface.failure;
+      else if (!std::isfinite(result.residual_norm))
+        result.failure = "the residual is not finite";
+      else if (result.iterations >= parameters.max_iterations)
+        result.failure = "no convergence in " +
+                         std::to_string(parameters.max_iterations) +
+                         " iterations (residual " +
+                         std::to_string(result.residual_norm) + ")";
+      else
+        result.failure = "the line search failed (residual " +
+                         std::to_string(result.residual_norm) + ")";
+      return result;
+    }
   } // namespace
 
   NewtonSolver::NewtonSolver(const Parameters &parameters)
@@ -272,70 +374,24 @@ namespace rodnet
                       VectorType    &x,
                       MatrixType    &tangent) const
   {
-    using Teuchos::RCP;
-    using Teuchos::rcp;
+    const Teuchos::RCP<Teuchos::ParameterList> nox = nox_parameters(parameters);
+    auto interface = Teuchos::rcp(new NoxInterface(problem, x, tangent));
+    Teuchos::RCP<NOX::Epetra::Interface::Required> required = interface;
+    Epetra_Vector       x_view(View, x.trilinos_vector(), 0);
+    NOX::Epetra::Vector initial_guess(x_view, NOX::DeepCopy);
+    auto                group = Teuchos::rcp(new NOX::Epetra::Group(
+      nox->sublist("Printing"),
+      required,
+      initial_guess,
+      linear_system(*nox, interface, problem, tangent, initial_guess)));
 
-    auto nox_parameters = rcp(new Teuchos::ParameterList);
-    nox_parameters->set("Nonlinear Solver", "Line Search Based");
-    Teuchos::ParameterList &printing = nox_parameters->sublist("Printing");
-    // RODNET_NOX_DEBUG in the environment prints NOX's iteration history.
-    printing.set("Output Information",
-                 std::getenv("RODNET_NOX_DEBUG") != nullptr ?
-                   NOX::Utils::OuterIteration + NOX::Utils::Error :
-                   NOX::Utils::Error);
-    Teuchos::ParameterList &search = nox_parameters->sublist("Line Search");
-    search.set("Method", nox_line_search_name(parameters.line_search));
-    Teuchos::ParameterList &direction = nox_parameters->sublist("Direction");
-    direction.set("Method", "Newton");
-    Teuchos::ParameterList &linear =
-      direction.sublist("Newton").sublist("Linear Solver");
-    linear.set("Amesos Solver", "Amesos_Klu");
-
-    auto interface = rcp(new NoxInterface(problem, x, tangent));
-    RCP<NOX::Epetra::Interface::Required> required = interface;
-    RCP<NOX::Epetra::Interface::Jacobian> jacobian = interface;
-    RCP<Epetra_Operator>                  jacobian_operator =
-      rcp(const_cast<Epetra_CrsMatrix *>(&tangent.trilinos_matrix()), false);
-
-    Epetra_Vector                  x_view(View, x.trilinos_vector(), 0);
-    NOX::Epetra::Vector            initial_guess(x_view, NOX::DeepCopy);
-    RCP<NOX::Epetra::LinearSystem> linear_system;
-    if (problem.rank_one)
-      linear_system = rcp(new RankOneAmesos(printing,
-                                            linear,
-                                            interface,
-                                            jacobian_operator,
-                                            initial_guess));
-    else
-      linear_system = rcp(new NOX::Epetra::LinearSystemAmesos(printing,
-                                                              linear,
-                                                              required,
-                                                              jacobian,
-                                                              jacobian_operator,
-                                                              initial_guess));
-    auto group = rcp(
-      new NOX::Epetra::Group(printing, required, initial_guess, linear_system));
-
-    RCP<NOX::StatusTest::Generic> converged;
-    if (problem.converged)
-      converged = rcp(new CallbackTest(problem, x));
-    else
-      converged =
-        rcp(new NOX::StatusTest::NormF(parameters.tolerance,
-                                       NOX::StatusTest::NormF::Unscaled));
-    auto max_iterations =
-      rcp(new NOX::StatusTest::MaxIters(parameters.max_iterations));
-    auto finite = rcp(new NOX::StatusTest::FiniteValue);
-    auto status = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
-    status->addStatusTest(finite);
-    status->addStatusTest(converged);
-    status->addStatusTest(max_iterations);
-
-    RCP<NOX::Solver::Generic>   solver;
-    NOX::StatusTest::StatusType outcome = NOX::StatusTest::Failed;
+    Teuchos::RCP<NOX::Solver::Generic> solver;
+    NOX::StatusTest::StatusType        outcome = NOX::StatusTest::Failed;
     try
       {
-        solver  = NOX::Solver::buildSolver(group, status, nox_parameters);
+        solver  = NOX::Solver::buildSolver(group,
+                                          status_tests(problem, x, parameters),
+                                          nox);
         outcome = solver->solve();
       }
     catch (...)
@@ -351,34 +407,12 @@ namespace rodnet
         return result;
       }
 
-    const auto &final_group =
-      dynamic_cast<const NOX::Epetra::Group &>(solver->getSolutionGroup());
     const Epetra_Vector &final_x =
-      dynamic_cast<const NOX::Epetra::Vector &>(final_group.getX())
+      dynamic_cast<const NOX::Epetra::Vector &>(
+        solver->getSolutionGroup().getX())
         .getEpetraVector();
     for (int i = 0; i < final_x.MyLength(); ++i)
       x_view[i] = final_x[i];
-
-    Result result;
-    result.iterations    = solver->getNumIterations();
-    result.residual_norm = final_group.isF() ? final_group.getNormF() : NAN;
-    result.converged     = outcome == NOX::StatusTest::Converged &&
-                       std::isfinite(result.residual_norm);
-    if (!result.converged)
-      {
-        if (!interface->failure.empty())
-          result.failure = interface->failure;
-        else if (!std::isfinite(result.residual_norm))
-          result.failure = "the residual is not finite";
-        else if (result.iterations >= parameters.max_iterations)
-          result.failure = "no convergence in " +
-                           std::to_string(parameters.max_iterations) +
-                           " iterations (residual " +
-                           std::to_string(result.residual_norm) + ")";
-        else
-          result.failure = "the line search failed (residual " +
-                           std::to_string(result.residual_norm) + ")";
-      }
-    return result;
+    return judge(*solver, outcome, *interface, parameters);
   }
 } // namespace rodnet

@@ -6,12 +6,14 @@
 #include <solvers/equilibrium_check.h>
 #include <solvers/free_motions.h>
 #include <solvers/stability.h>
+#include <solvers/state_guard.h>
 #include <solvers/static_solver.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 namespace rodnet
 {
@@ -270,188 +272,6 @@ namespace rodnet
     return values.empty() ? std::nan("") : values[0];
   }
 
-  void
-  StaticSolver::run(VectorType &u, const Observer &on_converged)
-  {
-    const double nominal         = 1.0 / parameters.n_steps;
-    const double minimum         = nominal * parameters.min_step_fraction;
-    double       lambda          = 0;
-    double       step            = nominal;
-    unsigned int count           = 0;
-    bool         previous_stable = true;
-    VectorType   previous        = u;
-    // Change of the state over the last converged step (of length
-    // last_step), quaternion increments included: they are zeroed by the
-    // reference reset, so they are taken before it.
-    VectorType increment = u;
-    increment            = 0;
-    double last_step     = 0;
-    refuse_unsolvable(u);
-
-    while (lambda < 1.0 - 1e-12)
-      {
-        dealii::Timer timer;
-        // Cut steps never skip a point of the nominal grid k / n_steps, so
-        // that outputs land on the loads the scene asked for; a target within
-        // rounding of a grid point is snapped to it, or the sum of cut steps
-        // would stop just short of it and leave a sliver of a step.
-        const double snap = 1e-6 * nominal;
-        const double next_grid =
-          std::min((std::floor((lambda + snap) / nominal) + 1) * nominal, 1.0);
-        const double target =
-          lambda + step > next_grid - snap ? next_grid : lambda + step;
-        step               = target - lambda;
-        VectorType   trial = u;
-        JudgedResult result;
-        if (parameters.predict)
-          {
-            // With an increment to follow, extrapolate it; without one
-            // (first step, after a branch switch) let the free DoFs follow
-            // the prescribed ones to first order. Displacement-driven steps
-            // otherwise move only the prescribed DoFs in the first iterate,
-            // a strain concentrated in one segment that grows with N.
-            const bool predicted =
-              last_step > 0 ? (trial.add(step / last_step, increment), true) :
-                              linear_prediction(u, target, trial);
-            if (predicted)
-              {
-                result = solve_at(trial, target, nullptr, &u);
-                if (!result.converged)
-                  trial = u;
-              }
-          }
-        if (!result.converged)
-          result = solve_at(trial, target);
-        bool followed_mode = false;
-        if (!result.converged && parameters.branch_switch_amplitude > 0)
-          {
-            // Past a bifurcation the Newton step from the previous state
-            // (whose tangent is nearly singular there) diverges; start
-            // instead from the previous state displaced along its buckling
-            // mode.
-            VectorType          start                  = u;
-            double              mu                     = std::nan("");
-            const Configuration previous_configuration = model.configuration();
-            if (solve_along_mode(start,
-                                 lambda,
-                                 target,
-                                 std::numeric_limits<double>::max(),
-                                 mu))
-              {
-                trial                 = start;
-                result.converged      = true;
-                result.residual       = solved_residual(trial, target);
-                followed_mode         = true;
-                model.configuration() = previous_configuration;
-                if (log != nullptr)
-                  *log << "  step to load factor " << target
-                       << " converged from the buckling mode" << std::endl;
-              }
-            else
-              model.configuration() = previous_configuration;
-          }
-        if (!result.converged)
-          {
-            if (log != nullptr)
-              *log << "  step to load factor " << target << " failed ("
-                   << result.failure << "); cutting the step" << std::endl;
-            step *= 0.5;
-            if (step < minimum)
-              throw SolverFailure(
-                "the load step from load factor " + std::to_string(lambda) +
-                " failed: " + result.failure +
-                "; the step was cut below "
-                "the minimum " +
-                std::to_string(minimum) + " (Solver/Minimum step fraction)" +
-                singular_tangent(u, lambda));
-            continue;
-          }
-
-        const Configuration stable_configuration = model.configuration();
-        increment                                = trial;
-        increment -= u;
-        last_step = followed_mode ? 0 : step;
-        previous  = u;
-        u         = trial;
-        model.reset_reference(u);
-
-        StepInfo info;
-        info.step        = ++count;
-        info.load_factor = target;
-        info.iterations  = result.iterations;
-        info.residual    = result.residual;
-        if (parameters.track_lowest_eigenvalue ||
-            parameters.branch_switch_amplitude > 0)
-          info.lowest_eigenvalue = lowest_eigenvalue(u, target);
-
-        if (parameters.find_critical_load && std::isnan(critical_load) &&
-            previous_stable && negative_eigenvalues(u, target) > 0)
-          {
-            const Configuration unstable_configuration = model.configuration();
-            try
-              {
-                bisect_critical_load(previous,
-                                     stable_configuration,
-                                     lambda,
-                                     target);
-              }
-            catch (const SolverFailure &e)
-              {
-                if (log != nullptr)
-                  *log << "  critical load search abandoned: " << e.what()
-                       << std::endl;
-              }
-            model.configuration() = unstable_configuration;
-          }
-        if (parameters.branch_switch_amplitude > 0 &&
-            info.lowest_eigenvalue < 0)
-          {
-            const double unstable = info.lowest_eigenvalue;
-            const bool   found =
-              solve_along_mode(u,
-                               target,
-                               target,
-                               model.assemble(u, target, nullptr, nullptr),
-                               info.lowest_eigenvalue);
-            // The switch jumps between branches: no increment to follow.
-            last_step = 0;
-            if (log != nullptr)
-              *log << "  unstable equilibrium (lowest eigenvalue " << unstable
-                   << "): "
-                   << (found ? "switched to a stable branch" :
-                               "no stable branch found nearby")
-                   << std::endl;
-          }
-        check_state(u, result, info);
-        info.wall_time = timer.wall_time();
-
-        if (log != nullptr)
-          {
-            char line[200];
-            std::snprintf(line,
-                          sizeof(line),
-                          "step %4u  load factor %.6f  iterations %2u  "
-                          "residual %.2e N, %.2e N m  time %.3f s",
-                          info.step,
-                          info.load_factor,
-                          info.iterations,
-                          info.residual.force,
-                          info.residual.moment,
-                          info.wall_time);
-            *log << line;
-            if (!std::isnan(info.lowest_eigenvalue))
-              *log << "  lowest eigenvalue " << info.lowest_eigenvalue;
-            *log << std::endl;
-            log_warnings(info);
-          }
-        on_converged(info, u);
-
-        previous_stable = info.check.stable;
-        lambda          = target;
-        step            = std::min(2 * step, nominal);
-      }
-  }
-
   bool
   StaticSolver::solve_along_mode(VectorType  &u,
                                  const double mode_load_factor,
@@ -471,14 +291,14 @@ namespace rodnet
     const double amplitude =
       parameters.branch_switch_amplitude * model.length_scale() / largest;
 
-    const Configuration start_configuration = model.configuration();
-    Configuration       best_configuration  = start_configuration;
-    VectorType          best                = u;
-    bool                found               = false;
+    // The start's state returns unless a stable equilibrium is found.
+    StateGuard                start(model);
+    std::optional<ModelState> best_state;
+    VectorType                best = u;
     for (const double sign : {1.0, -1.0})
       {
-        model.configuration() = start_configuration;
-        VectorType trial      = u;
+        model.set_state(start.saved_state());
+        VectorType trial = u;
         for (unsigned int i = 0; i < mode.size(); ++i)
           trial[i] += sign * amplitude * mode[i];
         trial.compress(dealii::VectorOperation::add);
@@ -490,30 +310,32 @@ namespace rodnet
         const double mu = lowest_eigenvalue(trial, load_factor);
         if (mu > 0 && energy < energy_bound)
           {
-            energy_bound       = energy;
-            eigenvalue         = mu;
-            best               = trial;
-            best_configuration = model.configuration();
-            found              = true;
+            energy_bound = energy;
+            eigenvalue   = mu;
+            best         = trial;
+            best_state   = model.state();
           }
       }
-    model.configuration() = best_configuration;
-    u                     = best;
-    return found;
+    if (!best_state)
+      return false;
+    model.set_state(*best_state);
+    start.keep();
+    u = best;
+    return true;
   }
 
   void
-  StaticSolver::bisect_critical_load(const VectorType    &u_stable,
-                                     const Configuration &stable_configuration,
-                                     double               lambda_stable,
-                                     double               lambda_unstable)
+  StaticSolver::bisect_critical_load(const VectorType &u_stable,
+                                     const ModelState &stable_state,
+                                     double            lambda_stable,
+                                     double            lambda_unstable)
   {
-    VectorType    u_lo   = u_stable;
-    Configuration config = stable_configuration;
+    VectorType u_lo  = u_stable;
+    ModelState state = stable_state;
     while (lambda_unstable - lambda_stable > parameters.critical_load_tolerance)
       {
         const double lambda_mid = 0.5 * (lambda_stable + lambda_unstable);
-        model.configuration()   = config;
+        model.set_state(state);
         VectorType                 u_mid  = u_lo;
         const NewtonSolver::Result result = solve_at(u_mid, lambda_mid);
         if (!result.converged)
@@ -526,7 +348,7 @@ namespace rodnet
           {
             lambda_stable = lambda_mid;
             u_lo          = u_mid;
-            config        = model.configuration();
+            state         = model.state();
           }
         else
           lambda_unstable = lambda_mid;

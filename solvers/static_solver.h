@@ -200,7 +200,7 @@ namespace rodnet
 
     /**
      * Bisects the load factor between the stable equilibrium @p u_stable
-     * (with its @p stable_configuration) at @p lambda_stable and an
+     * (with its @p stable_state) at @p lambda_stable and an
      * unstable one at @p lambda_unstable, down to critical_load_tolerance,
      * by the inertia of the tangent (tangent_inertia(): the count of
      * negative pivots is exact where a dense eigenvalue of a stiff tangent
@@ -208,10 +208,90 @@ namespace rodnet
      * midpoint.
      */
     void
-    bisect_critical_load(const VectorType    &u_stable,
-                         const Configuration &stable_configuration,
-                         double               lambda_stable,
-                         double               lambda_unstable);
+    bisect_critical_load(const VectorType &u_stable,
+                         const ModelState &stable_state,
+                         double            lambda_stable,
+                         double            lambda_unstable);
+
+    /// Where the load path of run() stands between steps.
+    struct LoadPath
+    {
+      double       lambda = 0; ///< load factor of the last equilibrium
+      double       step   = 0; ///< length of the next attempt
+      unsigned int count  = 0; ///< converged steps
+      bool         previous_stable = true;
+      /// The equilibrium before the last converged step.
+      VectorType previous;
+      /// Change of the state over the last converged step, of length
+      /// last_step (0: none to extrapolate).
+      VectorType increment;
+      double     last_step = 0;
+    };
+
+    /// The load factor the step of @p step from @p lambda aims at: never
+    /// past the next point of the nominal grid k / n_steps.
+    double
+    next_load_factor(double lambda, double step) const;
+
+    /**
+     * Newton to @p target from the equilibrium @p u: from the predictor,
+     * else from @p u, else (branch switching) from @p u displaced along its
+     * buckling mode, which sets @p followed_mode. @p trial holds the
+     * solution of a converged result.
+     */
+    JudgedResult
+    attempt_step(const LoadPath   &path,
+                 const VectorType &u,
+                 double            target,
+                 VectorType       &trial,
+                 bool             &followed_mode);
+
+    /// The branch-switch start of attempt_step(); the model's state stays
+    /// that of @p u.
+    bool
+    step_from_mode(const VectorType &u,
+                   double            lambda,
+                   double            target,
+                   VectorType       &trial,
+                   JudgedResult     &result);
+
+    /// Halves the step after the failed @p result; throws SolverFailure
+    /// below the minimum step.
+    void
+    cut_step(LoadPath           &path,
+             const VectorType   &u,
+             double              target,
+             const JudgedResult &result);
+
+    /**
+     * Makes the converged @p trial at @p target the state @p u (the
+     * reference reset), then the eigenvalue, the critical-load search and
+     * the branch switch it asks for, and the checks of the state.
+     */
+    StepInfo
+    accept_step(LoadPath           &path,
+                VectorType         &u,
+                const VectorType   &trial,
+                double              target,
+                const JudgedResult &result,
+                bool                followed_mode);
+
+    /// bisect_critical_load(), after which the model's state is the
+    /// unstable step's again; a failed search is logged, not thrown.
+    void
+    search_critical_load(const VectorType &u_stable,
+                         const ModelState &stable_state,
+                         double            lambda_stable,
+                         double            lambda_unstable);
+
+    /// From the unstable equilibrium @p u, to a stable one nearby of lower
+    /// energy if there is one (solve_along_mode()).
+    void
+    switch_branch(VectorType &u, double load_factor, StepInfo &info);
+
+    /// The log line of a converged step and its warnings.
+    void
+    report_step(const StepInfo &info) const;
 
     /// Negative eigenvalues of the constrained tangent at (@p u,
     /// @p load_factor), from its inertia.

@@ -2,7 +2,9 @@
 
 #include <solvers/equilibrium_check.h>
 #include <solvers/free_motions.h>
+#include <solvers/integration_scheme_registry.h>
 #include <solvers/stability.h>
+#include <solvers/state_guard.h>
 #include <solvers/time_integrator.h>
 
 #include <algorithm>
@@ -20,24 +22,6 @@ namespace rodnet
       {Integrator::backward_euler, "backward euler"},
       {Integrator::newmark, "newmark"},
       {Integrator::midpoint, "midpoint"}};
-
-    /// Coefficient c of the mass term c M (u - u_n - h v_n) of @p method.
-    double
-    mass_coefficient(const Integrator method, const double h)
-    {
-      switch (method)
-        {
-          case Integrator::quasi_static:
-            return 0;
-          case Integrator::backward_euler:
-            return 1 / (h * h);
-          case Integrator::newmark:
-            return 4 / (h * h);
-          case Integrator::midpoint:
-            return 2 / (h * h);
-        }
-      return 0;
-    }
 
     std::string
     time_string(const double t)
@@ -99,18 +83,20 @@ namespace rodnet
     if (!(p.min_step_fraction > 0 && p.min_step_fraction <= 1))
       throw std::invalid_argument(
         "time stepping: the minimum step fraction must lie in (0, 1]");
-    if (p.integrator == Integrator::midpoint && model.has_internal_variables())
+    scheme         = create_integration_scheme(to_string(p.integrator), system);
+    preload_scheme = create_integration_scheme("quasi-static", system);
+    if (scheme->needs_stored_energy() && model.has_internal_variables())
       throw std::invalid_argument(
         "time stepping: the midpoint rule conserves a stored energy, which "
         "a material with internal variables (a viscoelastic law) does not "
         "have; use newmark or backward euler");
     model.initialize_matrix(tangent);
     last_increment = model.create_vector();
-    if (p.integrator == Integrator::quasi_static)
+    if (!scheme->dynamic())
       return;
     if (inertia.empty())
       throw std::invalid_argument(
-        "time stepping: the " + to_string(p.integrator) +
+        "time stepping: the " + scheme->name() +
         " integrator needs the inertia of every rod (a density); only "
         "quasi-static runs do without");
     assemble_mass_matrix(model, inertia, p.mass, mass, false);
@@ -118,27 +104,13 @@ namespace rodnet
     has_mass.resize(mass.m());
     for (unsigned int i = 0; i < mass.m(); ++i)
       has_mass[i] = mass.diag_element(i) != 0.0;
-    inertial_force = model.create_vector();
-  }
-
-  void
-  TimeIntegrator::equilibrium_inertial_force(const VectorType &u,
-                                             const double      load_factor)
-  {
-    // M a_0 = lambda f - grad W: the out-of-balance force of the start.
-    model.assemble(u, load_factor, &inertial_force, nullptr, true);
-    inertial_force *= -1.0;
-    for (unsigned int i = 0; i < has_mass.size(); ++i)
-      if (!has_mass[i])
-        inertial_force[i] = 0;
-    inertial_force.compress(dealii::VectorOperation::insert);
   }
 
   void
   TimeIntegrator::run(VectorType &u, VectorType &v, const Observer &observer)
   {
     const Parameters &p = parameters;
-    if (p.integrator == Integrator::quasi_static || p.preload_time > 0)
+    if (!scheme->dynamic() || p.preload_time > 0)
       {
         const std::string free_motions = describe_free_motions(model, u);
         if (!free_motions.empty())
@@ -152,54 +124,26 @@ namespace rodnet
         const double h    = p.preload_time / p.preload_steps;
         const double from = p.start_time - p.preload_time - h;
         model.apply_boundary_values(u, p.load_factor(from));
-        advance(Integrator::quasi_static,
-                from,
-                p.start_time - h,
-                h,
-                u,
-                v,
-                observer);
+        advance(*preload_scheme, from, p.start_time - h, h, u, v, observer);
         v                = 0;
         last_step_length = 0;
       }
     model.apply_boundary_values(u, p.load_factor(p.start_time));
     model.set_time_step(0);
-    if (p.integrator == Integrator::newmark)
-      equilibrium_inertial_force(u, p.load_factor(p.start_time));
-    advance(p.integrator,
-            p.start_time,
-            p.end_time,
-            p.time_step,
-            u,
-            v,
-            observer);
+    scheme->start(u, p.load_factor(p.start_time));
+    advance(*scheme, p.start_time, p.end_time, p.time_step, u, v, observer);
   }
 
   void
-  TimeIntegrator::advance(const Integrator method,
-                          const double     from,
-                          const double     to,
-                          const double     h,
-                          VectorType      &u,
-                          VectorType      &v,
-                          const Observer  &observer)
+  TimeIntegrator::advance(IntegrationScheme &scheme,
+                          const double       from,
+                          const double       to,
+                          const double       h,
+                          VectorType        &u,
+                          VectorType        &v,
+                          const Observer    &observer)
   {
-    // Under a constant load factor the total energy of a dynamic run can
-    // only stay (conservative rods) or fall (dissipation); growth beyond
-    // energy_growth_limit of its scale marks an unstable integration
-    // (Newmark's rule has no energy bound for nonlinear rods), stopped
-    // before it runs away. The reference restarts whenever the load moves.
-    const bool check_energy =
-      method != Integrator::quasi_static && parameters.energy_growth_limit > 0;
-    double reference_load   = parameters.load_factor(from);
-    double reference_energy = 0, energy_scale = 0;
-    if (check_energy)
-      {
-        reference_energy = kinetic_energy(mass, v) +
-                           model.assemble(u, reference_load, nullptr, nullptr);
-        energy_scale = std::abs(reference_energy);
-      }
-
+    EnergyWatch watch = watch_energy(scheme, from, u, v);
     // Times closer than this to a grid point are on it (rounding of t).
     const double on_grid = 1e-9 * h;
     double       t       = from;
@@ -216,18 +160,9 @@ namespace rodnet
         const double  length  = end - t;
         dealii::Timer timer;
         JudgedResult  result;
-        if (!step(method, t, end, u, v, result))
+        if (!step(scheme, t, end, u, v, result))
           {
-            attempt = length / 2;
-            if (attempt < parameters.min_step_fraction * h)
-              throw SolverFailure("time stepping (" + to_string(method) +
-                                  "): the step from t = " + time_string(t) +
-                                  " s failed down to a length of " +
-                                  time_string(length) +
-                                  " s: " + result.failure);
-            if (log != nullptr)
-              *log << "  t = " << t << " s: step of " << length << " s failed ("
-                   << result.failure << "); halving\n";
+            attempt = halve_step(scheme, t, length, h, result);
             continue;
           }
         t = end;
@@ -237,46 +172,9 @@ namespace rodnet
             attempt = h;
           }
         ++n_steps;
-
-        StepInfo info;
-        info.step        = n_steps;
-        info.time        = t;
-        info.time_step   = length;
-        info.load_factor = parameters.load_factor(t);
-        info.iterations  = result.iterations;
-        info.residual    = result.residual;
-        info.potential_energy =
-          model.assemble(u, info.load_factor, nullptr, nullptr);
-        if (method != Integrator::quasi_static)
-          info.kinetic_energy = kinetic_energy(mass, v);
-        check_state(method, u, result, info);
+        StepInfo info  = describe_step(scheme, t, length, u, v, result);
         info.wall_time = timer.wall_time();
-        if (!std::isfinite(info.potential_energy) ||
-            !std::isfinite(info.kinetic_energy))
-          throw SolverFailure(
-            "time stepping (" + to_string(method) +
-            "): the energy is not finite at t = " + time_string(t) + " s");
-        if (check_energy)
-          {
-            const double energy = info.kinetic_energy + info.potential_energy;
-            if (info.load_factor != reference_load)
-              {
-                reference_load   = info.load_factor;
-                reference_energy = energy;
-                energy_scale     = std::abs(energy);
-              }
-            energy_scale = std::max(energy_scale, info.kinetic_energy);
-            if (energy - reference_energy >
-                parameters.energy_growth_limit * energy_scale)
-              throw SolverFailure(
-                "time stepping (" + to_string(method) + "): unstable at t = " +
-                time_string(t) + " s, the energy grew from " +
-                time_string(reference_energy) + " to " + time_string(energy) +
-                " J under a constant load; take a smaller time step" +
-                (method == Integrator::newmark ?
-                   " or the midpoint rule, which conserves energy" :
-                   ""));
-          }
+        check_energy(scheme, info, watch);
         if (observer)
           observer(info, u, v);
         if (log != nullptr && parameters.progress_interval > 0 &&
@@ -287,13 +185,108 @@ namespace rodnet
       }
   }
 
-  void
-  TimeIntegrator::check_state(const Integrator    method,
-                              const VectorType   &u,
-                              const JudgedResult &result,
-                              StepInfo           &info)
+  double
+  TimeIntegrator::halve_step(const IntegrationScheme &scheme,
+                             const double             time,
+                             const double             length,
+                             const double             h,
+                             const JudgedResult      &result) const
   {
-    if (method == Integrator::quasi_static)
+    const double attempt = length / 2;
+    if (attempt < parameters.min_step_fraction * h)
+      throw SolverFailure("time stepping (" + scheme.name() +
+                          "): the step from t = " + time_string(time) +
+                          " s failed down to a length of " +
+                          time_string(length) + " s: " + result.failure);
+    if (log != nullptr)
+      *log << "  t = " << time << " s: step of " << length << " s failed ("
+           << result.failure << "); halving\n";
+    return attempt;
+  }
+
+  TimeIntegrator::StepInfo
+  TimeIntegrator::describe_step(const IntegrationScheme &scheme,
+                                const double             time,
+                                const double             length,
+                                const VectorType        &u,
+                                const VectorType        &v,
+                                const JudgedResult      &result)
+  {
+    StepInfo info;
+    info.step        = n_steps;
+    info.time        = time;
+    info.time_step   = length;
+    info.load_factor = parameters.load_factor(time);
+    info.iterations  = result.iterations;
+    info.residual    = result.residual;
+    info.potential_energy =
+      model.assemble(u, info.load_factor, nullptr, nullptr);
+    if (scheme.dynamic())
+      info.kinetic_energy = kinetic_energy(mass, v);
+    check_state(scheme, u, result, info);
+    return info;
+  }
+
+  TimeIntegrator::EnergyWatch
+  TimeIntegrator::watch_energy(const IntegrationScheme &scheme,
+                               const double             from,
+                               const VectorType        &u,
+                               const VectorType        &v)
+  {
+    // Under a constant load factor the total energy of a dynamic run can
+    // only stay (conservative rods) or fall (dissipation); growth beyond
+    // energy_growth_limit of its scale marks an unstable integration
+    // (Newmark's rule has no energy bound for nonlinear rods), stopped
+    // before it runs away. The reference restarts whenever the load moves.
+    EnergyWatch watch;
+    watch.on = scheme.dynamic() && parameters.energy_growth_limit > 0;
+    watch.reference_load = parameters.load_factor(from);
+    if (watch.on)
+      {
+        watch.reference =
+          kinetic_energy(mass, v) +
+          model.assemble(u, watch.reference_load, nullptr, nullptr);
+        watch.scale = std::abs(watch.reference);
+      }
+    return watch;
+  }
+
+  void
+  TimeIntegrator::check_energy(const IntegrationScheme &scheme,
+                               const StepInfo          &info,
+                               EnergyWatch             &watch) const
+  {
+    if (!std::isfinite(info.potential_energy) ||
+        !std::isfinite(info.kinetic_energy))
+      throw SolverFailure("time stepping (" + scheme.name() +
+                          "): the energy is not finite at t = " +
+                          time_string(info.time) + " s");
+    if (!watch.on)
+      return;
+    const double energy = info.kinetic_energy + info.potential_energy;
+    if (info.load_factor != watch.reference_load)
+      {
+        watch.reference_load = info.load_factor;
+        watch.reference      = energy;
+        watch.scale          = std::abs(energy);
+      }
+    watch.scale = std::max(watch.scale, info.kinetic_energy);
+    if (energy - watch.reference > parameters.energy_growth_limit * watch.scale)
+      throw SolverFailure(
+        "time stepping (" + scheme.name() + "): unstable at t = " +
+        time_string(info.time) + " s, the energy grew from " +
+        time_string(watch.reference) + " to " + time_string(energy) +
+        " J under a constant load; take a smaller time step" +
+        scheme.instability_advice());
+  }
+
+  void
+  TimeIntegrator::check_state(const IntegrationScheme &scheme,
+                              const VectorType        &u,
+                              const JudgedResult      &result,
+                              StepInfo                &info)
+  {
+    if (!scheme.dynamic())
       {
         const EquilibriumCheck check =
           check_equilibrium(model,
@@ -324,156 +317,90 @@ namespace rodnet
   }
 
   bool
-  TimeIntegrator::step(const Integrator method,
-                       const double     time,
-                       const double     end_time,
-                       VectorType      &u,
-                       VectorType      &v,
-                       JudgedResult    &result)
+  TimeIntegrator::step(IntegrationScheme &scheme,
+                       const double       time,
+                       const double       end_time,
+                       VectorType        &u,
+                       VectorType        &v,
+                       JudgedResult      &result)
   {
-    const double h           = end_time - time;
-    const double c           = mass_coefficient(method, h);
-    const double load_factor = parameters.load_factor(
-      method == Integrator::midpoint ? time + h / 2 : end_time);
-    const double end_load_factor = parameters.load_factor(end_time);
-    const bool   midpoint        = method == Integrator::midpoint;
-
-    // u_n + h v_n: the base of the mass term and the predictor.
+    StateGuard   before(model);
+    const double h = end_time - time;
+    // u_n + h v_n: the base of the mass term.
     VectorType base = u;
     base.add(h, v);
-    // Predictor: the last increment, scaled to the step, rather than
-    // h v_n: the velocities of stiff modes that the second-order rules do
-    // not damp flip sign from step to step, and their mean over the last
-    // step is what the next one continues.
+    const StepStart start{
+      u, base, h, parameters.load_factor(scheme.load_time(time, end_time))};
+    VectorType x = predict(u, v, h, parameters.load_factor(end_time));
+    solve_step(scheme, start, x, result);
+    if (result.converged && !std::isfinite(x.l2_norm()))
+      {
+        result.converged = false;
+        result.failure   = "the state is not finite";
+      }
+    if (!result.converged)
+      {
+        noise.rows.clear();
+        return false;
+      }
+    ++steps_since_noise;
+
+    // The commit first: it may throw, and then nothing has moved.
+    model.commit_internal_variables(x);
+    // Until the next step, evaluations see the converged state: the stored
+    // energy at the committed variables (a zero-length step).
+    model.set_time_step(0);
+    scheme.finish(start, x, v);
+    // Rows without mass (junction quaternions) have no velocity.
+    for (unsigned int i = 0; i < has_mass.size(); ++i)
+      if (!has_mass[i])
+        v[i] = 0;
+    v.compress(dealii::VectorOperation::insert);
+    last_increment = x;
+    last_increment -= u;
+    last_step_length = h;
+    model.reset_reference(x);
+    u = x;
+    before.keep();
+    return true;
+  }
+
+  VectorType
+  TimeIntegrator::predict(const VectorType &u,
+                          const VectorType &v,
+                          const double      h,
+                          const double      end_load_factor) const
+  {
+    // The last increment, scaled to the step, rather than h v_n: the
+    // velocities of stiff modes that the second-order rules do not damp
+    // flip sign from step to step, and their mean over the last step is
+    // what the next one continues.
     VectorType x = u;
     if (last_step_length > 0)
       x.add(h / last_step_length, last_increment);
     else
       x.add(h, v);
     model.apply_boundary_values(x, end_load_factor);
+    return x;
+  }
 
-    VectorType difference = model.create_vector();
-    VectorType product    = model.create_vector();
-    // Adds c M (x - base) (minus Newmark's p_n) to r, free rows only.
-    const auto add_inertia = [&](const VectorType &y, VectorType &r) {
-      if (c == 0)
-        return;
-      difference = y;
-      difference -= base;
-      mass.vmult(product, difference);
-      r.add(c, product);
-      if (method == Integrator::newmark)
-        r.add(-1.0, inertial_force);
-      model.constraints().set_zero(r);
-    };
-
-    double     start_energy = 0;
-    VectorType point        = model.create_vector();
-    // Midpoint rule: gradients at m and at u, the correction coefficient
-    // and the rank-one part of the Jacobian.
-    VectorType gradient_m, gradient_y, mass_difference, rank_one_a, rank_one_b;
-    if (midpoint)
-      {
-        gradient_m.reinit(point);
-        gradient_y.reinit(point);
-        mass_difference.reinit(point);
-        rank_one_a.reinit(point);
-        rank_one_b.reinit(point);
-      }
-    // The discrete gradient in the metric of the mass matrix:
-    // gradbar = grad Pi(m) + c M d_f, c = [Pi(u) - Pi(u_n) -
-    // grad Pi(m).d] / (d_f.M d_f). Any metric keeps gradbar.d =
-    // Pi(u) - Pi(u_n); the mass puts the correction where the inertia
-    // is, instead of loading the stiff, nearly massless twist DoFs as
-    // much as the positions (which made Newton stall at coarse steps),
-    // and never on massless quaternion rows.
-    const auto correction_terms = [&](const VectorType &y,
-                                      const VectorType &gradient,
-                                      const double      energy) {
-      difference = y;
-      difference -= u;
-      const double change = energy - start_energy - (gradient * difference);
-      model.constraints().set_zero(difference);
-      mass.vmult(mass_difference, difference);
-      model.constraints().set_zero(mass_difference);
-      const double norm2 = difference * mass_difference;
-      return std::make_pair(norm2 > 0 ? change / norm2 : 0.0, norm2);
-    };
-    NewtonSolver::Problem problem;
-    if (midpoint)
-      {
-        problem.residual = [&](const VectorType &y, VectorType &r) {
-          point = y;
-          point += u;
-          point *= 0.5;
-          // Unconstrained: grad Pi . d needs the fixed rows too, where
-          // prescribed DoFs move.
-          model.assemble(point, load_factor, &r, nullptr, false);
-          const double energy =
-            model.assemble(y, load_factor, nullptr, nullptr);
-          const double coefficient = correction_terms(y, r, energy).first;
-          model.constraints().set_zero(r);
-          r.add(coefficient, mass_difference);
-          add_inertia(y, r);
-        };
-        // The exact Jacobian: the derivative of the correction c M d_f is
-        // c M (sparse) plus the dense M d_f (grad c)^T, with
-        //   grad c = [grad Pi(u) - grad Pi(m) - K(m) d / 2 - 2 c M d_f]
-        //            / (d_f.M d_f)
-        // (free rows), which NewtonSolver takes as a rank-one term.
-        problem.tangent = [&](const VectorType &y, MatrixType &k) {
-          point = y;
-          point += u;
-          point *= 0.5;
-          model.assemble(point, load_factor, &gradient_m, nullptr, false);
-          const double energy =
-            model.assemble(y, load_factor, &gradient_y, nullptr, false);
-          const auto [coefficient, norm2] =
-            correction_terms(y, gradient_m, energy);
-
-          model.assemble(point, load_factor, nullptr, &k, true);
-          k *= 0.5;
-          k.vmult(product, difference);
-          k.add(c + coefficient, constrained_mass);
-
-          rank_one_b = gradient_y;
-          rank_one_b -= gradient_m;
-          rank_one_b -= product;
-          rank_one_b.add(-2 * coefficient, mass_difference);
-          model.constraints().set_zero(rank_one_b);
-          rank_one_b *= norm2 > 0 ? 1 / norm2 : 0.0;
-          rank_one_a = mass_difference;
-        };
-        problem.rank_one =
-          [&](const VectorType &, VectorType &a, VectorType &b) {
-            a = rank_one_a;
-            b = rank_one_b;
-          };
-      }
-    else
-      {
-        problem.residual = [&](const VectorType &y, VectorType &r) {
-          model.assemble(y, load_factor, &r, nullptr, true);
-          add_inertia(y, r);
-        };
-        problem.tangent = [&](const VectorType &y, MatrixType &k) {
-          model.assemble(y, load_factor, nullptr, &k, true);
-          if (c != 0)
-            k.add(c, constrained_mass);
-        };
-      }
-
+  void
+  TimeIntegrator::solve_step(IntegrationScheme &scheme,
+                             const StepStart   &start,
+                             VectorType        &x,
+                             JudgedResult      &result)
+  {
     try
       {
-        model.set_time_step(h);
-        if (midpoint)
-          start_energy = model.assemble(u, load_factor, nullptr, nullptr);
+        model.set_time_step(start.h);
+        NewtonSolver::Problem problem;
+        scheme.set_up(start, problem);
         // The scales of statics, or the out-of-balance force of the
         // predictor where inertia is what the residual balances.
         VectorType r = model.create_vector();
         problem.residual(x, r);
         problem.tangent(x, tangent);
-        const ResidualParts loads     = criterion.load_scale(x, load_factor);
+        const ResidualParts loads = criterion.load_scale(x, start.load_factor);
         const ResidualParts predicted = criterion.norms(x, r);
         const double        length    = model.length_scale();
         const double        force =
@@ -484,7 +411,7 @@ namespace rodnet
         // every one of thousands.
         if (noise.rows.empty() || steps_since_noise >= noise_interval)
           {
-            noise             = criterion.roundoff_noise(x, load_factor);
+            noise             = criterion.roundoff_noise(x, start.load_factor);
             steps_since_noise = 0;
           }
         const ResidualParts tolerance =
@@ -511,54 +438,5 @@ namespace rodnet
         result.converged = false;
         result.failure   = e.what();
       }
-    if (result.converged && !std::isfinite(x.l2_norm()))
-      {
-        result.converged = false;
-        result.failure   = "the state is not finite";
-      }
-    if (!result.converged)
-      {
-        noise.rows.clear();
-        return false;
-      }
-    ++steps_since_noise;
-
-    // Velocities and Newmark's inertial force at the new state.
-    difference = x;
-    difference -= u;
-    if (method == Integrator::newmark || midpoint)
-      {
-        v *= -1.0;
-        v.add(2 / h, difference);
-      }
-    else
-      {
-        v = difference;
-        v /= h;
-      }
-    if (method == Integrator::newmark)
-      {
-        difference = x;
-        difference -= base;
-        mass.vmult(product, difference);
-        inertial_force *= -1.0;
-        inertial_force.add(c, product);
-      }
-    // Rows without mass (junction quaternions) have no velocity.
-    for (unsigned int i = 0; i < has_mass.size(); ++i)
-      if (!has_mass[i])
-        v[i] = 0;
-    v.compress(dealii::VectorOperation::insert);
-
-    model.commit_internal_variables(x);
-    // Until the next step, evaluations see the converged state: the stored
-    // energy at the committed variables (a zero-length step).
-    model.set_time_step(0);
-    last_increment = x;
-    last_increment -= u;
-    last_step_length = h;
-    model.reset_reference(x);
-    u = x;
-    return true;
   }
 } // namespace rodnet

@@ -3,6 +3,7 @@
 
 #include <core/mass_matrix.h>
 #include <core/rod_model.h>
+#include <solvers/integration_scheme.h>
 #include <solvers/newton_solver.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
@@ -10,6 +11,7 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -86,6 +88,12 @@ namespace rodnet
    * energy that is not finite is a failure as well, never an output, and
    * so is energy growth under constant loads (Parameters::
    * energy_growth_limit): the signature of an unstable integration.
+   *
+   * Each Integrator is an IntegrationScheme (solvers/<name>_scheme.h), created
+   * by its name from integration_scheme_registry.cc; TimeIntegrator does
+   * what is the same for all: the predictor, the tolerance, the Newton
+   * solve of one step, step halving, the commit, the checks. A step that
+   * fails or throws leaves the model's ModelState as it was (StateGuard).
    */
   class TimeIntegrator
   {
@@ -193,38 +201,97 @@ namespace rodnet
     }
 
   private:
-    /// One attempt of a step with @p method from the state (u, v, p) at
-    /// @p time to @p end_time; on success updates them and returns true.
+    /// Watch of the total energy of a dynamic run under constant loads
+    /// (Parameters::energy_growth_limit).
+    struct EnergyWatch
+    {
+      bool   on             = false;
+      double reference_load = 0;
+      double reference      = 0; ///< energy when the load last changed
+      double scale          = 0;
+    };
+
+    /// Runs steps of @p scheme from @p from to @p to, nominally @p h long.
+    void
+    advance(IntegrationScheme &scheme,
+            double             from,
+            double             to,
+            double             h,
+            VectorType        &u,
+            VectorType        &v,
+            const Observer    &on_converged);
+
+    /**
+     * One attempt of a step of @p scheme from the state (u, v) at @p time
+     * to @p end_time; on success updates them and the model's state and
+     * returns true. A failed or throwing attempt leaves the model's state
+     * (StateGuard), @p u and @p v as they were.
+     */
     bool
-    step(Integrator    method,
-         double        time,
-         double        end_time,
-         VectorType   &u,
-         VectorType   &v,
-         JudgedResult &result);
+    step(IntegrationScheme &scheme,
+         double             time,
+         double             end_time,
+         VectorType        &u,
+         VectorType        &v,
+         JudgedResult      &result);
+
+    /// The predictor of a step of length @p h from (u, v), at the
+    /// prescribed values of @p end_load_factor.
+    VectorType
+    predict(const VectorType &u,
+            const VectorType &v,
+            double            h,
+            double            end_load_factor) const;
+
+    /// Newton for the step @p start of @p scheme from @p x, judged by the
+    /// criterion of statics; a throw becomes a failed @p result.
+    void
+    solve_step(IntegrationScheme &scheme,
+               const StepStart   &start,
+               VectorType        &x,
+               JudgedResult      &result);
+
+    /// After a failed step from @p time of @p length: the halved attempt,
+    /// or SolverFailure below min_step_fraction of @p h.
+    double
+    halve_step(const IntegrationScheme &scheme,
+               double                   time,
+               double                   length,
+               double                   h,
+               const JudgedResult      &result) const;
+
+    /// What the observer sees of the step to @p time that @p result
+    /// accepted, with its checks (check_state()).
+    StepInfo
+    describe_step(const IntegrationScheme &scheme,
+                  double                   time,
+                  double                   length,
+                  const VectorType        &u,
+                  const VectorType        &v,
+                  const JudgedResult      &result);
+
+    /// The energy watch at the start (@p from) of a run of @p scheme.
+    EnergyWatch
+    watch_energy(const IntegrationScheme &scheme,
+                 double                   from,
+                 const VectorType        &u,
+                 const VectorType        &v);
+
+    /// Throws SolverFailure for an energy of @p info that is not finite
+    /// or that grew beyond the limit under a constant load.
+    void
+    check_energy(const IntegrationScheme &scheme,
+                 const StepInfo          &info,
+                 EnergyWatch             &watch) const;
 
     /// Stability and rounding (quasi-static steps, check_equilibrium()) and
     /// the strain range of the converged @p u that @p result accepted into
     /// @p info, with warnings on the log.
     void
-    check_state(Integrator          method,
-                const VectorType   &u,
-                const JudgedResult &result,
-                StepInfo           &info);
-
-    /// Runs steps of @p method from @p from to @p to, nominally @p h long.
-    void
-    advance(Integrator      method,
-            double          from,
-            double          to,
-            double          h,
-            VectorType     &u,
-            VectorType     &v,
-            const Observer &on_converged);
-
-    /// The inertial force -grad Pi(u) on the rows that carry mass.
-    void
-    equilibrium_inertial_force(const VectorType &u, double load_factor);
+    check_state(const IntegrationScheme &scheme,
+                const VectorType        &u,
+                const JudgedResult      &result,
+                StepInfo                &info);
 
     RodModel         &model;
     Parameters        parameters;
@@ -240,8 +307,10 @@ namespace rodnet
     MatrixType tangent;
     /// Rows with a nonzero mass diagonal.
     std::vector<bool> has_mass;
-    /// Newmark's inertial force M a at the current state.
-    VectorType inertial_force;
+    StepSystem        system{model, mass, constrained_mass, has_mass};
+    /// The scheme of Parameters::integrator, and the quasi-static one of
+    /// the preload.
+    std::unique_ptr<IntegrationScheme> scheme, preload_scheme;
     /// u_n - u_{n-1} and its step length (0: none yet), for the predictor.
     VectorType   last_increment;
     double       last_step_length = 0;

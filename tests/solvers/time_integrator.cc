@@ -12,6 +12,7 @@
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
+#include <common/held_bar.h>
 #include <solvers/time_integrator.h>
 
 #include <cmath>
@@ -22,28 +23,7 @@ namespace
 {
   using namespace rodnet;
 
-  /// A straight bar from the origin to e_x of @p n segments, clamped at
-  /// its start, its end moved by @p end_displacement at load factor 1.
-  std::unique_ptr<RodModel>
-  bar(const std::shared_ptr<const RodMaterial> &material,
-      const unsigned int                        n,
-      const Vector3                            &end_displacement)
-  {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(1, 0, 0),
-                                          n),
-                     false,
-                     Vector3::UnitY(),
-                     "simple");
-    auto model = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>{material});
-    model->clamp_end("left", 0, true);
-    model->fix_components("right", n, {{true, true, true}}, end_displacement);
-    model->finalize();
-    return model;
-  }
+  using rodnet::testing::held_bar;
 
   // A bar pulled by eps = 1e-4 at t = 0 and held: the force relaxes from
   // (1 + r) EA eps towards EA eps as E(t) / E1 = 1 + r exp(-t / t_r).
@@ -53,7 +33,7 @@ namespace
   TEST(TimeIntegrator, StressRelaxationOfHeldBar)
   {
     const double EA = 1e4, r = 0.3, t_r = 0.5, eps = 1e-4;
-    auto         model = bar(
+    auto         model = held_bar(
       std::make_shared<StandardLinearSolid>(RodStiffness{EA, 1, 1, 1}, r, t_r),
       4,
       Vector3(eps, 0, 0));
@@ -133,7 +113,7 @@ namespace
   TEST(TimeIntegrator, RejectsBadParameters)
   {
     auto model =
-      bar(std::make_shared<LinearElasticRod>(RodStiffness{1, 1, 1, 1}),
+      held_bar(std::make_shared<LinearElasticRod>(RodStiffness{1, 1, 1, 1}),
           4,
           Vector3::Zero());
     const std::vector<RodInertia> inertia{{1, 1e-3}};
@@ -161,7 +141,7 @@ namespace
       EXPECT_EQ(parse_integrator(to_string(i)), i);
 
     // The midpoint rule needs a stored energy.
-    auto viscous = bar(
+    auto viscous = held_bar(
       std::make_shared<StandardLinearSolid>(RodStiffness{1, 1, 1, 1}, 0.3, 1.0),
       4,
       Vector3::Zero());
@@ -183,7 +163,7 @@ namespace
   // (finite).
   TEST(TimeIntegrator, FailureKeepsLastConvergedState)
   {
-    auto                       model = bar(std::make_shared<LinearElasticRod>(
+    auto                       model = held_bar(std::make_shared<LinearElasticRod>(
                        RodStiffness{1e6, 1e-3, 1e-3, 1e-3}),
                      8,
                      Vector3(0, 1, 0));

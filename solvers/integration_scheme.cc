@@ -1,0 +1,65 @@
+#include <solvers/integration_scheme.h>
+
+namespace rodnet
+{
+  void
+  IntegrationScheme::set_up(const StepStart       &step,
+                            NewtonSolver::Problem &problem)
+  {
+    const double c   = mass_coefficient(step.h);
+    problem.residual = [this, &step](const VectorType &y, VectorType &r) {
+      system.model.assemble(y, step.load_factor, &r, nullptr, true);
+      add_inertia(step, y, r);
+    };
+    problem.tangent = [this, &step, c](const VectorType &y, MatrixType &k) {
+      system.model.assemble(y, step.load_factor, nullptr, &k, true);
+      if (c != 0)
+        k.add(c, system.constrained_mass);
+    };
+  }
+
+  void
+  IntegrationScheme::add_inertia(const StepStart  &step,
+                                 const VectorType &y,
+                                 VectorType       &r)
+  {
+    const double c = mass_coefficient(step.h);
+    if (c == 0)
+      return;
+    if (difference.size() != y.size())
+      {
+        difference.reinit(y);
+        product.reinit(y);
+      }
+    difference = y;
+    difference -= step.base;
+    system.mass.vmult(product, difference);
+    r.add(c, product);
+    if (const VectorType *extra = extra_inertial_force())
+      r.add(-1.0, *extra);
+    system.model.constraints().set_zero(r);
+  }
+
+  void
+  IntegrationScheme::first_order_velocity(const StepStart  &step,
+                                          const VectorType &x,
+                                          VectorType       &v)
+  {
+    v = x;
+    v -= step.u;
+    v /= step.h;
+  }
+
+  void
+  IntegrationScheme::second_order_velocity(const StepStart  &step,
+                                           const VectorType &x,
+                                           VectorType       &v)
+  {
+    // v_{n+1} = 2 (x - u_n) / h - v_n, in the order of the original
+    // update: v = -v_n, then v += (2 / h) (x - u_n).
+    VectorType change = x;
+    change -= step.u;
+    v *= -1.0;
+    v.add(2 / step.h, change);
+  }
+} // namespace rodnet

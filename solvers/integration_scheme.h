@@ -1,0 +1,151 @@
+#ifndef RODNET_SOLVERS_INTEGRATION_SCHEME_H
+#define RODNET_SOLVERS_INTEGRATION_SCHEME_H
+
+#include <core/rod_model.h>
+#include <solvers/newton_solver.h>
+
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /// What the integration schemes of a TimeIntegrator share: the model and
+  /// its mass matrix M (empty for quasi-static runs).
+  struct StepSystem
+  {
+    RodModel         &model;
+    const MatrixType &mass;             ///< unconstrained
+    const MatrixType &constrained_mass; ///< fixed rows and columns zero
+    /// Rows with a nonzero mass diagonal.
+    const std::vector<bool> &has_mass;
+  };
+
+  /// One step of length h from the state (u_n, v_n).
+  struct StepStart
+  {
+    const VectorType &u;    ///< u_n
+    const VectorType &base; ///< u_n + h v_n
+    double            h;
+    /// The load factor at the scheme's load_time().
+    double load_factor;
+  };
+
+  /**
+   * The time discretization of one step of a TimeIntegrator (the equations
+   * are listed there): the nonlinear system for u_{n+1} that NewtonSolver
+   * solves, and the velocity that follows. TimeIntegrator does the rest,
+   * the same for every scheme: the predictor, the tolerance, the Newton
+   * solve, step cutting, commit and checks. A new scheme is a class
+   * deriving from this one in a file pair of its own, registered by name in
+   * integration_scheme_registry.cc.
+   *
+   * The functions a scheme puts into a NewtonSolver::Problem are called
+   * once per Newton iteration (never per stencil), so that they are
+   * virtual costs nothing measurable.
+   */
+  class IntegrationScheme
+  {
+  public:
+    explicit IntegrationScheme(const StepSystem &system)
+        : system(system)
+    {}
+
+    virtual ~IntegrationScheme() = default;
+
+    /// The name that selects the scheme (TimeIntegrator's Integrator).
+    virtual std::string
+    name() const = 0;
+
+    /// Whether the scheme has inertia (needs the mass matrix).
+    virtual bool
+    dynamic() const
+    {
+      return true;
+    }
+
+    /// Whether the scheme needs a stored energy, which materials with
+    /// internal variables do not have.
+    virtual bool
+    needs_stored_energy() const
+    {
+      return false;
+    }
+
+    /// What to try, besides a smaller time step, when the energy of a run
+    /// with this scheme grows (appended to the message).
+    virtual std::string
+    instability_advice() const
+    {
+      return "";
+    }
+
+    /// Time at which the loads of the step from @p start to @p end act
+    /// (the end: there exactly, which discontinuous loads need).
+    virtual double
+    load_time(const double start, const double end) const
+    {
+      (void)start;
+      return end;
+    }
+
+    /// Coefficient c of the mass term c M (u - u_n - h v_n).
+    virtual double
+    mass_coefficient(double h) const = 0;
+
+    /// Called once before the first step from @p u at @p load_factor.
+    virtual void
+    start(const VectorType &u, const double load_factor)
+    {
+      (void)u;
+      (void)load_factor;
+    }
+
+    /**
+     * Puts the residual and tangent of the step @p step into @p problem
+     * (which then refers to this scheme and to @p step: both must outlive
+     * the solve). Called after the model's time step is set; may evaluate
+     * the model and throw.
+     */
+    virtual void
+    set_up(const StepStart &step, NewtonSolver::Problem &problem);
+
+    /**
+     * The velocity @p v (v_n on entry) at the converged @p x = u_{n+1},
+     * and whatever else the scheme carries to the next step. The rows
+     * without mass are TimeIntegrator's to zero.
+     */
+    virtual void
+    finish(const StepStart &step, const VectorType &x, VectorType &v) = 0;
+
+  protected:
+    /// Adds c M (@p y - base) (and extra_inertial_force()) to @p r, then
+    /// zeroes its fixed rows; nothing without inertia.
+    void
+    add_inertia(const StepStart &step, const VectorType &y, VectorType &r);
+
+    /// A force the scheme adds to the residual of its mass term, or null.
+    virtual const VectorType *
+    extra_inertial_force() const
+    {
+      return nullptr;
+    }
+
+    /// v = (x - u_n) / h.
+    static void
+    first_order_velocity(const StepStart  &step,
+                         const VectorType &x,
+                         VectorType       &v);
+
+    /// v = 2 (x - u_n) / h - v_n (the trapezoidal rule's).
+    static void
+    second_order_velocity(const StepStart  &step,
+                          const VectorType &x,
+                          VectorType       &v);
+
+    const StepSystem &system;
+    /// Scratch: x - base and M (x - base).
+    VectorType difference, product;
+  };
+} // namespace rodnet
+
+#endif

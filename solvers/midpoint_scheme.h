@@ -1,0 +1,87 @@
+#ifndef RODNET_SOLVERS_MIDPOINT_SCHEME_H
+#define RODNET_SOLVERS_MIDPOINT_SCHEME_H
+
+#include <solvers/integration_scheme.h>
+
+#include <utility>
+
+namespace rodnet
+{
+  /**
+   * The implicit midpoint rule with Gonzalez's discrete gradient, second
+   * order, conserving 1/2 v.Mv + Pi of elastic rods to the Newton
+   * tolerance:
+   *   2 M (u - u_n - h v_n) / h^2 + gradbar Pi(u_n, u; lambda_{n+1/2}) = 0,
+   *   gradbar = grad Pi(m) + (Pi(u) - Pi(u_n) - grad Pi(m).d) M d / d.Md,
+   *   m = (u_n + u) / 2, d = u - u_n (free DoFs), v_{n+1} = 2 d / h - v_n.
+   * Its tangent has a dense rank-one part, which NewtonSolver handles by
+   * Sherman-Morrison. Needs a stored energy.
+   */
+  class MidpointScheme : public IntegrationScheme
+  {
+  public:
+    explicit MidpointScheme(const StepSystem &system);
+
+    std::string
+    name() const override
+    {
+      return "midpoint";
+    }
+
+    bool
+    needs_stored_energy() const override
+    {
+      return true;
+    }
+
+    double
+    load_time(const double start, const double end) const override
+    {
+      return start + (end - start) / 2;
+    }
+
+    double
+    mass_coefficient(const double h) const override
+    {
+      return 2 / (h * h);
+    }
+
+    void
+    set_up(const StepStart &step, NewtonSolver::Problem &problem) override;
+
+    void
+    finish(const StepStart &step, const VectorType &x, VectorType &v) override
+    {
+      second_order_velocity(step, x, v);
+    }
+
+  private:
+    /// The discrete-gradient residual at @p y.
+    void
+    residual(const StepStart &step, const VectorType &y, VectorType &r);
+
+    /// Its exact Jacobian at @p y into @p k, and the rank-one part.
+    void
+    tangent(const StepStart &step, const VectorType &y, MatrixType &k);
+
+    /// m = (u_n + y) / 2 into point.
+    void
+    set_midpoint(const StepStart &step, const VectorType &y);
+
+    /// The correction coefficient and d_f.M d_f at @p y, from the
+    /// @p gradient at the midpoint and the @p energy at @p y; leaves d_f
+    /// in difference and M d_f in mass_difference.
+    std::pair<double, double>
+    correction_terms(const StepStart  &step,
+                     const VectorType &y,
+                     const VectorType &gradient,
+                     double            energy);
+
+    /// Pi(u_n) of the step.
+    double     start_energy = 0;
+    VectorType point, gradient_m, gradient_y, mass_difference;
+    VectorType rank_one_a, rank_one_b;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,34 @@
+#include <solvers/newmark_scheme.h>
+
+namespace rodnet
+{
+  NewmarkScheme::NewmarkScheme(const StepSystem &system)
+      : IntegrationScheme(system)
+      , inertial_force(system.model.create_vector())
+  {}
+
+  void
+  NewmarkScheme::start(const VectorType &u, const double load_factor)
+  {
+    system.model.assemble(u, load_factor, &inertial_force, nullptr, true);
+    inertial_force *= -1.0;
+    for (unsigned int i = 0; i < system.has_mass.size(); ++i)
+      if (!system.has_mass[i])
+        inertial_force[i] = 0;
+    inertial_force.compress(dealii::VectorOperation::insert);
+  }
+
+  void
+  NewmarkScheme::finish(const StepStart  &step,
+                        const VectorType &x,
+                        VectorType       &v)
+  {
+    second_order_velocity(step, x, v);
+    VectorType change = x;
+    change -= step.base;
+    VectorType mass_change = change;
+    system.mass.vmult(mass_change, change);
+    inertial_force *= -1.0;
+    inertial_force.add(mass_coefficient(step.h), mass_change);
+  }
+} // namespace rodnet
