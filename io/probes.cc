@@ -76,6 +76,132 @@ namespace rodnet
         }
   }
 
+  namespace
+  {
+    /// The words of a probe "name: kind vertex component", with where it
+    /// stands for messages.
+    struct ProbeWords
+    {
+      std::string entry, context, kind, vertex, component, extra;
+    };
+
+    /// The name of the probe @p item; throws unless it is a name without
+    /// spaces, commas or quotes and not among @p probes yet.
+    std::string
+    probe_name(const std::string        &item,
+               const std::string        &context,
+               const std::vector<Probe> &probes)
+    {
+      const auto colon = item.find(':');
+      if (colon == std::string::npos)
+        throw std::invalid_argument(context + ": expected \"name: kind ...\"");
+      const std::string name = dealii::Utilities::trim(item.substr(0, colon));
+      if (name.empty() || name.find_first_of(",\" ") != std::string::npos)
+        throw std::invalid_argument(context +
+                                    ": the name must be non-empty "
+                                    "without spaces, commas or quotes");
+      for (const Probe &p : probes)
+        if (p.name == name)
+          throw std::invalid_argument(context + ": the name is used twice");
+      return name;
+    }
+
+    /// The unit axis "ax,ay,az" of a rotation probe.
+    Vector3
+    parse_axis(const ProbeWords &w)
+    {
+      Vector3    axis;
+      const auto xyz = dealii::Utilities::split_string_list(w.component, ',');
+      try
+        {
+          if (xyz.size() != 3)
+            throw std::invalid_argument("");
+          const auto v = dealii::Utilities::string_to_double(xyz);
+          axis         = Vector3(v[0], v[1], v[2]);
+        }
+      catch (const std::exception &)
+        {
+          throw std::invalid_argument(w.context + ": the axis \"" +
+                                      w.component +
+                                      "\" is not three numbers ax,ay,az");
+        }
+      if (!(axis.norm() > 0))
+        throw std::invalid_argument(w.context + ": the axis is zero");
+      return axis.normalized();
+    }
+
+    /// "position|reaction <vertex> <x|y|z>" into @p probe; a reaction
+    /// names the first support that fixes the component.
+    template <class Model>
+    void
+    parse_vertex_probe(const ProbeWords &w, const Model &model, Probe &probe)
+    {
+      if (w.vertex.empty() || w.component.empty() || !w.extra.empty())
+        throw std::invalid_argument(w.context + ": expected \"" + w.kind +
+                                    " <vertex> <x|y|z>\"");
+      probe.kind =
+        w.kind == "position" ? Probe::Kind::position : Probe::Kind::reaction;
+      probe.vertex    = select_vertex(model.network(), w.vertex, w.entry);
+      probe.component = parse_component(w.component, w.context);
+      if (probe.kind != Probe::Kind::reaction)
+        return;
+      for (const auto &s : model.supports())
+        for (unsigned int k = 0; k < s.vertices.size(); ++k)
+          if (s.vertices[k] == probe.vertex && s.fixed[k][probe.component] &&
+              probe.support.empty())
+            probe.support = s.name;
+      if (probe.support.empty())
+        throw std::invalid_argument(
+          w.context + ": no support fixes component " + w.component +
+          " of vertex \"" + w.vertex + "\"");
+    }
+
+    /// "rotation <junction> <ax>,<ay>,<az>" or "moment <junction> <x|y|z>"
+    /// (or a clamped end for a moment) into @p probe.
+    template <class Model>
+    void
+    parse_junction_probe(const ProbeWords &w, const Model &model, Probe &probe)
+    {
+      // Here "vertex" holds the junction name, "component" the axis.
+      if (w.vertex.empty() || w.component.empty() || !w.extra.empty())
+        throw std::invalid_argument(
+          w.context + ": expected \"" + w.kind + " <junction> " +
+          (w.kind == "rotation" ? "<ax>,<ay>,<az>" : "<x|y|z>") + "\"");
+      const RotationTarget target =
+        select_rotation_target(model.network(), w.vertex, w.context);
+      if constexpr (std::is_same_v<Model, RodModel>)
+        {
+          // A clamp of a rod end has a reaction moment, no junction.
+          const Support *clamp = model.clamp_at(target.vertex);
+          if (w.kind == "moment" && clamp != nullptr)
+            probe.support = clamp->name;
+          else if (!target.junction)
+            throw std::invalid_argument(
+              w.context + ": \"" + w.vertex + "\" is no junction" +
+              (w.kind == "moment" ? " or clamped end" : ""));
+          else if (!model.layout().has_rotation_dofs(*target.junction))
+            throw std::invalid_argument(w.context + ": junction \"" + w.vertex +
+                                        "\" is pinned and has no rotation");
+          probe.junction = target.junction.value_or(0);
+        }
+      else
+        throw std::invalid_argument(
+          w.context + ": junction rotations and moments are those of the "
+                      "discrete rods' quaternions; the dynamic relaxation "
+                      "element has none");
+      if (w.kind == "moment")
+        {
+          probe.kind      = Probe::Kind::moment;
+          probe.component = parse_component(w.component, w.context);
+        }
+      else
+        {
+          probe.kind = Probe::Kind::rotation;
+          probe.axis = parse_axis(w);
+        }
+    }
+  } // namespace
+
   template <class Model>
   std::vector<Probe>
   parse_probes(const std::string &text,
@@ -86,119 +212,31 @@ namespace rodnet
     for (const std::string &item :
          dealii::Utilities::split_string_list(text, ';'))
       {
-        const std::string context =
-          "entry \"" + entry + "\", probe \"" + item + "\"";
-        const auto colon = item.find(':');
-        if (colon == std::string::npos)
-          throw std::invalid_argument(context +
-                                      ": expected \"name: kind ...\"");
+        ProbeWords w;
+        w.entry   = entry;
+        w.context = "entry \"" + entry + "\", probe \"" + item + "\"";
         Probe probe;
-        probe.name = dealii::Utilities::trim(item.substr(0, colon));
-        if (probe.name.empty() ||
-            probe.name.find_first_of(",\" ") != std::string::npos)
-          throw std::invalid_argument(context +
-                                      ": the name must be non-empty "
-                                      "without spaces, commas or quotes");
-        for (const Probe &p : probes)
-          if (p.name == probe.name)
-            throw std::invalid_argument(context + ": the name is used twice");
-        std::istringstream words(item.substr(colon + 1));
-        std::string        kind, vertex, component, extra;
-        words >> kind >> vertex >> component >> extra;
-        if (kind == "position" || kind == "reaction")
+        probe.name = probe_name(item, w.context, probes);
+        std::istringstream words(item.substr(item.find(':') + 1));
+        words >> w.kind >> w.vertex >> w.component >> w.extra;
+        if (w.kind == "position" || w.kind == "reaction")
+          parse_vertex_probe(w, model, probe);
+        else if (w.kind == "rotation" || w.kind == "moment")
+          parse_junction_probe(w, model, probe);
+        else if ((w.kind == "energy" || w.kind == "eigenvalue") &&
+                 w.vertex.empty())
           {
-            if (vertex.empty() || component.empty() || !extra.empty())
-              throw std::invalid_argument(context + ": expected \"" + kind +
-                                          " <vertex> <x|y|z>\"");
-            probe.kind      = kind == "position" ? Probe::Kind::position :
-                                                   Probe::Kind::reaction;
-            probe.vertex    = select_vertex(model.network(), vertex, entry);
-            probe.component = parse_component(component, context);
-            if (probe.kind == Probe::Kind::reaction)
-              {
-                for (const auto &s : model.supports())
-                  for (unsigned int k = 0; k < s.vertices.size(); ++k)
-                    if (s.vertices[k] == probe.vertex &&
-                        s.fixed[k][probe.component] && probe.support.empty())
-                      probe.support = s.name;
-                if (probe.support.empty())
-                  throw std::invalid_argument(
-                    context + ": no support fixes component " + component +
-                    " of vertex \"" + vertex + "\"");
-              }
-          }
-        else if (kind == "rotation" || kind == "moment")
-          {
-            // Here "vertex" holds the junction name, "component" the axis.
-            if (vertex.empty() || component.empty() || !extra.empty())
-              throw std::invalid_argument(
-                context + ": expected \"" + kind + " <junction> " +
-                (kind == "rotation" ? "<ax>,<ay>,<az>" : "<x|y|z>") + "\"");
-            const RotationTarget target =
-              select_rotation_target(model.network(), vertex, context);
-            if constexpr (std::is_same_v<Model, RodModel>)
-              {
-                // A clamp of a rod end has a reaction moment, no junction.
-                const Support *clamp = model.clamp_at(target.vertex);
-                if (kind == "moment" && clamp != nullptr)
-                  probe.support = clamp->name;
-                else if (!target.junction)
-                  throw std::invalid_argument(
-                    context + ": \"" + vertex + "\" is no junction" +
-                    (kind == "moment" ? " or clamped end" : ""));
-                else if (!model.layout().has_rotation_dofs(*target.junction))
-                  throw std::invalid_argument(context + ": junction \"" +
-                                              vertex +
-                                              "\" is pinned and has no "
-                                              "rotation");
-                probe.junction = target.junction.value_or(0);
-              }
-            else
-              throw std::invalid_argument(
-                context + ": junction rotations and moments are those of the "
-                          "discrete rods' quaternions; the dynamic relaxation "
-                          "element has none");
-            if (kind == "moment")
-              {
-                probe.kind      = Probe::Kind::moment;
-                probe.component = parse_component(component, context);
-              }
-            else
-              {
-                probe.kind = Probe::Kind::rotation;
-                const auto xyz =
-                  dealii::Utilities::split_string_list(component, ',');
-                try
-                  {
-                    if (xyz.size() != 3)
-                      throw std::invalid_argument("");
-                    const auto v = dealii::Utilities::string_to_double(xyz);
-                    probe.axis   = Vector3(v[0], v[1], v[2]);
-                  }
-                catch (const std::exception &)
-                  {
-                    throw std::invalid_argument(
-                      context + ": the axis \"" + component +
-                      "\" is not three numbers ax,ay,az");
-                  }
-                if (!(probe.axis.norm() > 0))
-                  throw std::invalid_argument(context + ": the axis is zero");
-                probe.axis.normalize();
-              }
-          }
-        else if ((kind == "energy" || kind == "eigenvalue") && vertex.empty())
-          {
-            probe.kind =
-              kind == "energy" ? Probe::Kind::energy : Probe::Kind::eigenvalue;
+            probe.kind = w.kind == "energy" ? Probe::Kind::energy :
+                                              Probe::Kind::eigenvalue;
             if (probe.kind == Probe::Kind::eigenvalue &&
                 !std::is_same_v<Model, RodModel>)
               throw std::invalid_argument(
-                context + ": dynamic relaxation has no tangent to take the "
-                          "eigenvalue of");
+                w.context + ": dynamic relaxation has no tangent to take the "
+                            "eigenvalue of");
           }
         else
           throw std::invalid_argument(
-            context + ": unknown probe kind \"" + kind +
+            w.context + ": unknown probe kind \"" + w.kind +
             "\"; known: " + probe_kinds_description());
         probes.push_back(probe);
       }

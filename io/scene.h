@@ -8,14 +8,17 @@
 #include <core/mass_matrix.h>
 #include <core/rod_graph.h>
 #include <core/rod_model.h>
+#include <io/entry_tree.h>
 #include <io/probes.h>
 #include <io/problem_size.h>
 #include <io/scene_families.h>
+#include <io/solution_methods.h>
 #include <materials/cross_section.h>
 #include <solvers/dynamic_relaxation.h>
 #include <solvers/static_solver.h>
 #include <solvers/time_integrator.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,14 +41,6 @@ namespace rodnet
   {
     std::unique_ptr<RodNetwork> network;
     std::unique_ptr<DrModel>    model;
-  };
-
-  /// How a scene is solved.
-  enum class SolutionMethod
-  {
-    newton,             ///< discrete rods and junctions, StaticSolver
-    dynamic_relaxation, ///< bending-active element, DynamicRelaxation
-    time_stepping,      ///< discrete rods and junctions, TimeIntegrator
   };
 
   /**
@@ -164,9 +159,64 @@ namespace rodnet
       std::optional<CrossSection> section;
     };
 
+    /// Checks the size of what will be built (ProblemSize) against the
+    /// memory, naming the entry; returns it with its bytes per DoF.
+    using SizeCheck =
+      std::function<ProblemSize(ProblemSize, const std::string &)>;
+
+    /// Subsection Geometry: the entries every generator shares, then those
+    /// of each registered generator (GeneratorRegistry).
+    static void
+    declare_geometry(dealii::ParameterHandler &prm);
+    /// Subsections Material and Material of group 1.. with the entries of
+    /// every registered material.
+    static void
+    declare_materials(dealii::ParameterHandler &prm);
+    static void
+    declare_supports(dealii::ParameterHandler &prm);
+    static void
+    declare_loads(dealii::ParameterHandler &prm);
+    /// Subsection Solver: "Method" and the entries of every solution
+    /// method (solution_methods()), then the initial state.
+    static void
+    declare_solver(dealii::ParameterHandler &prm);
+    /// "Initial displacement" and "Initial velocity" of subsection
+    /// Time stepping (current: Solver).
+    static void
+    declare_initial_state(dealii::ParameterHandler &prm);
+    static void
+    declare_output(dealii::ParameterHandler &prm);
+
+    /// Makes the rods or the network of the generator that subsection
+    /// Geometry names, refusing with @p check_size what cannot fit.
+    void
+    parse_geometry(dealii::ParameterHandler &prm,
+                   const std::string        &scene_directory,
+                   const SizeCheck          &check_size);
+    /// Reads every material group; @p entries (entry_tree() of @p prm)
+    /// shows which entries a material subsection sets.
+    void
+    parse_materials(dealii::ParameterHandler &prm, const EntryNode &entries);
+    void
+    parse_supports(dealii::ParameterHandler &prm);
+    /// Subsection Loads, and "Steps" into solver.n_steps.
+    void
+    parse_loads(dealii::ParameterHandler &prm);
+    /// Subsection Solver: the method and the parameters of every method.
+    void
+    parse_solver(dealii::ParameterHandler &prm);
+    void
+    parse_output(dealii::ParameterHandler &prm);
+
     /// Reads Solver/Time stepping (and the Newton entries of Solver).
     void
     parse_time_stepping(dealii::ParameterHandler &prm);
+
+    /// The material group @p group from its subsection (current).
+    static MaterialGroup
+    parse_material(dealii::ParameterHandler &prm,
+                   const EntryNode          &entries,
+                   unsigned int              group);
 
     /// Throws std::invalid_argument naming the entry unless the scene can
     /// be time stepped: a positive step, an end after the start, densities

@@ -3,6 +3,7 @@
 
 #include <materials/input_limits.h>
 #include <materials/linear_elastic_rod.h>
+#include <materials/stiffness_input.h>
 
 #include <cctype>
 #include <cmath>
@@ -190,14 +191,12 @@ namespace rodnet
   LinearElasticRod::declare_parameters(dealii::ParameterHandler &prm) const
   {
     using dealii::Patterns::Double;
-    using dealii::Patterns::Selection;
 
-    prm.declare_entry("Stiffness input",
-                      "section",
-                      Selection("section|direct"),
-                      "How the rigidities are given: \"section\" from "
-                      "Young's modulus, shear modulus (or Poisson's ratio) "
-                      "and a cross-section; \"direct\" as EA, EI1, EI2, GJ.");
+    declare_stiffness_input(prm,
+                            "How the rigidities are given: \"section\" from "
+                            "Young's modulus, shear modulus (or Poisson's "
+                            "ratio) and a cross-section; \"direct\" as EA, "
+                            "EI1, EI2, GJ.");
 
     prm.declare_entry("Young's modulus",
                       "0",
@@ -246,25 +245,8 @@ namespace rodnet
   void
   LinearElasticRod::parse_parameters(dealii::ParameterHandler &prm)
   {
-    RodStiffness stiffness;
-    if (prm.get("Stiffness input") == "section")
-      {
-        const double E = prm.get_double("Young's modulus");
-        double       G = prm.get_double("Shear modulus");
-        if (G == 0.)
-          G = isotropic_shear_modulus(context,
-                                      E,
-                                      prm.get_double("Poisson's ratio"));
-        // Check E before the section so a missing modulus is named first.
-        internal::check_positive_entry(context, "Young's modulus", E);
-        stiffness =
-          stiffness_from_section(E,
-                                 G,
-                                 CrossSectionParameters::parse_parameters(prm));
-      }
-    else
-      stiffness = parse_direct_rigidities(prm);
-
+    const StiffnessInput input =
+      parse_stiffness_input(prm, context, "Young's modulus", true);
     RodNaturalShape shape;
     shape.curvature1        = prm.get_double("Natural curvature 1");
     shape.curvature2        = prm.get_double("Natural curvature 2");
@@ -273,7 +255,26 @@ namespace rodnet
 
     // The constructor validates; assigning only afterwards leaves *this
     // untouched when an entry is rejected.
-    *this = LinearElasticRod(stiffness, shape);
+    *this         = LinearElasticRod(input.stiffness, shape);
+    given_section = input.section;
+  }
+
+
+  std::optional<CrossSection>
+  LinearElasticRod::cross_section() const
+  {
+    return given_section;
+  }
+
+
+  std::optional<RodStiffness>
+  LinearElasticRod::straight_linear_elastic_stiffness() const
+  {
+    const RodNaturalShape &shape = rest_shape;
+    if (shape.curvature1 != 0 || shape.curvature2 != 0 || shape.twist != 0 ||
+        shape.axial_eigenstrain != 0)
+      return std::nullopt;
+    return rigidities;
   }
 
 

@@ -8,16 +8,6 @@
 
 namespace rodnet
 {
-  /// Rigidities of a rod: axial EA (N), bending EI1 about d1 and EI2 about
-  /// d2 (N m^2), torsional GJ (N m^2).
-  struct RodStiffness
-  {
-    double EA;
-    double EI1;
-    double EI2;
-    double GJ;
-  };
-
   /**
    * Stress-free shape of a rod: natural curvatures about d1 and d2 (1/m),
    * natural twist rate (rad/m) and axial eigenstrain (-), e.g. from a
@@ -107,6 +97,15 @@ namespace rodnet
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
 
+    /// The section of "Stiffness input = section", else empty.
+    std::optional<CrossSection>
+    cross_section() const override;
+
+    /// The rigidities unless a natural curvature, twist or eigenstrain is
+    /// set.
+    std::optional<RodStiffness>
+    straight_linear_elastic_stiffness() const override;
+
     /// The rigidities in use.
     const RodStiffness &
     stiffness() const;
@@ -118,6 +117,8 @@ namespace rodnet
   private:
     RodStiffness    rigidities;
     RodNaturalShape rest_shape;
+    /// The section the rigidities come from, if any.
+    std::optional<CrossSection> given_section;
   };
 } // namespace rodnet
 

@@ -3,11 +3,15 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <materials/cross_section.h>
+#include <materials/rod_stiffness.h>
+
 #include <Eigen/Core>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -183,6 +187,30 @@ namespace rodnet
                   << time_step;
           throw std::invalid_argument(message.str());
         }
+    }
+
+    /**
+     * The cross-section the rigidities were computed from, where the
+     * material was given one (its "Stiffness input = section"); empty (the
+     * default) where they were given directly. Time stepping takes the
+     * inertia of a rod from it.
+     */
+    virtual std::optional<CrossSection>
+    cross_section() const
+    {
+      return std::nullopt;
+    }
+
+    /**
+     * The rigidities if the material is a linear elastic rod that is stress
+     * free when straight and unstretched (no natural curvature, twist or
+     * eigenstrain), as the bending-active element of dynamic relaxation
+     * takes; empty (the default) for every other material.
+     */
+    virtual std::optional<RodStiffness>
+    straight_linear_elastic_stiffness() const
+    {
+      return std::nullopt;
     }
 
     /// Declares the material's entries in the current subsection.

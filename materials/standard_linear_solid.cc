@@ -3,6 +3,7 @@
 
 #include <materials/input_limits.h>
 #include <materials/standard_linear_solid.h>
+#include <materials/stiffness_input.h>
 
 #include <cmath>
 
@@ -273,16 +274,13 @@ namespace rodnet
   StandardLinearSolid::declare_parameters(dealii::ParameterHandler &prm) const
   {
     using dealii::Patterns::Double;
-    using dealii::Patterns::Selection;
 
-    prm.declare_entry("Stiffness input",
-                      "section",
-                      Selection("section|direct"),
-                      "How the rigidities of the relaxed spring E1 are "
-                      "given: \"section\" from \"Young's modulus E1\", "
-                      "Poisson's ratio and a cross-section; \"direct\" as "
-                      "EA, EI1, EI2, GJ. The Maxwell spring's rigidities "
-                      "are these times \"Modulus ratio E2/E1\".");
+    declare_stiffness_input(
+      prm,
+      "How the rigidities of the relaxed spring E1 are given: \"section\" "
+      "from \"Young's modulus E1\", Poisson's ratio and a cross-section; "
+      "\"direct\" as EA, EI1, EI2, GJ. The Maxwell spring's rigidities are "
+      "these times \"Modulus ratio E2/E1\".");
 
     prm.declare_entry("Young's modulus E1",
                       "0",
@@ -320,29 +318,23 @@ namespace rodnet
   void
   StandardLinearSolid::parse_parameters(dealii::ParameterHandler &prm)
   {
-    RodStiffness stiffness;
-    if (prm.get("Stiffness input") == "section")
-      {
-        const double E1 = prm.get_double("Young's modulus E1");
-        const double G1 =
-          isotropic_shear_modulus(context,
-                                  E1,
-                                  prm.get_double("Poisson's ratio"));
-        // Checked here, so the message names this material's entry.
-        internal::check_positive_entry(context, "Young's modulus E1", E1);
-        stiffness =
-          stiffness_from_section(E1,
-                                 G1,
-                                 CrossSectionParameters::parse_parameters(prm));
-      }
-    else
-      stiffness = parse_direct_rigidities(prm);
+    // Without a "Shear modulus" entry: both springs share nu.
+    const StiffnessInput input =
+      parse_stiffness_input(prm, context, "Young's modulus E1", false);
 
     // The constructor validates; assigning only afterwards leaves *this
     // untouched when an entry is rejected.
-    *this = StandardLinearSolid(stiffness,
+    *this         = StandardLinearSolid(input.stiffness,
                                 prm.get_double("Modulus ratio E2/E1"),
                                 prm.get_double("Relaxation time"));
+    given_section = input.section;
+  }
+
+
+  std::optional<CrossSection>
+  StandardLinearSolid::cross_section() const
+  {
+    return given_section;
   }
 
 

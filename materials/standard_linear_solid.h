@@ -112,6 +112,10 @@ namespace rodnet
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
 
+    /// The section of "Stiffness input = section", else empty.
+    std::optional<CrossSection>
+    cross_section() const override;
+
     /// Rigidities of the relaxed spring E1.
     const RodStiffness &
     relaxed_stiffness() const;
@@ -131,6 +135,8 @@ namespace rodnet
 
   private:
     RodStiffness relaxed;
+    /// The section the rigidities come from, if any.
+    std::optional<CrossSection> given_section;
     double       ratio;
     double       t_relax;
   };

@@ -65,6 +65,16 @@ namespace rodnet
       /// Print a line (iteration, kinetic energy, residual norm) every this
       /// many iterations to the log (0: only per step).
       unsigned int progress_interval = 0;
+
+      /// Declares the entries of these parameters (all but n_steps) in the
+      /// current subsection of @p prm, with their defaults and help.
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /// Reads the entries of declare_parameters() from the current
+      /// subsection of @p prm.
+      void
+      parse_parameters(const dealii::ParameterHandler &prm);
     };
 
     struct StepInfo

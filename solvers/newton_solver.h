@@ -1,6 +1,8 @@
 #ifndef RODNET_SOLVERS_NEWTON_SOLVER_H
 #define RODNET_SOLVERS_NEWTON_SOLVER_H
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -29,6 +31,17 @@ namespace rodnet
       unsigned int max_iterations = 25;
       /// "backtrack", "polynomial" or "full step".
       std::string line_search = "full step";
+
+      /// Declares the entries of these parameters ("Line search", "Max
+      /// iterations") in the current subsection of @p prm, with their defaults
+      /// and help.
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /// Reads the entries of declare_parameters() from the current
+      /// subsection of @p prm.
+      void
+      parse_parameters(const dealii::ParameterHandler &prm);
     };
 
     /// Outcome of one solve.

@@ -82,6 +82,19 @@ namespace rodnet
       /// and keep the stable equilibrium of lower energy (0 = off). Without
       /// it Newton may follow the unstable branch past a bifurcation.
       double branch_switch_amplitude = 0;
+
+      /// Declares the entries of these parameters (those of newton, then
+      /// "Relative tolerance", "Predictor", "Minimum step fraction" and the
+      /// critical load and branch switching entries; n_steps is the scene's
+      /// "Loads/Steps") in the current subsection of @p prm, with their
+      /// defaults and help.
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /// Reads the entries of declare_parameters() from the current
+      /// subsection of @p prm.
+      void
+      parse_parameters(const dealii::ParameterHandler &prm);
     };
 
     struct StepInfo

@@ -145,6 +145,20 @@ namespace rodnet
       double energy_growth_limit = 0.01;
       /// Progress line on the log every this many steps (0: none).
       unsigned int progress_interval = 100;
+
+      /// Declares the entries of these parameters ("Integrator", the times,
+      /// "Load factor", the preload, "Mass", "Progress interval", "Energy
+      /// growth limit"; parse_parameters() reads all but "Load factor", a
+      /// muparser expression the scene reads into load_factor, and the Newton
+      /// settings, which are those of StaticSolver::Parameters) in the current
+      /// subsection of @p prm, with their defaults and help.
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /// Reads the entries of declare_parameters() from the current
+      /// subsection of @p prm.
+      void
+      parse_parameters(const dealii::ParameterHandler &prm);
     };
 
     struct StepInfo

@@ -184,3 +184,34 @@ TEST(MaterialParameters, RegistryListsKnownMaterials)
       EXPECT_NE(message.find("linear elastic"), std::string::npos) << message;
     }
 }
+
+// The section a material was read with is what time stepping takes the
+// inertia from: A = pi r^2 of a circle, and EA = E A; none for "direct".
+TEST(MaterialParameters, CrossSectionOfTheStiffnessInput)
+{
+  const LinearElasticRod rod = parse("set Young's modulus = 2e11\n"
+                                     "set Cross section = circle\n"
+                                     "set Radius = 0.01");
+  ASSERT_TRUE(rod.cross_section().has_value());
+  EXPECT_NEAR(rod.cross_section()->area, pi * 1e-4, 1e-15 * pi * 1e-4);
+  ASSERT_TRUE(rod.straight_linear_elastic_stiffness().has_value());
+  EXPECT_NEAR(rod.straight_linear_elastic_stiffness()->EA,
+              2e11 * pi * 1e-4,
+              1e-15 * 2e11 * pi * 1e-4);
+
+  const LinearElasticRod direct = parse("set Stiffness input = direct\n"
+                                        "set EA = 1\nset EI1 = 2\n"
+                                        "set EI2 = 3\nset GJ = 4");
+  EXPECT_FALSE(direct.cross_section().has_value());
+}
+
+// Dynamic relaxation's element has no natural shape: a twisted rod has no
+// straight linear elastic stiffness.
+TEST(MaterialParameters, NaturalShapeHasNoStraightStiffness)
+{
+  const LinearElasticRod rod = parse("set Stiffness input = direct\n"
+                                     "set EA = 1\nset EI1 = 2\n"
+                                     "set EI2 = 3\nset GJ = 4\n"
+                                     "set Natural twist = 0.5");
+  EXPECT_FALSE(rod.straight_linear_elastic_stiffness().has_value());
+}

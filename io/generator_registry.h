@@ -1,0 +1,141 @@
+#ifndef RODNET_IO_GENERATOR_REGISTRY_H
+#define RODNET_IO_GENERATOR_REGISTRY_H
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <core/rod_graph.h>
+#include <elements/quaternion.h>
+#include <io/problem_size.h>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /// What a generator makes: plain rods (their points, closed or open) or
+  /// a network of beams and junctions.
+  struct GeneratedGeometry
+  {
+    std::vector<std::vector<Vector3>> rod_points;
+    /// One flag per rod of rod_points.
+    std::vector<bool> rod_closed;
+    /// Networks: the beams and junctions.
+    std::optional<RodGraph> graph;
+  };
+
+  /// The entries of subsection Geometry that every generator may use
+  /// besides its own.
+  struct GeneratorInput
+  {
+    /// "Segments": per rod, per polyline piece or per beam.
+    unsigned int segments = 1;
+    /// "Clamp at first segment midpoint" (only for open_rods() generators).
+    bool midpoint_clamp = false;
+    /// Relative file names are relative to it.
+    std::string scene_directory = ".";
+  };
+
+  /**
+   * A way to make the rods of a scene ("Geometry/Generator = <name>"): it
+   * declares the entries of subsection Geometry it reads (an entry that
+   * several generators read, as "Radius", is declared by each alike) and
+   * makes the geometry from them. Registered by name in GeneratorRegistry.
+   */
+  class GeometryGenerator
+  {
+  public:
+    virtual ~GeometryGenerator() = default;
+
+    /// Declares the generator's entries in subsection Geometry (current).
+    virtual void
+    declare_parameters(dealii::ParameterHandler &prm) const = 0;
+
+    /**
+     * The size of what the generator makes, from its entries alone, for
+     * the generators that make many points or beams from a few numbers:
+     * their size is checked before a point is generated. Empty (the
+     * default) for the others, checked once they are read.
+     */
+    virtual std::optional<ProblemSize>
+    planned_size(const dealii::ParameterHandler &prm,
+                 const GeneratorInput           &input) const;
+
+    /// The entry a message about the size of the model names.
+    virtual std::string
+    size_entry() const;
+
+    /// True if the generator makes open rods that "Clamp at first segment
+    /// midpoint" can begin half a segment behind their start.
+    virtual bool
+    open_rods() const;
+
+    /// Makes the geometry; throws std::invalid_argument naming the entry
+    /// where one is inadmissible.
+    virtual GeneratedGeometry
+    generate(const dealii::ParameterHandler &prm,
+             const GeneratorInput           &input) const = 0;
+  };
+
+  /**
+   * Name-keyed factory of geometry generators (ASPECT's pattern: name,
+   * description, declaration, factory), in the order of registration,
+   * which is the order of the "Generator" selection. The registrations are
+   * one line each in generator_registry.cc.
+   */
+  class GeneratorRegistry
+  {
+  public:
+    using Factory = std::function<std::unique_ptr<GeometryGenerator>()>;
+
+    /// The process-wide registry with every generator of rodnet.
+    static const GeneratorRegistry &
+    instance();
+
+    /// Registers @p factory under @p name with a one-line @p description;
+    /// throws if the name is taken.
+    void
+    add(const std::string &name,
+        const std::string &description,
+        Factory            factory);
+
+    /// Registers the default-constructed @p Generator under @p name.
+    template <class Generator>
+    void
+    add(const std::string &name, const std::string &description)
+    {
+      add(name, description, [] { return std::make_unique<Generator>(); });
+    }
+
+    /// Creates the generator registered as @p name; throws
+    /// std::invalid_argument listing the known names otherwise.
+    std::unique_ptr<GeometryGenerator>
+    create(const std::string &name) const;
+
+    /// Registered names, in the order of registration.
+    std::vector<std::string>
+    names() const;
+
+    /// Description given at registration; throws as create() does.
+    std::string
+    description(const std::string &name) const;
+
+  private:
+    struct Entry
+    {
+      std::string name;
+      std::string description;
+      Factory     factory;
+    };
+
+    /// The entry of @p name; throws listing the known names otherwise.
+    const Entry &
+    find(const std::string &name) const;
+
+    std::vector<Entry> entries;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,166 @@
+#include <deal.II/base/patterns.h>
+
+#include <elements/hinge_kernel.h>
+#include <io/generator_registry.h>
+#include <io/scene.h>
+#include <io/scene_entries.h>
+
+namespace rodnet
+{
+  namespace
+  {
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    using scene_entries::join;
+    using scene_entries::vector_pattern;
+
+    /// The size of the rods that build_rod_network() makes of @p graph,
+    /// @p n segments per beam: its junctions with a rotation (four DoFs)
+    /// are the nodes of two or more beam ends or of a kind, but pinned.
+    ProblemSize
+    graph_size(const RodGraph &graph, const double n)
+    {
+      std::vector<unsigned int> ends(graph.nodes.size(), 0);
+      for (const RodGraph::Beam &beam : graph.beams)
+        {
+          ++ends[beam.from];
+          ++ends[beam.to];
+        }
+      double junctions = 0;
+      for (std::size_t i = 0; i < graph.nodes.size(); ++i)
+        {
+          const auto &kind = graph.nodes[i].kind;
+          junctions += (ends[i] > 1 || kind) && kind != JunctionKind::pinned;
+        }
+      return network_size(graph.beams.size(), junctions, n);
+    }
+
+    /// The size of the rods @p rods, closed where @p closed says.
+    ProblemSize
+    generated_size(const std::vector<std::vector<Vector3>> &rods,
+                   const std::vector<bool>                 &closed)
+    {
+      double segments = 0, n_closed = 0;
+      for (std::size_t r = 0; r < rods.size(); ++r)
+        {
+          segments += closed[r] ? rods[r].size() : rods[r].size() - 1.0;
+          n_closed += closed[r];
+        }
+      return rods_size(rods.size(), segments, n_closed);
+    }
+
+    /// Declares the entries of subsection Geometry that every generator
+    /// shares: how the rods are discretized, oriented and made stress free.
+    void
+    declare_rod_entries(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Segments",
+                        "100",
+                        Integer(1),
+                        "Number of segments of the rod (per piece for a "
+                        "polyline, per beam for a generated network or "
+                        "network file). [-]");
+      prm.declare_entry(
+        "Clamp at first segment midpoint",
+        "false",
+        Bool(),
+        "Open rods (straight, arc, helix, polyline, gmsh): centre the first "
+        "segment on the rod's start, along the rod's tangent there (the "
+        "chain begins half a segment behind the start), so that the clamp "
+        "of the start, which Supports/Clamped ends must then hold, acts "
+        "exactly at the start with the rod's tangent, and the free length "
+        "is the rod's length. Not for rings, networks (clamp a node "
+        "instead) or dynamic relaxation. [-]");
+      prm.declare_entry(
+        "Natural shape",
+        to_string(NaturalShape::initial_geometry),
+        Selection(to_string(NaturalShape::initial_geometry) + "|" +
+                  to_string(NaturalShape::straight)),
+        "Stress-free shape of every rod: \"initial geometry\" (the rods "
+        "are stress free as built: a helix stays a helix at zero load) or "
+        "\"straight\" (a curved rod starts prestressed, bent from a "
+        "straight one). The material's Natural curvature and twist act on "
+        "top of either. Junctions always keep their initial angles. [-]");
+      prm.declare_entry("Director d1",
+                        "0, 1, 0",
+                        vector_pattern(),
+                        "Orientation of the first material director: d1 of "
+                        "each segment is this vector made orthogonal to the "
+                        "segment. Bending stiffness EI1 acts about d1. [-]");
+      prm.declare_entry("Hinge kernel",
+                        "simple",
+                        Selection(join(hinge_kernel_names(), "|")),
+                        "Bending and twisting measures: \"simple\" (Korner, "
+                        "Audoly, Bhattacharya 2021) or \"classic\" "
+                        "(Lestringant & Kochmann 2020, eqs. 10-12). [-]");
+      prm.declare_entry(
+        "Ghost spin",
+        "exact",
+        Selection("exact|small rotation"),
+        "Junctions: spin angle of the ghost segments, exact for finite "
+        "rotations (L&K appendix B) or its small-rotation form (eq. 8). [-]");
+    }
+  } // namespace
+
+  void
+  Scene::declare_geometry(dealii::ParameterHandler &prm)
+  {
+    const GeneratorRegistry &generators = GeneratorRegistry::instance();
+    prm.enter_subsection("Geometry");
+    prm.declare_entry(
+      "Generator",
+      generators.names().front(),
+      Selection(join(generators.names(), "|")),
+      "How the rods are made: a straight rod, a circular arc, a closed "
+      "ring, a helix, a polyline through given points, the rods of a Gmsh "
+      "line mesh (one rod per physical tag); or a network of beams tied at "
+      "junctions: the right-angle frame and the windmill of Lestringant & "
+      "Kochmann (Fig. 3), a square or hexagonal lattice, a node/beam list "
+      "file, or a branched Gmsh line mesh (see doc/networks.md).");
+    declare_rod_entries(prm);
+    // An entry that several generators read is declared by each alike;
+    // deal.II keeps the first declaration's place.
+    for (const std::string &name : generators.names())
+      generators.create(name)->declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  void
+  Scene::parse_geometry(dealii::ParameterHandler &prm,
+                        const std::string        &scene_directory,
+                        const SizeCheck          &check_size)
+  {
+    prm.enter_subsection("Geometry");
+    const std::string name      = prm.get("Generator");
+    const auto        generator = GeneratorRegistry::instance().create(name);
+    GeneratorInput    input;
+    input.segments        = prm.get_integer("Segments");
+    input.midpoint_clamp  = prm.get_bool("Clamp at first segment midpoint");
+    input.scene_directory = scene_directory;
+    director_hint         = scene_entries::get_direction(prm, "Director d1");
+    hinge_kernel          = prm.get("Hinge kernel");
+    natural_shape         = natural_shape_from_string(prm.get("Natural shape"));
+    midpoint_clamp        = input.midpoint_clamp;
+    if (midpoint_clamp && !generator->open_rods())
+      throw std::invalid_argument(
+        "entry \"Geometry/Clamp at first segment midpoint\": the " + name +
+        " generator has no open rod start for it (rings are closed; a "
+        "network clamps exactly at a clamped node); set it to false");
+    // What cannot fit in memory is refused before it is generated.
+    const std::string size_entry = generator->size_entry();
+    if (const auto planned = generator->planned_size(prm, input))
+      check_size(*planned, size_entry);
+    GeneratedGeometry geometry = generator->generate(prm, input);
+    rod_points                 = std::move(geometry.rod_points);
+    rod_closed                 = std::move(geometry.rod_closed);
+    graph                      = std::move(geometry.graph);
+    segments_per_beam          = graph ? input.segments : 1;
+    ghost_spin = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
+                                                    GhostSpin::small_rotation;
+    model_size = check_size(graph ? graph_size(*graph, input.segments) :
+                                    generated_size(rod_points, rod_closed),
+                            size_entry);
+    prm.leave_subsection();
+  }
+} // namespace rodnet

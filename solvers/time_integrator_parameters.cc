@@ -1,0 +1,100 @@
+#include <deal.II/base/patterns.h>
+
+#include <solvers/time_integrator.h>
+
+namespace rodnet
+{
+  void
+  TimeIntegrator::Parameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Anything;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    std::string names;
+    for (const Integrator i : {Integrator::quasi_static,
+                               Integrator::backward_euler,
+                               Integrator::newmark,
+                               Integrator::midpoint})
+      names += (names.empty() ? "" : "|") + to_string(i);
+    prm.declare_entry(
+      "Integrator",
+      to_string(Integrator::newmark),
+      Selection(names),
+      "quasi-static: equilibrium at every time, no inertia (creep, "
+      "relaxation). backward euler: first order, numerically damped. "
+      "newmark: average acceleration, second order, undamped. midpoint: "
+      "implicit midpoint rule with a discrete gradient, conserves the "
+      "energy of elastic rods (not for viscoelastic materials). All but "
+      "quasi-static need a Density in every material subsection in "
+      "use. [-]");
+    // No lower bound in the pattern: a bad step is reported by the
+    // scene with what is wrong, rather than as a pattern mismatch.
+    prm.declare_entry("Time step",
+                      "0",
+                      Double(),
+                      "Nominal time step h, required (positive), at most "
+                      "1e6 steps from the start to the end time; a step "
+                      "whose Newton solve fails is halved down to "
+                      "\"Minimum step fraction\" of it. [s]");
+    prm.declare_entry("Start time", "0", Double(), "Time of the start. [s]");
+    prm.declare_entry("End time",
+                      "1",
+                      Double(),
+                      "Time of the end, not before the start. [s]");
+    prm.declare_entry(
+      "Load factor",
+      "1",
+      Anything(),
+      "Factor on every load and prescribed displacement as a function of "
+      "the time t, a muparser expression (pi is defined), e.g. \"if(t < "
+      "0, 1, 0)\" (held during a preload, released at t = 0) or "
+      "\"sin(2*pi*5*t)\". [-]");
+    prm.declare_entry(
+      "Preload time",
+      "0",
+      Double(0),
+      "Quasi-static hold before the start: the structure is loaded by the "
+      "load factor over this time before \"Start time\" and starts from "
+      "rest; viscoelastic rods creep meanwhile. 0: no preload. [s]");
+    prm.declare_entry("Preload steps",
+                      "1",
+                      Integer(1),
+                      "Equal quasi-static steps of the preload. [-]");
+    prm.declare_entry("Mass",
+                      "consistent",
+                      Selection("consistent|lumped"),
+                      "Distribution of each segment's mass onto its "
+                      "vertices: linear shape functions (consistent) or "
+                      "half at each end (lumped). [-]");
+    prm.declare_entry("Progress interval",
+                      "100",
+                      Integer(0),
+                      "Print time, Newton iterations and energy every this "
+                      "many steps (0: never). [-]");
+    prm.declare_entry(
+      "Energy growth limit",
+      "0.01",
+      Double(0),
+      "A dynamic run stops as unstable where, under an unchanged load "
+      "factor, the total energy grows by more than this fraction of its "
+      "value (or of the largest kinetic energy since the load last "
+      "changed); 0 switches the check off. [-]");
+  }
+
+  void
+  TimeIntegrator::Parameters::parse_parameters(
+    const dealii::ParameterHandler &prm)
+  {
+    integrator    = parse_integrator(prm.get("Integrator"));
+    time_step     = prm.get_double("Time step");
+    start_time    = prm.get_double("Start time");
+    end_time      = prm.get_double("End time");
+    preload_time  = prm.get_double("Preload time");
+    preload_steps = prm.get_integer("Preload steps");
+    mass =
+      prm.get("Mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
+    progress_interval   = prm.get_integer("Progress interval");
+    energy_growth_limit = prm.get_double("Energy growth limit");
+  }
+} // namespace rodnet
