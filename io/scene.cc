@@ -6,8 +6,8 @@
 #include <io/entry_tree.h>
 #include <io/run_limits.h>
 #include <io/scene.h>
-#include <io/scene_families.h>
 #include <io/scene_entries.h>
+#include <io/scene_families.h>
 #include <io/solution_methods.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
