@@ -685,7 +685,7 @@ namespace
   dr_rod_problem(const Vector3 &force, const unsigned int n)
   {
     return [=](const DynamicRelaxation::Parameters &p) {
-      return dr_trial(*dr_rod(n, force).model, p);
+      return dr_trial(*dr_rod(n, force), p);
     };
   }
 
@@ -868,7 +868,7 @@ namespace
     dr_stability(
       "P1 N = 50",
       [](const DynamicRelaxation::Parameters &p) {
-        return dr_trial(*bench::p1::dr_model(50).model, p);
+        return dr_trial(*bench::p1::dr_model(50), p);
       },
       accept_any,
       Settings{},
