@@ -78,7 +78,6 @@
 #include <sstream>
 #include <string>
 #include <tests/common/elastica_exact.h>
-#include <type_traits>
 #include <vector>
 
 using namespace rodnet;
@@ -158,18 +157,15 @@ namespace
     unsigned int         iterations = 0; ///< Newton or DR iterations
   };
 
-  template <class Model, class State>
+  template <class State>
   void
-  record_positions(const Model &model, const State &u, Outcome &outcome)
+  record_positions(const Model<State> &model, const State &u, Outcome &outcome)
   {
     const RodNetwork &network = model.network();
     for (unsigned int v = 0; v < network.n_vertices(); ++v)
       {
         outcome.initial.push_back(network.vertex(v));
-        if constexpr (std::is_same_v<Model, RodModel>)
-          outcome.current.push_back(model.configuration().position(u, v));
-        else
-          outcome.current.push_back(model.position(u, v));
+        outcome.current.push_back(model.position(u, v));
       }
   }
 
@@ -244,17 +240,15 @@ namespace
   }
 
   /// The same for dynamic relaxation.
-  DrScene
+  std::unique_ptr<DrModel>
   dr_rod(const unsigned int n, const Vector3 &force)
   {
-    DrScene rod;
-    rod.network = straight_rod(n, false);
-    rod.model   = std::make_unique<DrModel>(*rod.network,
-                                          std::vector<RodStiffness>{unit_rod});
-    rod.model->clamp_end("clamp", 0, true);
-    rod.model->add_point_force(rod.network->rods()[0].vertices.back(), force);
-    rod.model->finalize();
-    return rod;
+    auto model = std::make_unique<DrModel>(straight_rod(n, false),
+                                           std::vector<RodStiffness>{unit_rod});
+    model->clamp_end("clamp", 0, true);
+    model->add_point_force(model->network().rods()[0].vertices.back(), force);
+    model->finalize();
+    return model;
   }
 
   /// The straight rod under @p force solved by @p method.
@@ -273,9 +267,9 @@ namespace
       }
     else
       {
-        const DrScene rod = dr_rod(n, force);
-        outcome           = solve(*rod.model, settings.relaxation);
-        outcome.probe     = rod.network->rods()[0].vertices.back();
+        const auto rod = dr_rod(n, force);
+        outcome        = solve(*rod, settings.relaxation);
+        outcome.probe  = rod->network().rods()[0].vertices.back();
       }
     return outcome;
   }
@@ -363,9 +357,9 @@ namespace
       }
     else
       {
-        const DrScene dr = scene.build_dr_model();
-        outcome          = solve(*dr.model, scene.relaxation);
-        outcome.probe    = dr.network->named_vertex("n_2_2");
+        const auto dr = scene.build_dr_model();
+        outcome       = solve(*dr, scene.relaxation);
+        outcome.probe = dr->network().named_vertex("n_2_2");
       }
     return outcome;
   }
@@ -691,7 +685,7 @@ namespace
   dr_rod_problem(const Vector3 &force, const unsigned int n)
   {
     return [=](const DynamicRelaxation::Parameters &p) {
-      return dr_trial(*dr_rod(n, force).model, p);
+      return dr_trial(*dr_rod(n, force), p);
     };
   }
 
@@ -874,7 +868,7 @@ namespace
     dr_stability(
       "P1 N = 50",
       [](const DynamicRelaxation::Parameters &p) {
-        return dr_trial(*bench::p1::dr_model(50).model, p);
+        return dr_trial(*bench::p1::dr_model(50), p);
       },
       accept_any,
       Settings{},
@@ -885,7 +879,7 @@ namespace
     dr_stability(
       "gridshell 4 segments",
       [&](const DynamicRelaxation::Parameters &p) {
-        return dr_trial(*shell.build_dr_model().model, p);
+        return dr_trial(*shell.build_dr_model(), p);
       },
       accept_any,
       gs,

@@ -99,14 +99,14 @@ namespace
   Outcome
   solve(const unsigned int n, const DynamicRelaxation::Parameters &p)
   {
-    const DrScene p1 = bench::p1::dr_model(n);
-    DrVector      u  = p1.model->create_vector();
-    const auto    result =
-      DynamicRelaxation(*p1.model, p).run(u, [](const auto &, const auto &) {});
+    const auto p1     = bench::p1::dr_model(n);
+    DrVector   u      = p1->create_vector();
+    const auto result =
+      DynamicRelaxation(*p1, p).run(u, [](const auto &, const auto &) {});
     Outcome outcome;
     outcome.iterations = result.total_iterations;
     outcome.cuts       = result.time_step_cuts;
-    outcome.tip        = p1.model->position(u, bench::p1::tip(*p1.model));
+    outcome.tip        = p1->position(u, bench::p1::tip(*p1));
     return outcome;
   }
 

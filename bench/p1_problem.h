@@ -101,18 +101,17 @@ namespace rodnet
       /// P1 for dynamic relaxation: the element's normals must stay off the
       /// xy plane, so they start along e_z (the plane of bending; the
       /// section is round, so the choice does not change the answer).
-      inline DrScene
+      inline std::unique_ptr<DrModel>
       dr_model(const unsigned int n_vertices)
       {
-        DrScene scene;
-        scene.network = network(n_vertices, false, Vector3::UnitZ());
-        scene.model =
-          std::make_unique<DrModel>(*scene.network,
-                                    std::vector<RodStiffness>{stiffness()});
-        scene.model->clamp_end("clamp", 0, true);
-        scene.model->add_gravity(0, mass_per_length(), Vector3(0, 0, g));
-        scene.model->finalize();
-        return scene;
+        auto model = std::make_unique<DrModel>(
+          network(n_vertices, false, Vector3::UnitZ()),
+          std::vector<RodStiffness>{stiffness()});
+        model->clamp_end("clamp", 0, true);
+        // The weight: mass per length times gravity.
+        model->add_distributed_force(0, mass_per_length() * Vector3(0, 0, g));
+        model->finalize();
+        return model;
       }
 
       /// The vertex at the free end.

@@ -46,6 +46,36 @@ namespace rodnet
       distributed_forces.emplace_back(rod, force_per_length);
     }
 
+    /**
+     * Per vertex of @p network: its point forces plus the distributed
+     * forces lumped by the undeformed Voronoi lengths, half of each segment
+     * of the rod to either end (exact for the work of a uniform load on
+     * linear interpolation; Korner et al. section 4). Both models add these
+     * to their position DoFs.
+     */
+    std::vector<Vector3>
+    vertex_forces(const RodNetwork &network) const
+    {
+      std::vector<Vector3> forces(network.n_vertices(), Vector3::Zero());
+      for (const auto &[vertex, force] : point_forces)
+        forces[vertex] += force;
+      for (const auto &[rod_index, q] : distributed_forces)
+        {
+          const Rod         &rod = network.rods()[rod_index];
+          const unsigned int n   = rod.vertices.size();
+          for (unsigned int j = 0; j < (rod.closed ? n : n - 1); ++j)
+            {
+              const unsigned int a = rod.vertices[j];
+              const unsigned int b = rod.vertices[(j + 1) % n];
+              const double       half =
+                0.5 * (network.vertex(b) - network.vertex(a)).norm();
+              forces[a] += half * q;
+              forces[b] += half * q;
+            }
+        }
+      return forces;
+    }
+
     /// (vertex, force) pairs.
     std::vector<std::pair<unsigned int, Vector3>> point_forces;
     /// (rod, force per undeformed length) pairs.

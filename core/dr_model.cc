@@ -1,4 +1,5 @@
 #include <core/dr_model.h>
+#include <core/require_positive.h>
 #include <materials/dr_beam_energy.h>
 
 #include <algorithm>
@@ -88,12 +89,33 @@ namespace rodnet
   } // namespace
 
 
-  DrModel::DrModel(const RodNetwork         &network,
-                   std::vector<RodStiffness> stiffness_per_rod)
-      : network_(&network)
+  DrModel::DrModel(std::unique_ptr<RodNetwork> network,
+                   std::vector<RodStiffness>   stiffness_per_rod)
+      : network_(std::move(network))
       , stiffness(std::move(stiffness_per_rod))
   {
-    const auto &rods = network.rods();
+    // The output draws the rods on the network's triangulation.
+    if (network_->triangulation().n_active_cells() == 0)
+      network_->create_triangulation();
+    check_stiffness();
+    for (unsigned int r = 0; r < network_->rods().size(); ++r)
+      check_straight_at_rest(*network_, r);
+    number_nodes();
+    length = rodnet::length_scale(*network_);
+    create_elements();
+    initialize_frames();
+    for (const Junction &j : network_->junctions())
+      if (j.kind == JunctionKind::clamped)
+        clamp_vertex(j.name, j.vertex);
+      else if (j.kind == JunctionKind::welded_pinned)
+        fix_components(j.name, j.vertex, {{true, true, true}});
+  }
+
+
+  void
+  DrModel::check_stiffness() const
+  {
+    const auto &rods = network_->rods();
     if (stiffness.size() != rods.size())
       throw std::invalid_argument(
         "DrModel: " + std::to_string(rods.size()) + " rods but " +
@@ -103,15 +125,17 @@ namespace rodnet
                                         std::make_pair("EI1", stiffness[r].EI1),
                                         std::make_pair("EI2", stiffness[r].EI2),
                                         std::make_pair("GJ", stiffness[r].GJ)})
-        if (!(value > 0) || !std::isfinite(value))
-          throw std::invalid_argument(
-            "DrModel: rod " + std::to_string(r) + ": " + name +
-            " must be positive and finite, got " + std::to_string(value));
-    for (unsigned int r = 0; r < rods.size(); ++r)
-      check_straight_at_rest(network, r);
+        require_positive(value,
+                         "DrModel: rod " + std::to_string(r) + ": " + name);
+  }
 
+
+  void
+  DrModel::number_nodes()
+  {
     // The rod ends at a junction share the position of its vertex and,
     // except at a pinned junction, its frame.
+    const RodNetwork         &network    = *network_;
     const unsigned int        n_vertices = network.n_vertices();
     std::vector<unsigned int> position_owner(n_vertices);
     std::iota(position_owner.begin(), position_owner.end(), 0u);
@@ -129,8 +153,7 @@ namespace rodnet
     // close together in memory.
     position_node.assign(n_vertices, invalid);
     frame_node.assign(n_vertices, invalid);
-    Vector3 low = network.vertex(0), high = low;
-    for (const Rod &rod : rods)
+    for (const Rod &rod : network.rods())
       for (const unsigned int v : rod.vertices)
         {
           unsigned int &p = position_node[position_owner[v]];
@@ -140,8 +163,6 @@ namespace rodnet
               position_dofs.push_back(initial.size());
               for (unsigned int c = 0; c < 3; ++c)
                 initial.push_back(network.vertex(v)[c]);
-              low  = low.cwiseMin(network.vertex(v));
-              high = high.cwiseMax(network.vertex(v));
             }
           position_node[v] = p;
           unsigned int &f  = frame_node[frame_owner[v]];
@@ -153,8 +174,13 @@ namespace rodnet
             }
           frame_node[v] = f;
         }
-    length = (high - low).norm();
+  }
 
+
+  void
+  DrModel::create_elements()
+  {
+    const auto &rods = network_->rods();
     for (unsigned int r = 0; r < rods.size(); ++r)
       {
         const Rod         &rod        = rods[r];
@@ -169,7 +195,12 @@ namespace rodnet
             elements.push_back(e);
           }
       }
+  }
 
+
+  void
+  DrModel::initialize_frames()
+  {
     // Reference element of each frame: the first element it belongs to;
     // the frame's normal is the director d1 of that element's rod there.
     far_vertex.assign(frame_dofs.size(), invalid);
@@ -179,68 +210,61 @@ namespace rodnet
           const unsigned int f = frame_node[e.vertices[end]];
           if (far_vertex[f] != invalid)
             continue;
-          far_vertex[f] = e.vertices[1 - end];
-
-          const Rod         &rod        = rods[e.rod];
-          const unsigned int n          = rod.vertices.size();
-          const unsigned int i          = (e.segment + end) % n;
-          const auto         tangent_of = [&](const unsigned int s) -> Vector3 {
-            return (network.vertex(rod.vertices[(s + 1) % n]) -
-                    network.vertex(rod.vertices[s]))
-              .normalized();
-          };
-          Vector3 tangent = Vector3::Zero();
-          if (rod.closed || i > 0)
-            tangent += tangent_of((i + n - 1) % n);
-          if (rod.closed || i + 1 < n)
-            tangent += tangent_of(i);
-          const std::string where = "DrModel: rod " + std::to_string(e.rod) +
-                                    ", vertex " + std::to_string(i);
-          if (!(tangent.norm() > 1e-8))
-            throw std::invalid_argument(where + ": the rod folds back on "
-                                                "itself there");
-          tangent.normalize();
-          const Vector3 hint = rod.director_hint;
-          Vector3       d1   = hint - hint.dot(tangent) * tangent;
-          if (!(d1.norm() > 1e-8 * hint.norm()))
-            throw std::invalid_argument(
-              where + ": the director d1 hint is parallel to the rod");
-          d1.normalize();
-          if (d1[2] < 0)
-            d1 = -d1;
-          if (!(d1[2] >= min_normal_z))
-            throw std::invalid_argument(
-              where +
-              ": the normal d1 lies (nearly) in the xy plane, where the "
-              "element's "
-              "normal (n_x, n_y, sqrt(1 - n_x^2 - n_y^2)) is singular; turn "
-              "the structure or choose a director hint with a z component");
+          far_vertex[f]              = e.vertices[1 - end];
+          const Vector3 d1           = initial_normal(e, end);
           initial[frame_dofs[f] + 0] = d1[0];
           initial[frame_dofs[f] + 1] = d1[1];
         }
     frame_clamped.assign(frame_dofs.size(), false);
-
-    for (const Junction &j : network.junctions())
-      if (j.kind == JunctionKind::clamped)
-        clamp_vertex(j.name, j.vertex);
-      else if (j.kind == JunctionKind::welded_pinned)
-        fix_components(j.name, j.vertex, {{true, true, true}});
   }
 
 
-  void
-  DrModel::check_not_finalized(const char *what) const
+  Vector3
+  DrModel::initial_normal(const Element &e, const unsigned int end) const
   {
-    if (finalized)
-      throw std::logic_error(std::string("DrModel: ") + what +
-                             " after finalize()");
+    const RodNetwork  &network    = *network_;
+    const Rod         &rod        = network.rods()[e.rod];
+    const unsigned int n          = rod.vertices.size();
+    const unsigned int i          = (e.segment + end) % n;
+    const auto         tangent_of = [&](const unsigned int s) -> Vector3 {
+      return (network.vertex(rod.vertices[(s + 1) % n]) -
+              network.vertex(rod.vertices[s]))
+        .normalized();
+    };
+    Vector3 tangent = Vector3::Zero();
+    if (rod.closed || i > 0)
+      tangent += tangent_of((i + n - 1) % n);
+    if (rod.closed || i + 1 < n)
+      tangent += tangent_of(i);
+    const std::string where =
+      "DrModel: rod " + std::to_string(e.rod) + ", vertex " + std::to_string(i);
+    if (!(tangent.norm() > 1e-8))
+      throw std::invalid_argument(where + ": the rod folds back on "
+                                          "itself there");
+    tangent.normalize();
+    const Vector3 hint = rod.director_hint;
+    Vector3       d1   = hint - hint.dot(tangent) * tangent;
+    if (!(d1.norm() > 1e-8 * hint.norm()))
+      throw std::invalid_argument(
+        where + ": the director d1 hint is parallel to the rod");
+    d1.normalize();
+    if (d1[2] < 0)
+      d1 = -d1;
+    if (!(d1[2] >= min_normal_z))
+      throw std::invalid_argument(
+        where +
+        ": the normal d1 lies (nearly) in the xy plane, where the "
+        "element's "
+        "normal (n_x, n_y, sqrt(1 - n_x^2 - n_y^2)) is singular; turn "
+        "the structure or choose a director hint with a z component");
+    return d1;
   }
 
 
   void
   DrModel::clamp_vertex(const std::string &name, const unsigned int vertex)
   {
-    DrSupport s;
+    Support s;
     s.name     = name;
     s.vertices = {vertex};
     s.fixed    = {{{true, true, true}}};
@@ -260,7 +284,7 @@ namespace rodnet
                      const unsigned int rod_index,
                      const bool         at_start)
   {
-    check_not_finalized("clamp_end");
+    require_not_finalized("DrModel::clamp_end \"" + name + "\"");
     if (rod_index >= network_->rods().size())
       throw std::invalid_argument("support \"" + name + "\": rod " +
                                   std::to_string(rod_index) +
@@ -275,16 +299,35 @@ namespace rodnet
 
 
   void
+  DrModel::clamp_junction(const std::string &name, const unsigned int junction)
+  {
+    require_not_finalized("DrModel::clamp_junction \"" + name + "\"");
+    if (junction >= network_->junctions().size())
+      throw std::invalid_argument("support \"" + name + "\": junction " +
+                                  std::to_string(junction) +
+                                  " does not exist");
+    const Junction &j = network_->junctions()[junction];
+    if (!j.has_rotation())
+      throw std::invalid_argument(
+        "support \"" + name + "\": junction \"" + j.name +
+        "\" is pinned, so each rod end turns on its own there and there is "
+        "no rotation to hold; clamp the rod ends one by one (<rod>:start or "
+        "<rod>:end) or make the junction clamped");
+    clamp_end(name, j.ends.front().rod, j.ends.front().at_start);
+  }
+
+
+  void
   DrModel::fix_components(const std::string         &name,
                           const unsigned int         vertex,
                           const std::array<bool, 3> &mask,
                           const Vector3             &displacement)
   {
-    check_not_finalized("fix_components");
+    require_not_finalized("DrModel::fix_components \"" + name + "\"");
     if (vertex >= network_->n_vertices())
       throw std::invalid_argument("support \"" + name + "\": vertex " +
                                   std::to_string(vertex) + " does not exist");
-    DrSupport s;
+    Support s;
     s.name     = name;
     s.vertices = {vertex};
     s.fixed    = {mask};
@@ -296,9 +339,22 @@ namespace rodnet
 
 
   void
+  DrModel::add_rotational_loads(
+    const std::vector<SupportsAndLoads::AxisLoad> &rotations,
+    const std::vector<SupportsAndLoads::AxisLoad> &moments)
+  {
+    if (!rotations.empty() || !moments.empty())
+      throw std::invalid_argument(
+        "Supports/Prescribed rotations and Loads/Moments act on junction "
+        "quaternions, which the dynamic relaxation element does not have");
+  }
+
+
+  void
   DrModel::add_point_force(const unsigned int vertex, const Vector3 &force)
   {
-    check_not_finalized("add_point_force");
+    require_not_finalized("DrModel::add_point_force at vertex " +
+                          std::to_string(vertex));
     loads.add_point_force(*network_, vertex, force);
   }
 
@@ -307,25 +363,37 @@ namespace rodnet
   DrModel::add_distributed_force(const unsigned int rod,
                                  const Vector3     &force_per_length)
   {
-    check_not_finalized("add_distributed_force");
+    require_not_finalized("DrModel::add_distributed_force on rod " +
+                          std::to_string(rod));
     loads.add_distributed_force(*network_, rod, force_per_length);
-  }
-
-
-  void
-  DrModel::add_gravity(const unsigned int rod,
-                       const double       mass_per_length,
-                       const Vector3     &acceleration)
-  {
-    add_distributed_force(rod, mass_per_length * acceleration);
   }
 
 
   void
   DrModel::finalize()
   {
-    check_not_finalized("finalize");
+    if (finalized)
+      throw std::logic_error("DrModel::finalize called twice");
+    add_anchors();
+    build_element_stencils();
 
+    fixed_mask.assign(n_dofs(), false);
+    for (const auto &[dof, value] : fixed_dofs)
+      fixed_mask[dof] = true;
+
+    // Dead loads, distributed ones lumped with half of each element.
+    f_ext.reinit(n_dofs());
+    const std::vector<Vector3> forces = loads.vertex_forces(*network_);
+    for (unsigned int v = 0; v < forces.size(); ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        f_ext[position_dof(v, c)] += forces[v][c];
+    finalized = true;
+  }
+
+
+  void
+  DrModel::add_anchors()
+  {
     // A clamped frame is measured from a fixed point where its reference
     // element's far end starts, so that n_r = 0 holds the chord's rotation
     // about the normal.
@@ -340,7 +408,12 @@ namespace rodnet
               initial.push_back(network_->vertex(far_vertex[f])[c]);
             }
         }
+  }
 
+
+  void
+  DrModel::build_element_stencils()
+  {
     const DrVector zero(n_dofs());
     for (Element &e : elements)
       {
@@ -372,23 +445,6 @@ namespace rodnet
               std::to_string(e.segment) + ": " + error.what());
           }
       }
-
-    fixed_mask.assign(n_dofs(), false);
-    for (const auto &[dof, value] : fixed_dofs)
-      fixed_mask[dof] = true;
-
-    // Dead loads, distributed ones lumped with half of each element.
-    f_ext.reinit(n_dofs());
-    for (const auto &[vertex, force] : loads.point_forces)
-      for (unsigned int c = 0; c < 3; ++c)
-        f_ext[position_dof(vertex, c)] += force[c];
-    for (const auto &[rod, q] : loads.distributed_forces)
-      for (const Element &e : elements)
-        if (e.rod == rod)
-          for (const unsigned int v : e.vertices)
-            for (unsigned int c = 0; c < 3; ++c)
-              f_ext[position_dof(v, c)] += 0.5 * e.reference.rest_length * q[c];
-    finalized = true;
   }
 
 
@@ -428,7 +484,7 @@ namespace rodnet
 
 
   double
-  DrModel::energy(const DrVector &u, const double load_factor) const
+  DrModel::elastic_energy(const DrVector &u) const
   {
     if (!finalized)
       throw std::logic_error("DrModel::energy before finalize()");
@@ -439,7 +495,14 @@ namespace rodnet
         e.reference.rest_length,
         DrBeamKinematics(local_dofs(e, u), e.reference).strains(),
         nullptr);
-    return total - load_factor * (f_ext * u);
+    return total;
+  }
+
+
+  double
+  DrModel::energy(const DrVector &u, const double load_factor) const
+  {
+    return elastic_energy(u) - load_factor * (f_ext * u);
   }
 
 
@@ -458,11 +521,7 @@ namespace rodnet
   {
     if (!finalized)
       throw std::logic_error("DrModel::fictitious_masses before finalize()");
-    if (!(mass_scaling > 0) || !std::isfinite(mass_scaling))
-      throw std::invalid_argument(
-        "fictitious masses: the mass scaling must be positive and finite, "
-        "got " +
-        std::to_string(mass_scaling));
+    require_positive(mass_scaling, "fictitious masses: the mass scaling");
     DrVector row_sums(n_dofs());
     for (const Element &e : elements)
       {
@@ -558,9 +617,9 @@ namespace rodnet
 
 
   Vector3
-  DrModel::reaction(const DrSupport &s,
-                    const DrVector  &u,
-                    const double     load_factor) const
+  DrModel::reaction(const Support  &s,
+                    const DrVector &u,
+                    const double    load_factor) const
   {
     DrVector r;
     residual(u, load_factor, r);
@@ -569,7 +628,7 @@ namespace rodnet
 
 
   Vector3
-  DrModel::support_force(const DrSupport &s, const DrVector &r) const
+  DrModel::support_force(const Support &s, const DrVector &r) const
   {
     // At a fixed DoF the support force F balances the residual:
     // dPhi/du - F = 0. A clamp also holds its anchor.
@@ -586,12 +645,48 @@ namespace rodnet
   }
 
 
-  const DrSupport &
-  DrModel::support(const std::string &name) const
+  Vector3
+  DrModel::reaction_moment(const Support &,
+                           const DrVector &,
+                           const double) const
   {
-    for (const DrSupport &s : support_list)
-      if (s.name == name)
-        return s;
-    throw std::invalid_argument("no support named \"" + name + "\"");
+    throw std::logic_error("DrModel: the dynamic relaxation element has no "
+                           "reaction moments");
+  }
+
+
+  Vector3
+  DrModel::reaction_moment(const unsigned int,
+                           const DrVector &,
+                           const double) const
+  {
+    throw std::logic_error("DrModel: the dynamic relaxation element has no "
+                           "junction rotations");
+  }
+
+
+  Quaternion
+  DrModel::junction_rotation(const DrVector &, const unsigned int) const
+  {
+    throw std::logic_error("DrModel: the dynamic relaxation element has no "
+                           "junction rotations");
+  }
+
+
+  OutputFields
+  DrModel::output_fields(const DrVector &u) const
+  {
+    OutputFields        output;
+    OutputFields::Field normals{"normal", 3, {}};
+    for (unsigned int v = 0; v < network_->n_vertices(); ++v)
+      {
+        output.displacement.emplace_back(u[position_dof(v, 0)],
+                                         u[position_dof(v, 1)],
+                                         u[position_dof(v, 2)]);
+        const Vector3 n = normal(u, v);
+        normals.values.insert(normals.values.end(), n.data(), n.data() + 3);
+      }
+    output.vertex_fields = {normals};
+    return output;
   }
 } // namespace rodnet

@@ -4,12 +4,14 @@
 #include <deal.II/lac/vector.h>
 
 #include <core/dead_loads.h>
+#include <core/model.h>
 #include <core/rod_network.h>
 #include <elements/dr_beam_kernel.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,17 +20,6 @@ namespace rodnet
   /// State, residual and mass vectors of a DrModel. Dynamic relaxation is
   /// explicit and matrix free: a plain serial vector is all it needs.
   using DrVector = dealii::Vector<double>;
-
-  /// A named set of fixed DoFs of a DrModel whose reaction can be probed.
-  struct DrSupport
-  {
-    std::string               name;
-    std::vector<unsigned int> vertices;
-    /// Fixed position components per vertex (same order as vertices).
-    std::vector<std::array<bool, 3>> fixed;
-    /// Whether the frames (n_x, n_y, n_r) of the vertices are fixed too.
-    bool clamped = false;
-  };
 
   /**
    * A rod network discretized by the bending-active beam element of Sakai,
@@ -67,29 +58,38 @@ namespace rodnet
    * with a moving far end, fixing n_r would not hold the rotation of the
    * chord about the normal.
    *
-   * Usage: construct, add supports and loads, finalize(), then evaluate
-   * (see DynamicRelaxation).
+   * Usage: construct, add supports and loads (Model::apply() or one by
+   * one), finalize(), then evaluate (see DynamicRelaxation). The element
+   * has no junction quaternions: prescribed rotations and moments are
+   * refused, and so are probes of rotations, moments and eigenvalues.
    */
-  class DrModel
+  class DrModel : public Model<DrVector>
   {
   public:
     /**
-     * Nodes, frames and elements of @p network (which must outlive the
-     * model) with the rigidities @p stiffness_per_rod of each rod. Throws
+     * Nodes, frames and elements of @p network, which the model owns, with
+     * the rigidities @p stiffness_per_rod of each rod. Throws
      * std::invalid_argument for a stiffness count that does not match the
      * rods, a rigidity that is not positive and finite, a rod that is not
      * straight at rest, or an initial normal that the element cannot
      * represent (naming rod and vertex).
      */
-    DrModel(const RodNetwork         &network,
-            std::vector<RodStiffness> stiffness_per_rod);
+    DrModel(std::unique_ptr<RodNetwork> network,
+            std::vector<RodStiffness>   stiffness_per_rod);
 
     /// @name Supports (before finalize())
     /// @{
     /// Fixes the position and the frame of the first (or last) vertex of
     /// rod @p rod; the frame is measured from a fixed anchor (see above).
     void
-    clamp_end(const std::string &name, unsigned int rod, bool at_start);
+    clamp_end(const std::string &name,
+              unsigned int       rod,
+              bool               at_start) override;
+
+    /// A junction is one node: it is held by clamping its first rod end.
+    /// A pinned junction, where each end turns on its own, is refused.
+    void
+    clamp_junction(const std::string &name, unsigned int junction) override;
 
     /// Fixes the masked position components of @p vertex; their value
     /// moves with the load factor to @p displacement (at load factor 1).
@@ -97,31 +97,32 @@ namespace rodnet
     fix_components(const std::string         &name,
                    unsigned int               vertex,
                    const std::array<bool, 3> &mask,
-                   const Vector3             &displacement = Vector3::Zero());
+                   const Vector3 &displacement = Vector3::Zero()) override;
+
+    /// Refuses any prescribed rotation or moment: they act on junction
+    /// quaternions, which the element does not have.
+    void
+    add_rotational_loads(
+      const std::vector<SupportsAndLoads::AxisLoad> &rotations,
+      const std::vector<SupportsAndLoads::AxisLoad> &moments) override;
     /// @}
 
     /// @name Dead loads at load factor 1 (before finalize())
     /// @{
     void
-    add_point_force(unsigned int vertex, const Vector3 &force);
+    add_point_force(unsigned int vertex, const Vector3 &force) override;
 
     /// Force per unit undeformed length on rod @p rod, lumped to the nodes
-    /// with half of each adjacent element.
+    /// with half of each adjacent element (DeadLoads::vertex_forces()).
     void
-    add_distributed_force(unsigned int rod, const Vector3 &force_per_length);
-
-    /// Weight of rod @p rod: the distributed force @p mass_per_length
-    /// (kg/m) times @p acceleration (m/s^2).
-    void
-    add_gravity(unsigned int   rod,
-                double         mass_per_length,
-                const Vector3 &acceleration);
+    add_distributed_force(unsigned int   rod,
+                          const Vector3 &force_per_length) override;
     /// @}
 
     /// Builds the anchors, element stencils, rest data, fixed-DoF mask and
     /// the external force vector. Call once, after supports and loads.
     void
-    finalize();
+    finalize() override;
 
     unsigned int
     n_dofs() const
@@ -138,7 +139,7 @@ namespace rodnet
 
     /// A zero vector of n_dofs() entries.
     DrVector
-    create_vector() const
+    create_vector() const override
     {
       return DrVector(n_dofs());
     }
@@ -155,9 +156,13 @@ namespace rodnet
     double
     energy(const DrVector &u, double load_factor) const;
 
+    /// Elastic energy alone (no load potential) at @p u.
+    double
+    elastic_energy(const DrVector &u) const override;
+
     /// Sets the fixed DoFs of @p u to their values at @p load_factor.
     void
-    apply_boundary_values(DrVector &u, double load_factor) const;
+    apply_boundary_values(DrVector &u, double load_factor) const override;
 
     /**
      * Lumped fictitious masses for a unit pseudo-time step (Barnes):
@@ -187,7 +192,7 @@ namespace rodnet
 
     /// Current position of vertex @p vertex.
     Vector3
-    position(const DrVector &u, unsigned int vertex) const;
+    position(const DrVector &u, unsigned int vertex) const override;
 
     /// Current unit normal of the frame of vertex @p vertex (at a pinned
     /// junction, that of the vertex's own rod end).
@@ -197,17 +202,53 @@ namespace rodnet
     /// Reaction force of support @p s at @p u: the residual summed over
     /// its fixed position DoFs and, for a clamp, its anchor.
     Vector3
-    reaction(const DrSupport &s, const DrVector &u, double load_factor) const;
+    reaction(const Support  &s,
+             const DrVector &u,
+             double          load_factor) const override;
 
     /// The same from a residual @p r that residual() computed.
     Vector3
-    support_force(const DrSupport &s, const DrVector &r) const;
+    support_force(const Support &s, const DrVector &r) const;
 
-    const DrSupport &
-    support(const std::string &name) const;
+    /// @name Rotations: the element has none (has_rotation() is false);
+    /// these throw std::logic_error.
+    /// @{
+    Vector3
+    reaction_moment(const Support  &s,
+                    const DrVector &u,
+                    double          load_factor) const override;
+    Vector3
+    reaction_moment(unsigned int    junction,
+                    const DrVector &u,
+                    double          load_factor) const override;
+    Quaternion
+    junction_rotation(const DrVector &u, unsigned int junction) const override;
+    /// @}
 
-    const std::vector<DrSupport> &
-    supports() const
+    bool
+    has_junction_rotations() const override
+    {
+      return false;
+    }
+
+    bool
+    has_rotation(unsigned int) const override
+    {
+      return false;
+    }
+
+    bool
+    has_tangent() const override
+    {
+      return false;
+    }
+
+    /// The displacement and, per vertex, the unit "normal" of its frame.
+    OutputFields
+    output_fields(const DrVector &u) const override;
+
+    const std::vector<Support> &
+    supports() const override
     {
       return support_list;
     }
@@ -226,15 +267,8 @@ namespace rodnet
       return f_ext;
     }
 
-    /// Diagonal of the bounding box of the undeformed network (m).
-    double
-    length_scale() const
-    {
-      return length;
-    }
-
     const RodNetwork &
-    network() const
+    network() const override
     {
       return *network_;
     }
@@ -269,14 +303,41 @@ namespace rodnet
     DrElementVector
     local_dofs(const Element &e, const DrVector &u) const;
 
+    /// Throws unless every rigidity of every rod is positive and finite.
     void
-    check_not_finalized(const char *what) const;
+    check_stiffness() const;
+
+    /// Numbers the position and frame nodes along the rods (shared at
+    /// junctions) with their initial positions.
+    void
+    number_nodes();
+
+    /// One element per rod segment, with its vertices.
+    void
+    create_elements();
+
+    /// The reference element and the initial normal of every frame.
+    void
+    initialize_frames();
+
+    /// The initial normal of the frame at end @p end of element @p e:
+    /// the rod's director d1 there, with n_z > 0.
+    Vector3
+    initial_normal(const Element &e, unsigned int end) const;
 
     /// Fixes the position and frame of @p vertex for support @p name.
     void
     clamp_vertex(const std::string &name, unsigned int vertex);
 
-    const RodNetwork         *network_;
+    /// The anchors of the clamped frames, fixed DoFs of their own.
+    void
+    add_anchors();
+
+    /// The DoFs and rest data of every element (after add_anchors()).
+    void
+    build_element_stencils();
+
+    std::unique_ptr<RodNetwork> network_;
     std::vector<RodStiffness> stiffness;
     /// Per vertex: its position node and its frame node.
     std::vector<unsigned int> position_node;
@@ -292,7 +353,7 @@ namespace rodnet
     /// Initial value of every DoF: positions, (n_x, n_y, 0), anchors.
     std::vector<double>    initial;
     std::vector<Element>   elements;
-    std::vector<DrSupport> support_list;
+    std::vector<Support>   support_list;
     /// Per frame node: the first DoF of its anchor (clamped frames only).
     std::vector<unsigned int> anchor_dofs;
     /// Fixed DoF -> prescribed change at load factor 1.
@@ -300,8 +361,6 @@ namespace rodnet
     std::vector<bool>              fixed_mask;
     DeadLoads                      loads;
     DrVector                       f_ext;
-    double                         length    = 0;
-    bool                           finalized = false;
   };
 } // namespace rodnet
 

@@ -3,6 +3,7 @@
 // translational inertia of the vertex positions, consistent or lumped, and
 // the rotational inertia of each segment's twist about its tangent.
 #include <core/mass_matrix.h>
+#include <core/require_positive.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -52,10 +53,7 @@ namespace rodnet
   RodInertia
   rod_inertia(const CrossSection &section, const double density)
   {
-    if (!(density > 0) || !std::isfinite(density))
-      throw std::invalid_argument(
-        "rod inertia: the density must be positive and finite, got " +
-        std::to_string(density));
+    require_positive(density, "rod inertia: the density");
     return {density * section.area, density * (section.I1 + section.I2)};
   }
 

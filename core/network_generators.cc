@@ -1,4 +1,5 @@
 #include <core/network_generators.h>
+#include <core/require_positive.h>
 
 #include <cmath>
 #include <map>
@@ -13,15 +14,6 @@ namespace rodnet
   {
     namespace
     {
-      void
-      require_positive(const double value, const char *what)
-      {
-        if (!(value > 0) || !std::isfinite(value))
-          throw std::invalid_argument(std::string(what) +
-                                      " must be positive and finite, got " +
-                                      std::to_string(value));
-      }
-
       void
       require_cells(const unsigned int nx, const unsigned int ny)
       {

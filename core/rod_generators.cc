@@ -1,4 +1,5 @@
 #include <core/rod_generators.h>
+#include <core/require_positive.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,15 +18,6 @@ namespace rodnet
         if (n < 1)
           throw std::invalid_argument(std::string(what) +
                                       ": the number of segments must be >= 1");
-      }
-
-      void
-      require_positive(const double value, const char *what)
-      {
-        if (!(value > 0) || !std::isfinite(value))
-          throw std::invalid_argument(std::string(what) +
-                                      " must be positive and finite, got " +
-                                      std::to_string(value));
       }
 
       /**

@@ -61,11 +61,15 @@ namespace rodnet
     for (unsigned int j = 0; j < junctions.size(); ++j)
       {
         if (junctions[j].fixes_position())
-          add_position_support(junctions[j].name,
-                               junctions[j].vertex,
-                               {{true, true, true}},
-                               Vector3::Zero(),
-                               true);
+          {
+            add_position_support(junctions[j].name,
+                                 junctions[j].vertex,
+                                 {{true, true, true}},
+                                 Vector3::Zero(),
+                                 true);
+            support_list.back().clamped =
+              junctions[j].kind == JunctionKind::clamped;
+          }
         rotation_held[j] = junctions[j].kind == JunctionKind::clamped;
       }
   }
@@ -84,6 +88,8 @@ namespace rodnet
   void
   RodModel::add_point_force(const unsigned int vertex, const Vector3 &force)
   {
+    require_not_finalized("RodModel::add_point_force at vertex " +
+                          std::to_string(vertex));
     loads.add_point_force(*network_, vertex, force);
   }
 
@@ -91,6 +97,8 @@ namespace rodnet
   RodModel::add_distributed_force(const unsigned int rod,
                                   const Vector3     &force_per_length)
   {
+    require_not_finalized("RodModel::add_distributed_force on rod " +
+                          std::to_string(rod));
     loads.add_distributed_force(*network_, rod, force_per_length);
   }
 
@@ -110,9 +118,8 @@ namespace rodnet
   void
   RodModel::add_element_family(std::unique_ptr<ElementFamily> family)
   {
-    if (finalized)
-      throw std::logic_error("RodModel: element family \"" + family->name() +
-                             "\" added after finalize(); add it before");
+    require_not_finalized("RodModel::add_element_family \"" +
+                          family->name() + "\"");
     families.push_back(std::move(family));
   }
 
@@ -147,13 +154,7 @@ namespace rodnet
     if (finalized)
       throw std::logic_error("RodModel::finalize called twice");
     const dealii::IndexSet all = dealii::complete_index_set(layout_->n_dofs());
-    Vector3                low = network_->vertex(0), high = low;
-    for (unsigned int v = 0; v < network_->n_vertices(); ++v)
-      {
-        low  = low.cwiseMin(network_->vertex(v));
-        high = high.cwiseMax(network_->vertex(v));
-      }
-    length = (high - low).norm();
+    length                     = rodnet::length_scale(*network_);
     resolve_supports();
 
     // A segment twist that no hinge sees (a rod of one segment) has no
@@ -189,23 +190,12 @@ namespace rodnet
         std::make_unique<AxisMomentFamily>(*layout_, std::move(axis_moments)));
     make_sparsity_pattern();
 
-    // Dead loads: point forces, and distributed forces lumped with the
-    // undeformed Voronoi lengths (half of each adjacent segment).
-    f_ext = create_vector();
-    for (const auto &[vertex, force] : loads.point_forces)
+    // Dead loads, distributed ones lumped by Voronoi lengths.
+    f_ext                              = create_vector();
+    const std::vector<Vector3> forces = loads.vertex_forces(*network_);
+    for (unsigned int v = 0; v < forces.size(); ++v)
       for (unsigned int c = 0; c < 3; ++c)
-        f_ext[layout_->vertex_dof(vertex, c)] += force[c];
-    for (const auto &[rod_index, q] : loads.distributed_forces)
-      for (const SegmentStencil &s : layout_->segments())
-        if (s.rod == rod_index)
-          {
-            const double half = 0.5 * configuration_->rest_length(s.cell);
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                f_ext[s.dofs[c]] += half * q[c];
-                f_ext[s.dofs[3 + c]] += half * q[c];
-              }
-          }
+        f_ext[layout_->vertex_dof(v, c)] += forces[v][c];
     f_ext.compress(dealii::VectorOperation::add);
     finalized = true;
   }

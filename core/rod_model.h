@@ -12,6 +12,7 @@
 #include <core/element_family.h>
 #include <core/internal_variables.h>
 #include <core/model_state.h>
+#include <core/model.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
@@ -28,18 +29,6 @@ namespace rodnet
 {
   using VectorType = dealii::TrilinosWrappers::MPI::Vector;
   using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
-
-  /// A named set of fixed DoFs whose reaction force can be probed.
-  struct Support
-  {
-    std::string               name;
-    std::vector<unsigned int> vertices;
-    /// Fixed position components per vertex (same order as vertices).
-    std::vector<std::array<bool, 3>> fixed;
-    /// A clamp of a rod end (RodModel::clamp_end()): the cell of the end
-    /// segment whose twist it holds; its end vertex is vertices[0].
-    std::optional<unsigned int> clamped_segment;
-  };
 
   /**
    * A rod network with materials, supports and dead loads: the object a
@@ -67,8 +56,11 @@ namespace rodnet
    * the step with set_time_step() before assembling, and after the step has
    * converged call commit_internal_variables() (see TimeIntegrator, which
    * does both). Static load stepping refuses such models.
+   *
+   * RodModel implements the Model interface, through which probes, output
+   * and the scene runner see it.
    */
-  class RodModel
+  class RodModel : public Model<VectorType>
   {
   public:
     /**
@@ -101,7 +93,9 @@ namespace rodnet
      * support.
      */
     void
-    clamp_end(const std::string &name, unsigned int rod, bool at_start);
+    clamp_end(const std::string &name,
+              unsigned int       rod,
+              bool               at_start) override;
 
     /// Turns the clamp called @p name (clamp_end()), and every other clamp
     /// of the same rod end, rigidly about its end vertex by @p angle (rad)
@@ -116,7 +110,7 @@ namespace rodnet
      * pinned junction has no rotation of its own and is refused.
      */
     void
-    clamp_junction(const std::string &name, unsigned int junction);
+    clamp_junction(const std::string &name, unsigned int junction) override;
 
     /// Fixes the masked position components of @p vertex; their value
     /// moves with the load factor to @p displacement (at load factor 1).
@@ -126,22 +120,30 @@ namespace rodnet
     fix_components(const std::string         &name,
                    unsigned int               vertex,
                    const std::array<bool, 3> &mask,
-                   const Vector3             &displacement = Vector3::Zero());
+                   const Vector3 &displacement = Vector3::Zero()) override;
 
-    /// The clamp (clamp_end()) whose end vertex is @p vertex, or null.
-    const Support *
-    clamp_at(unsigned int vertex) const;
+    /**
+     * Lowers prescribed rotations and moments: at the end vertex of a clamp
+     * (clamp_end()) a rotation turns the clamp (rotate_clamp()) and a moment
+     * is refused (the clamp would take it up whole); elsewhere they act on
+     * the junction there (prescribe_rotation(), add_moment()).
+     */
+    void
+    add_rotational_loads(
+      const std::vector<SupportsAndLoads::AxisLoad> &rotations,
+      const std::vector<SupportsAndLoads::AxisLoad> &moments) override;
     /// @}
 
     /// @name Dead loads at load factor 1 (before finalize())
     /// @{
     void
-    add_point_force(unsigned int vertex, const Vector3 &force);
+    add_point_force(unsigned int vertex, const Vector3 &force) override;
 
     /// Force per unit undeformed length on rod @p rod, lumped to the
-    /// vertices by their Voronoi lengths.
+    /// vertices by their Voronoi lengths (DeadLoads::vertex_forces()).
     void
-    add_distributed_force(unsigned int rod, const Vector3 &force_per_length);
+    add_distributed_force(unsigned int   rod,
+                          const Vector3 &force_per_length) override;
 
     /**
      * Moment @p moment about the fixed unit @p axis at junction
@@ -191,7 +193,7 @@ namespace rodnet
 
     /// Builds constraints, sparsity pattern, matrices and vectors.
     void
-    finalize();
+    finalize() override;
 
     /**
      * Energy at DoF vector @p u and load factor @p load_factor; adds the
@@ -213,11 +215,58 @@ namespace rodnet
 
     /// Elastic energy alone (no load potential) at @p u.
     double
-    elastic_energy(const VectorType &u) const;
+    elastic_energy(const VectorType &u) const override;
 
     /// Sets the fixed DoFs of @p u to their values at @p load_factor.
     void
-    apply_boundary_values(VectorType &u, double load_factor) const;
+    apply_boundary_values(VectorType &u, double load_factor) const override;
+
+    /// Current position of vertex @p vertex at @p u.
+    Vector3
+    position(const VectorType &u, unsigned int vertex) const override
+    {
+      return configuration_->position(u, vertex);
+    }
+
+    /// Rotation of junction @p junction at @p u from the undeformed state.
+    Quaternion
+    junction_rotation(const VectorType &u,
+                      unsigned int      junction) const override
+    {
+      return configuration_->junction_rotation(u, junction);
+    }
+
+    bool
+    has_junction_rotations() const override
+    {
+      return true;
+    }
+
+    bool
+    has_rotation(unsigned int junction) const override
+    {
+      return layout_->has_rotation_dofs(junction);
+    }
+
+    bool
+    has_tangent() const override
+    {
+      return true;
+    }
+
+    /**
+     * The displacement and, per segment, "twist" (the twist DoF),
+     * "axial_strain" (engineering strain) and the current directors "d1"
+     * and "d2"; per vertex, from the hinge at that vertex and zero at rod
+     * ends, "curvature" = (kappa_1, kappa_2, 0) / l, the bending curvatures
+     * about d1 and d2 in material components, and "twist_rate" =
+     * kappa_3 / l, with l the hinge's undeformed Voronoi length; for
+     * history-dependent materials their committed internal variables, one
+     * field per name ("viscous_curvature_1", ...): hinge variables per
+     * vertex (zero at rod ends), segment variables per segment.
+     */
+    OutputFields
+    output_fields(const VectorType &u) const override;
 
     /// Makes @p u the reference configuration; its quaternion DoFs return
     /// to the identity (their rotation moves into the reference).
@@ -226,7 +275,9 @@ namespace rodnet
 
     /// Reaction force of support @p s at the converged @p u.
     Vector3
-    reaction(const Support &s, const VectorType &u, double load_factor) const;
+    reaction(const Support    &s,
+             const VectorType &u,
+             double            load_factor) const override;
 
     /**
      * Reaction moment of support @p s at the converged @p u about its
@@ -238,7 +289,7 @@ namespace rodnet
     Vector3
     reaction_moment(const Support    &s,
                     const VectorType &u,
-                    double            load_factor) const;
+                    double            load_factor) const override;
 
     /**
      * Moment vector that junction @p junction's rotation DoFs transmit at
@@ -249,7 +300,7 @@ namespace rodnet
     Vector3
     reaction_moment(unsigned int      junction,
                     const VectorType &u,
-                    double            load_factor) const;
+                    double            load_factor) const override;
 
     /// @name History-dependent materials
     /// @{
@@ -304,14 +355,14 @@ namespace rodnet
 
     /// A zero vector with the model's layout.
     VectorType
-    create_vector() const;
+    create_vector() const override;
 
     /// A matrix with the model's sparsity pattern.
     void
     initialize_matrix(MatrixType &matrix) const;
 
     const RodNetwork &
-    network() const
+    network() const override
     {
       return *network_;
     }
@@ -336,12 +387,10 @@ namespace rodnet
       return homogeneous_constraints;
     }
     const std::vector<Support> &
-    supports() const
+    supports() const override
     {
       return support_list;
     }
-    const Support &
-    support(const std::string &name) const;
     const HingeKernel &
     hinge_kernel(unsigned int rod) const
     {
@@ -357,13 +406,6 @@ namespace rodnet
     {
       return *materials[rod];
     }
-    /// Diagonal of the bounding box of the undeformed network (m).
-    double
-    length_scale() const
-    {
-      return length;
-    }
-
     /// External force vector at load factor 1.
     const VectorType &
     external_force() const
@@ -475,8 +517,6 @@ namespace rodnet
     InternalVariables                         history;
     double                                    step_length = 0;
     dealii::TrilinosWrappers::SparsityPattern sparsity;
-    double                                    length    = 0;
-    bool                                      finalized = false;
   };
 } // namespace rodnet
 

@@ -93,6 +93,7 @@ namespace rodnet
                            const std::array<bool, 3> &mask,
                            const Vector3             &displacement)
   {
+    require_not_finalized("RodModel::fix_components " + in_quotes(name));
     add_position_support(name, vertex, mask, displacement, false);
   }
 
@@ -101,6 +102,7 @@ namespace rodnet
                       const unsigned int rod_index,
                       const bool         at_start)
   {
+    require_not_finalized("RodModel::clamp_end " + in_quotes(name));
     if (rod_index >= network_->rods().size())
       throw std::invalid_argument("support " + in_quotes(name) + ": rod " +
                                   std::to_string(rod_index) +
@@ -141,6 +143,7 @@ namespace rodnet
     Support &s = support_list.back();
     s.vertices.push_back(clamp.vertices[1]);
     s.fixed.push_back({{true, true, true}});
+    s.clamped         = true;
     s.clamped_segment = clamp.segment;
   }
 
@@ -150,6 +153,7 @@ namespace rodnet
                          const double       angle)
   {
     const std::string where = "rotation of clamp " + in_quotes(name);
+    require_not_finalized("RodModel::rotate_clamp: " + where);
     require_unit_axis(axis, where);
     // Every clamp of the same rod end turns with it.
     std::vector<unsigned int> segments;
@@ -174,6 +178,7 @@ namespace rodnet
   void
   RodModel::clamp_junction(const std::string &name, const unsigned int junction)
   {
+    require_not_finalized("RodModel::clamp_junction " + in_quotes(name));
     const Junction &j = existing_junction(*network_,
                                           junction,
                                           "support " + in_quotes(name) + ":");
@@ -189,15 +194,30 @@ namespace rodnet
                          {{true, true, true}},
                          Vector3::Zero(),
                          true);
+    support_list.back().clamped = true;
   }
 
-  const Support *
-  RodModel::clamp_at(const unsigned int vertex) const
+  void
+  RodModel::add_rotational_loads(
+    const std::vector<SupportsAndLoads::AxisLoad> &rotations,
+    const std::vector<SupportsAndLoads::AxisLoad> &moments)
   {
-    for (const Clamp &clamp : clamps)
-      if (clamp.vertices[0] == vertex)
-        return &support_list[clamp.support];
-    return nullptr;
+    for (const SupportsAndLoads::AxisLoad &rotation : rotations)
+      if (const Support *clamp = clamp_at(rotation.vertex))
+        rotate_clamp(clamp->name, rotation.axis, rotation.value);
+      else
+        prescribe_rotation(rotation.junction.value(),
+                           rotation.axis,
+                           rotation.value);
+    for (const SupportsAndLoads::AxisLoad &moment : moments)
+      {
+        if (const Support *clamp = clamp_at(moment.vertex))
+          throw std::invalid_argument(
+            moment.where + " is held by the clamp \"" + clamp->name +
+            "\", which would take up the whole moment; load a free "
+            "vertex, or prescribe a rotation of the clamp instead");
+        add_moment(moment.junction.value(), moment.axis, moment.value);
+      }
   }
 
   void
@@ -205,6 +225,8 @@ namespace rodnet
                        const Vector3     &axis,
                        const double       moment)
   {
+    require_not_finalized("RodModel::add_moment at junction " +
+                          std::to_string(junction));
     const Junction &j = existing_junction(*network_, junction, "moment at");
     if (!j.has_rotation() || j.kind == JunctionKind::clamped)
       throw std::invalid_argument("moment at junction " + in_quotes(j.name) +
@@ -219,6 +241,8 @@ namespace rodnet
                                const Vector3     &axis,
                                const double       angle)
   {
+    require_not_finalized("RodModel::prescribe_rotation of junction " +
+                          std::to_string(junction));
     const Junction &j =
       existing_junction(*network_, junction, "prescribed rotation of");
     const std::string where =
@@ -251,15 +275,6 @@ namespace rodnet
                                   std::to_string(rotation.norm()) + ", not 1");
     const Eigen::AngleAxisd angle_axis(rotation);
     prescribe_rotation(junction, angle_axis.axis(), angle_axis.angle());
-  }
-
-  const Support &
-  RodModel::support(const std::string &name) const
-  {
-    for (const Support &s : support_list)
-      if (s.name == name)
-        return s;
-    throw std::invalid_argument("no support named " + in_quotes(name));
   }
 
   Vector3

@@ -64,8 +64,8 @@ namespace
   {
     if (scene.method == SolutionMethod::dynamic_relaxation)
       {
-        const DrScene dr = scene.build_dr_model();
-        scene.probes(*dr.model);
+        const auto model = scene.build_dr_model();
+        scene.probes(*model);
         return;
       }
     const auto model = scene.build_model();

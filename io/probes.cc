@@ -7,7 +7,6 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
-#include <type_traits>
 
 namespace rodnet
 {
@@ -169,26 +168,23 @@ namespace rodnet
           (w.kind == "rotation" ? "<ax>,<ay>,<az>" : "<x|y|z>") + "\"");
       const RotationTarget target =
         select_rotation_target(model.network(), w.vertex, w.context);
-      if constexpr (std::is_same_v<Model, RodModel>)
-        {
-          // A clamp of a rod end has a reaction moment, no junction.
-          const Support *clamp = model.clamp_at(target.vertex);
-          if (w.kind == "moment" && clamp != nullptr)
-            probe.support = clamp->name;
-          else if (!target.junction)
-            throw std::invalid_argument(
-              w.context + ": \"" + w.vertex + "\" is no junction" +
-              (w.kind == "moment" ? " or clamped end" : ""));
-          else if (!model.layout().has_rotation_dofs(*target.junction))
-            throw std::invalid_argument(w.context + ": junction \"" + w.vertex +
-                                        "\" is pinned and has no rotation");
-          probe.junction = target.junction.value_or(0);
-        }
-      else
+      if (!model.has_junction_rotations())
         throw std::invalid_argument(
           w.context + ": junction rotations and moments are those of the "
                       "discrete rods' quaternions; the dynamic relaxation "
                       "element has none");
+      // A clamp of a rod end has a reaction moment, no junction.
+      const Support *clamp = model.clamp_at(target.vertex);
+      if (w.kind == "moment" && clamp != nullptr)
+        probe.support = clamp->name;
+      else if (!target.junction)
+        throw std::invalid_argument(
+          w.context + ": \"" + w.vertex + "\" is no junction" +
+          (w.kind == "moment" ? " or clamped end" : ""));
+      else if (!model.has_rotation(*target.junction))
+        throw std::invalid_argument(w.context + ": junction \"" + w.vertex +
+                                    "\" is pinned and has no rotation");
+      probe.junction = target.junction.value_or(0);
       if (w.kind == "moment")
         {
           probe.kind      = Probe::Kind::moment;
@@ -228,8 +224,7 @@ namespace rodnet
           {
             probe.kind = w.kind == "energy" ? Probe::Kind::energy :
                                               Probe::Kind::eigenvalue;
-            if (probe.kind == Probe::Kind::eigenvalue &&
-                !std::is_same_v<Model, RodModel>)
+            if (probe.kind == Probe::Kind::eigenvalue && !model.has_tangent())
               throw std::invalid_argument(
                 w.context + ": dynamic relaxation has no tangent to take the "
                             "eigenvalue of");
@@ -248,40 +243,11 @@ namespace rodnet
   template std::vector<Probe>
   parse_probes(const std::string &, const DrModel &, const std::string &);
 
+  template <class State>
   std::vector<double>
   evaluate_probes(const std::vector<Probe> &probes,
-                  const DrModel            &model,
-                  const DrVector           &u,
-                  const double              load_factor)
-  {
-    std::vector<double> values;
-    for (const Probe &p : probes)
-      switch (p.kind)
-        {
-          case Probe::Kind::position:
-            values.push_back(model.position(u, p.vertex)[p.component]);
-            break;
-          case Probe::Kind::reaction:
-            values.push_back(model.reaction(model.support(p.support),
-                                            u,
-                                            load_factor)[p.component]);
-            break;
-          case Probe::Kind::energy:
-            // At load factor 0 the load potential vanishes.
-            values.push_back(model.energy(u, 0.0));
-            break;
-          default:
-            // parse_probes() refuses the others for a DrModel.
-            throw std::logic_error("probe " + p.name +
-                                   " has no value under dynamic relaxation");
-        }
-    return values;
-  }
-
-  std::vector<double>
-  evaluate_probes(const std::vector<Probe> &probes,
-                  const RodModel           &model,
-                  const VectorType         &u,
+                  const Model<State>       &model,
+                  const State              &u,
                   const double              load_factor,
                   const double              lowest_eigenvalue)
   {
@@ -290,8 +256,7 @@ namespace rodnet
       switch (p.kind)
         {
           case Probe::Kind::position:
-            values.push_back(
-              model.configuration().position(u, p.vertex)[p.component]);
+            values.push_back(model.position(u, p.vertex)[p.component]);
             break;
           case Probe::Kind::reaction:
             values.push_back(model.reaction(model.support(p.support),
@@ -308,8 +273,7 @@ namespace rodnet
             {
               // The twist part of the rotation about the axis (swing-twist
               // split): exact for rotations about the axis, up to 360 deg.
-              const Quaternion q =
-                model.configuration().junction_rotation(u, p.junction);
+              const Quaternion q = model.junction_rotation(u, p.junction);
               values.push_back(2.0 * std::atan2(q.vec().dot(p.axis), q.w()));
               break;
             }
@@ -324,6 +288,19 @@ namespace rodnet
         }
     return values;
   }
+
+  template std::vector<double>
+  evaluate_probes(const std::vector<Probe> &,
+                  const Model<VectorType> &,
+                  const VectorType &,
+                  double,
+                  double);
+  template std::vector<double>
+  evaluate_probes(const std::vector<Probe> &,
+                  const Model<DrVector> &,
+                  const DrVector &,
+                  double,
+                  double);
 
   ProbeTable::ProbeTable(const std::string              &path,
                          const std::vector<Probe>       &probes,

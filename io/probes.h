@@ -4,6 +4,7 @@
 #include <core/dr_model.h>
 #include <core/rod_model.h>
 
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -73,21 +74,19 @@ namespace rodnet
                const Model       &model,
                const std::string &entry);
 
-  /// Values of @p probes at the converged state @p u.
+  /**
+   * Values of @p probes at the converged state @p u of @p model (a
+   * RodModel or a DrModel) at @p load_factor; @p lowest_eigenvalue is the
+   * value of eigenvalue probes (which parse_probes() allows only for a
+   * model with a tangent).
+   */
+  template <class State>
   std::vector<double>
   evaluate_probes(const std::vector<Probe> &probes,
-                  const RodModel           &model,
-                  const VectorType         &u,
+                  const Model<State>       &model,
+                  const State              &u,
                   double                    load_factor,
-                  double                    lowest_eigenvalue);
-
-  /// Values of @p probes (positions, reactions, energy) at the relaxed
-  /// state @p u of a DrModel.
-  std::vector<double>
-  evaluate_probes(const std::vector<Probe> &probes,
-                  const DrModel            &model,
-                  const DrVector           &u,
-                  double                    load_factor);
+                  double                    lowest_eigenvalue = std::nan(""));
 
   /**
    * The file `probes.csv`: a header `step,<abscissa>,<probe names>` and one

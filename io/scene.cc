@@ -16,7 +16,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <type_traits>
+#include <tuple>
 
 namespace rodnet
 {
@@ -510,7 +510,7 @@ namespace rodnet
       std::make_unique<RodModel>(std::move(network), materials, ghost_spin);
     for (const RequestedFamily &family : family_requests)
       model->add_element_family(family.request->create(*model));
-    apply_supports_and_loads(*model);
+    model->apply(supports_and_loads(model->network()));
     model->finalize();
     if (midpoint_clamp)
       check_midpoint_clamps(*model);
@@ -573,7 +573,7 @@ namespace rodnet
         }
   }
 
-  DrScene
+  std::unique_ptr<DrModel>
   Scene::build_dr_model() const
   {
     if (midpoint_clamp)
@@ -590,32 +590,35 @@ namespace rodnet
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)
       {
-        const auto *elastic =
-          dynamic_cast<const LinearElasticRod *>(materials[r].get());
-        const RodNaturalShape shape =
-          elastic != nullptr ? elastic->natural_shape() : RodNaturalShape{};
-        if (elastic == nullptr || shape.curvature1 != 0 ||
-            shape.curvature2 != 0 || shape.twist != 0 ||
-            shape.axial_eigenstrain != 0)
+        const std::optional<RodStiffness> rigidities =
+          materials[r]->straight_linear_elastic_stiffness();
+        if (!rigidities)
           throw std::invalid_argument(
             "Solver/Method = dynamic relaxation: rod " + std::to_string(r) +
             " is not a linear elastic rod without natural shape, the only "
             "material the bending-active element has");
-        stiffness.push_back(elastic->stiffness());
+        stiffness.push_back(*rigidities);
       }
-    DrScene scene;
-    scene.network = std::move(network);
-    scene.model   = std::make_unique<DrModel>(*scene.network, stiffness);
-    apply_supports_and_loads(*scene.model);
-    scene.model->finalize();
-    return scene;
+    auto model = std::make_unique<DrModel>(std::move(network), stiffness);
+    model->apply(supports_and_loads(model->network()));
+    model->finalize();
+    return model;
   }
 
-  template <class Model>
-  void
-  Scene::apply_clamps(Model &model) const
+  SupportsAndLoads
+  Scene::supports_and_loads(const RodNetwork &network) const
   {
-    const RodNetwork &net = model.network();
+    SupportsAndLoads spec;
+    add_clamps(network, spec);
+    add_rotational_loads(network, spec);
+    add_position_supports(network, spec);
+    add_forces(network, spec);
+    return spec;
+  }
+
+  void
+  Scene::add_clamps(const RodNetwork &net, SupportsAndLoads &spec) const
+  {
     for (const std::string &end :
          dealii::Utilities::split_string_list(clamped_ends, ','))
       {
@@ -623,7 +626,7 @@ namespace rodnet
         const std::string name   = "Clamped ends: " + end;
         const auto        target = select_rod_end(net, end, entry);
         if (const auto *rod_end = std::get_if<RodEnd>(&target))
-          model.clamp_end(name, rod_end->rod, rod_end->at_start);
+          spec.clamps.push_back({name, *rod_end});
         else
           {
             const Junction &j = net.junctions()[std::get<unsigned int>(target)];
@@ -633,77 +636,52 @@ namespace rodnet
                 "\" is the pinned junction \"" + j.name +
                 "\", where each rod end turns on its own; clamp the ends "
                 "one by one (<rod>:start or <rod>:end)");
-            // A DrModel junction is one node, held by clamping any end.
-            if constexpr (std::is_same_v<Model, RodModel>)
-              model.clamp_junction(name, std::get<unsigned int>(target));
-            else
-              model.clamp_end(name,
-                              j.ends.front().rod,
-                              j.ends.front().at_start);
+            spec.clamps.push_back({name, std::get<unsigned int>(target)});
           }
       }
   }
 
   void
-  Scene::apply_rotational_loads(RodModel &model) const
+  Scene::add_rotational_loads(const RodNetwork &net,
+                              SupportsAndLoads &spec) const
   {
-    const RodNetwork &net       = model.network();
-    const std::string rotations = "Supports/Prescribed rotations";
-    for (const auto &[name, value] :
-         split_items(prescribed_rotations, rotations))
-      {
-        const auto [axis, degrees] = parse_axis_value(value, rotations);
-        const RotationTarget target =
-          select_rotation_target(net, name, rotations);
-        if (const Support *clamp = model.clamp_at(target.vertex))
-          model.rotate_clamp(clamp->name, axis, degrees * M_PI / 180);
-        else
-          model.prescribe_rotation(target.junction.value(),
-                                   axis,
-                                   degrees * M_PI / 180);
-      }
-    for (const auto &[name, value] : split_items(moments, "Loads/Moments"))
-      {
-        const auto [axis, moment] = parse_axis_value(value, "Loads/Moments");
-        const RotationTarget target =
-          select_rotation_target(net, name, "Loads/Moments");
-        if (const Support *clamp = model.clamp_at(target.vertex))
-          throw std::invalid_argument(
-            "entry \"Loads/Moments\": \"" + name +
-            "\" is held by the clamp \"" + clamp->name +
-            "\", which would take up the whole moment; load a free "
-            "vertex, or prescribe a rotation of the clamp instead");
-        model.add_moment(target.junction.value(), axis, moment);
-      }
+    for (const auto &[entry, text, list] :
+         {std::make_tuple("Supports/Prescribed rotations",
+                          &prescribed_rotations,
+                          &spec.rotations),
+          std::make_tuple("Loads/Moments", &moments, &spec.moments)})
+      for (const auto &[name, value] : split_items(*text, entry))
+        {
+          const auto [axis, amount] = parse_axis_value(value, entry);
+          const RotationTarget target =
+            select_rotation_target(net, name, entry);
+          // Rotations are given in degrees, moments in N m.
+          const bool rotation = list == &spec.rotations;
+          list->push_back({"entry \"" + std::string(entry) + "\": \"" + name +
+                             "\"",
+                           target.vertex,
+                           target.junction,
+                           axis,
+                           rotation ? amount * M_PI / 180 : amount});
+        }
   }
 
-  template <class Model>
   void
-  Scene::apply_supports_and_loads(Model &model) const
+  Scene::add_position_supports(const RodNetwork &net,
+                               SupportsAndLoads &spec) const
   {
-    const RodNetwork  &net    = model.network();
-    const unsigned int n_rods = net.rods().size();
-
-    // Clamps first: prescribed rotations and moments look them up.
-    apply_clamps(model);
-    if constexpr (std::is_same_v<Model, RodModel>)
-      apply_rotational_loads(model);
-    else if (!split_items(prescribed_rotations, "Supports/Prescribed rotations")
-                .empty() ||
-             !split_items(moments, "Loads/Moments").empty())
-      throw std::invalid_argument(
-        "Supports/Prescribed rotations and Loads/Moments act on junction "
-        "quaternions, which the dynamic relaxation element does not have");
     for (const std::string &v :
          dealii::Utilities::split_string_list(pinned_vertices, ','))
-      model.fix_components("Pinned vertices: " + v,
-                           select_vertex(net, v, "Supports/Pinned vertices"),
-                           {{true, true, true}});
+      spec.fixed_components.push_back(
+        {"Pinned vertices: " + v,
+         select_vertex(net, v, "Supports/Pinned vertices"),
+         {{true, true, true}}});
     for (const auto &[v, components] :
          split_items(fixed_components, "Supports/Fixed components"))
-      model.fix_components("Fixed components: " + v + ": " + components,
-                           select_vertex(net, v, "Supports/Fixed components"),
-                           parse_mask(components, "Supports/Fixed components"));
+      spec.fixed_components.push_back(
+        {"Fixed components: " + v + ": " + components,
+         select_vertex(net, v, "Supports/Fixed components"),
+         parse_mask(components, "Supports/Fixed components")});
     for (const auto &[v, values] :
          split_items(prescribed_displacements,
                      "Supports/Prescribed displacements"))
@@ -734,12 +712,17 @@ namespace rodnet
                                             "y=<value> or z=<value>");
               }
           }
-        model.fix_components("Prescribed displacements: " + v + ": " + values,
-                             select_vertex(net, v, entry),
-                             mask,
-                             d);
+        spec.fixed_components.push_back(
+          {"Prescribed displacements: " + v + ": " + values,
+           select_vertex(net, v, entry),
+           mask,
+           d});
       }
+  }
 
+  void
+  Scene::add_forces(const RodNetwork &net, SupportsAndLoads &spec) const
+  {
     for (const auto &[v, value] :
          split_items(point_forces, "Loads/Point forces"))
       {
@@ -756,13 +739,15 @@ namespace rodnet
             throw std::invalid_argument("entry \"Loads/Point forces\": \"" +
                                         value + "\" is not a force fx, fy, fz");
           }
-        model.add_point_force(select_vertex(net, v, "Loads/Point forces"),
-                              Vector3(f[0], f[1], f[2]));
+        spec.point_forces.push_back(
+          {select_vertex(net, v, "Loads/Point forces"),
+           Vector3(f[0], f[1], f[2])});
       }
+    // The weight is a distributed force, added with it.
     const Vector3 q = distributed_force + mass_per_length * gravity;
     if (q.norm() > 0)
-      for (unsigned int r = 0; r < n_rods; ++r)
-        model.add_distributed_force(r, q);
+      for (unsigned int r = 0; r < net.rods().size(); ++r)
+        spec.distributed_forces.push_back({r, q});
   }
 
   std::vector<Probe>

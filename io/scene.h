@@ -35,14 +35,6 @@ namespace rodnet
   std::string
   error_message(const std::exception &e);
 
-  /// A scene built for dynamic relaxation: the model and the network it
-  /// refers to.
-  struct DrScene
-  {
-    std::unique_ptr<RodNetwork> network;
-    std::unique_ptr<DrModel>    model;
-  };
-
   /**
    * A scene file: geometry, material, supports, loads, solver and output
    * settings, as a deal.II ParameterHandler input (.prm or .json). Every
@@ -88,7 +80,7 @@ namespace rodnet
      * cannot represent: materials other than linear elastic without natural
      * shape, junction moments and prescribed rotations.
      */
-    DrScene
+    std::unique_ptr<DrModel>
     build_dr_model() const;
 
     /// The probes of the scene, resolved on @p model.
@@ -253,19 +245,29 @@ namespace rodnet
     void
     add_rotation_handles(RodNetwork &network) const;
 
-    /// The clamped ends of the scene, onto a RodModel or a DrModel.
-    template <class Model>
-    void
-    apply_clamps(Model &model) const;
+    /// The supports and loads of the scene on @p network, which every
+    /// model lowers (Model::apply()).
+    SupportsAndLoads
+    supports_and_loads(const RodNetwork &network) const;
 
-    /// Prescribed rotations and moments (after apply_clamps()).
+    /// The clamped ends and junctions into @p spec.
     void
-    apply_rotational_loads(RodModel &model) const;
+    add_clamps(const RodNetwork &network, SupportsAndLoads &spec) const;
 
-    /// Supports and loads of the scene, onto a RodModel or a DrModel.
-    template <class Model>
+    /// Prescribed rotations and moments into @p spec.
     void
-    apply_supports_and_loads(Model &model) const;
+    add_rotational_loads(const RodNetwork &network,
+                         SupportsAndLoads &spec) const;
+
+    /// Pinned vertices, fixed components and prescribed displacements into
+    /// @p spec.
+    void
+    add_position_supports(const RodNetwork &network,
+                          SupportsAndLoads &spec) const;
+
+    /// Point forces, distributed forces and the weight into @p spec.
+    void
+    add_forces(const RodNetwork &network, SupportsAndLoads &spec) const;
 
     std::vector<std::vector<Vector3>> rod_points;
     std::vector<bool>                 rod_closed;

@@ -23,18 +23,20 @@ namespace rodnet
     /// probes.csv, a row of the summary, and the VTU files, against the
     /// load factor or the time (@p abscissa names which). After each step
     /// it ends the run with StopRequested if a signal asked for that: every
-    /// file is complete then.
+    /// file is complete then. The VTU files show the states of @p model.
+    template <class State>
     class StepRecorder
     {
     public:
       StepRecorder(const Scene                    &scene,
                    const std::string              &output_directory,
                    const std::vector<Probe>       &probes,
-                   const RodModel                 *vtu_model,
+                   const Model<State>             &model,
                    RunSummary                     &summary,
                    const std::string              &abscissa = "load_factor",
                    const std::vector<std::string> &check_columns = {})
           : scene(scene)
+          , model(model)
           , probes(probes)
           , csv(csv_path(output_directory))
           , table(csv, probes, abscissa, check_columns)
@@ -43,8 +45,8 @@ namespace rodnet
       {
         summary.abscissa = abscissa;
         summary.outputs  = {"probes.csv"};
-        if (scene.write_vtu && vtu_model != nullptr)
-          vtu = std::make_unique<VtuOutput>(*vtu_model, output_directory);
+        if (scene.write_vtu)
+          vtu = std::make_unique<VtuOutput>(model.network(), output_directory);
         for (const Probe &p : probes)
           {
             summary.probe_names.push_back(p.name);
@@ -53,14 +55,13 @@ namespace rodnet
       }
 
       /// Records step @p step at load factor or time @p abscissa (also the
-      /// "time" of the PVD record); @p u is the state for the VTU files in
-      /// the layout of the RodModel given to the constructor, @p checks the
-      /// values of the check columns.
+      /// "time" of the PVD record); @p u is the state, @p values its
+      /// probes, @p checks the values of the check columns.
       void
       record(const unsigned int         step,
              const double               abscissa,
              std::vector<double>        values,
-             const VectorType          *u,
+             const State               &u,
              const std::vector<double> &checks = {})
       {
         unwrap_rotations(probes, previous_values, values);
@@ -70,8 +71,8 @@ namespace rodnet
         row.insert(row.end(), values.begin(), values.end());
         summary.rows.push_back(row);
         summary.converged_steps = step;
-        if (vtu && u != nullptr && step % scene.vtu_interval == 0)
-          write_vtu(step, abscissa, *u);
+        if (vtu && step % scene.vtu_interval == 0)
+          write_vtu(step, abscissa, u);
         throw_if_stop_requested();
       }
 
@@ -106,13 +107,11 @@ namespace rodnet
       /// Writes the VTU file of a step, up to run_limits::max_vtu_files
       /// (Scene refuses runs planned beyond it; cut steps may add some).
       void
-      write_vtu(const unsigned int step,
-                const double       abscissa,
-                const VectorType  &u)
+      write_vtu(const unsigned int step, const double abscissa, const State &u)
       {
         if (vtu_files < run_limits::max_vtu_files)
           {
-            vtu->write(step, abscissa, u);
+            vtu->write(step, abscissa, model, u);
             ++vtu_files;
           }
         else if (!vtu_capped)
@@ -127,6 +126,7 @@ namespace rodnet
       }
 
       const Scene               &scene;
+      const Model<State>        &model;
       const std::vector<Probe>  &probes;
       const std::string          csv;
       ProbeTable                 table;
@@ -178,14 +178,14 @@ namespace rodnet
           parameters.track_lowest_eigenvalue = true;
       parameters.strain_limits.fiber_distance = scene.fiber_distances();
 
-      RunSummary   summary;
-      StepRecorder recorder(scene,
-                            output_directory,
-                            probes,
-                            model.get(),
-                            summary,
-                            "load_factor",
-                            {"stable", "in_range"});
+      RunSummary               summary;
+      StepRecorder<VectorType> recorder(scene,
+                                        output_directory,
+                                        probes,
+                                        *model,
+                                        summary,
+                                        "load_factor",
+                                        {"stable", "in_range"});
       if (log != nullptr)
         *log << "rodnet: " << model->network().rods().size() << " rod(s), "
              << model->layout().n_dofs() << " DoFs, "
@@ -206,7 +206,7 @@ namespace rodnet
                                           parameters.track_lowest_eigenvalue ?
                                             solver.lowest_eigenvalue(u, 0.0) :
                                             std::nan("")),
-                          &u,
+                          u,
                           {std::nan(""), std::nan("")});
           solver.run(u,
                      [&](const StaticSolver::StepInfo &info,
@@ -220,7 +220,7 @@ namespace rodnet
                                                        solution,
                                                        info.load_factor,
                                                        info.lowest_eigenvalue),
-                                       &solution,
+                                       solution,
                                        {double(info.check.stable),
                                         double(info.strain.in_range)});
                      });
@@ -243,63 +243,35 @@ namespace rodnet
                            const std::string &output_directory,
                            std::ostream      *log)
     {
-      const DrScene dr =
+      const std::unique_ptr<DrModel> model =
         build_with_progress(scene, log, [&] { return scene.build_dr_model(); });
-      const DrModel           &model  = *dr.model;
-      const std::vector<Probe> probes = scene.probes(model);
-      // The VTU files are those of the rod model of the same scene: its
-      // vertices take the element's node positions (twists stay zero).
-      std::unique_ptr<RodModel> rods;
-      VectorType                rod_state;
-      if (scene.write_vtu)
-        {
-          rods      = scene.build_model();
-          rod_state = rods->create_vector();
-        }
+      const std::vector<Probe> probes = scene.probes(*model);
 
-      RunSummary   summary;
-      StepRecorder recorder(scene,
-                            output_directory,
-                            probes,
-                            rods.get(),
-                            summary);
+      RunSummary             summary;
+      StepRecorder<DrVector> recorder(
+        scene, output_directory, probes, *model, summary);
       if (log != nullptr)
-        *log << "rodnet (dynamic relaxation): " << model.network().rods().size()
-             << " rod(s), " << model.n_dofs() << " DoFs, " << model.n_elements()
+        *log << "rodnet (dynamic relaxation): "
+             << model->network().rods().size() << " rod(s), "
+             << model->n_dofs() << " DoFs, " << model->n_elements()
              << " elements" << std::endl;
 
-      DrVector          u = model.create_vector();
-      DynamicRelaxation solver(model, scene.relaxation, log);
+      DrVector          u = model->create_vector();
+      DynamicRelaxation solver(*model, scene.relaxation, log);
       try
         {
-          // Step 0: the unloaded state (rod_state is zero).
-          recorder.record(0,
-                          0.0,
-                          evaluate_probes(probes, model, u, 0.0),
-                          rods ? &rod_state : nullptr);
+          // Step 0: the unloaded state.
+          recorder.record(0, 0.0, evaluate_probes(probes, *model, u, 0.0), u);
           solver.run(u,
                      [&](const DynamicRelaxation::StepInfo &info,
                          const DrVector                    &solution) {
-                       if (rods)
-                         {
-                           const RodNetwork &net = model.network();
-                           for (unsigned int v = 0; v < net.n_vertices(); ++v)
-                             {
-                               const Vector3 d =
-                                 model.position(solution, v) - net.vertex(v);
-                               for (unsigned int c = 0; c < 3; ++c)
-                                 rod_state[rods->layout().vertex_dof(v, c)] =
-                                   d[c];
-                             }
-                           rod_state.compress(dealii::VectorOperation::insert);
-                         }
                        recorder.record(info.step,
                                        info.load_factor,
                                        evaluate_probes(probes,
-                                                       model,
+                                                       *model,
                                                        solution,
                                                        info.load_factor),
-                                       rods ? &rod_state : nullptr);
+                                       solution);
                      });
         }
       catch (const SolverFailure &e)
@@ -342,13 +314,13 @@ namespace rodnet
       const std::vector<std::string> checks =
         dynamic ? std::vector<std::string>{"in_range"} :
                   std::vector<std::string>{"stable", "in_range"};
-      StepRecorder recorder(scene,
-                            output_directory,
-                            probes,
-                            model.get(),
-                            summary,
-                            "time",
-                            checks);
+      StepRecorder<VectorType> recorder(scene,
+                                        output_directory,
+                                        probes,
+                                        *model,
+                                        summary,
+                                        "time",
+                                        checks);
       if (log != nullptr)
         *log << "rodnet (time stepping, " << to_string(parameters.integrator)
              << "): " << model->network().rods().size() << " rod(s), "
@@ -375,8 +347,8 @@ namespace rodnet
         recorder.record(
           step,
           time,
-          evaluate_probes(probes, *model, u, load_factor, std::nan("")),
-          &u,
+          evaluate_probes(probes, *model, u, load_factor),
+          u,
           values);
       };
       VectorType u, v;

@@ -7,10 +7,8 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <elements/stretch_kernel.h>
 #include <io/vtu_output.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -36,16 +34,6 @@ namespace rodnet
       return out;
     }
 
-    /// VTU field name of an internal variable labelled "name (unit)":
-    /// the name with underscores for blanks.
-    std::string
-    field_name(const std::string &label)
-    {
-      std::string name = label.substr(0, label.find(" ("));
-      std::replace(name.begin(), name.end(), ' ', '_');
-      return name;
-    }
-
     /// Closes @p out; throws naming @p path if any write failed.
     void
     close_checked(std::ofstream &out, const std::string &path)
@@ -56,18 +44,18 @@ namespace rodnet
     }
   } // namespace
 
-  VtuOutput::VtuOutput(const RodModel    &model_,
+  VtuOutput::VtuOutput(const RodNetwork  &network_,
                        const std::string &directory_,
                        const std::string &basename_)
-      : model(model_)
+      : network(network_)
       , directory(directory_)
       , basename(basename_)
       , vertex_vector_fe(dealii::FE_Q<1, 3>(1), 3)
-      , vertex_vector_dofs(model_.network().triangulation())
+      , vertex_vector_dofs(network_.triangulation())
       , vertex_scalar_fe(1)
-      , vertex_scalar_dofs(model_.network().triangulation())
+      , vertex_scalar_dofs(network_.triangulation())
       , segment_vector_fe(dealii::FE_DGQ<1, 3>(0), 3)
-      , segment_vector_dofs(model_.network().triangulation())
+      , segment_vector_dofs(network_.triangulation())
   {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
@@ -81,11 +69,11 @@ namespace rodnet
     vertex_scalar_dofs.distribute_dofs(vertex_scalar_fe);
     segment_vector_dofs.distribute_dofs(segment_vector_fe);
 
-    const auto &tria = model.network().triangulation();
+    const auto &tria = network.triangulation();
     vertex_vector_index.resize(tria.n_vertices());
     vertex_scalar_index.resize(tria.n_vertices());
     segment_vector_index.resize(tria.n_active_cells());
-    std::vector<global_dof_index> dofs;
+    std::vector<dealii::types::global_dof_index> dofs;
     for (const auto &cell : vertex_vector_dofs.active_cell_iterators())
       {
         dofs.resize(vertex_vector_fe.n_dofs_per_cell());
@@ -126,132 +114,89 @@ namespace rodnet
     return directory + "/" + basename + ".pvd";
   }
 
-  void
-  VtuOutput::write(const unsigned int step,
-                   const double       load_factor,
-                   const VectorType  &u)
+  dealii::Vector<double>
+  VtuOutput::field_vector(const OutputFields::Field &field,
+                          const bool                 per_segment) const
   {
-    if (dealii::Utilities::MPI::this_mpi_process(u.get_mpi_communicator()) != 0)
-      return;
+    const unsigned int n =
+      per_segment ? segment_vector_index.size() : vertex_vector_index.size();
+    if (!(field.components == 1 || field.components == 3) ||
+        field.values.size() != field.components * n)
+      throw std::invalid_argument(
+        "VtuOutput: the field \"" + field.name + "\" has " +
+        std::to_string(field.values.size()) + " values for " +
+        std::to_string(n) + (per_segment ? " segments" : " vertices"));
+    if (field.components == 1 && per_segment)
+      return dealii::Vector<double>(field.values.begin(), field.values.end());
+    const auto &index =
+      per_segment ? segment_vector_index : vertex_vector_index;
+    dealii::Vector<double> values(field.components == 1 ?
+                                    vertex_scalar_dofs.n_dofs() :
+                                  per_segment ? segment_vector_dofs.n_dofs() :
+                                                vertex_vector_dofs.n_dofs());
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int c = 0; c < field.components; ++c)
+        values[field.components == 1 ? vertex_scalar_index[k] : index[k][c]] =
+          field.values[field.components * k + c];
+    return values;
+  }
 
-    const Configuration &configuration = model.configuration();
-    const auto          &tria          = model.network().triangulation();
+  void
+  VtuOutput::write(const unsigned int  step,
+                   const double        time,
+                   const OutputFields &fields)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    const auto        &tria       = network.triangulation();
+    const unsigned int n_vertices = vertex_vector_index.size();
+    if (fields.displacement.size() != n_vertices)
+      throw std::invalid_argument("VtuOutput: a displacement of " +
+                                  std::to_string(fields.displacement.size()) +
+                                  " vertices for a network of " +
+                                  std::to_string(n_vertices));
 
     dealii::Vector<double> displacement(vertex_vector_dofs.n_dofs());
-    for (unsigned int v = 0; v < vertex_vector_index.size(); ++v)
+    for (unsigned int v = 0; v < n_vertices; ++v)
       for (unsigned int c = 0; c < 3; ++c)
-        displacement[vertex_vector_index[v][c]] =
-          u[model.layout().vertex_dof(v, c)];
+        displacement[vertex_vector_index[v][c]] = fields.displacement[v][c];
 
-    dealii::Vector<double> axial_strain(tria.n_active_cells());
-    dealii::Vector<double> d1(segment_vector_dofs.n_dofs());
-    dealii::Vector<double> d2(segment_vector_dofs.n_dofs());
-    StretchStrain          stretch;
-    for (const SegmentStencil &segment : model.layout().segments())
-      {
-        evaluate_stretch(configuration.segment_dofs(u, segment),
-                         configuration.rest_length(segment.cell),
-                         stretch,
-                         false);
-        axial_strain[segment.cell] = stretch.strain;
-        const Matrix3 frame =
-          configuration.director_frame(u, segment.cell).toRotationMatrix();
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            d1[segment_vector_index[segment.cell][c]] = frame(c, 0);
-            d2[segment_vector_index[segment.cell][c]] = frame(c, 1);
-          }
-      }
-
-    // Integrated strains divided by the Voronoi length are the curvatures
-    // and twist rate of the smooth rod (Korner et al. eq. 4.2). Vertices
-    // without a hinge (rod ends) keep zero.
-    dealii::Vector<double> curvature(vertex_vector_dofs.n_dofs());
-    dealii::Vector<double> twist_rate(vertex_scalar_dofs.n_dofs());
-    const auto            &hinges = model.layout().hinges();
-    for (unsigned int h = 0; h < hinges.size(); ++h)
-      {
-        const HingeStencil &hinge = hinges[h];
-        const Vector3       kappa = model.hinge_kernel(hinge.rod).strains(
-                                configuration.hinge_dofs(u, hinge),
-                                configuration.hinge_reference(h)) /
-                              configuration.voronoi_length(h);
-        const unsigned int vertex                 = hinge.vertices[1];
-        curvature[vertex_vector_index[vertex][0]] = kappa[0];
-        curvature[vertex_vector_index[vertex][1]] = kappa[1];
-        twist_rate[vertex_scalar_index[vertex]]   = kappa[2];
-      }
-
-    // Internal variables of history-dependent materials, one field per
-    // name: hinge variables at the hinge's vertex, segment ones per cell,
-    // zero where a rod's material has no such variable. (Junction elements
-    // share their vertex with several rods and are not drawn.)
-    using Owner                      = InternalVariables::Owner;
-    const InternalVariables &history = model.internal_variables();
-    std::map<std::string, dealii::Vector<double>> vertex_history, cell_history;
-    for (unsigned int h = 0; !history.empty() && h < hinges.size(); ++h)
-      {
-        const auto names =
-          model.material(hinges[h].rod).hinge_internal_variable_names();
-        for (unsigned int m = 0; m < names.size(); ++m)
-          vertex_history
-            .try_emplace(field_name(names[m]), vertex_scalar_dofs.n_dofs())
-            .first->second[vertex_scalar_index[hinges[h].vertices[1]]] =
-            history.block(Owner::hinge, h)[m];
-      }
-    const auto &segments = model.layout().segments();
-    for (unsigned int c = 0; !history.empty() && c < segments.size(); ++c)
-      {
-        const auto names =
-          model.material(segments[c].rod).segment_internal_variable_names();
-        for (unsigned int m = 0; m < names.size(); ++m)
-          cell_history.try_emplace(field_name(names[m]), tria.n_active_cells())
-            .first->second[segments[c].cell] =
-            history.block(Owner::segment, c)[m];
-      }
-
-    // The DoFHandler's part of u, with the position of every rod end at a
-    // junction filled in from the DoFs it shares.
-    const DofLayout       &layout = model.layout();
-    dealii::Vector<double> fields(layout.n_field_dofs());
-    for (unsigned int i = 0; i < fields.size(); ++i)
-      fields[i] = u[i];
-    for (const auto &[copy, source] : layout.shared_copies())
-      fields[copy] = u[source];
-
+    // The fields as finite element vectors of the handlers above (vector
+    // fields and vertex scalars) or as cell data (segment scalars); kept
+    // alive until the patches are built.
     dealii::DataOut<1, 3> data_out;
     data_out.attach_triangulation(tria);
-    data_out.add_data_vector(
-      layout.dof_handler(),
-      fields,
-      {"displacement", "displacement", "displacement", "twist"},
-      {component_is_part_of_vector,
-       component_is_part_of_vector,
-       component_is_part_of_vector,
-       component_is_scalar});
-    const auto add_vector_field =
-      [&data_out](const dealii::DoFHandler<1, 3> &dofs,
-                  const dealii::Vector<double>   &values,
-                  const std::string              &name) {
-        data_out.add_data_vector(
-          dofs,
-          values,
-          std::vector<std::string>(3, name),
-          std::vector<Interpretation>(3, component_is_part_of_vector));
-      };
-    add_vector_field(vertex_vector_dofs, curvature, "curvature");
-    data_out.add_data_vector(vertex_scalar_dofs, twist_rate, "twist_rate");
-    add_vector_field(segment_vector_dofs, d1, "d1");
-    add_vector_field(segment_vector_dofs, d2, "d2");
-    data_out.add_data_vector(axial_strain,
-                             "axial_strain",
-                             dealii::DataOut<1, 3>::type_cell_data);
-    for (const auto &[name, values] : vertex_history)
-      data_out.add_data_vector(vertex_scalar_dofs, values, name);
-    for (const auto &[name, values] : cell_history)
-      data_out.add_data_vector(values,
-                               name,
-                               dealii::DataOut<1, 3>::type_cell_data);
+    std::vector<dealii::Vector<double>> values;
+    values.reserve(1 + fields.vertex_fields.size() +
+                   fields.segment_fields.size());
+    const auto add_vector = [&](const dealii::DoFHandler<1, 3> &dofs,
+                                const std::string              &name) {
+      data_out.add_data_vector(
+        dofs,
+        values.back(),
+        std::vector<std::string>(3, name),
+        std::vector<Interpretation>(3, component_is_part_of_vector));
+    };
+    values.push_back(displacement);
+    add_vector(vertex_vector_dofs, "displacement");
+    for (const auto &[list, per_segment] :
+         {std::make_pair(&fields.vertex_fields, false),
+          std::make_pair(&fields.segment_fields, true)})
+      for (const OutputFields::Field &field : *list)
+        {
+          values.push_back(field_vector(field, per_segment));
+          if (field.components == 3)
+            add_vector(per_segment ? segment_vector_dofs : vertex_vector_dofs,
+                       field.name);
+          else if (per_segment)
+            data_out.add_data_vector(values.back(),
+                                     field.name,
+                                     dealii::DataOut<1, 3>::type_cell_data);
+          else
+            data_out.add_data_vector(vertex_scalar_dofs,
+                                     values.back(),
+                                     field.name);
+        }
 
     // A degree-1 Eulerian mapping moves each vertex by its displacement, so
     // the patches are the deformed polyline.
@@ -259,21 +204,23 @@ namespace rodnet
       vertex_vector_dofs,
       displacement);
     data_out.build_patches(mapping, 1);
-
-    dealii::DataOutBase::VtkFlags flags(
-      load_factor,
+    data_out.set_flags(dealii::DataOutBase::VtkFlags(
+      time,
       step,
       false,
-      dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed);
-    data_out.set_flags(flags);
+      dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed));
 
     const std::string vtu  = vtu_path(step);
     std::ofstream     file = open_for_writing(vtu);
     data_out.write_vtu(file);
     close_checked(file, vtu);
+    records[step] = {time, std::filesystem::path(vtu).filename().string()};
+    write_pvd_record();
+  }
 
-    records[step] = {load_factor,
-                     std::filesystem::path(vtu).filename().string()};
+  void
+  VtuOutput::write_pvd_record() const
+  {
     std::vector<std::pair<double, std::string>> times_and_names;
     for (const auto &record : records)
       times_and_names.push_back(record.second);

@@ -4,8 +4,11 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/vector.h>
 
-#include <core/rod_model.h>
+#include <core/model.h>
+#include <core/output_fields.h>
+#include <core/rod_network.h>
 
 #include <array>
 #include <map>
@@ -16,50 +19,52 @@
 namespace rodnet
 {
   /**
-   * Writes converged states of a RodModel as a ParaView time series: one
-   * file `<directory>/<basename>-NNNNN.vtu` per step and the collection
+   * Writes states of a model as a ParaView time series: one file
+   * `<directory>/<basename>-NNNNN.vtu` per step and the collection
    * `<directory>/<basename>.pvd` listing every step written so far, with the
    * load factor (static runs) or the time (time stepping) as its "time".
-   * Cells are drawn in the deformed
-   * configuration. The fields are
-   * - "displacement" (vector) and "twist" (per segment, the twist DoF),
-   *   straight from the DoF vector;
-   * - per segment: "axial_strain" (engineering strain) and the current
-   *   directors "d1" and "d2" (vectors);
-   * - per vertex, from the hinge at that vertex and zero at rod ends:
-   *   "curvature" = (kappa_1, kappa_2, 0) / l, the bending curvatures about
-   *   d1 and d2 in material components, and "twist_rate" = kappa_3 / l,
-   *   with l the hinge's undeformed Voronoi length;
-   * - for history-dependent materials, their committed internal variables,
-   *   one field per name ("viscous_curvature_1", ...): hinge variables per
-   *   vertex (zero at rod ends), segment variables per segment.
+   * Cells are drawn in the deformed configuration: the rods of the network
+   * moved by the model's displacement. The fields are those the model gives
+   * (Model::output_fields(): RodModel::output_fields(),
+   * DrModel::output_fields()), "displacement" first.
    *
    * deal.II's VTU writer stores every value as a 32-bit float, which is
-   * enough to look at but not to restart from. The model must outlive this
-   * object.
+   * enough to look at but not to restart from. The network must outlive
+   * this object.
    */
   class VtuOutput
   {
   public:
     /**
-     * Creates @p directory (and its parents) if needed; throws
-     * std::runtime_error naming the path if it cannot.
+     * Output of models of @p network. Creates @p directory (and its
+     * parents) if needed; throws std::runtime_error naming the path if it
+     * cannot.
      */
-    VtuOutput(const RodModel    &model,
+    VtuOutput(const RodNetwork  &network,
               const std::string &directory,
               const std::string &basename = "solution");
 
     /**
-     * Writes the state @p u of step @p step at load factor (or time)
-     * @p load_factor
+     * Writes @p fields of step @p step at load factor (or time) @p time
      * and rewrites the .pvd record, both before returning, so that a later
      * failure loses no converged step. Writing the same step again replaces
-     * its entry. In a parallel run only rank 0 of @p u's communicator
-     * writes; @p u must hold every entry on it. Throws std::runtime_error
-     * naming the file if a file cannot be written.
+     * its entry. In a parallel run only rank 0 writes. Throws
+     * std::runtime_error naming the file if a file cannot be written, and
+     * std::invalid_argument if a field does not fit the network.
      */
     void
-    write(unsigned int step, double load_factor, const VectorType &u);
+    write(unsigned int step, double time, const OutputFields &fields);
+
+    /// Writes the state @p u of @p model (see above).
+    template <class State>
+    void
+    write(const unsigned int  step,
+          const double        time,
+          const Model<State> &model,
+          const State        &u)
+    {
+      write(step, time, model.output_fields(u));
+    }
 
     /// Path of the .vtu file of step @p step.
     std::string
@@ -70,28 +75,41 @@ namespace rodnet
     pvd_path() const;
 
   private:
-    const RodModel &model;
-    std::string     directory;
-    std::string     basename;
+    /// The values of a vertex (or, @p per_segment, segment) field as a
+    /// vector of the DoFHandler that draws it, or as cell data for a
+    /// segment scalar. Throws std::invalid_argument for a field that does
+    /// not fit the network.
+    dealii::Vector<double>
+    field_vector(const OutputFields::Field &field, bool per_segment) const;
+
+    /// Rewrites the .pvd record with every step written.
+    void
+    write_pvd_record() const;
+
+    const RodNetwork &network;
+    std::string       directory;
+    std::string       basename;
 
     /// Vertex vector fields: the displacement that drives the Eulerian
-    /// mapping (which wants exactly spacedim components) and "curvature".
+    /// mapping (which wants exactly spacedim components) and the others.
     dealii::FESystem<1, 3>   vertex_vector_fe;
     dealii::DoFHandler<1, 3> vertex_vector_dofs;
-    /// Vertex scalar field "twist_rate".
+    /// Vertex scalar fields.
     dealii::FE_Q<1, 3>       vertex_scalar_fe;
     dealii::DoFHandler<1, 3> vertex_scalar_dofs;
-    /// Segment vector fields "d1" and "d2": deal.II's cell data are
-    /// scalars only, so vectors per cell need a DG0 system.
+    /// Segment vector fields: deal.II's cell data are scalars only, so
+    /// vectors per cell need a DG0 system.
     dealii::FESystem<1, 3>   segment_vector_fe;
     dealii::DoFHandler<1, 3> segment_vector_dofs;
 
     /// Triangulation vertex -> DoFs of its three components.
-    std::vector<std::array<global_dof_index, 3>> vertex_vector_index;
+    std::vector<std::array<dealii::types::global_dof_index, 3>>
+      vertex_vector_index;
     /// Triangulation vertex -> DoF.
-    std::vector<global_dof_index> vertex_scalar_index;
+    std::vector<dealii::types::global_dof_index> vertex_scalar_index;
     /// Active cell -> DoFs of its three components.
-    std::vector<std::array<global_dof_index, 3>> segment_vector_index;
+    std::vector<std::array<dealii::types::global_dof_index, 3>>
+      segment_vector_index;
 
     /// Step -> (load factor, .vtu file name relative to the .pvd).
     std::map<unsigned int, std::pair<double, std::string>> records;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <base/registry.h>
 #include <materials/cross_section.h>
 #include <materials/rod_stiffness.h>
 
@@ -223,42 +224,20 @@ namespace rodnet
     parse_parameters(dealii::ParameterHandler &prm) = 0;
   };
 
-  /// Name-keyed factory of rod materials (ASPECT-style plugin registry).
-  class MaterialRegistry
+  /// Name-keyed factory of rod materials (base/registry.h): every material
+  /// registers itself with RODNET_REGISTER_MATERIAL in its own .cc file.
+  class MaterialRegistry : public Registry<RodMaterial>
   {
   public:
-    using Factory = std::function<std::unique_ptr<RodMaterial>()>;
-
     /// The process-wide registry.
     static MaterialRegistry &
     instance();
 
-    /// Registers @p factory under @p name with a one-line @p description.
-    void
-    add(const std::string &name,
-        const std::string &description,
-        Factory            factory);
-
-    /// Creates the material registered as @p name; throws
-    /// std::invalid_argument listing the known names otherwise.
-    std::unique_ptr<RodMaterial>
-    create(const std::string &name) const;
-
-    /// Registered names, sorted.
-    std::vector<std::string>
-    names() const;
-
-    /// Description given at registration.
-    std::string
-    description(const std::string &name) const;
-
   private:
-    struct Entry
+    MaterialRegistry()
+        : Registry<RodMaterial>("material", "materials")
     {
-      std::string description;
-      Factory     factory;
-    };
-    std::map<std::string, Entry> entries;
+    }
   };
 } // namespace rodnet
 

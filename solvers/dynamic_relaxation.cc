@@ -72,9 +72,97 @@ namespace rodnet
   DynamicRelaxation::reaction_norm(const DrVector &r) const
   {
     double sum = 0;
-    for (const DrSupport &s : model.supports())
+    for (const Support &s : model.supports())
       sum += model.support_force(s, r).squaredNorm();
     return std::sqrt(sum);
+  }
+
+
+  double
+  DynamicRelaxation::residual_floor(const DrVector &masses) const
+  {
+    // Rounding errors of the positions, eps L, times the stiffness row sums
+    // S_i = 2 m_i / scaling bound what residual row i can reach; the floor
+    // sums them row by row (the largest row times sqrt(n) would let one
+    // stiff element excuse every other row, as in Newton's statics).
+    return std::max(std::numeric_limits<double>::epsilon() *
+                      (2 * free_norm(masses) / parameters.mass_scaling) *
+                      model.length_scale(),
+                    std::numeric_limits<double>::min());
+  }
+
+
+  double
+  DynamicRelaxation::leapfrog(DrVector       &u,
+                              const DrVector &r,
+                              const double    dt,
+                              Motion         &motion,
+                              double         &reversal) const
+  {
+    const double kick           = motion.from_rest ? 0.5 * dt : dt;
+    double       kinetic_energy = 0;
+    reversal                    = 0;
+    for (const unsigned int i : free_dofs)
+      {
+        const double m      = motion.masses[i];
+        const double before = motion.from_rest ? 0.0 : motion.velocity[i];
+        motion.acceleration[i] = -r[i] / m;
+        motion.velocity[i]     = before + kick * motion.acceleration[i];
+        kinetic_energy += 0.5 * m * motion.velocity[i] * motion.velocity[i];
+        reversal += m * motion.velocity[i] * before;
+        u[i] += dt * motion.velocity[i];
+      }
+    return kinetic_energy;
+  }
+
+
+  std::string
+  DynamicRelaxation::instability(const double kinetic_energy,
+                                 const double reversal,
+                                 Motion      &motion) const
+  {
+    if (motion.from_rest || !(kinetic_energy > motion.kinetic_energy_before) ||
+        !(reversal < 0))
+      {
+        motion.growing = 0;
+        return "";
+      }
+    if (motion.growing++ == 0)
+      motion.growth_base = motion.kinetic_energy_before;
+    if (motion.growing < 5 ||
+        !(kinetic_energy >= parameters.instability_growth * motion.growth_base))
+      return "";
+    std::ostringstream reason;
+    reason << "the kinetic energy grew by a factor "
+           << kinetic_energy / motion.growth_base << " in " << motion.growing
+           << " iterations that each reversed the velocities: central "
+              "differences are unstable at this time step";
+    return reason.str();
+  }
+
+
+  bool
+  DynamicRelaxation::damp_at_peak(DrVector    &u,
+                                  const double kinetic_energy,
+                                  const double dt,
+                                  Motion      &motion) const
+  {
+    if (motion.from_rest || !(kinetic_energy < motion.kinetic_energy_before))
+      {
+        motion.from_rest             = false;
+        motion.kinetic_energy_before = kinetic_energy;
+        return false;
+      }
+    for (const unsigned int i : free_dofs)
+      {
+        u[i] -= 1.5 * dt * motion.velocity[i] -
+                0.5 * dt * dt * motion.acceleration[i];
+        motion.velocity[i] = 0;
+      }
+    motion.from_rest             = true;
+    motion.kinetic_energy_before = 0;
+    model.fictitious_masses(u, parameters.mass_scaling, motion.masses);
+    return true;
   }
 
 
@@ -84,7 +172,10 @@ namespace rodnet
                            const double dt) const
   {
     Attempt  attempt;
-    DrVector r, masses, velocity(model.n_dofs()), acceleration(model.n_dofs());
+    DrVector r;
+    Motion   motion;
+    motion.velocity.reinit(model.n_dofs());
+    motion.acceleration.reinit(model.n_dofs());
     const auto unstable = [&](const std::string &reason) {
       attempt.unstable = true;
       attempt.reason   = reason;
@@ -95,28 +186,15 @@ namespace rodnet
     try
       {
         model.residual(u, load_factor, r);
-        model.fictitious_masses(u, parameters.mass_scaling, masses);
+        model.fictitious_masses(u, parameters.mass_scaling, motion.masses);
       }
     catch (const std::exception &e)
       {
         return unstable(e.what());
       }
-
-    // Rounding errors of the positions, eps L, times the stiffness row sums
-    // S_i = 2 m_i / scaling bound what residual row i can reach; the floor
-    // sums them row by row (the largest row times sqrt(n) would let one
-    // stiff element excuse every other row, as in Newton's statics).
     const double applied = load_factor * free_norm(model.external_force());
-    const double floor =
-      std::max(std::numeric_limits<double>::epsilon() *
-                 (2 * free_norm(masses) / parameters.mass_scaling) *
-                 model.length_scale(),
-               std::numeric_limits<double>::min());
+    const double floor   = residual_floor(motion.masses);
 
-    double       kinetic_energy_before = 0;
-    bool         from_rest             = true;
-    unsigned int growing               = 0; // iterations in a row
-    double       growth_base           = 0; // kinetic energy before them
     for (unsigned int iteration = 0;; ++iteration)
       {
         const double norm     = free_norm(r);
@@ -144,63 +222,17 @@ namespace rodnet
             return attempt;
           }
 
-        // Leapfrog; from rest the first kick is half a step, so that the
-        // velocity is centred (v_{-dt/2} = -v_{dt/2}).
-        const double kick           = from_rest ? 0.5 * dt : dt;
-        double       kinetic_energy = 0;
-        double       reversal       = 0; // v_{t+dt/2} . M v_{t-dt/2}
-        for (const unsigned int i : free_dofs)
-          {
-            const double before = from_rest ? 0.0 : velocity[i];
-            acceleration[i]     = -r[i] / masses[i];
-            velocity[i]         = before + kick * acceleration[i];
-            kinetic_energy += 0.5 * masses[i] * velocity[i] * velocity[i];
-            reversal += masses[i] * velocity[i] * before;
-            u[i] += dt * velocity[i];
-          }
+        double       reversal       = 0;
+        const double kinetic_energy = leapfrog(u, r, dt, motion, reversal);
         if (!std::isfinite(kinetic_energy))
           return unstable("the kinetic energy is not finite");
-        if (!from_rest && kinetic_energy > kinetic_energy_before &&
-            reversal < 0)
-          {
-            if (growing++ == 0)
-              growth_base = kinetic_energy_before;
-            if (growing >= 5 &&
-                kinetic_energy >= parameters.instability_growth * growth_base)
-              {
-                std::ostringstream reason;
-                reason << "the kinetic energy grew by a factor "
-                       << kinetic_energy / growth_base << " in " << growing
-                       << " iterations that each reversed the velocities: "
-                          "central differences are unstable at this time "
-                          "step";
-                return unstable(reason.str());
-              }
-          }
-        else
-          growing = 0;
-
+        if (const std::string reason =
+              instability(kinetic_energy, reversal, motion);
+            !reason.empty())
+          return unstable(reason);
         try
           {
-            if (!from_rest && kinetic_energy < kinetic_energy_before)
-              {
-                // Kinetic damping: back to the estimated peak, at rest.
-                for (const unsigned int i : free_dofs)
-                  {
-                    u[i] -=
-                      1.5 * dt * velocity[i] - 0.5 * dt * dt * acceleration[i];
-                    velocity[i] = 0;
-                  }
-                ++attempt.peaks;
-                from_rest             = true;
-                kinetic_energy_before = 0;
-                model.fictitious_masses(u, parameters.mass_scaling, masses);
-              }
-            else
-              {
-                from_rest             = false;
-                kinetic_energy_before = kinetic_energy;
-              }
+            attempt.peaks += damp_at_peak(u, kinetic_energy, dt, motion);
             model.residual(u, load_factor, r);
           }
         catch (const std::exception &e)

@@ -125,9 +125,50 @@ namespace rodnet
       std::string  reason; ///< why it did not converge
     };
 
+    /// The fictitious motion of a relaxation: lumped masses, velocities
+    /// and accelerations, and the record of the kinetic energy.
+    struct Motion
+    {
+      DrVector     masses, velocity, acceleration;
+      double       kinetic_energy_before = 0;
+      bool         from_rest             = true;
+      unsigned int growing     = 0; ///< iterations in a row of growth
+      double       growth_base = 0; ///< kinetic energy before them
+    };
+
     /// Relaxes @p u at @p load_factor with time step @p dt.
     Attempt
     relax(DrVector &u, double load_factor, double dt) const;
+
+    /// The residual that rounding errors of the positions alone reach,
+    /// from the fictitious @p masses.
+    double
+    residual_floor(const DrVector &masses) const;
+
+    /**
+     * One leapfrog step of @p u under the residual @p r; from rest the
+     * first kick is half a step, so that the velocity is centred
+     * (v_{-dt/2} = -v_{dt/2}). Returns the kinetic energy and stores in
+     * @p reversal v_{t+dt/2} . M v_{t-dt/2}.
+     */
+    double
+    leapfrog(DrVector       &u,
+             const DrVector &r,
+             double          dt,
+             Motion         &motion,
+             double         &reversal) const;
+
+    /// Why the motion is unstable at @p kinetic_energy (growing while the
+    /// velocities reverse), or empty.
+    std::string
+    instability(double kinetic_energy, double reversal, Motion &motion) const;
+
+    /// Kinetic damping: at a peak of the kinetic energy, back to the
+    /// estimated peak, at rest, with masses at the new state. Returns
+    /// whether it damped.
+    bool
+    damp_at_peak(DrVector &u, double kinetic_energy, double dt, Motion &motion)
+      const;
 
     /// |r| over the free DoFs.
     double

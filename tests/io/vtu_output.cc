@@ -5,6 +5,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <core/dr_model.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <io/probe_plot.h>
@@ -34,24 +35,32 @@ namespace
 {
   constexpr unsigned int n_segments = 8;
 
-  /// A straight rod along x of 8 segments: its vertices k/8 and the
-  /// displacements below are exact in single precision, so the positions
-  /// that deal.II stores as 32-bit floats can be checked to 1e-12.
-  std::unique_ptr<RodModel>
-  straight_rod(
-    std::shared_ptr<const RodMaterial> material =
-      std::make_shared<LinearElasticRod>(RodStiffness{1.0, 1.0, 1.0, 1.0}))
+  /// A straight rod along x of 8 segments with the director hint @p d1:
+  /// its vertices k/8 and the displacements below are exact in single
+  /// precision, so the positions that deal.II stores as 32-bit floats can
+  /// be checked to 1e-12.
+  std::unique_ptr<RodNetwork>
+  straight_network(const Vector3 &d1)
   {
     auto network = std::make_unique<RodNetwork>();
     network->add_rod(generators::straight(Vector3(0, 0, 0),
                                           Vector3(1, 0, 0),
                                           n_segments),
                      false,
-                     Vector3::UnitY(),
+                     d1,
                      "simple");
     network->create_triangulation();
+    return network;
+  }
+
+  /// The rod of straight_network() with d1 = e_y as a RodModel.
+  std::unique_ptr<RodModel>
+  straight_rod(
+    std::shared_ptr<const RodMaterial> material =
+      std::make_shared<LinearElasticRod>(RodStiffness{1.0, 1.0, 1.0, 1.0}))
+  {
     auto model = std::make_unique<RodModel>(
-      std::move(network),
+      straight_network(Vector3::UnitY()),
       std::vector<std::shared_ptr<const RodMaterial>>{material});
     model->finalize();
     return model;
@@ -134,7 +143,7 @@ TEST(VtuOutput, WritesDeformedRodFieldsAndTimeSeries)
 {
   const auto       model = straight_rod();
   const fs::path   dir   = scratch("series");
-  VtuOutput        output(*model, dir.string());
+  VtuOutput        output(model->network(), dir.string());
   const DofLayout &layout = model->layout();
 
   // Step 0: a rigid translation. Step 1: also a quarter turn of the twist
@@ -144,12 +153,12 @@ TEST(VtuOutput, WritesDeformedRodFieldsAndTimeSeries)
   for (unsigned int v = 0; v <= n_segments; ++v)
     for (unsigned int c = 0; c < 3; ++c)
       u[layout.vertex_dof(v, c)] = translation[c];
-  output.write(0, 0.5, u);
+  output.write(0, 0.5, *model, u);
 
   const unsigned int twisted   = 3;
   const double       angle     = M_PI / 2;
   u[layout.twist_dof(twisted)] = angle;
-  output.write(1, 1.0, u);
+  output.write(1, 1.0, *model, u);
 
   ASSERT_TRUE(fs::exists(dir / "solution-00000.vtu"));
   ASSERT_TRUE(fs::exists(dir / "solution-00001.vtu"));
@@ -226,7 +235,7 @@ TEST(VtuOutput, WritesDeformedRodFieldsAndTimeSeries)
       }
 
   // Rewriting a step replaces its entry instead of adding one.
-  output.write(1, 1.0, u);
+  output.write(1, 1.0, *model, u);
   const std::string rewritten = read_text(dir / "solution.pvd");
   std::size_t       entries   = 0;
   for (std::size_t at = rewritten.find("<DataSet"); at != std::string::npos;
@@ -253,8 +262,8 @@ TEST(VtuOutput, WritesInternalVariables)
   model.commit_internal_variables(u);
 
   const fs::path dir = scratch("history");
-  VtuOutput      output(model, dir.string());
-  output.write(0, dt, u);
+  VtuOutput      output(model.network(), dir.string());
+  output.write(0, dt, model, u);
   const std::string        vtu = read_text(dir / "solution-00000.vtu");
   const std::vector<float> viscous =
     read_data_array(vtu, "viscous_axial_strain");
@@ -268,6 +277,43 @@ TEST(VtuOutput, WritesInternalVariables)
       EXPECT_NEAR(value, 0.0, 1e-7) << name;
 }
 
+// The dynamic relaxation model is written through the same interface,
+// without a RodModel: its rod translated rigidly, with the normals of its
+// frames (e_z, the director hint).
+TEST(VtuOutput, WritesDynamicRelaxationStates)
+{
+  DrModel model(straight_network(Vector3::UnitZ()),
+                {RodStiffness{1.0, 1.0, 1.0, 1.0}});
+  model.finalize();
+  const Vector3 translation(0.25, -0.5, 0.125);
+  DrVector      u = model.create_vector();
+  for (unsigned int v = 0; v <= n_segments; ++v)
+    for (unsigned int c = 0; c < 3; ++c)
+      u[model.position_dof(v, c)] = translation[c];
+
+  const fs::path dir = scratch("relaxation");
+  VtuOutput      output(model.network(), dir.string());
+  output.write(3, 0.75, model, u);
+  const std::string        vtu    = read_text(dir / "solution-00003.vtu");
+  const std::vector<float> points = read_data_array(vtu, "");
+  const std::vector<float> normal = read_data_array(vtu, "normal");
+  ASSERT_EQ(points.size(), 3 * 2 * n_segments);
+  ASSERT_EQ(normal.size(), points.size());
+  for (unsigned int cell = 0; cell < n_segments; ++cell)
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const unsigned int p = 2 * cell + k;
+        const Vector3 expected = model.network().vertex(cell + k) + translation;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            EXPECT_NEAR(points[3 * p + c], expected[c], 1e-12);
+            EXPECT_NEAR(normal[3 * p + c], c == 2 ? 1.0 : 0.0, 1e-7);
+          }
+      }
+  EXPECT_NE(read_text(dir / "solution.pvd").find("timestep=\"0.75\""),
+            std::string::npos);
+}
+
 TEST(VtuOutput, UnusableDirectoryThrowsNamingIt)
 {
   const auto     model = straight_rod();
@@ -277,7 +323,7 @@ TEST(VtuOutput, UnusableDirectoryThrowsNamingIt)
   const std::string bad = (dir / "file" / "output").string();
   try
     {
-      VtuOutput output(*model, bad);
+      VtuOutput output(model->network(), bad);
       FAIL() << "no exception for " << bad;
     }
   catch (const std::runtime_error &e)

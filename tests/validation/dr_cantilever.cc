@@ -57,12 +57,11 @@ namespace
   {
     const unsigned int n = 20;
     const double       P = 1e-4, EI1 = 1, EI2 = 2;
-    const auto         network = straight_rod(n);
     for (const unsigned int direction : {1u, 2u})
       {
-        DrModel model(*network, {RodStiffness{1e4, EI1, EI2, 1}});
+        DrModel model(straight_rod(n), {RodStiffness{1e4, EI1, EI2, 1}});
         model.clamp_end("clamp", 0, true);
-        const unsigned int tip = network->rods()[0].vertices.back();
+        const unsigned int tip = model.network().rods()[0].vertices.back();
         model.add_point_force(tip, P * Vector3::Unit(direction));
         model.finalize();
 
@@ -97,10 +96,9 @@ namespace
     double       previous_error[2] = {INFINITY, INFINITY};
     for (const unsigned int n : {20u, 40u})
       {
-        const auto network = straight_rod(n);
-        DrModel    model(*network, {RodStiffness{1e4, 1, 1, 1}});
+        DrModel model(straight_rod(n), {RodStiffness{1e4, 1, 1, 1}});
         model.clamp_end("clamp", 0, true);
-        const unsigned int tip = network->rods()[0].vertices.back();
+        const unsigned int tip = model.network().rods()[0].vertices.back();
         model.add_point_force(tip, Vector3(-P_max, 1e-4 * P_max, 0));
         model.finalize();
 
@@ -149,10 +147,9 @@ namespace
   {
     const unsigned int n       = 20;
     const double       P       = 1e-4;
-    const auto         network = straight_rod(n);
-    DrModel            model(*network, {RodStiffness{1e4, 1, 1, 1}});
+    DrModel            model(straight_rod(n), {RodStiffness{1e4, 1, 1, 1}});
     model.clamp_end("clamp", 0, true);
-    const unsigned int tip = network->rods()[0].vertices.back();
+    const unsigned int tip = model.network().rods()[0].vertices.back();
     model.add_point_force(tip, Vector3(0, P, 0));
     model.finalize();
 
@@ -189,10 +186,9 @@ namespace
   TEST(DrCantilever, PrescribedTipDisplacementReaction)
   {
     const double delta   = 1e-3;
-    const auto   network = straight_rod(20);
-    DrModel      model(*network, {RodStiffness{1e4, 1, 2, 1}});
+    DrModel      model(straight_rod(20), {RodStiffness{1e4, 1, 2, 1}});
     model.clamp_end("clamp", 0, true);
-    const unsigned int tip = network->rods()[0].vertices.back();
+    const unsigned int tip = model.network().rods()[0].vertices.back();
     model.fix_components("tip",
                          tip,
                          {{false, true, false}},
@@ -214,21 +210,20 @@ namespace
     EXPECT_NEAR(clamp, -force, 1e-4 * force);
   }
 
-  // A uniform load q along e_z (a weight, through add_gravity) lumped to
+  // A uniform load q along e_z (a weight, mass per length times g) lumped to
   // the nodes: tip deflection q L^4 / (8 EI2); the lumping misses the end
   // moment q h^2 / 12 of the consistent load, a relative error h^2 / 3.
   TEST(DrCantilever, UniformLoadMatchesBeamTheory)
   {
     const double q = 1e-4, EI2 = 2;
-    const auto   network = straight_rod(20);
-    DrModel      model(*network, {RodStiffness{1e4, 1, EI2, 1}});
+    DrModel      model(straight_rod(20), {RodStiffness{1e4, 1, EI2, 1}});
     model.clamp_end("clamp", 0, true);
-    model.add_gravity(0, 1e-5, Vector3(0, 0, q / 1e-5));
+    model.add_distributed_force(0, 1e-5 * Vector3(0, 0, q / 1e-5));
     model.finalize();
 
     DrVector u = model.create_vector();
     DynamicRelaxation(model, {}).run(u, [](const auto &, const auto &) {});
-    const unsigned int tip   = network->rods()[0].vertices.back();
+    const unsigned int tip   = model.network().rods()[0].vertices.back();
     const double       exact = q / (8 * EI2);
     const double       w     = model.position(u, tip)[2];
     std::cout << "tip deflection " << w << ", q L^4/(8 EI) " << exact
@@ -249,12 +244,13 @@ namespace
                           const unsigned int n,
                           const double       P)
   {
-    RodNetwork network;
+    auto        owned   = std::make_unique<RodNetwork>();
+    RodNetwork &network = *owned; // owned by the model from its construction
     add_straight_rod(network, Vector3(0, 0, 0), Vector3(0.5, 0, 0), n);
     add_straight_rod(network, Vector3(0.5, 0, 0), Vector3(1, 0, 0), n);
     network.add_junction("middle", kind, {{0, false}, {1, true}});
     const RodStiffness k{1e4, 1, 2, 1};
-    DrModel            model(network, {k, k});
+    DrModel            model(std::move(owned), {k, k});
     model.clamp_end("left", 0, true);
     model.clamp_end("right", 1, false);
     const unsigned int middle = network.named_vertex("middle");
@@ -292,7 +288,8 @@ namespace
   // bent network of four rods at a random state.
   TEST(DrModelDerivatives, ResidualIsEnergyGradient)
   {
-    RodNetwork    network;
+    auto          owned   = std::make_unique<RodNetwork>();
+    RodNetwork   &network = *owned; // owned by the model from its construction
     const Vector3 hint(0.1, 0.2, 1);
     const auto    add = [&](const Vector3 &a, const Vector3 &b) {
       add_straight_rod(network, a, b, 3, hint);
@@ -305,7 +302,7 @@ namespace
                          JunctionKind::welded,
                          {{0, false}, {1, true}, {2, true}});
     network.add_junction("pin", JunctionKind::pinned, {{1, false}, {3, true}});
-    DrModel model(network,
+    DrModel model(std::move(owned),
                   std::vector<RodStiffness>(4, RodStiffness{10, 1, 2, 0.7}));
     model.clamp_end("clamp", 0, true);
     model.fix_components("roller",
@@ -343,16 +340,19 @@ namespace
   // singular there) and a stiffness count that does not match the rods.
   TEST(DrModelInput, RefusesWhatItCannotRepresent)
   {
-    RodNetwork network;
-    add_straight_rod(network,
-                     Vector3(0, 0, 0),
-                     Vector3(1, 0, 0),
-                     4,
-                     Vector3::UnitY());
+    const auto in_plane_rod = [] {
+      auto network = std::make_unique<RodNetwork>();
+      add_straight_rod(*network,
+                       Vector3(0, 0, 0),
+                       Vector3(1, 0, 0),
+                       4,
+                       Vector3::UnitY());
+      return network;
+    };
     const RodStiffness k{1, 1, 1, 1};
     try
       {
-        DrModel model(network, {k});
+        DrModel model(in_plane_rod(), {k});
         ADD_FAILURE() << "a normal in the xy plane was accepted";
       }
     catch (const std::invalid_argument &e)
@@ -361,6 +361,6 @@ namespace
         EXPECT_NE(std::string(e.what()).find("rod 0, vertex 0"),
                   std::string::npos);
       }
-    EXPECT_THROW(DrModel(network, {k, k}), std::invalid_argument);
+    EXPECT_THROW(DrModel(in_plane_rod(), {k, k}), std::invalid_argument);
   }
 } // namespace

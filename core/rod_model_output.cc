@@ -1,0 +1,123 @@
+// The fields of a RodModel state for output (VtuOutput): displacement,
+// twist, strains, directors, curvatures and internal variables.
+#include <core/rod_model.h>
+#include <elements/stretch_kernel.h>
+
+#include <algorithm>
+#include <map>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// Output field name of an internal variable labelled "name (unit)":
+    /// the name with underscores for blanks.
+    std::string
+    field_name(const std::string &label)
+    {
+      std::string name = label.substr(0, label.find(" ("));
+      std::replace(name.begin(), name.end(), ' ', '_');
+      return name;
+    }
+
+    /// Appends the fields of @p named (name -> values) to @p fields.
+    void
+    append_scalar_fields(
+      const std::map<std::string, std::vector<double>> &named,
+      std::vector<OutputFields::Field>                 &fields)
+    {
+      for (const auto &[name, values] : named)
+        fields.push_back({name, 1, values});
+    }
+  } // namespace
+
+  OutputFields
+  RodModel::output_fields(const VectorType &u) const
+  {
+    const Configuration &configuration = *configuration_;
+    const unsigned int   n_vertices    = network_->n_vertices();
+    const unsigned int   n_cells = network_->triangulation().n_active_cells();
+
+    OutputFields output;
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      output.displacement.emplace_back(u[layout_->vertex_dof(v, 0)],
+                                       u[layout_->vertex_dof(v, 1)],
+                                       u[layout_->vertex_dof(v, 2)]);
+
+    OutputFields::Field twist{"twist", 1, std::vector<double>(n_cells)};
+    OutputFields::Field strain{"axial_strain", 1, std::vector<double>(n_cells)};
+    OutputFields::Field d1{"d1", 3, std::vector<double>(3 * n_cells)};
+    OutputFields::Field d2{"d2", 3, std::vector<double>(3 * n_cells)};
+    StretchStrain       stretch;
+    for (const SegmentStencil &segment : layout_->segments())
+      {
+        twist.values[segment.cell] = u[layout_->twist_dof(segment.cell)];
+        evaluate_stretch(configuration.segment_dofs(u, segment),
+                         configuration.rest_length(segment.cell),
+                         stretch,
+                         false);
+        strain.values[segment.cell] = stretch.strain;
+        const Matrix3 frame =
+          configuration.director_frame(u, segment.cell).toRotationMatrix();
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            d1.values[3 * segment.cell + c] = frame(c, 0);
+            d2.values[3 * segment.cell + c] = frame(c, 1);
+          }
+      }
+    output.segment_fields = {twist, strain, d1, d2};
+
+    // Integrated strains divided by the Voronoi length are the curvatures
+    // and twist rate of the smooth rod (Korner et al. eq. 4.2). Vertices
+    // without a hinge (rod ends) keep zero.
+    OutputFields::Field curvature{"curvature",
+                                  3,
+                                  std::vector<double>(3 * n_vertices)};
+    OutputFields::Field twist_rate{"twist_rate",
+                                   1,
+                                   std::vector<double>(n_vertices)};
+    const auto         &hinges = layout_->hinges();
+    for (unsigned int h = 0; h < hinges.size(); ++h)
+      {
+        const Vector3 kappa =
+          kernels[hinges[h].rod]->strains(configuration.hinge_dofs(u,
+                                                                   hinges[h]),
+                                          configuration.hinge_reference(h)) /
+          configuration.voronoi_length(h);
+        const unsigned int vertex        = hinges[h].vertices[1];
+        curvature.values[3 * vertex + 0] = kappa[0];
+        curvature.values[3 * vertex + 1] = kappa[1];
+        twist_rate.values[vertex]        = kappa[2];
+      }
+    output.vertex_fields = {curvature, twist_rate};
+
+    // Internal variables of history-dependent materials, one field per
+    // name: hinge variables at the hinge's vertex, segment ones per cell,
+    // zero where a rod's material has no such variable. (Junction elements
+    // share their vertex with several rods and are not drawn.)
+    using Owner = InternalVariables::Owner;
+    std::map<std::string, std::vector<double>> vertex_history, cell_history;
+    for (unsigned int h = 0; !history.empty() && h < hinges.size(); ++h)
+      {
+        const auto names =
+          materials[hinges[h].rod]->hinge_internal_variable_names();
+        for (unsigned int m = 0; m < names.size(); ++m)
+          vertex_history.try_emplace(field_name(names[m]), n_vertices)
+            .first->second[hinges[h].vertices[1]] =
+            history.block(Owner::hinge, h)[m];
+      }
+    const auto &segments = layout_->segments();
+    for (unsigned int c = 0; !history.empty() && c < segments.size(); ++c)
+      {
+        const auto names =
+          materials[segments[c].rod]->segment_internal_variable_names();
+        for (unsigned int m = 0; m < names.size(); ++m)
+          cell_history.try_emplace(field_name(names[m]), n_cells)
+            .first->second[segments[c].cell] =
+            history.block(Owner::segment, c)[m];
+      }
+    append_scalar_fields(vertex_history, output.vertex_fields);
+    append_scalar_fields(cell_history, output.segment_fields);
+    return output;
+  }
+} // namespace rodnet
