@@ -9,6 +9,29 @@ namespace rodnet
       : fe(dealii::FE_Q<1, 3>(1), 3, dealii::FE_DGQ<1, 3>(0), 1)
       , handler(network.triangulation())
   {
+    number_field_dofs(network);
+    share_junction_vertices(network);
+
+    // Handles inside a rod replace the hinge at their vertex.
+    const auto                    &rods = network.rods();
+    std::vector<std::vector<bool>> handle_inside(rods.size());
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      handle_inside[r].assign(rods[r].vertices.size(), false);
+    for (const Junction &junction : network.junctions())
+      if (junction.interior)
+        handle_inside[junction.interior->rod][junction.interior->index] = true;
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      {
+        add_segment_stencils(r, rods[r]);
+        add_hinge_stencils(r, rods[r], handle_inside[r]);
+      }
+    add_junction_stencils(network);
+  }
+
+
+  void
+  DofLayout::number_field_dofs(const RodNetwork &network)
+  {
     handler.distribute_dofs(fe);
 
     constexpr auto invalid = dealii::numbers::invalid_dof_index;
@@ -30,7 +53,12 @@ namespace rodnet
               twist_dofs[cell->active_cell_index()] = cell_dofs[i];
           }
       }
+  }
 
+
+  void
+  DofLayout::share_junction_vertices(const RodNetwork &network)
+  {
     // Rod ends at a junction use the position DoFs of its vertex.
     for (const Junction &junction : network.junctions())
       for (const RodEnd &end : junction.ends)
@@ -43,66 +71,74 @@ namespace rodnet
                                 vertex_dofs[junction.vertex][c]);
           vertex_dofs[v] = vertex_dofs[junction.vertex];
         }
-    rotation_dofs.assign(network.junctions().size(), invalid);
+    rotation_dofs.assign(network.junctions().size(),
+                         dealii::numbers::invalid_dof_index);
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (network.junctions()[j].has_rotation())
         rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
+  }
 
-    // Handles inside a rod replace the hinge at their vertex.
-    const auto                    &rods = network.rods();
-    std::vector<std::vector<bool>> handle_inside(rods.size());
-    for (unsigned int r = 0; r < rods.size(); ++r)
-      handle_inside[r].assign(rods[r].vertices.size(), false);
-    for (const Junction &junction : network.junctions())
-      if (junction.interior)
-        handle_inside[junction.interior->rod][junction.interior->index] = true;
 
-    for (unsigned int r = 0; r < rods.size(); ++r)
+  void
+  DofLayout::add_segment_stencils(const unsigned int r, const Rod &rod)
+  {
+    const unsigned int n = rod.vertices.size();
+    for (unsigned int j = 0; j < rod.segments.size(); ++j)
       {
-        const Rod         &rod = rods[r];
-        const unsigned int n   = rod.vertices.size();
-        for (unsigned int j = 0; j < rod.segments.size(); ++j)
+        SegmentStencil s;
+        s.rod      = r;
+        s.cell     = rod.segments[j];
+        s.vertices = {{rod.vertices[j], rod.vertices[(j + 1) % n]}};
+        for (unsigned int c = 0; c < 3; ++c)
           {
-            SegmentStencil s;
-            s.rod      = r;
-            s.cell     = rod.segments[j];
-            s.vertices = {{rod.vertices[j], rod.vertices[(j + 1) % n]}};
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                s.dofs[c]     = vertex_dofs[rod.vertices[j]][c];
-                s.dofs[3 + c] = vertex_dofs[rod.vertices[(j + 1) % n]][c];
-              }
-            segment_list.push_back(s);
+            s.dofs[c]     = vertex_dofs[rod.vertices[j]][c];
+            s.dofs[3 + c] = vertex_dofs[rod.vertices[(j + 1) % n]][c];
           }
-        // Hinge i sits at vertex i between segments i-1 and i; a closed rod
-        // also has one at its first vertex.
-        const unsigned int first = rod.closed ? 0 : 1;
-        const unsigned int last  = rod.closed ? n : n - 1;
-        for (unsigned int i = first; i < last; ++i)
-          {
-            if (handle_inside[r][i % n])
-              continue;
-            const unsigned int prev_segment =
-              (i + rod.segments.size() - 1) % rod.segments.size();
-            HingeStencil h;
-            h.rod          = r;
-            h.vertices     = {{rod.vertices[(i + n - 1) % n],
-                               rod.vertices[i % n],
-                               rod.vertices[(i + 1) % n]}};
-            h.segment_prev = rod.segments[prev_segment];
-            h.segment_next = rod.segments[i % rod.segments.size()];
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                h.dofs[c]     = vertex_dofs[h.vertices[0]][c];
-                h.dofs[4 + c] = vertex_dofs[h.vertices[1]][c];
-                h.dofs[8 + c] = vertex_dofs[h.vertices[2]][c];
-              }
-            h.dofs[3] = twist_dofs[h.segment_prev];
-            h.dofs[7] = twist_dofs[h.segment_next];
-            hinge_list.push_back(h);
-          }
+        segment_list.push_back(s);
       }
+  }
 
+
+  void
+  DofLayout::add_hinge_stencils(const unsigned int       r,
+                                const Rod               &rod,
+                                const std::vector<bool> &handle_inside)
+  {
+    // Hinge i sits at vertex i between segments i-1 and i; a closed rod
+    // also has one at its first vertex.
+    const unsigned int n     = rod.vertices.size();
+    const unsigned int first = rod.closed ? 0 : 1;
+    const unsigned int last  = rod.closed ? n : n - 1;
+    for (unsigned int i = first; i < last; ++i)
+      {
+        if (handle_inside[i % n])
+          continue;
+        const unsigned int prev_segment =
+          (i + rod.segments.size() - 1) % rod.segments.size();
+        HingeStencil h;
+        h.rod          = r;
+        h.vertices     = {{rod.vertices[(i + n - 1) % n],
+                           rod.vertices[i % n],
+                           rod.vertices[(i + 1) % n]}};
+        h.segment_prev = rod.segments[prev_segment];
+        h.segment_next = rod.segments[i % rod.segments.size()];
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            h.dofs[c]     = vertex_dofs[h.vertices[0]][c];
+            h.dofs[4 + c] = vertex_dofs[h.vertices[1]][c];
+            h.dofs[8 + c] = vertex_dofs[h.vertices[2]][c];
+          }
+        h.dofs[3] = twist_dofs[h.segment_prev];
+        h.dofs[7] = twist_dofs[h.segment_next];
+        hinge_list.push_back(h);
+      }
+  }
+
+
+  void
+  DofLayout::add_junction_stencils(const RodNetwork &network)
+  {
+    const auto &rods = network.rods();
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       {
         if (!has_rotation_dofs(j))
@@ -132,6 +168,7 @@ namespace rodnet
           }
       }
   }
+
 
   void
   DofLayout::add_junction_stencil(const unsigned int junction,

@@ -152,6 +152,31 @@ namespace rodnet
     }
 
   private:
+    /// Distributes the DoFHandler's DoFs and reads each vertex's position
+    /// DoFs and each segment's twist DoF from it.
+    void
+    number_field_dofs(const RodNetwork &network);
+
+    /// Gives the rod ends at each junction the position DoFs of its vertex,
+    /// and each junction with a rotation its quaternion DoFs.
+    void
+    share_junction_vertices(const RodNetwork &network);
+
+    /// The segment stencils of rod @p r.
+    void
+    add_segment_stencils(unsigned int r, const Rod &rod);
+
+    /// The hinge stencils of rod @p r, but at the vertices where
+    /// @p handle_inside holds a rotation handle.
+    void
+    add_hinge_stencils(unsigned int             r,
+                       const Rod               &rod,
+                       const std::vector<bool> &handle_inside);
+
+    /// The junction elements of every junction with a rotation.
+    void
+    add_junction_stencils(const RodNetwork &network);
+
     /// Adds the junction element of junction @p junction on segment
     /// @p segment (index along rod @p rod_index, which is @p rod), with
     /// the ghost before (@p ghost_first) or after it.
