@@ -434,4 +434,34 @@ namespace
                          "end\n",
                        "clamps at a node");
   }
+  // The elastic foundation's entries are checked where they are read, and
+  // dynamic relaxation, whose element has no element families, refuses it.
+  TEST(BadScene, ElasticFoundationDirectionIsNotAVector)
+  {
+    expect_input_error("foundation_direction",
+                       material +
+                         "subsection Elastic foundation\n  set Stiffness = 1\n"
+                         "  set Direction = up\nend\n",
+                         "Elastic foundation/Direction");
+  }
+
+  TEST(BadScene, ElasticFoundationOnAMissingRod)
+  {
+    expect_input_error("foundation_rods",
+                       material +
+                         "subsection Elastic foundation\n  set Stiffness = 1\n"
+                         "  set Rods = 3\nend\n",
+                       "rod 3 does not exist");
+  }
+
+  TEST(BadScene, DynamicRelaxationHasNoElasticFoundation)
+  {
+    expect_input_error("dr_foundation",
+                       material + dynamic_relaxation +
+                         "subsection Supports\n  set Clamped ends = start\n"
+                         "end\n"
+                         "subsection Elastic foundation\n  set Stiffness = 1\n"
+                         "end\n",
+                       "has no element families");
+  }
 } // namespace
