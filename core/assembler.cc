@@ -11,6 +11,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -31,11 +32,12 @@ namespace rodnet
     class DirectScatter
     {
     public:
-      /// Whether the fast path applies to @p matrix (or to vectors alone).
+      /// Whether the fast path applies to @p matrix (or to vectors alone) of
+      /// a model on @p communicator.
       static bool
-      applies(const MatrixType *matrix)
+      applies(const MatrixType *matrix, const MPI_Comm communicator)
       {
-        if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 1)
+        if (dealii::Utilities::MPI::n_mpi_processes(communicator) != 1)
           return false;
         if (matrix == nullptr)
           return true;
@@ -202,6 +204,80 @@ namespace rodnet
 
 
   double
+  RodModel::assemble_families(
+    const VectorType                                     &u,
+    const double                                          load_factor,
+    const Derivatives                                     derivatives,
+    const std::function<void(const LocalContribution &)> &copier) const
+  {
+    double                                               energy = 0;
+    const std::function<void(const LocalContribution &)> add =
+      [&](const LocalContribution &copy) {
+        energy += copy.energy;
+        if (!copy.dofs.empty())
+          copier(copy);
+      };
+    const StencilState state{
+      u, *configuration_, history, step_length, load_factor};
+    for (const auto &family : families)
+      assemble_family(*family, state, derivatives, add);
+    return energy;
+  }
+
+
+  void
+  RodModel::add_dead_loads(const VectorType  &u,
+                           const double       load_factor,
+                           const VectorType  *extra_force,
+                           const SystemBlock *block,
+                           double            &energy,
+                           VectorType        *residual) const
+  {
+    // Potential -lambda f.x, with x = X + u; the constant f.X does not
+    // change any derivative and is dropped.
+    energy -= load_factor * (f_ext * u);
+    if (extra_force != nullptr)
+      energy -= *extra_force * u;
+    if (residual == nullptr)
+      return;
+    residual->compress(dealii::VectorOperation::add);
+    if (block == nullptr)
+      {
+        residual->add(-load_factor, f_ext);
+        if (extra_force != nullptr)
+          residual->add(-1.0, *extra_force);
+        return;
+      }
+    std::vector<global_dof_index> rows;
+    std::vector<double>           values;
+    for (const global_dof_index i : owned_dofs)
+      {
+        const double f = load_factor * f_ext[i] +
+                         (extra_force != nullptr ? (*extra_force)[i] : 0.0);
+        if (f != 0)
+          {
+            rows.push_back(block->index(i));
+            values.push_back(-f);
+          }
+      }
+    residual->add(rows, values);
+    residual->compress(dealii::VectorOperation::add);
+  }
+
+
+  namespace
+  {
+    Derivatives
+    derivatives_for(const VectorType *residual, const MatrixType *tangent)
+    {
+      return tangent != nullptr  ? Derivatives::hessian :
+             residual != nullptr ? Derivatives::gradient :
+                                   Derivatives::energy;
+    }
+  } // namespace
+
+
+  double
   RodModel::assemble(const VectorType &u,
                      const double      load_factor,
                      VectorType       *residual,
@@ -209,81 +285,118 @@ namespace rodnet
                      const bool        apply_constraints,
                      const VectorType *extra_force) const
   {
-    const dealii::AffineConstraints<double> &constraints =
-      apply_constraints ? homogeneous_constraints : no_constraints;
     if (residual != nullptr)
       *residual = 0;
     if (tangent != nullptr)
       *tangent = 0;
-    const Derivatives derivatives =
-      tangent != nullptr  ? Derivatives::hessian :
-      residual != nullptr ? Derivatives::gradient :
-                            Derivatives::energy;
+    if (!DirectScatter::applies(tangent, mpi_communicator))
+      return assemble_mapped(u,
+                             load_factor,
+                             SystemBlock::at_offset(layout_->n_dofs(), 0),
+                             residual,
+                             tangent,
+                             apply_constraints,
+                             extra_force);
 
-    double              energy = 0;
-    const bool          direct = DirectScatter::applies(tangent);
     const DirectScatter scatter(tangent,
                                 residual,
                                 apply_constraints ? &fixed_dof_mask : nullptr);
-    const std::function<void(const LocalContribution &)> copier =
-      [&](const LocalContribution &copy) {
-        energy += copy.energy;
-        if (copy.dofs.empty())
-          return;
-        if (direct)
-          scatter.add(copy);
-        else if (tangent != nullptr && residual != nullptr)
-          constraints.distribute_local_to_global(
-            copy.matrix, copy.vector, copy.dofs, *tangent, *residual);
-        else if (tangent != nullptr)
-          constraints.distribute_local_to_global(copy.matrix,
-                                                 copy.dofs,
-                                                 *tangent);
-        else
-          constraints.distribute_local_to_global(copy.vector,
-                                                 copy.dofs,
-                                                 *residual);
-      };
-
-    const StencilState state{
-      u, *configuration_, history, step_length, load_factor};
-    for (const auto &family : families)
-      assemble_family(*family, state, derivatives, copier);
-
-    // Unused DoFs of rod ends at junctions appear in no stencil; outside
-    // the direct path, give their (constrained) rows a diagonal entry.
-    if (!direct && tangent != nullptr && apply_constraints)
-      for (const auto &unused : layout_->shared_copies())
-        {
-          LocalContribution copy;
-          copy.matrix.reinit(1, 1);
-          copy.matrix(0, 0) = 1.0;
-          copy.vector.reinit(1);
-          copy.dofs = {unused.first};
-          copier(copy);
-        }
-
-    // Dead loads: potential -lambda f.x, with x = X + u; the constant
-    // f.X does not change any derivative and is dropped.
-    energy -= load_factor * (f_ext * u);
-    if (extra_force != nullptr)
-      energy -= *extra_force * u;
-    if (residual != nullptr)
-      {
-        residual->compress(dealii::VectorOperation::add);
-        residual->add(-load_factor, f_ext);
-        if (extra_force != nullptr)
-          residual->add(-1.0, *extra_force);
-        constraints.set_zero(*residual);
-      }
+    double              energy = assemble_families(
+      u,
+      load_factor,
+      derivatives_for(residual, tangent),
+      [&](const LocalContribution &copy) { scatter.add(copy); });
+    add_dead_loads(u, load_factor, extra_force, nullptr, energy, residual);
+    if (residual != nullptr && apply_constraints)
+      homogeneous_constraints.set_zero(*residual);
     if (tangent != nullptr)
       {
-        if (direct)
-          scatter.finish();
+        scatter.finish();
         tangent->compress(dealii::VectorOperation::add);
       }
     return energy;
   }
+
+
+  double
+  RodModel::assemble_into(const VectorType  &u,
+                          const double       load_factor,
+                          const SystemBlock &block,
+                          VectorType        *residual,
+                          MatrixType        *tangent,
+                          const bool         apply_constraints) const
+  {
+    if (block.size() != layout_->n_dofs())
+      throw std::invalid_argument(
+        "RodModel::assemble_into: the system block places " +
+        std::to_string(block.size()) + " DoFs, the model has " +
+        std::to_string(layout_->n_dofs()));
+    return assemble_mapped(
+      u, load_factor, block, residual, tangent, apply_constraints, nullptr);
+  }
+
+
+  double
+  RodModel::assemble_mapped(const VectorType  &u,
+                            const double       load_factor,
+                            const SystemBlock &block,
+                            VectorType        *residual,
+                            MatrixType        *tangent,
+                            const bool         apply_constraints,
+                            const VectorType  *extra_force) const
+  {
+    // deal.II's way: the model's constraints renamed to the block's rows
+    // eliminate the fixed DoFs as every local contribution is added.
+    const dealii::AffineConstraints<double> constraints =
+      block.map(apply_constraints ? homogeneous_constraints : no_constraints);
+    std::vector<double>           diagonal(layout_->n_dofs(), 0.0);
+    std::vector<global_dof_index> rows;
+    double                        energy = assemble_families(
+      u,
+      load_factor,
+      derivatives_for(residual, tangent),
+      [&](const LocalContribution &copy) {
+        rows = copy.dofs;
+        block.map(rows);
+        if (tangent != nullptr)
+          for (unsigned int i = 0; i < copy.dofs.size(); ++i)
+            diagonal[copy.dofs[i]] += copy.matrix(i, i);
+        if (tangent != nullptr && residual != nullptr)
+          constraints.distribute_local_to_global(
+            copy.matrix, copy.vector, rows, *tangent, *residual);
+        else if (tangent != nullptr)
+          constraints.distribute_local_to_global(copy.matrix, rows, *tangent);
+        else
+          constraints.distribute_local_to_global(copy.vector, rows, *residual);
+      });
+
+    // Constrained DoFs that no stencil sees (junction copies, the twist of
+    // a one-segment rod) get the mean diagonal of the free DoFs, so that
+    // their Newton increment is zero at the scale of the others.
+    if (tangent != nullptr && apply_constraints)
+      {
+        double       sum    = 0;
+        unsigned int n_free = 0;
+        for (global_dof_index i = 0; i < diagonal.size(); ++i)
+          if (!fixed_dof_mask[i])
+            {
+              sum += std::abs(diagonal[i]);
+              ++n_free;
+            }
+        for (const global_dof_index i : unseen_dofs)
+          if (fixed_dof_mask[i])
+            tangent->add(block.index(i),
+                         block.index(i),
+                         n_free > 0 ? sum / n_free : 1.0);
+      }
+    add_dead_loads(u, load_factor, extra_force, &block, energy, residual);
+    if (residual != nullptr)
+      constraints.set_zero(*residual);
+    if (tangent != nullptr)
+      tangent->compress(dealii::VectorOperation::add);
+    return energy;
+  }
+
 
   double
   RodModel::elastic_energy(const VectorType &u) const

@@ -78,10 +78,11 @@ namespace rodnet
       }
 
     // The reference twist of kernels that track it is that of the
-    // undeformed configuration, which has zero displacement.
+    // undeformed configuration, which has zero displacement (a scratch
+    // vector of this process alone).
     dealii::TrilinosWrappers::MPI::Vector zero(dealii::complete_index_set(
                                                  layout->n_dofs()),
-                                               MPI_COMM_WORLD);
+                                               MPI_COMM_SELF);
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
       hinge_refs[i].twist =
         kernels[i]->strains(hinge_dofs(zero, layout->hinges()[i]),

@@ -59,7 +59,15 @@ namespace rodnet
   void
   DofLayout::share_junction_vertices(const RodNetwork &network)
   {
-    // Rod ends at a junction use the position DoFs of its vertex.
+    rotation_dofs.assign(network.junctions().size(),
+                         dealii::numbers::invalid_dof_index);
+    for (unsigned int j = 0; j < network.junctions().size(); ++j)
+      if (network.junctions()[j].has_rotation())
+        rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
+
+    // x_end = x_junction for every other rod end at a junction; the
+    // stencils then take the junction vertex's DoFs for the end.
+    junction_identities.reinit(dealii::complete_index_set(n_dofs()));
     for (const Junction &junction : network.junctions())
       for (const RodEnd &end : junction.ends)
         {
@@ -67,15 +75,15 @@ namespace rodnet
           if (v == junction.vertex)
             continue;
           for (unsigned int c = 0; c < 3; ++c)
-            copies.emplace_back(vertex_dofs[v][c],
-                                vertex_dofs[junction.vertex][c]);
+            {
+              junction_identities.add_line(vertex_dofs[v][c]);
+              junction_identities.add_entry(vertex_dofs[v][c],
+                                            vertex_dofs[junction.vertex][c],
+                                            1.0);
+            }
           vertex_dofs[v] = vertex_dofs[junction.vertex];
         }
-    rotation_dofs.assign(network.junctions().size(),
-                         dealii::numbers::invalid_dof_index);
-    for (unsigned int j = 0; j < network.junctions().size(); ++j)
-      if (network.junctions()[j].has_rotation())
-        rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
+    junction_identities.close();
   }
 
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
 
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
@@ -61,11 +62,17 @@ namespace rodnet
    * stencils that the assembler loops over. Index maps come from here only;
    * kernels see local vectors in their documented order.
    *
-   * Rod ends tied at a junction keep their own triangulation vertices
-   * (deal.II meshes in 1D allow two cells per vertex only) but share the
-   * position DoFs of the junction's vertex: vertex_dof() returns those for
-   * every end, and the DoFs the DoFHandler gave the other ends are unused
-   * (shared_copies() lists them with the DoF whose value they mirror).
+   * Rod ends tied at a junction keep their own triangulation vertices:
+   * deal.II's meshes of dimension 1 do not allow three or more cells at a
+   * vertex, so a junction cannot be one shared vertex. Instead the position
+   * DoFs of every other end are identity-constrained to those of the
+   * junction's vertex (junction_constraints(): x_end = x_junction, deal.II's
+   * AffineConstraints). The stencils are built condensed: vertex_dof()
+   * returns the junction vertex's DoFs for every end, exactly what
+   * AffineConstraints::distribute_local_to_global would make of the ends'
+   * own DoFs, without its cost per entry in the assembly. The constrained
+   * DoFs take their values from junction_constraints().distribute(), as in
+   * any deal.II program; loops over cells (FEValues, DataOut) see them.
    * A rotation handle inside a rod has a junction element on each of the
    * two segments that meet at its vertex and no hinge there.
    *
@@ -112,11 +119,16 @@ namespace rodnet
       return rotation_dofs[j] != dealii::numbers::invalid_dof_index;
     }
 
-    /// (unused DoF, DoF it mirrors) for rod ends sharing a junction vertex.
-    const std::vector<std::pair<global_dof_index, global_dof_index>> &
-    shared_copies() const
+    /**
+     * The identity constraints of the rod ends at junctions: each position
+     * DoF of an end's own vertex equals the DoF of the junction's vertex
+     * (closed, over all DoFs). distribute() fills a vector's constrained
+     * DoFs; the kernels never read them.
+     */
+    const dealii::AffineConstraints<double> &
+    junction_constraints() const
     {
-      return copies;
+      return junction_identities;
     }
 
     const std::vector<JunctionStencil> &
@@ -157,8 +169,9 @@ namespace rodnet
     void
     number_field_dofs(const RodNetwork &network);
 
-    /// Gives the rod ends at each junction the position DoFs of its vertex,
-    /// and each junction with a rotation its quaternion DoFs.
+    /// Constrains the position DoFs of the rod ends at each junction to
+    /// those of its vertex, which the stencils use, and gives each junction
+    /// with a rotation its quaternion DoFs.
     void
     share_junction_vertices(const RodNetwork &network);
 
@@ -196,8 +209,8 @@ namespace rodnet
     std::vector<JunctionStencil>                 junction_list;
     /// First quaternion DoF per junction, invalid where it has none.
     std::vector<global_dof_index>                              rotation_dofs;
-    unsigned int                                               n_rotations = 0;
-    std::vector<std::pair<global_dof_index, global_dof_index>> copies;
+    unsigned int                      n_rotations = 0;
+    dealii::AffineConstraints<double> junction_identities;
   };
 } // namespace rodnet
 

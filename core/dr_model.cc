@@ -324,13 +324,7 @@ namespace rodnet
                           const Vector3             &displacement)
   {
     require_not_finalized("DrModel::fix_components \"" + name + "\"");
-    if (vertex >= network_->n_vertices())
-      throw std::invalid_argument("support \"" + name + "\": vertex " +
-                                  std::to_string(vertex) + " does not exist");
-    Support s;
-    s.name     = name;
-    s.vertices = {vertex};
-    s.fixed    = {mask};
+    const Support s = vertex_support(name, vertex, mask);
     for (unsigned int c = 0; c < 3; ++c)
       if (mask[c])
         fixed_dofs[position_dof(vertex, c)] = displacement[c];

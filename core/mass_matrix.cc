@@ -2,6 +2,10 @@
 // Kochmann section 2.5, following Lestringant, Audoly & Kochmann 2020):
 // translational inertia of the vertex positions, consistent or lumped, and
 // the rotational inertia of each segment's twist about its tangent.
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
 #include <core/mass_matrix.h>
 #include <core/require_positive.h>
 
@@ -71,55 +75,62 @@ namespace rodnet
         "mass matrix: the model must be finalized (RodModel::finalize)");
     check_inertia(model, inertia);
 
-    const DofLayout                         &layout      = model.layout();
-    const dealii::AffineConstraints<double> &constraints = model.constraints();
-    std::vector<bool>                        fixed(layout.n_dofs(), false);
-    if (apply_constraints)
-      for (global_dof_index i = 0; i < layout.n_dofs(); ++i)
-        if (constraints.is_constrained(i))
-          {
-            // The model only fixes DoFs; zero rows and columns are then the
-            // exact condensation of M onto the free DoFs.
-            Assert(constraints.get_constraint_entries(i)->empty(),
-                   dealii::ExcMessage("mass matrix: a constraint that ties "
-                                      "DoFs together is not supported"));
-            fixed[i] = true;
-          }
+    // Gauss points integrate N_a N_b of the linear shape functions exactly
+    // (rho A l0 / 6 [[2, 1], [1, 2]]); the trapezoidal rule puts each row
+    // sum on the diagonal (rho A l0 / 2 at each end): the lumped mass.
+    const dealii::DoFHandler<1, 3> &dof_handler = model.layout().dof_handler();
+    const dealii::FiniteElement<1, 3> &fe       = dof_handler.get_fe();
+    const dealii::Quadrature<1>        quadrature =
+      kind == MassKind::consistent ?
+               dealii::Quadrature<1>(dealii::QGauss<1>(2)) :
+               dealii::Quadrature<1>(dealii::QTrapezoid<1>());
+    dealii::FEValues<1, 3> fe_values(fe,
+                                     quadrature,
+                                     dealii::update_values |
+                                       dealii::update_JxW_values);
 
+    // The junction copies condense onto their junction vertices (every
+    // segment there adds its mass once); with apply_constraints the fixed
+    // DoFs drop out as well.
+    const dealii::AffineConstraints<double> &constraints =
+      apply_constraints ? model.constraints() :
+                          model.layout().junction_constraints();
     model.initialize_matrix(mass);
-    const auto add = [&](const global_dof_index i,
-                         const global_dof_index j,
-                         const double           value) {
-      if (!fixed[i] && !fixed[j])
-        mass.add(i, j, value);
-    };
-
-    for (const SegmentStencil &s : layout.segments())
+    dealii::FullMatrix<double> cell_mass(fe.n_dofs_per_cell(),
+                                         fe.n_dofs_per_cell());
+    std::vector<global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        const double l0 = model.configuration().rest_length(s.cell);
-        const double m  = inertia[s.rod].mass_per_length * l0;
-        // m int_0^1 N_a N_b with N_0 = 1 - xi, N_1 = xi; lumping moves each
-        // row sum onto the diagonal.
-        const double diagonal = kind == MassKind::consistent ? m / 3 : m / 2;
-        const double coupling = kind == MassKind::consistent ? m / 6 : 0;
-        for (unsigned int c = 0; c < 3; ++c)
+        fe_values.reinit(cell);
+        const RodInertia &rod = inertia[cell->material_id()];
+        cell_mass             = 0;
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
-            const global_dof_index start = s.dofs[c], end = s.dofs[3 + c];
-            add(start, start, diagonal);
-            add(end, end, diagonal);
-            if (kind == MassKind::consistent)
-              {
-                add(start, end, coupling);
-                add(end, start, coupling);
-              }
+            // Positions carry rho A; the twist carries rho (I1 + I2), the
+            // rotation of the cross-sections about the tangent at the
+            // twist rate (doc/theory.md).
+            const unsigned int component = fe.system_to_component_index(i).first;
+            const double       density =
+              component < 3 ? rod.mass_per_length :
+                              rod.rotational_inertia_per_length;
+            for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+              if (fe.system_to_component_index(j).first == component)
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  cell_mass(i, j) += density * fe_values.shape_value(i, q) *
+                                     fe_values.shape_value(j, q) *
+                                     fe_values.JxW(q);
           }
-        // Rotation of the cross-sections about the tangent at the twist
-        // rate: the twist-angle part of the material frame's angular
-        // velocity (doc/theory.md).
-        const global_dof_index twist = layout.twist_dof(s.cell);
-        add(twist, twist, inertia[s.rod].rotational_inertia_per_length * l0);
+        cell->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(cell_mass, dofs, mass);
       }
     mass.compress(dealii::VectorOperation::add);
+
+    // deal.II keeps constrained rows invertible with a diagonal entry; here
+    // they carry no inertia (M is the condensed mass of the free DoFs).
+    std::vector<global_dof_index> constrained;
+    for (const auto &line : constraints.get_lines())
+      constrained.push_back(line.index);
+    mass.clear_rows(constrained, 0.0);
   }
 
   double

@@ -48,11 +48,13 @@ namespace rodnet
    *
    * Per segment of undeformed length l0, the positions of its two vertices
    * carry rho A l0 as chosen by @p kind, and its twist DoF carries
-   * rho (I1 + I2) l0. Vertices shared by rod ends at a junction collect
-   * the mass of every adjacent segment once; the unused position DoFs of
-   * the other ends and the quaternion DoFs of junctions carry no inertia
-   * (Lestringant & Kochmann section 2.5: none on the ghost segments), so
-   * their rows are zero.
+   * rho (I1 + I2) l0: deal.II's FEValues integrate it cell by cell on the
+   * model's DoFHandler (each cell's material_id names its rod), and the
+   * junction constraints condense the rod ends at a junction onto its
+   * vertex, which collects the mass of every adjacent segment once. The
+   * constrained position DoFs of those ends and the quaternion DoFs of
+   * junctions carry no inertia (Lestringant & Kochmann section 2.5: none on
+   * the ghost segments), so their rows are zero.
    *
    * With @p apply_constraints, the rows and columns of the DoFs that the
    * model's constraints() fix are zero as well, their diagonal included:

@@ -207,6 +207,25 @@ namespace rodnet
     /// @}
 
   protected:
+    /// The support called @p name of the masked components of @p vertex;
+    /// throws std::invalid_argument naming both if the network has no such
+    /// vertex.
+    Support
+    vertex_support(const std::string         &name,
+                   const unsigned int         vertex,
+                   const std::array<bool, 3> &mask) const
+    {
+      if (vertex >= network().n_vertices())
+        throw std::invalid_argument("support \"" + name + "\": vertex " +
+                                    std::to_string(vertex) +
+                                    " does not exist");
+      Support s;
+      s.name     = name;
+      s.vertices = {vertex};
+      s.fixed    = {mask};
+      return s;
+    }
+
     /// Throws std::logic_error if finalize() has run: @p what (the call,
     /// naming the support or load) would never be applied.
     void

@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <core/rod_model.h>
@@ -13,8 +14,10 @@ namespace rodnet
   RodModel::RodModel(
     std::unique_ptr<RodNetwork>                     network,
     std::vector<std::shared_ptr<const RodMaterial>> rod_materials,
-    const GhostSpin                                 ghost_spin)
-      : network_(std::move(network))
+    const GhostSpin                                 ghost_spin,
+    const MPI_Comm                                  communicator)
+      : mpi_communicator(communicator)
+      , network_(std::move(network))
       , materials(std::move(rod_materials))
   {
     if (network_->triangulation().n_active_cells() == 0)
@@ -83,6 +86,9 @@ namespace rodnet
         for (unsigned int c = 0; c < 4; ++c)
           u[layout_->rotation_dof(j, c)] = 0.0;
     u.compress(dealii::VectorOperation::insert);
+    // A converged state carries the junction vertices' positions at the
+    // other rod ends too.
+    layout_->junction_constraints().distribute(u);
   }
 
   void
@@ -105,8 +111,7 @@ namespace rodnet
   VectorType
   RodModel::create_vector() const
   {
-    return VectorType(dealii::complete_index_set(layout_->n_dofs()),
-                      MPI_COMM_WORLD);
+    return VectorType(owned_dofs, mpi_communicator);
   }
 
   void
@@ -125,36 +130,67 @@ namespace rodnet
 
 
   void
+  RodModel::add_sparsity_pattern(dealii::DynamicSparsityPattern &pattern,
+                                 const SystemBlock              &block) const
+  {
+    std::vector<global_dof_index> dofs;
+    for (const auto &family : families)
+      for (unsigned int s = 0; s < family->n_stencils(); ++s)
+        {
+          family->get_dofs(s, dofs);
+          block.map(dofs);
+          for (const global_dof_index i : dofs)
+            for (const global_dof_index j : dofs)
+              pattern.add(i, j);
+        }
+    // DoFs that no stencil sees (the twist of a one-segment rod, the
+    // junction copies) still need their diagonal entry.
+    for (global_dof_index i = 0; i < block.size(); ++i)
+      pattern.add(block.index(i), block.index(i));
+  }
+
+
+  void
   RodModel::make_sparsity_pattern()
   {
-    dealii::DynamicSparsityPattern dsp(layout_->n_dofs());
-    std::vector<global_dof_index>  dofs;
+    dealii::DynamicSparsityPattern pattern(layout_->n_dofs());
+    add_sparsity_pattern(pattern,
+                         SystemBlock::at_offset(layout_->n_dofs(), 0));
+    sparsity.reinit(owned_dofs, mpi_communicator);
+    sparsity.copy_from(pattern);
+    sparsity.compress();
+
+    std::vector<bool>             seen(layout_->n_dofs(), false);
+    std::vector<global_dof_index> dofs;
     for (const auto &family : families)
       for (unsigned int s = 0; s < family->n_stencils(); ++s)
         {
           family->get_dofs(s, dofs);
           for (const global_dof_index i : dofs)
-            for (const global_dof_index j : dofs)
-              dsp.add(i, j);
+            seen[i] = true;
         }
-    // DoFs that no stencil sees (the twist of a one-segment rod, unused
-    // copies of shared vertices) still need their diagonal entry.
-    for (global_dof_index i = 0; i < layout_->n_dofs(); ++i)
-      dsp.add(i, i);
-    sparsity.reinit(dealii::complete_index_set(layout_->n_dofs()),
-                    MPI_COMM_WORLD);
-    sparsity.copy_from(dsp);
-    sparsity.compress();
+    unseen_dofs.clear();
+    for (global_dof_index i = 0; i < seen.size(); ++i)
+      if (!seen[i])
+        unseen_dofs.push_back(i);
   }
 
 
   void
   RodModel::finalize()
   {
+    finalize(dealii::complete_index_set(layout_->n_dofs()));
+  }
+
+
+  void
+  RodModel::finalize(const dealii::IndexSet &locally_owned_dofs)
+  {
     if (finalized)
       throw std::logic_error("RodModel::finalize called twice");
-    const dealii::IndexSet all = dealii::complete_index_set(layout_->n_dofs());
-    length                     = rodnet::length_scale(*network_);
+    check_ownership(locally_owned_dofs);
+    owned_dofs = locally_owned_dofs;
+    length     = rodnet::length_scale(*network_);
     resolve_supports();
 
     // A segment twist that no hinge sees (a rod of one segment) has no
@@ -164,23 +200,10 @@ namespace rodnet
       twist_seen[h.segment_prev] = twist_seen[h.segment_next] = true;
     for (const JunctionStencil &e : layout_->junctions())
       twist_seen[e.segment] = true;
-    // Position DoFs of rod ends that share a junction vertex are unused.
-    for (const auto &copy : layout_->shared_copies())
-      fixed_dofs.emplace(copy.first, 0.0);
     for (unsigned int cell = 0; cell < twist_seen.size(); ++cell)
       if (!twist_seen[cell])
         fixed_dofs.emplace(layout_->twist_dof(cell), 0.0);
-
-    homogeneous_constraints.reinit(all);
-    fixed_dof_mask.assign(layout_->n_dofs(), false);
-    for (const auto &[dof, value] : fixed_dofs)
-      {
-        homogeneous_constraints.add_line(dof);
-        fixed_dof_mask[dof] = true;
-      }
-    homogeneous_constraints.close();
-    no_constraints.reinit(all);
-    no_constraints.close();
+    make_constraints();
 
     std::vector<AxisMoment> axis_moments;
     for (const AxisLoad &m : moments)
@@ -198,6 +221,53 @@ namespace rodnet
         f_ext[layout_->vertex_dof(v, c)] += forces[v][c];
     f_ext.compress(dealii::VectorOperation::add);
     finalized = true;
+  }
+
+
+  void
+  RodModel::check_ownership(const dealii::IndexSet &locally_owned_dofs) const
+  {
+    const global_dof_index n_dofs = layout_->n_dofs();
+    if (locally_owned_dofs.size() != n_dofs)
+      throw std::invalid_argument(
+        "RodModel::finalize: the locally owned DoFs are a subset of " +
+        std::to_string(locally_owned_dofs.size()) + " indices, the model has " +
+        std::to_string(n_dofs) + " DoFs");
+    if (dealii::Utilities::MPI::n_mpi_processes(mpi_communicator) != 1)
+      throw std::invalid_argument(
+        "RodModel: the communicator has " +
+        std::to_string(
+          dealii::Utilities::MPI::n_mpi_processes(mpi_communicator)) +
+        " processes, but distributed assembly of rod networks is not there "
+        "yet; give the model a communicator of one process (MPI_COMM_SELF) "
+        "or run on one process");
+    if (locally_owned_dofs.n_elements() != n_dofs)
+      throw std::invalid_argument(
+        "RodModel::finalize: the locally owned DoFs must be all " +
+        std::to_string(n_dofs) + " DoFs on a communicator of one process, "
+        "not " + std::to_string(locally_owned_dofs.n_elements()));
+  }
+
+
+  void
+  RodModel::make_constraints()
+  {
+    // The supports' fixed DoFs, homogeneous (Newton increments are zero
+    // there), and the identity constraints of the junction copies.
+    homogeneous_constraints.reinit(owned_dofs);
+    for (const auto &[dof, value] : fixed_dofs)
+      homogeneous_constraints.add_line(dof);
+    for (const auto &line : layout_->junction_constraints().get_lines())
+      {
+        homogeneous_constraints.add_line(line.index);
+        homogeneous_constraints.add_entries(line.index, line.entries);
+      }
+    homogeneous_constraints.close();
+    fixed_dof_mask.assign(layout_->n_dofs(), false);
+    for (const auto &line : homogeneous_constraints.get_lines())
+      fixed_dof_mask[line.index] = true;
+    no_constraints.reinit(owned_dofs);
+    no_constraints.close();
   }
 
 } // namespace rodnet

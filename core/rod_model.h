@@ -1,7 +1,10 @@
 #ifndef RODNET_CORE_ROD_MODEL_H
 #define RODNET_CORE_ROD_MODEL_H
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -14,6 +17,7 @@
 #include <core/model_state.h>
 #include <core/model.h>
 #include <core/rod_network.h>
+#include <core/system_block.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
 
@@ -66,11 +70,13 @@ namespace rodnet
     /**
      * @p materials holds one material per rod of @p network (shared
      * pointers: rods may share one). Hinge kernels are created from the
-     * rods' kernel names.
+     * rods' kernel names. The model's vectors and matrices live on
+     * @p communicator (finalize() says which DoFs this process owns).
      */
     RodModel(std::unique_ptr<RodNetwork>                     network,
              std::vector<std::shared_ptr<const RodMaterial>> materials,
-             GhostSpin ghost_spin = GhostSpin::exact);
+             GhostSpin      ghost_spin   = GhostSpin::exact,
+             const MPI_Comm communicator = MPI_COMM_WORLD);
 
     /**
      * @name Supports (before finalize())
@@ -191,9 +197,20 @@ namespace rodnet
       return families;
     }
 
-    /// Builds constraints, sparsity pattern, matrices and vectors.
+    /// Builds constraints, sparsity pattern, matrices and vectors; this
+    /// process owns every DoF.
     void
     finalize() override;
+
+    /**
+     * As finalize(), with the DoFs this process owns given by the caller
+     * (a subset of 0 .. layout().n_dofs() - 1; over the processes of the
+     * communicator, a partition of them). Distributed assembly is not
+     * there yet: on a communicator of more than one process this throws
+     * std::invalid_argument, as it does for a set that is not a partition.
+     */
+    void
+    finalize(const dealii::IndexSet &locally_owned_dofs);
 
     /**
      * Energy at DoF vector @p u and load factor @p load_factor; adds the
@@ -212,6 +229,40 @@ namespace rodnet
              MatrixType       *tangent,
              bool              apply_constraints = true,
              const VectorType *extra_force       = nullptr) const;
+
+    /**
+     * As assemble(), into the rows and columns @p block of a caller's
+     * system (a block of a coupled problem): adds the gradient into
+     * @p residual and the Hessian into @p tangent where they are not null,
+     * without zeroing them first (the caller's own terms stay), and returns
+     * the energy. @p tangent must have the entries of
+     * add_sparsity_pattern() for @p block. With @p apply_constraints the
+     * rows of the DoFs that the model fixes (and the junction copies) get
+     * a diagonal entry and no other, and their residual is zero. Throws
+     * std::invalid_argument if @p block does not place every DoF.
+     */
+    double
+    assemble_into(const VectorType  &u,
+                  double             load_factor,
+                  const SystemBlock &block,
+                  VectorType        *residual,
+                  MatrixType        *tangent,
+                  bool               apply_constraints = true) const;
+
+    /// Adds every pair of DoFs that a stencil couples, and the diagonal,
+    /// at the rows and columns @p block into @p pattern.
+    void
+    add_sparsity_pattern(dealii::DynamicSparsityPattern &pattern,
+                         const SystemBlock              &block) const;
+
+    /**
+     * The values of @p u on the DoFHandler (positions and twists, without
+     * the quaternion block), with the junction constraints distributed: a
+     * finite element vector on layout().dof_handler() for deal.II's
+     * FEValues and DataOut.
+     */
+    dealii::Vector<double>
+    field_values(const VectorType &u) const;
 
     /// Elastic energy alone (no load potential) at @p u.
     double
@@ -361,6 +412,20 @@ namespace rodnet
     void
     initialize_matrix(MatrixType &matrix) const;
 
+    /// The communicator of the model's vectors and matrices.
+    MPI_Comm
+    communicator() const
+    {
+      return mpi_communicator;
+    }
+
+    /// The DoFs this process owns (finalize()).
+    const dealii::IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned_dofs;
+    }
+
     const RodNetwork &
     network() const override
     {
@@ -465,6 +530,39 @@ namespace rodnet
     Vector3
     support_force(const Support &s, unsigned int k, const VectorType &r) const;
 
+    /// The energy of every family at @p u, with each stencil's derivatives
+    /// handed to @p copier (serially).
+    double
+    assemble_families(
+      const VectorType                                     &u,
+      double                                                load_factor,
+      Derivatives                                           derivatives,
+      const std::function<void(const LocalContribution &)> &copier) const;
+
+    /// Adds the dead load terms at @p load_factor (and @p extra_force, if
+    /// not null) to @p energy and, at the rows @p block (null: the model's
+    /// own numbering), to @p residual (if not null).
+    void
+    add_dead_loads(const VectorType  &u,
+                   double             load_factor,
+                   const VectorType  *extra_force,
+                   const SystemBlock *block,
+                   double            &energy,
+                   VectorType        *residual) const;
+
+    /// assemble_into() with an @p extra_force (see assemble()), through
+    /// AffineConstraints::distribute_local_to_global: the path for a
+    /// caller's system and for every layout the direct scatter does not
+    /// handle.
+    double
+    assemble_mapped(const VectorType  &u,
+                    double             load_factor,
+                    const SystemBlock &block,
+                    VectorType        *residual,
+                    MatrixType        *tangent,
+                    bool               apply_constraints,
+                    const VectorType  *extra_force) const;
+
     /// Assembles the stencils of @p family at @p state, handing each
     /// stencil's contribution to @p copier (serially); rethrows the first
     /// exception of a stencil after the loop.
@@ -475,8 +573,18 @@ namespace rodnet
       Derivatives                                           derivatives,
       const std::function<void(const LocalContribution &)> &copier) const;
 
-    /// Every pair of DoFs of a common stencil of any family, and the
-    /// diagonal.
+    /// Throws std::invalid_argument unless @p locally_owned_dofs can be the
+    /// DoFs of this process (see finalize()).
+    void
+    check_ownership(const dealii::IndexSet &locally_owned_dofs) const;
+
+    /// The homogeneous constraints of the fixed DoFs and the junction
+    /// copies, and the mask of the DoFs they constrain.
+    void
+    make_constraints();
+
+    /// The model's own sparsity pattern (add_sparsity_pattern() in its own
+    /// numbering) on the DoFs this process owns.
     void
     make_sparsity_pattern();
 
@@ -486,6 +594,8 @@ namespace rodnet
                        unsigned int v,
                        double       load_factor) const;
 
+    MPI_Comm                                        mpi_communicator;
+    dealii::IndexSet                                owned_dofs;
     std::unique_ptr<RodNetwork>                     network_;
     std::vector<std::shared_ptr<const RodMaterial>> materials;
     std::vector<std::unique_ptr<HingeKernel>>       kernels;
@@ -517,6 +627,8 @@ namespace rodnet
     InternalVariables                         history;
     double                                    step_length = 0;
     dealii::TrilinosWrappers::SparsityPattern sparsity;
+    /// DoFs that no stencil of any family sees (make_sparsity_pattern()).
+    std::vector<global_dof_index> unseen_dofs;
   };
 } // namespace rodnet
 

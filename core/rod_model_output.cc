@@ -1,5 +1,6 @@
-// The fields of a RodModel state for output (VtuOutput): displacement,
-// twist, strains, directors, curvatures and internal variables.
+// The fields of a RodModel state for output (VtuOutput): displacement and
+// twist on the model's DoFHandler, strains, directors, curvatures and
+// internal variables.
 #include <core/rod_model.h>
 #include <elements/stretch_kernel.h>
 
@@ -31,6 +32,18 @@ namespace rodnet
     }
   } // namespace
 
+  dealii::Vector<double>
+  RodModel::field_values(const VectorType &u) const
+  {
+    const global_dof_index n = layout_->n_field_dofs();
+    dealii::Vector<double> values(n);
+    for (global_dof_index i = 0; i < n; ++i)
+      values[i] = u[i];
+    layout_->junction_constraints().distribute(values);
+    return values;
+  }
+
+
   OutputFields
   RodModel::output_fields(const VectorType &u) const
   {
@@ -38,20 +51,25 @@ namespace rodnet
     const unsigned int   n_vertices    = network_->n_vertices();
     const unsigned int   n_cells = network_->triangulation().n_active_cells();
 
+    // The displacement and the twist are the model's finite element field.
     OutputFields output;
-    for (unsigned int v = 0; v < n_vertices; ++v)
-      output.displacement.emplace_back(u[layout_->vertex_dof(v, 0)],
-                                       u[layout_->vertex_dof(v, 1)],
-                                       u[layout_->vertex_dof(v, 2)]);
+    using dealii::DataComponentInterpretation::component_is_part_of_vector;
+    using dealii::DataComponentInterpretation::component_is_scalar;
+    output.solution = OutputFields::FiniteElementField{
+      &layout_->dof_handler(),
+      field_values(u),
+      {"displacement", "displacement", "displacement", "twist"},
+      {component_is_part_of_vector,
+       component_is_part_of_vector,
+       component_is_part_of_vector,
+       component_is_scalar}};
 
-    OutputFields::Field twist{"twist", 1, std::vector<double>(n_cells)};
     OutputFields::Field strain{"axial_strain", 1, std::vector<double>(n_cells)};
     OutputFields::Field d1{"d1", 3, std::vector<double>(3 * n_cells)};
     OutputFields::Field d2{"d2", 3, std::vector<double>(3 * n_cells)};
     StretchStrain       stretch;
     for (const SegmentStencil &segment : layout_->segments())
       {
-        twist.values[segment.cell] = u[layout_->twist_dof(segment.cell)];
         evaluate_stretch(configuration.segment_dofs(u, segment),
                          configuration.rest_length(segment.cell),
                          stretch,
@@ -65,7 +83,7 @@ namespace rodnet
             d2.values[3 * segment.cell + c] = frame(c, 1);
           }
       }
-    output.segment_fields = {twist, strain, d1, d2};
+    output.segment_fields = {strain, d1, d2};
 
     // Integrated strains divided by the Voronoi length are the curvatures
     // and twist rate of the smooth rod (Korner et al. eq. 4.2). Vertices

@@ -69,13 +69,7 @@ namespace rodnet
                                  const Vector3             &displacement,
                                  const bool                 yields)
   {
-    if (vertex >= network_->n_vertices())
-      throw std::invalid_argument("support " + in_quotes(name) + ": vertex " +
-                                  std::to_string(vertex) + " does not exist");
-    Support s;
-    s.name     = name;
-    s.vertices = {vertex};
-    s.fixed    = {mask};
+    const Support s = vertex_support(name, vertex, mask);
     for (unsigned int c = 0; c < 3; ++c)
       if (mask[c])
         holds.emplace(layout_->vertex_dof(vertex, c),
@@ -449,6 +443,8 @@ namespace rodnet
       if (clamps[i].angle != 0)
         u[layout_->twist_dof(clamps[i].segment)] = twists[i];
     u.compress(dealii::VectorOperation::insert);
+    // The other rod ends at a junction move with its vertex.
+    layout_->junction_constraints().distribute(u);
   }
 
   Vector3

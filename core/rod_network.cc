@@ -333,15 +333,18 @@ namespace rodnet
     std::vector<dealii::CellData<1>> cells;
     for (unsigned int v = 0; v < points.size(); ++v)
       vertices[v] = dealii::Point<3>(points[v][0], points[v][1], points[v][2]);
-    for (Rod &rod : rod_list)
+    for (unsigned int r = 0; r < rod_list.size(); ++r)
       {
+        Rod               &rod        = rod_list[r];
         const unsigned int n          = rod.vertices.size();
         const unsigned int n_segments = rod.closed ? n : n - 1;
         for (unsigned int j = 0; j < n_segments; ++j)
           {
             dealii::CellData<1> cell;
             cell.vertices    = {rod.vertices[j], rod.vertices[(j + 1) % n]};
-            cell.material_id = 0;
+            // The rod is the cell's material: deal.II's loops over cells
+            // (FEValues, DataOut) find each segment's rod and material there.
+            cell.material_id = r;
             rod.segments.push_back(cells.size());
             cells.push_back(cell);
           }

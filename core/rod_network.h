@@ -222,7 +222,8 @@ namespace rodnet
       return end.at_start ? rod.vertices.front() : rod.vertices.back();
     }
 
-    /// Builds the triangulation from the rods added so far. Call once.
+    /// Builds the triangulation from the rods added so far: one cell per
+    /// segment, whose material_id is the index of its rod. Call once.
     void
     create_triangulation();
 

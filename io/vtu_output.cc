@@ -2,7 +2,10 @@
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1_eulerian.h>
+#include <deal.II/fe/mapping_q_eulerian.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
@@ -50,12 +53,6 @@ namespace rodnet
       : network(network_)
       , directory(directory_)
       , basename(basename_)
-      , vertex_vector_fe(dealii::FE_Q<1, 3>(1), 3)
-      , vertex_vector_dofs(network_.triangulation())
-      , vertex_scalar_fe(1)
-      , vertex_scalar_dofs(network_.triangulation())
-      , segment_vector_fe(dealii::FE_DGQ<1, 3>(0), 3)
-      , segment_vector_dofs(network_.triangulation())
   {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
@@ -64,41 +61,47 @@ namespace rodnet
                                "directory \"" +
                                directory + "\"" +
                                (error ? ": " + error.message() : ""));
+  }
 
-    vertex_vector_dofs.distribute_dofs(vertex_vector_fe);
-    vertex_scalar_dofs.distribute_dofs(vertex_scalar_fe);
-    segment_vector_dofs.distribute_dofs(segment_vector_fe);
 
+  VtuOutput::FieldSpace::FieldSpace(const RodNetwork  &network,
+                                    const bool         per_segment,
+                                    const unsigned int components)
+      : dofs(network.triangulation())
+  {
+    if (per_segment)
+      fe = std::make_unique<dealii::FESystem<1, 3>>(dealii::FE_DGQ<1, 3>(0),
+                                                    components);
+    else
+      fe = std::make_unique<dealii::FESystem<1, 3>>(dealii::FE_Q<1, 3>(1),
+                                                    components);
+    dofs.distribute_dofs(*fe);
     const auto &tria = network.triangulation();
-    vertex_vector_index.resize(tria.n_vertices());
-    vertex_scalar_index.resize(tria.n_vertices());
-    segment_vector_index.resize(tria.n_active_cells());
-    std::vector<dealii::types::global_dof_index> dofs;
-    for (const auto &cell : vertex_vector_dofs.active_cell_iterators())
+    index.resize(per_segment ? tria.n_active_cells() : tria.n_vertices());
+    std::vector<dealii::types::global_dof_index> cell_dofs(
+      fe->n_dofs_per_cell());
+    for (const auto &cell : dofs.active_cell_iterators())
       {
-        dofs.resize(vertex_vector_fe.n_dofs_per_cell());
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          vertex_vector_index
-            [cell->vertex_index(i / vertex_vector_fe.n_dofs_per_vertex())]
-            [vertex_vector_fe.system_to_component_index(i).first] = dofs[i];
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+          {
+            const unsigned int entity =
+              per_segment ? cell->active_cell_index() :
+                            cell->vertex_index(i / fe->n_dofs_per_vertex());
+            index[entity][fe->system_to_component_index(i).first] =
+              cell_dofs[i];
+          }
       }
-    for (const auto &cell : vertex_scalar_dofs.active_cell_iterators())
-      {
-        dofs.resize(vertex_scalar_fe.n_dofs_per_cell());
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          vertex_scalar_index[cell->vertex_index(i)] = dofs[i];
-      }
-    for (const auto &cell : segment_vector_dofs.active_cell_iterators())
-      {
-        dofs.resize(segment_vector_fe.n_dofs_per_cell());
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          segment_vector_index[cell->active_cell_index()]
-                              [segment_vector_fe.system_to_component_index(i)
-                                 .first] = dofs[i];
-      }
+  }
+
+
+  const VtuOutput::FieldSpace &
+  VtuOutput::space(const bool per_segment, const unsigned int components)
+  {
+    auto &made = spaces[{per_segment, components}];
+    if (!made)
+      made = std::make_unique<FieldSpace>(network, per_segment, components);
+    return *made;
   }
 
   std::string
@@ -115,11 +118,29 @@ namespace rodnet
   }
 
   dealii::Vector<double>
-  VtuOutput::field_vector(const OutputFields::Field &field,
-                          const bool                 per_segment) const
+  VtuOutput::displacement_vector(const std::vector<Vector3> &displacement)
   {
-    const unsigned int n =
-      per_segment ? segment_vector_index.size() : vertex_vector_index.size();
+    const unsigned int n_vertices = network.triangulation().n_vertices();
+    if (displacement.size() != n_vertices)
+      throw std::invalid_argument("VtuOutput: a displacement of " +
+                                  std::to_string(displacement.size()) +
+                                  " vertices for a network of " +
+                                  std::to_string(n_vertices));
+    const FieldSpace      &target = space(false, 3);
+    dealii::Vector<double> values(target.dofs.n_dofs());
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        values[target.index[v][c]] = displacement[v][c];
+    return values;
+  }
+
+  dealii::Vector<double>
+  VtuOutput::field_vector(const OutputFields::Field &field,
+                          const bool                 per_segment)
+  {
+    const auto        &tria = network.triangulation();
+    const unsigned int n = per_segment ? tria.n_active_cells() :
+                                         tria.n_vertices();
     if (!(field.components == 1 || field.components == 3) ||
         field.values.size() != field.components * n)
       throw std::invalid_argument(
@@ -128,16 +149,11 @@ namespace rodnet
         std::to_string(n) + (per_segment ? " segments" : " vertices"));
     if (field.components == 1 && per_segment)
       return dealii::Vector<double>(field.values.begin(), field.values.end());
-    const auto &index =
-      per_segment ? segment_vector_index : vertex_vector_index;
-    dealii::Vector<double> values(field.components == 1 ?
-                                    vertex_scalar_dofs.n_dofs() :
-                                  per_segment ? segment_vector_dofs.n_dofs() :
-                                                vertex_vector_dofs.n_dofs());
+    const FieldSpace      &target = space(per_segment, field.components);
+    dealii::Vector<double> values(target.dofs.n_dofs());
     for (unsigned int k = 0; k < n; ++k)
       for (unsigned int c = 0; c < field.components; ++c)
-        values[field.components == 1 ? vertex_scalar_index[k] : index[k][c]] =
-          field.values[field.components * k + c];
+        values[target.index[k][c]] = field.values[field.components * k + c];
     return values;
   }
 
@@ -148,24 +164,11 @@ namespace rodnet
   {
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
-    const auto        &tria       = network.triangulation();
-    const unsigned int n_vertices = vertex_vector_index.size();
-    if (fields.displacement.size() != n_vertices)
-      throw std::invalid_argument("VtuOutput: a displacement of " +
-                                  std::to_string(fields.displacement.size()) +
-                                  " vertices for a network of " +
-                                  std::to_string(n_vertices));
-
-    dealii::Vector<double> displacement(vertex_vector_dofs.n_dofs());
-    for (unsigned int v = 0; v < n_vertices; ++v)
-      for (unsigned int c = 0; c < 3; ++c)
-        displacement[vertex_vector_index[v][c]] = fields.displacement[v][c];
-
-    // The fields as finite element vectors of the handlers above (vector
-    // fields and vertex scalars) or as cell data (segment scalars); kept
-    // alive until the patches are built.
+    // The fields as finite element vectors (the model's solution, other
+    // vector fields and vertex scalars) or as cell data (segment scalars);
+    // kept alive until the patches are built.
     dealii::DataOut<1, 3> data_out;
-    data_out.attach_triangulation(tria);
+    data_out.attach_triangulation(network.triangulation());
     std::vector<dealii::Vector<double>> values;
     values.reserve(1 + fields.vertex_fields.size() +
                    fields.segment_fields.size());
@@ -177,8 +180,29 @@ namespace rodnet
         std::vector<std::string>(3, name),
         std::vector<Interpretation>(3, component_is_part_of_vector));
     };
-    values.push_back(displacement);
-    add_vector(vertex_vector_dofs, "displacement");
+
+    // A degree-1 Eulerian mapping moves each vertex by its displacement
+    // (the first three components of the solution), so the patches are the
+    // deformed polyline.
+    std::unique_ptr<dealii::Mapping<1, 3>> mapping;
+    if (const auto &solution = fields.solution)
+      {
+        data_out.add_data_vector(*solution->dof_handler,
+                                 solution->values,
+                                 solution->names,
+                                 solution->interpretation);
+        mapping = std::make_unique<
+          dealii::MappingQEulerian<1, dealii::Vector<double>, 3>>(
+          1, *solution->dof_handler, solution->values);
+      }
+    else
+      {
+        values.push_back(displacement_vector(fields.displacement));
+        add_vector(space(false, 3).dofs, "displacement");
+        mapping = std::make_unique<
+          dealii::MappingQ1Eulerian<1, dealii::Vector<double>, 3>>(
+          space(false, 3).dofs, values.back());
+      }
     for (const auto &[list, per_segment] :
          {std::make_pair(&fields.vertex_fields, false),
           std::make_pair(&fields.segment_fields, true)})
@@ -186,24 +210,18 @@ namespace rodnet
         {
           values.push_back(field_vector(field, per_segment));
           if (field.components == 3)
-            add_vector(per_segment ? segment_vector_dofs : vertex_vector_dofs,
-                       field.name);
+            add_vector(space(per_segment, 3).dofs, field.name);
           else if (per_segment)
             data_out.add_data_vector(values.back(),
                                      field.name,
                                      dealii::DataOut<1, 3>::type_cell_data);
           else
-            data_out.add_data_vector(vertex_scalar_dofs,
+            data_out.add_data_vector(space(false, 1).dofs,
                                      values.back(),
                                      field.name);
         }
 
-    // A degree-1 Eulerian mapping moves each vertex by its displacement, so
-    // the patches are the deformed polyline.
-    const dealii::MappingQ1Eulerian<1, dealii::Vector<double>, 3> mapping(
-      vertex_vector_dofs,
-      displacement);
-    data_out.build_patches(mapping, 1);
+    data_out.build_patches(*mapping, 1);
     data_out.set_flags(dealii::DataOutBase::VtkFlags(
       time,
       step,

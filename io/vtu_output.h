@@ -2,8 +2,7 @@
 #define RODNET_IO_VTU_OUTPUT_H
 
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe.h>
 #include <deal.II/lac/vector.h>
 
 #include <core/model.h>
@@ -12,6 +11,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,7 +26,10 @@ namespace rodnet
    * Cells are drawn in the deformed configuration: the rods of the network
    * moved by the model's displacement. The fields are those the model gives
    * (Model::output_fields(): RodModel::output_fields(),
-   * DrModel::output_fields()), "displacement" first.
+   * DrModel::output_fields()), "displacement" first: a model's solution on
+   * its own DoFHandler as it is (deal.II's DataOut and MappingQEulerian on
+   * it), other fields per vertex or segment on a DoFHandler of this writer
+   * made for the first field that needs it.
    *
    * deal.II's VTU writer stores every value as a 32-bit float, which is
    * enough to look at but not to restart from. The network must outlive
@@ -75,12 +78,37 @@ namespace rodnet
     pvd_path() const;
 
   private:
-    /// The values of a vertex (or, @p per_segment, segment) field as a
-    /// vector of the DoFHandler that draws it, or as cell data for a
-    /// segment scalar. Throws std::invalid_argument for a field that does
-    /// not fit the network.
+    /// A DoFHandler on the network's triangulation that draws values per
+    /// vertex (FE_Q 1) or per segment (FE_DGQ 0) with 1 or 3 components,
+    /// for fields that are not on a model's own DoFHandler.
+    struct FieldSpace
+    {
+      FieldSpace(const RodNetwork &network,
+                 bool              per_segment,
+                 unsigned int      components);
+
+      std::unique_ptr<dealii::FiniteElement<1, 3>> fe;
+      dealii::DoFHandler<1, 3>                     dofs;
+      /// Vertex (or active cell) -> DoF of each component.
+      std::vector<std::array<dealii::types::global_dof_index, 3>> index;
+    };
+
+    /// The space of fields per segment (or vertex) with @p components
+    /// components, made when first asked for.
+    const FieldSpace &
+    space(bool per_segment, unsigned int components);
+
+    /// The displacement of every vertex as a vector of its FieldSpace;
+    /// throws std::invalid_argument if it does not fit the network.
     dealii::Vector<double>
-    field_vector(const OutputFields::Field &field, bool per_segment) const;
+    displacement_vector(const std::vector<Vector3> &displacement);
+
+    /// The values of a vertex (or, @p per_segment, segment) field as a
+    /// vector of its FieldSpace, or as cell data for a segment scalar.
+    /// Throws std::invalid_argument for a field that does not fit the
+    /// network.
+    dealii::Vector<double>
+    field_vector(const OutputFields::Field &field, bool per_segment);
 
     /// Rewrites the .pvd record with every step written.
     void
@@ -90,26 +118,9 @@ namespace rodnet
     std::string       directory;
     std::string       basename;
 
-    /// Vertex vector fields: the displacement that drives the Eulerian
-    /// mapping (which wants exactly spacedim components) and the others.
-    dealii::FESystem<1, 3>   vertex_vector_fe;
-    dealii::DoFHandler<1, 3> vertex_vector_dofs;
-    /// Vertex scalar fields.
-    dealii::FE_Q<1, 3>       vertex_scalar_fe;
-    dealii::DoFHandler<1, 3> vertex_scalar_dofs;
-    /// Segment vector fields: deal.II's cell data are scalars only, so
-    /// vectors per cell need a DG0 system.
-    dealii::FESystem<1, 3>   segment_vector_fe;
-    dealii::DoFHandler<1, 3> segment_vector_dofs;
-
-    /// Triangulation vertex -> DoFs of its three components.
-    std::vector<std::array<dealii::types::global_dof_index, 3>>
-      vertex_vector_index;
-    /// Triangulation vertex -> DoF.
-    std::vector<dealii::types::global_dof_index> vertex_scalar_index;
-    /// Active cell -> DoFs of its three components.
-    std::vector<std::array<dealii::types::global_dof_index, 3>>
-      segment_vector_index;
+    /// (per segment, components) -> its space.
+    std::map<std::pair<bool, unsigned int>, std::unique_ptr<FieldSpace>>
+      spaces;
 
     /// Step -> (load factor, .vtu file name relative to the .pvd).
     std::map<unsigned int, std::pair<double, std::string>> records;

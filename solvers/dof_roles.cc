@@ -18,8 +18,8 @@ namespace rodnet
           owners[d]                = v;
           components[d]            = c;
         }
-    for (const auto &copy : layout.shared_copies())
-      kinds[copy.first] = Kind::inert;
+    for (const auto &copy : layout.junction_constraints().get_lines())
+      kinds[copy.index] = Kind::inert;
 
     // A twist that no hinge or junction element sees carries nothing.
     const unsigned int n_cells = network.triangulation().n_active_cells();

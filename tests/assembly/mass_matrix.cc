@@ -66,8 +66,8 @@ namespace
     return inertia;
   }
 
-  /// Component (0-2) of every position DoF, the unused copies of shared
-  /// junction vertices included.
+  /// Component (0-2) of every position DoF, the constrained copies at
+  /// junctions included.
   std::map<global_dof_index, unsigned int>
   position_components(const RodModel &model)
   {
@@ -75,8 +75,8 @@ namespace
     for (unsigned int v = 0; v < model.network().n_vertices(); ++v)
       for (unsigned int c = 0; c < 3; ++c)
         component[model.layout().vertex_dof(v, c)] = c;
-    for (const auto &[unused, used] : model.layout().shared_copies())
-      component[unused] = component.at(used);
+    for (const auto &copy : model.layout().junction_constraints().get_lines())
+      component[copy.index] = component.at(copy.entries.at(0).first);
     return component;
   }
 
@@ -285,8 +285,8 @@ namespace
         for (unsigned int c = 0; c < 4; ++c)
           massless.push_back(model->layout().rotation_dof(j, c));
     ASSERT_EQ(massless.size(), 8u);
-    for (const auto &copy : model->layout().shared_copies())
-      massless.push_back(copy.first);
+    for (const auto &copy : model->layout().junction_constraints().get_lines())
+      massless.push_back(copy.index);
     ASSERT_EQ(massless.size(), 8u + 9u); // three rod ends share the hub's
     for (const global_dof_index i : massless)
       {

@@ -244,6 +244,65 @@ TEST(VtuOutput, WritesDeformedRodFieldsAndTimeSeries)
   EXPECT_EQ(entries, 2u);
 }
 
+// Two rods welded at a knee: the second rod's first vertex is a copy of the
+// knee vertex, identity-constrained to it. A displacement given at the
+// knee's DoFs alone (the copy's DoFs left at zero) is drawn at both: the
+// writer distributes the junction constraints on the model's DoFHandler.
+TEST(VtuOutput, DrawsRodEndsAtAJunctionWithTheJunctionsDisplacement)
+{
+  auto network = std::make_unique<RodNetwork>();
+  network->add_rod(generators::straight(Vector3(0, 0, 0), Vector3(1, 0, 0), 2),
+                   false,
+                   Vector3::UnitZ(),
+                   "simple");
+  network->add_rod(generators::straight(Vector3(1, 0, 0), Vector3(1, 1, 0), 2),
+                   false,
+                   Vector3::UnitZ(),
+                   "simple");
+  network->add_junction("knee", JunctionKind::welded, {{0, false}, {1, true}});
+  RodModel model(std::move(network),
+                 std::vector<std::shared_ptr<const RodMaterial>>(
+                   2,
+                   std::make_shared<LinearElasticRod>(
+                     RodStiffness{1.0, 1.0, 1.0, 1.0})));
+  model.finalize();
+  const RodNetwork  &net  = model.network();
+  const unsigned int knee = net.junctions()[0].vertex;
+  ASSERT_NE(net.rods()[1].vertices.front(), knee); // the copy
+  ASSERT_EQ(model.layout().junction_constraints().n_constraints(), 3u);
+
+  const Vector3 lift(0.25, 0.5, -0.125);
+  VectorType    u = model.create_vector();
+  for (unsigned int c = 0; c < 3; ++c)
+    u[model.layout().vertex_dof(knee, c)] = lift[c];
+  u.compress(dealii::VectorOperation::insert);
+
+  const fs::path dir = scratch("junction");
+  VtuOutput      output(net, dir.string());
+  output.write(0, 0.0, model, u);
+  const std::string        vtu    = read_text(dir / "solution-00000.vtu");
+  const std::vector<float> points = read_data_array(vtu, "");
+  // Patches in cell order, two points each; the knee's undeformed position
+  // (1, 0, 0) appears at the end of rod 0 and the start of rod 1.
+  unsigned int n_knee_points = 0;
+  for (unsigned int p = 0; 3 * p < points.size(); ++p)
+    {
+      const unsigned int cell   = p / 2;
+      const unsigned int vertex = dealii::TriaActiveIterator<
+                                    dealii::CellAccessor<1, 3>>(
+                                    &net.triangulation(), 0, cell)
+                                    ->vertex_index(p % 2);
+      const bool    at_knee = net.vertex(vertex).isApprox(net.vertex(knee));
+      const Vector3 expected =
+        net.vertex(vertex) + (at_knee ? lift : Vector3::Zero());
+      n_knee_points += at_knee;
+      for (unsigned int c = 0; c < 3; ++c)
+        EXPECT_NEAR(points[3 * p + c], expected[c], 1e-12)
+          << "point " << p << " component " << c;
+    }
+  EXPECT_EQ(n_knee_points, 2u);
+}
+
 // A viscoelastic rod stretched uniformly by e over one committed step of
 // dt: its viscous axial strain is (1 - w) e per segment, w = t_r/(t_r + dt),
 // and its viscous curvatures are zero.

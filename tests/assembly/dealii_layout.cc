@@ -1,0 +1,202 @@
+// The model on deal.II's own structures: each cell's material_id is its
+// rod; a junction is the identity constraint x_end = x_junction of
+// deal.II's AffineConstraints, so that FEValues on the model's DoFHandler
+// see one continuous displacement through it; the model's vectors live on
+// the communicator and the DoFs its caller gives it.
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <solvers/static_solver.h>
+
+#include <common/rod_models.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace rodnet;
+
+namespace
+{
+  constexpr unsigned int n_segments = 4;
+
+  /// Three rods of length 1 from a hub at the origin, welded there, in the
+  /// plane z = 0 (d1 = e_z).
+  std::unique_ptr<RodNetwork>
+  star()
+  {
+    auto network = std::make_unique<RodNetwork>();
+    for (const Vector3 &end : {Vector3(1, 0, 0),
+                               Vector3(0, 1, 0),
+                               Vector3(-1, -1, 0).normalized()})
+      network->add_rod(generators::straight(Vector3::Zero(), end, n_segments),
+                       false,
+                       Vector3::UnitZ(),
+                       "simple");
+    network->add_junction("hub",
+                          JunctionKind::welded,
+                          {{0, true}, {1, true}, {2, true}});
+    return network;
+  }
+
+  /// The star clamped at the far end of rod 0, with an out-of-plane force
+  /// at the far ends of rods 1 and 2, solved.
+  struct SolvedStar
+  {
+    std::unique_ptr<RodModel> model;
+    VectorType                u;
+
+    SolvedStar()
+    {
+      model = rodnet::testing::elastic_model(star(), {1e3, 1.0, 1.0, 0.8});
+      model->clamp_end("clamp", 0, false);
+      model->add_point_force(model->network().rods()[1].vertices.back(),
+                             Vector3(0, 0, 0.2));
+      model->add_point_force(model->network().rods()[2].vertices.back(),
+                             Vector3(0, 0, -0.1));
+      model->finalize();
+      u = model->create_vector();
+      StaticSolver::Parameters parameters;
+      parameters.n_steps = 2;
+      StaticSolver(*model, parameters).run(u, [](const auto &, const auto &) {});
+    }
+  };
+} // namespace
+
+TEST(DealIILayout, EveryCellsMaterialIdIsItsRod)
+{
+  const auto  network = star();
+  RodNetwork &n       = *network;
+  n.create_triangulation();
+  for (unsigned int r = 0; r < n.rods().size(); ++r)
+    for (const unsigned int cell : n.rods()[r].segments)
+      {
+        using Cell = dealii::TriaActiveIterator<dealii::CellAccessor<1, 3>>;
+        EXPECT_EQ(Cell(&n.triangulation(), 0, cell)->material_id(), r);
+      }
+}
+
+TEST(DealIILayout, AJunctionIsAnIdentityConstraintOfTheOtherEnds)
+{
+  const SolvedStar   star;
+  const RodModel    &model   = *star.model;
+  const DofLayout   &layout  = model.layout();
+  const RodNetwork  &network = model.network();
+  const unsigned int hub     = network.junctions()[0].vertex;
+
+  // Two of the three ends have their own vertex, tied component by
+  // component to the hub's DoF.
+  const auto &identities = layout.junction_constraints();
+  EXPECT_EQ(identities.n_constraints(), 2u * 3u);
+  for (unsigned int r = 0; r < 3; ++r)
+    {
+      const unsigned int v = network.rods()[r].vertices.front();
+      if (v == hub)
+        continue;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          dealii::types::global_dof_index own =
+            dealii::numbers::invalid_dof_index;
+          for (const auto &cell : layout.dof_handler().active_cell_iterators())
+            if (cell->material_id() == r && cell->vertex_index(0) == v)
+              own = cell->vertex_dof_index(0, c);
+          ASSERT_TRUE(identities.is_constrained(own));
+          const auto &entries = *identities.get_constraint_entries(own);
+          ASSERT_EQ(entries.size(), 1u);
+          EXPECT_EQ(entries[0].first, layout.vertex_dof(hub, c));
+          EXPECT_EQ(entries[0].second, 1.0);
+          // The converged state carries the hub's value there.
+          EXPECT_EQ(star.u[own], star.u[layout.vertex_dof(hub, c)]);
+        }
+    }
+
+  // FEValues on the model's DoFHandler see the hub's displacement at the
+  // hub end of every rod: one continuous field through the junction.
+  const Vector3 hub_displacement =
+    model.position(star.u, hub) - network.vertex(hub);
+  ASSERT_GT(hub_displacement.norm(), 1e-3);
+  const dealii::Vector<double> values = model.field_values(star.u);
+  dealii::FEValues<1, 3>       fe_values(layout.dof_handler().get_fe(),
+                                   dealii::QTrapezoid<1>(),
+                                   dealii::update_values);
+  std::vector<dealii::Vector<double>> at_points(2, dealii::Vector<double>(4));
+  unsigned int                        n_hub_ends = 0;
+  for (const auto &cell : layout.dof_handler().active_cell_iterators())
+    for (unsigned int k = 0; k < 2; ++k)
+      if (network.vertex(cell->vertex_index(k)).isApprox(network.vertex(hub)))
+        {
+          fe_values.reinit(cell);
+          fe_values.get_function_values(values, at_points);
+          for (unsigned int c = 0; c < 3; ++c)
+            EXPECT_NEAR(at_points[k][c], hub_displacement[c], 1e-14)
+              << "rod " << cell->material_id() << ", component " << c;
+          ++n_hub_ends;
+        }
+  EXPECT_EQ(n_hub_ends, 3u);
+}
+
+TEST(DealIILayout, TheModelLivesOnItsCallersCommunicator)
+{
+  auto on_self =
+    std::make_unique<RodModel>(star(),
+                               std::vector<std::shared_ptr<const RodMaterial>>(
+                                 3,
+                                 std::make_shared<LinearElasticRod>(
+                                   RodStiffness{1e3, 1.0, 1.0, 0.8})),
+                               GhostSpin::exact,
+                               MPI_COMM_SELF);
+  auto on_world = rodnet::testing::elastic_model(star(), {1e3, 1.0, 1.0, 0.8});
+  for (RodModel *model : {on_self.get(), on_world.get()})
+    {
+      model->clamp_end("clamp", 0, false);
+      model->add_point_force(1, Vector3(0, 0, 0.2));
+    }
+  on_world->finalize();
+  on_self->finalize(dealii::complete_index_set(on_self->layout().n_dofs()));
+
+  int comparison;
+  MPI_Comm_compare(on_self->create_vector().get_mpi_communicator(),
+                   MPI_COMM_SELF,
+                   &comparison);
+  EXPECT_TRUE(comparison == MPI_IDENT || comparison == MPI_CONGRUENT);
+  EXPECT_EQ(on_self->locally_owned_dofs().n_elements(),
+            on_self->layout().n_dofs());
+
+  // The same residual on either communicator.
+  VectorType u = on_world->create_vector();
+  for (unsigned int i = 0; i < u.size(); ++i)
+    u[i] = 1e-3 * std::sin(1.0 + i);
+  u.compress(dealii::VectorOperation::insert);
+  VectorType u_self = on_self->create_vector();
+  for (unsigned int i = 0; i < u.size(); ++i)
+    u_self[i] = u[i];
+  u_self.compress(dealii::VectorOperation::insert);
+  VectorType r_world = on_world->create_vector();
+  VectorType r_self  = on_self->create_vector();
+  on_world->assemble(u, 1.0, &r_world, nullptr);
+  on_self->assemble(u_self, 1.0, &r_self, nullptr);
+  ASSERT_GT(r_world.linfty_norm(), 0.0);
+  for (unsigned int i = 0; i < u.size(); ++i)
+    EXPECT_EQ(r_self[i], r_world[i]) << "DoF " << i;
+}
+
+TEST(DealIILayout, FinalizeRefusesDofsThatAreNotAllTheModels)
+{
+  auto model = rodnet::testing::elastic_model(star(), {1e3, 1.0, 1.0, 0.8});
+  const auto n = model->layout().n_dofs();
+  dealii::IndexSet half(n);
+  half.add_range(0, n / 2);
+  try
+    {
+      model->finalize(half);
+      FAIL() << "a partial set of DoFs on one process was accepted";
+    }
+  catch (const std::invalid_argument &error)
+    {
+      EXPECT_NE(std::string(error.what()).find("locally owned DoFs"),
+                std::string::npos)
+        << error.what();
+    }
+  EXPECT_THROW(model->finalize(dealii::complete_index_set(n + 1)),
+               std::invalid_argument);
+}
