@@ -36,24 +36,19 @@ namespace rodnet
   length_scale(const RodNetwork &network);
 
   /**
-   * What every model of a rod network offers, whatever its DoFs and its
-   * state vector @p StateVector: the specification of supports and loads
-   * (lowered to the model's DoFs), and at a state the positions, the
-   * reactions of named supports, the energy and the fields for output. The
-   * probes, the VTU writer, the scene runner and a user's program work
-   * against this interface; RodModel (discrete rods, Newton) and DrModel
-   * (bending-active beams, dynamic relaxation) implement it.
+   * What every model of a rod network offers before and apart from a state:
+   * the specification of supports and loads (lowered to the model's DoFs),
+   * the network, the named supports, the length scale and what the model
+   * can be asked. Probes are parsed against it (io/probe.h); Model<State>
+   * adds the evaluation at a state.
    *
    * Supports and loads are added before finalize(); one added after it
    * would never be applied and is refused with std::logic_error.
    */
-  template <class StateVector>
-  class Model
+  class ModelBase
   {
   public:
-    using State = StateVector;
-
-    virtual ~Model() = default;
+    virtual ~ModelBase() = default;
 
     /// @name Supports and dead loads at load factor 1 (before finalize())
     /// @{
@@ -163,6 +158,56 @@ namespace rodnet
     has_tangent() const = 0;
     /// @}
 
+  protected:
+    /// The support called @p name of the masked components of @p vertex;
+    /// throws std::invalid_argument naming both if the network has no such
+    /// vertex.
+    Support
+    vertex_support(const std::string         &name,
+                   const unsigned int         vertex,
+                   const std::array<bool, 3> &mask) const
+    {
+      if (vertex >= network().n_vertices())
+        throw std::invalid_argument("support \"" + name + "\": vertex " +
+                                    std::to_string(vertex) +
+                                    " does not exist");
+      Support s;
+      s.name     = name;
+      s.vertices = {vertex};
+      s.fixed    = {mask};
+      return s;
+    }
+
+    /// Throws std::logic_error if finalize() has run: @p what (the call,
+    /// naming the support or load) would never be applied.
+    void
+    require_not_finalized(const std::string &what) const
+    {
+      if (finalized)
+        throw std::logic_error(what +
+                               " after finalize(), where it would never be "
+                               "applied; add every support and load before "
+                               "finalize()");
+    }
+
+    double length    = 0;
+    bool   finalized = false;
+  };
+
+
+  /**
+   * A model at a state of type @p StateVector: the positions, the
+   * reactions of named supports, the energy and the fields for output. The
+   * probes, the VTU writer, the scene runner and a user's program work
+   * against this interface; RodModel (discrete rods, Newton) and DrModel
+   * (bending-active beams, dynamic relaxation) implement it.
+   */
+  template <class StateVector>
+  class Model : public ModelBase
+  {
+  public:
+    using State = StateVector;
+
     /// @name Evaluation at a state
     /// @{
     /// A zero state.
@@ -205,41 +250,6 @@ namespace rodnet
     virtual OutputFields
     output_fields(const State &u) const = 0;
     /// @}
-
-  protected:
-    /// The support called @p name of the masked components of @p vertex;
-    /// throws std::invalid_argument naming both if the network has no such
-    /// vertex.
-    Support
-    vertex_support(const std::string         &name,
-                   const unsigned int         vertex,
-                   const std::array<bool, 3> &mask) const
-    {
-      if (vertex >= network().n_vertices())
-        throw std::invalid_argument("support \"" + name + "\": vertex " +
-                                    std::to_string(vertex) +
-                                    " does not exist");
-      Support s;
-      s.name     = name;
-      s.vertices = {vertex};
-      s.fixed    = {mask};
-      return s;
-    }
-
-    /// Throws std::logic_error if finalize() has run: @p what (the call,
-    /// naming the support or load) would never be applied.
-    void
-    require_not_finalized(const std::string &what) const
-    {
-      if (finalized)
-        throw std::logic_error(what +
-                               " after finalize(), where it would never be "
-                               "applied; add every support and load before "
-                               "finalize()");
-    }
-
-    double length    = 0;
-    bool   finalized = false;
   };
 } // namespace rodnet
 

@@ -257,12 +257,7 @@ namespace rodnet
                       Anything(),
                       "Columns of probes.csv: \"name: kind args; ...\" with "
                       "the kinds " +
-                        probe_kinds_description() +
-                        ". energy: the elastic energy; eigenvalue: the "
-                        "lowest of the constrained tangent (Newton only); "
-                        "rotation: the angle of a junction's rotation "
-                        "about the axis, continuous over the steps; "
-                        "moment: the reaction moment at a junction. [-]");
+                        probe_kinds_description() + ". [-]");
     prm.declare_entry("Plot",
                       "true",
                       Bool(),
@@ -750,14 +745,8 @@ namespace rodnet
         spec.distributed_forces.push_back({r, q});
   }
 
-  std::vector<Probe>
-  Scene::probes(const RodModel &model) const
-  {
-    return parse_probes(probe_text, model, "Output/Probes");
-  }
-
-  std::vector<Probe>
-  Scene::probes(const DrModel &model) const
+  ProbeList
+  Scene::probes(const ModelBase &model) const
   {
     return parse_probes(probe_text, model, "Output/Probes");
   }

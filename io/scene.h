@@ -84,10 +84,8 @@ namespace rodnet
     build_dr_model() const;
 
     /// The probes of the scene, resolved on @p model.
-    std::vector<Probe>
-    probes(const RodModel &model) const;
-    std::vector<Probe>
-    probes(const DrModel &model) const;
+    ProbeList
+    probes(const ModelBase &model) const;
 
     /**
      * The inertia of every rod of build_model(), rod by rod: rho A and

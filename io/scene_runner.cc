@@ -30,7 +30,7 @@ namespace rodnet
     public:
       StepRecorder(const Scene                    &scene,
                    const std::string              &output_directory,
-                   const std::vector<Probe>       &probes,
+                   const ProbeList                &probes,
                    const Model<State>             &model,
                    RunSummary                     &summary,
                    const std::string              &abscissa = "load_factor",
@@ -47,10 +47,10 @@ namespace rodnet
         summary.outputs  = {"probes.csv"};
         if (scene.write_vtu)
           vtu = std::make_unique<VtuOutput>(model.network(), output_directory);
-        for (const Probe &p : probes)
+        for (const auto &p : probes)
           {
-            summary.probe_names.push_back(p.name);
-            units.push_back(unit(p.kind));
+            summary.probe_names.push_back(p->name());
+            units.push_back(p->unit());
           }
       }
 
@@ -64,7 +64,7 @@ namespace rodnet
              const State               &u,
              const std::vector<double> &checks = {})
       {
-        unwrap_rotations(probes, previous_values, values);
+        continue_probes(probes, previous_values, values);
         previous_values = values;
         table.add_row(step, abscissa, values, checks);
         std::vector<double> row{abscissa};
@@ -127,7 +127,7 @@ namespace rodnet
 
       const Scene               &scene;
       const Model<State>        &model;
-      const std::vector<Probe>  &probes;
+      const ProbeList           &probes;
       const std::string          csv;
       ProbeTable                 table;
       RunSummary                &summary;
@@ -136,7 +136,7 @@ namespace rodnet
       bool                       vtu_capped = false;
       /// The abscissa's unit, then each probe's.
       std::vector<std::string> units;
-      /// The probe values of the step before, for unwrap_rotations().
+      /// The probe values of the step before, for continue_probes().
       std::vector<double> previous_values;
     };
 
@@ -170,12 +170,11 @@ namespace rodnet
     {
       const std::unique_ptr<RodModel> model =
         build_with_progress(scene, log, [&] { return scene.build_model(); });
-      const std::vector<Probe> probes = scene.probes(*model);
+      const ProbeList probes = scene.probes(*model);
 
       StaticSolver::Parameters parameters = scene.solver;
-      for (const Probe &p : probes)
-        if (p.kind == Probe::Kind::eigenvalue)
-          parameters.track_lowest_eigenvalue = true;
+      if (needs_lowest_eigenvalue(probes))
+        parameters.track_lowest_eigenvalue = true;
       parameters.strain_limits.fiber_distance = scene.fiber_distances();
 
       RunSummary               summary;
@@ -245,7 +244,7 @@ namespace rodnet
     {
       const std::unique_ptr<DrModel> model =
         build_with_progress(scene, log, [&] { return scene.build_dr_model(); });
-      const std::vector<Probe> probes = scene.probes(*model);
+      const ProbeList probes = scene.probes(*model);
 
       RunSummary             summary;
       StepRecorder<DrVector> recorder(
@@ -293,11 +292,11 @@ namespace rodnet
     {
       const std::unique_ptr<RodModel> model =
         build_with_progress(scene, log, [&] { return scene.build_model(); });
-      const std::vector<Probe> probes = scene.probes(*model);
-      for (const Probe &p : probes)
-        if (p.kind == Probe::Kind::eigenvalue)
+      const ProbeList probes = scene.probes(*model);
+      for (const auto &p : probes)
+        if (p->needs_lowest_eigenvalue())
           throw std::invalid_argument(
-            "entry \"Output/Probes\", probe \"" + p.name +
+            "entry \"Output/Probes\", probe \"" + p->name() +
             "\": the lowest eigenvalue is tracked by Newton load stepping "
             "only, not by time stepping");
       TimeIntegrator::Parameters parameters   = scene.time_stepping;

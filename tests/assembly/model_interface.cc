@@ -71,17 +71,12 @@ namespace
   std::vector<double>
   clamp_reaction_and_tip(const Model<State> &model, const State &u)
   {
-    std::vector<Probe> probes(4);
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        probes[c].name      = "R" + std::to_string(c);
-        probes[c].kind      = Probe::Kind::reaction;
-        probes[c].component = c;
-        probes[c].support   = "clamp";
-      }
-    probes[3].kind      = Probe::Kind::position;
-    probes[3].vertex    = n_segments;
-    probes[3].component = 2;
+    // The clamp holds the first vertex.
+    const ProbeList probes = parse_probes(
+      "R0: reaction start x; R1: reaction start y; R2: reaction start z; "
+      "tip: position end z",
+      model,
+      "test");
     return evaluate_probes(probes, model, u, 1.0);
   }
 

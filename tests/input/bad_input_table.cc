@@ -298,10 +298,11 @@ namespace
      ".prm",
      "",
      1,
-     "unknown probe kind \"angle\"; known: position <vertex> <x|y|z> [m], "
-     "reaction <vertex> <x|y|z> [N], energy [J], eigenvalue [mixed], "
-     "rotation <junction> <ax>,<ay>,<az> [rad], moment <junction> <x|y|z> "
-     "[N m]"},
+     "unknown probe kind \"angle\"; known: distance <vertex> <vertex> [m], "
+     "eigenvalue [mixed], energy [J], "
+     "moment <junction> <x|y|z> [N m], position <vertex> <x|y|z> [m], "
+     "reaction <vertex> <x|y|z> [N], rotation <junction> <ax>,<ay>,<az> "
+     "[rad]"},
   };
 
   class BadInputTable : public ::testing::TestWithParam<BadInput>
