@@ -11,17 +11,32 @@
 
 namespace rodnet
 {
+  /// The order in which a Registry lists its names.
+  enum class RegistryOrder
+  {
+    /// Sorted, so that listings do not depend on the order in which
+    /// registrations by static objects in several files run.
+    sorted,
+    /// The order of registration, for a registry filled from one explicit
+    /// list whose order means something (the first name is the default of
+    /// a scene's selection, the list is its order in --help).
+    registration
+  };
+
   /**
    * A name-keyed factory of extensions of one kind (ASPECT's plugin
-   * pattern): hinge measures, materials, element families. Each entry has a
-   * name, a one-line description and a factory; an unknown name is refused
-   * with a message that lists the known ones. Names are kept sorted, so
-   * listings do not depend on the order in which registrations run.
+   * pattern): hinge measures, materials, element families, geometry
+   * generators, time integrators. Each entry has a name, a one-line
+   * description and a factory; an unknown name is refused with a message
+   * that lists the known ones. Names are listed sorted, or in the order of
+   * registration (RegistryOrder).
    *
    * Every kind has one registry object, returned by a function of its own
    * (defined in one .cc file, so that the library and the programs linked
    * to it share it); implementations add themselves with a static object
-   * in their own .cc file, the one registration line of an extension.
+   * in their own .cc file, the one registration line of an extension, or,
+   * where the order of registration matters, with one line each in one
+   * explicit list.
    */
   template <class Product, class... Arguments>
   class Registry
@@ -30,10 +45,13 @@ namespace rodnet
     using Factory = std::function<std::unique_ptr<Product>(Arguments...)>;
 
     /// @p singular and @p plural name the kind in messages ("material",
-    /// "materials").
-    Registry(std::string singular, std::string plural)
+    /// "materials"); @p order is the order of names().
+    Registry(std::string         singular,
+             std::string         plural,
+             const RegistryOrder order = RegistryOrder::sorted)
         : singular(std::move(singular))
         , plural(std::move(plural))
+        , order(order)
     {
     }
 
@@ -48,6 +66,19 @@ namespace rodnet
       if (!factory || !entries.emplace(name, Entry{description, factory}).second)
         throw std::logic_error(singular + " \"" + name +
                                "\" registered twice or without a factory");
+      registered.push_back(name);
+    }
+
+    /// Registers @p Extension, made from the arguments of create(), under
+    /// @p name.
+    template <class Extension>
+    void
+    add(const std::string &name, const std::string &description)
+    {
+      add(name, description, [](Arguments... arguments) {
+        return std::make_unique<Extension>(
+          std::forward<Arguments>(arguments)...);
+      });
     }
 
     /// Creates the extension registered as @p name; throws
@@ -65,10 +96,12 @@ namespace rodnet
       return entries.count(name) > 0;
     }
 
-    /// Registered names, sorted.
+    /// Registered names, sorted or in the order of registration.
     std::vector<std::string>
     names() const
     {
+      if (order == RegistryOrder::registration)
+        return registered;
       std::vector<std::string> result;
       for (const auto &entry : entries)
         result.push_back(entry.first);
@@ -96,8 +129,8 @@ namespace rodnet
       if (found != entries.end())
         return found->second;
       std::string known;
-      for (const auto &entry : entries)
-        known += (known.empty() ? "\"" : ", \"") + entry.first + '"';
+      for (const std::string &n : names())
+        known += (known.empty() ? "\"" : ", \"") + n + '"';
       throw std::invalid_argument("unknown " + singular + " \"" + name +
                                   "\"; known " + plural + ": " +
                                   (known.empty() ? "(none)" : known));
@@ -105,7 +138,10 @@ namespace rodnet
 
     std::string                  singular;
     std::string                  plural;
+    RegistryOrder                order;
     std::map<std::string, Entry> entries;
+    /// The names in the order of registration.
+    std::vector<std::string> registered;
   };
 } // namespace rodnet
 

@@ -10,6 +10,7 @@
 #include <core/internal_variables.h>
 
 #include <Eigen/Dense>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,47 @@ namespace rodnet
              const StencilState &state,
              Derivatives        derivatives,
              LocalContribution &local) const = 0;
+
+    /**
+     * @name History (for families whose energy depends on committed values)
+     *
+     * The model keeps, per stencil, n_internal_variables() committed values
+     * (InternalVariables), which evaluate() reads from
+     * state.history.block(*this, s): e.g. the viscous strains of a
+     * history-dependent material, over whose time step the energy is
+     * condensed. After a converged step RodModel::commit_internal_variables()
+     * asks every stencil with values for its update and commits it. The
+     * defaults are a family without history.
+     */
+    /// @{
+    /// Number of internal variables of stencil @p s.
+    virtual unsigned int
+    n_internal_variables(const unsigned int s) const
+    {
+      (void)s;
+      return 0;
+    }
+
+    /**
+     * The internal variables of stencil @p s updated from the committed
+     * ones over state.time_step at the converged state.u, into @p updated
+     * (n_internal_variables(s) values, apart from the committed block).
+     * The commit knows no load factor: state.load_factor is 0. Called only
+     * for a stencil with internal variables, so the default, for a family
+     * without, throws std::logic_error.
+     */
+    virtual void
+    update_internal_variables(const unsigned int  s,
+                              const StencilState &state,
+                              double             *updated) const
+    {
+      (void)s;
+      (void)state;
+      (void)updated;
+      throw std::logic_error("element family \"" + name() +
+                             "\" has internal variables but no update");
+    }
+    /// @}
   };
 
 

@@ -1,16 +1,20 @@
+#include <core/element_family.h>
 #include <core/internal_variables.h>
 
 namespace rodnet
 {
   InternalVariables::InternalVariables(
-    const std::vector<std::vector<unsigned int>> &sizes)
+    const std::vector<std::unique_ptr<ElementFamily>> &element_families)
   {
     unsigned int total = 0;
-    for (const auto &owner_sizes : sizes)
+    for (const auto &family : element_families)
       {
+        families.push_back(family.get());
         std::vector<unsigned int> starts{total};
-        for (const unsigned int n : owner_sizes)
-          starts.push_back(total += n);
+        for (unsigned int s = 0; s < family->n_stencils(); ++s)
+          starts.push_back(total += family->n_internal_variables(s));
+        if (starts.back() == starts.front())
+          starts.clear();
         offsets.push_back(std::move(starts));
       }
     if (total > 0)

@@ -1,26 +1,34 @@
 #ifndef RODNET_CORE_INTERNAL_VARIABLES_H
 #define RODNET_CORE_INTERNAL_VARIABLES_H
 
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rodnet
 {
+  class ElementFamily;
+
   /**
-   * Committed internal variables of the history-dependent materials of a
-   * network (e.g. viscous strains): one block per hinge, per junction
-   * element and per segment, sized by the material of its rod (junction
-   * elements carry the hinge variables of their rod's material, since the
-   * same hinge law acts on them). Blocks of elastic materials are empty.
+   * Committed internal variables of the element families of a model (e.g.
+   * the viscous strains of history-dependent materials): one block per
+   * stencil of every family, sized by the family
+   * (ElementFamily::n_internal_variables()); a family without history has
+   * no blocks and stores nothing.
    *
-   * It is plain storage in the order of the DofLayout's stencil lists; the
-   * RodModel decides when values change (only on commit after a converged
-   * step, see RodMaterial).
+   * It is plain storage in the order of each family's stencils, keyed by
+   * the families it was made for; the RodModel decides when values change
+   * (only on commit after a converged step, see
+   * RodModel::commit_internal_variables()).
    */
   class InternalVariables
   {
   public:
-    /// Kind of stencil a block belongs to.
+    /// The rods' own families by their place among the families, which
+    /// the RodModel makes first: hinges, junction elements (which carry
+    /// the hinge variables of their rod's material, since the same hinge
+    /// law acts on them) and segments.
     enum class Owner
     {
       hinge,
@@ -30,12 +38,10 @@ namespace rodnet
 
     InternalVariables() = default;
 
-    /**
-     * One block of @p sizes[o][i] values, all zero, for stencil i of kind
-     * o (indexed by the Owner's value).
-     */
+    /// One block of families[f]->n_internal_variables(s) values, all
+    /// zero, for every stencil s of every family f.
     explicit InternalVariables(
-      const std::vector<std::vector<unsigned int>> &sizes);
+      const std::vector<std::unique_ptr<ElementFamily>> &families);
 
     /// Whether any stencil stores a value.
     bool
@@ -44,29 +50,72 @@ namespace rodnet
       return values.empty();
     }
 
-    /// Number of values in the block of stencil @p i of kind @p owner.
+    /// Number of values in the block of stencil @p s of @p family; 0 for a
+    /// family that this storage was not made for.
     unsigned int
-    size(Owner owner, unsigned int i) const
+    size(const ElementFamily &family, unsigned int s) const
     {
-      const auto &o = offsets[static_cast<unsigned int>(owner)];
-      return o[i + 1] - o[i];
+      return size(place_of(family), s);
     }
 
-    /// The block of stencil @p i of kind @p owner.
+    /// The block of stencil @p s of @p family; null if the family stores
+    /// nothing.
     const double *
-    block(Owner owner, unsigned int i) const
+    block(const ElementFamily &family, unsigned int s) const
     {
-      return values.data() + offsets[static_cast<unsigned int>(owner)][i];
+      return block_at(place_of(family), s);
     }
 
     double *
-    block(Owner owner, unsigned int i)
+    block(const ElementFamily &family, unsigned int s)
     {
-      return values.data() + offsets[static_cast<unsigned int>(owner)][i];
+      return const_cast<double *>(std::as_const(*this).block(family, s));
+    }
+
+    /// As above, for the rods' own families.
+    unsigned int
+    size(Owner owner, unsigned int s) const
+    {
+      return size(static_cast<unsigned int>(owner), s);
+    }
+
+    const double *
+    block(Owner owner, unsigned int s) const
+    {
+      return block_at(static_cast<unsigned int>(owner), s);
     }
 
   private:
-    /// Per owner kind: start of each stencil's block, plus the end.
+    /// The place of @p family among the families, or their number.
+    unsigned int
+    place_of(const ElementFamily &family) const
+    {
+      unsigned int f = 0;
+      while (f < families.size() && families[f] != &family)
+        ++f;
+      return f;
+    }
+
+    unsigned int
+    size(const unsigned int f, const unsigned int s) const
+    {
+      if (f >= offsets.size() || offsets[f].empty())
+        return 0;
+      return offsets[f][s + 1] - offsets[f][s];
+    }
+
+    const double *
+    block_at(const unsigned int f, const unsigned int s) const
+    {
+      if (f >= offsets.size() || offsets[f].empty())
+        return nullptr;
+      return values.data() + offsets[f][s];
+    }
+
+    /// The families the blocks belong to (owned by the model).
+    std::vector<const ElementFamily *> families;
+    /// Per family: start of each stencil's block, plus the end; empty for
+    /// a family without internal variables.
     std::vector<std::vector<unsigned int>> offsets;
     std::vector<double>                    values;
   };

@@ -48,14 +48,7 @@ namespace rodnet
       std::make_unique<JunctionFamily>(*layout_, junction_kernels, materials));
     families.push_back(std::make_unique<StretchFamily>(*layout_, materials));
 
-    std::vector<std::vector<unsigned int>> sizes(3);
-    for (const HingeStencil &h : layout_->hinges())
-      sizes[0].push_back(materials[h.rod]->n_hinge_internal_variables());
-    for (const JunctionStencil &e : layout_->junctions())
-      sizes[1].push_back(materials[e.rod]->n_hinge_internal_variables());
-    for (const SegmentStencil &s : layout_->segments())
-      sizes[2].push_back(materials[s.rod]->n_segment_internal_variables());
-    history = InternalVariables(sizes);
+    history = InternalVariables(families);
 
     // Supports that junctions imply; a prescribed displacement at their
     // vertex moves them.
@@ -126,6 +119,7 @@ namespace rodnet
     require_not_finalized("RodModel::add_element_family \"" +
                           family->name() + "\"");
     families.push_back(std::move(family));
+    history = InternalVariables(families);
   }
 
 

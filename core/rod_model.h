@@ -355,7 +355,8 @@ namespace rodnet
 
     /// @name History-dependent materials
     /// @{
-    /// Whether any rod's material has internal variables.
+    /// Whether any element family stores internal variables (a rod's
+    /// history-dependent material, or a family of its own).
     bool
     has_internal_variables() const
     {
@@ -380,9 +381,11 @@ namespace rodnet
     }
 
     /**
-     * Evaluates the materials' updated internal variables at the converged
-     * state @p u over the current time step and makes them the committed
-     * ones. Call once per converged step, before reset_reference().
+     * Asks every element family for the updated internal variables of its
+     * stencils at the converged state @p u over the current time step
+     * (ElementFamily::update_internal_variables()) and makes them the
+     * committed ones. Call once per converged step, before
+     * reset_reference().
      */
     void
     commit_internal_variables(const VectorType &u);

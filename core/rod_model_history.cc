@@ -3,9 +3,9 @@
 // internal variables after a converged step, and taking and installing a
 // ModelState.
 #include <core/rod_model.h>
-#include <elements/stretch_kernel.h>
 
-#include <array>
+#include <algorithm>
+#include <vector>
 
 namespace rodnet
 {
@@ -36,74 +36,18 @@ namespace rodnet
   {
     if (!has_internal_variables())
       return;
-    using Owner = InternalVariables::Owner;
-    // The material must not write into the values it reads: update through
-    // a scratch block (no material has more than a few variables).
-    std::array<double, 16> updated;
-    const auto commit = [&](const Owner owner, const unsigned int i) {
-      double *block = history.block(owner, i);
-      std::copy(updated.begin(),
-                updated.begin() + history.size(owner, i),
-                block);
-    };
-    const auto update_bending = [&](const Owner        owner,
-                                    const unsigned int i,
-                                    const Vector3     &kappa,
-                                    const unsigned int rod,
-                                    const double       voronoi_length) {
-      if (history.size(owner, i) == 0)
-        return;
-      AssertThrow(history.size(owner, i) <= updated.size(),
-                  dealii::ExcMessage("too many internal variables"));
-      materials[rod]->hinge_increment(kappa,
-                                      voronoi_length,
-                                      history.block(owner, i),
-                                      step_length,
-                                      updated.data());
-      commit(owner, i);
-    };
-
-    const auto &hinges = layout_->hinges();
-    for (unsigned int h = 0; h < hinges.size(); ++h)
-      update_bending(Owner::hinge,
-                     h,
-                     kernels[hinges[h].rod]->strains(
-                       configuration_->hinge_dofs(u, hinges[h]),
-                       configuration_->hinge_reference(h)) -
-                       configuration_->natural_strains(h),
-                     hinges[h].rod,
-                     configuration_->voronoi_length(h));
-
-    const auto &junctions = layout_->junctions();
-    for (unsigned int e = 0; e < junctions.size(); ++e)
-      update_bending(Owner::junction_element,
-                     e,
-                     junction_kernels[junctions[e].rod]->strains(
-                       configuration_->junction_dofs(u, junctions[e]),
-                       configuration_->junction_reference(e)),
-                     junctions[e].rod,
-                     configuration_->junction_voronoi_length(e));
-
-    const auto   &segments = layout_->segments();
-    StretchStrain stretch;
-    for (unsigned int s = 0; s < segments.size(); ++s)
-      {
-        if (history.size(Owner::segment, s) == 0)
-          continue;
-        AssertThrow(history.size(Owner::segment, s) <= updated.size(),
-                    dealii::ExcMessage("too many internal variables"));
-        const double l0 = configuration_->rest_length(segments[s].cell);
-        evaluate_stretch(configuration_->segment_dofs(u, segments[s]),
-                         l0,
-                         stretch,
-                         false);
-        materials[segments[s].rod]->segment_increment(
-          stretch.strain,
-          l0,
-          history.block(Owner::segment, s),
-          step_length,
-          updated.data());
-        commit(Owner::segment, s);
-      }
+    const StencilState state{u, *configuration_, history, step_length, 0.0};
+    // A family must not write into the values it reads: it updates into
+    // scratch, which is then committed.
+    std::vector<double> updated;
+    for (const auto &family : families)
+      for (unsigned int s = 0; s < family->n_stencils(); ++s)
+        {
+          updated.resize(history.size(*family, s));
+          if (updated.empty())
+            continue;
+          family->update_internal_variables(s, state, updated.data());
+          std::copy(updated.begin(), updated.end(), history.block(*family, s));
+        }
   }
 } // namespace rodnet

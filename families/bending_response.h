@@ -7,10 +7,19 @@
 
 namespace rodnet
 {
-  /// What a bending-and-twisting stencil (a hinge or a junction element)
-  /// hands to evaluate_bending(): its material data and committed state.
-  struct BendingStencilData
+  /**
+   * A bending-and-twisting stencil (a hinge or a junction element) at a
+   * state, as evaluate_bending() and bending_increment() take it: its
+   * kernel, local DoFs and reference, and its material data and committed
+   * state. Hinges and junction elements differ only in their kernel and
+   * reference: @p Kernel is a HingeKernel or a JunctionKernel.
+   */
+  template <class Kernel, class Reference>
+  struct BendingStencil
   {
+    const Kernel      &kernel;
+    HingeVector        dofs;
+    const Reference   &reference;
     const RodMaterial &material;
     /// Undeformed Voronoi length, turning integrated strains into densities.
     double voronoi_length;
@@ -21,49 +30,61 @@ namespace rodnet
   };
 
   /**
+   * The material's condensed increment of @p stencil over @p time_step at
+   * its strains (the kernel's less the natural ones), without derivatives
+   * with respect to the DoFs; the minimizing internal variables go into
+   * @p updated unless it is null (the commit of a converged step,
+   * ElementFamily::update_internal_variables()).
+   */
+  template <class Kernel, class Reference>
+  MaterialResponse<3>
+  bending_increment(const BendingStencil<Kernel, Reference> &stencil,
+                    const double                             time_step,
+                    double                                  *updated)
+  {
+    return stencil.material.hinge_increment(
+      stencil.kernel.strains(stencil.dofs, stencil.reference) - stencil.natural,
+      stencil.voronoi_length,
+      stencil.committed,
+      time_step,
+      updated);
+  }
+
+  /**
    * The energy of a bending-and-twisting stencil with its derivatives:
    * kernel strains minus natural strains -> material (energy, stress,
    * tangent) -> chain rule, with the elastic part J^T C J and the geometric
-   * part sum_k s_k d2kappa_k of the Hessian (Korner et al. eq. 4.5).
-   * Hinges and junction elements differ only in their kernel and reference:
-   * @p Kernel is a HingeKernel or a JunctionKernel. The material sees the
-   * committed internal variables and the time step and writes nothing back
-   * (see RodModel::commit_internal_variables()).
+   * part sum_k s_k d2kappa_k of the Hessian (Korner et al. eq. 4.5). The
+   * material sees the committed internal variables and the time step and
+   * writes nothing back (see RodModel::commit_internal_variables()).
    */
   template <class Kernel, class Reference>
   void
-  evaluate_bending(const Kernel             &kernel,
-                   const HingeVector        &dofs,
-                   const Reference          &reference,
-                   const BendingStencilData &data,
-                   double                    time_step,
-                   Derivatives               derivatives,
-                   LocalContribution        &local)
+  evaluate_bending(const BendingStencil<Kernel, Reference> &stencil,
+                   double                                   time_step,
+                   Derivatives                              derivatives,
+                   LocalContribution                       &local)
   {
     if (derivatives == Derivatives::energy)
       {
-        local.energy = data.material
-                         .hinge_increment(kernel.strains(dofs, reference) -
-                                            data.natural,
-                                          data.voronoi_length,
-                                          data.committed,
-                                          time_step,
-                                          nullptr)
-                         .energy;
+        local.energy = bending_increment(stencil, time_step, nullptr).energy;
         return;
       }
     // Per-thread scratch: three 11 x 11 Hessians are too large to build
     // per stencil.
     thread_local HingeStrains strains;
     const bool                with_hessian = derivatives == Derivatives::hessian;
-    kernel.evaluate(dofs, reference, strains, with_hessian);
-    strains.kappa -= data.natural;
+    stencil.kernel.evaluate(stencil.dofs,
+                            stencil.reference,
+                            strains,
+                            with_hessian);
+    strains.kappa -= stencil.natural;
     const MaterialResponse<3> w =
-      data.material.hinge_increment(strains.kappa,
-                                    data.voronoi_length,
-                                    data.committed,
-                                    time_step,
-                                    nullptr);
+      stencil.material.hinge_increment(strains.kappa,
+                                       stencil.voronoi_length,
+                                       stencil.committed,
+                                       time_step,
+                                       nullptr);
     local.energy               = w.energy;
     const HingeVector gradient = strains.gradient.transpose() * w.stress;
     if (!with_hessian)

@@ -30,23 +30,43 @@ namespace rodnet
   }
 
 
+  BendingStencil<HingeKernel, HingeReference>
+  HingeFamily::stencil_at(const unsigned int s, const StencilState &state) const
+  {
+    const HingeStencil  &stencil = layout.hinges()[s];
+    const Configuration &config  = state.configuration;
+    return {*kernels[stencil.rod],
+            config.hinge_dofs(state.u, stencil),
+            config.hinge_reference(s),
+            *materials[stencil.rod],
+            config.voronoi_length(s),
+            state.history.block(*this, s),
+            config.natural_strains(s)};
+  }
+
+
   void
   HingeFamily::evaluate(const unsigned int  s,
                         const StencilState &state,
                         const Derivatives   derivatives,
                         LocalContribution  &local) const
   {
-    const HingeStencil  &stencil = layout.hinges()[s];
-    const Configuration &config  = state.configuration;
-    evaluate_bending(*kernels[stencil.rod],
-                     config.hinge_dofs(state.u, stencil),
-                     config.hinge_reference(s),
-                     {*materials[stencil.rod],
-                      config.voronoi_length(s),
-                      state.history.block(InternalVariables::Owner::hinge, s),
-                      config.natural_strains(s)},
-                     state.time_step,
-                     derivatives,
-                     local);
+    evaluate_bending(stencil_at(s, state), state.time_step, derivatives, local);
+  }
+
+
+  unsigned int
+  HingeFamily::n_internal_variables(const unsigned int s) const
+  {
+    return materials[layout.hinges()[s].rod]->n_hinge_internal_variables();
+  }
+
+
+  void
+  HingeFamily::update_internal_variables(const unsigned int  s,
+                                         const StencilState &state,
+                                         double             *updated) const
+  {
+    bending_increment(stencil_at(s, state), state.time_step, updated);
   }
 } // namespace rodnet

@@ -10,11 +10,14 @@
 
 namespace rodnet
 {
+  template <class Kernel, class Reference>
+  struct BendingStencil;
+
   /**
    * The hinges of every rod (Korner et al. eq. 2.10): bending and twisting
    * of two consecutive segments, measured by the rod's hinge kernel and
    * priced by its material, with the natural strains of the Configuration.
-   * Internal variables: InternalVariables::Owner::hinge.
+   * Internal variables: the material's hinge variables, per hinge.
    */
   class HingeFamily : public ElementFamily
   {
@@ -42,7 +45,19 @@ namespace rodnet
              Derivatives         derivatives,
              LocalContribution  &local) const override;
 
+    unsigned int
+    n_internal_variables(unsigned int s) const override;
+
+    void
+    update_internal_variables(unsigned int        s,
+                              const StencilState &state,
+                              double             *updated) const override;
+
   private:
+    /// Stencil @p s at @p state.
+    BendingStencil<HingeKernel, HingeReference>
+    stencil_at(unsigned int s, const StencilState &state) const;
+
     const DofLayout                                       &layout;
     const std::vector<std::unique_ptr<HingeKernel>>       &kernels;
     const std::vector<std::shared_ptr<const RodMaterial>> &materials;

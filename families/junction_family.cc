@@ -30,24 +30,44 @@ namespace rodnet
   }
 
 
+  BendingStencil<JunctionKernel, JunctionReference>
+  JunctionFamily::stencil_at(const unsigned int  s,
+                             const StencilState &state) const
+  {
+    const JunctionStencil &stencil = layout.junctions()[s];
+    const Configuration   &config  = state.configuration;
+    return {*kernels[stencil.rod],
+            config.junction_dofs(state.u, stencil),
+            config.junction_reference(s),
+            *materials[stencil.rod],
+            config.junction_voronoi_length(s),
+            state.history.block(*this, s),
+            Vector3::Zero()};
+  }
+
+
   void
   JunctionFamily::evaluate(const unsigned int  s,
                            const StencilState &state,
                            const Derivatives   derivatives,
                            LocalContribution  &local) const
   {
-    const JunctionStencil &stencil = layout.junctions()[s];
-    const Configuration   &config  = state.configuration;
-    evaluate_bending(
-      *kernels[stencil.rod],
-      config.junction_dofs(state.u, stencil),
-      config.junction_reference(s),
-      {*materials[stencil.rod],
-       config.junction_voronoi_length(s),
-       state.history.block(InternalVariables::Owner::junction_element, s),
-       Vector3::Zero()},
-      state.time_step,
-      derivatives,
-      local);
+    evaluate_bending(stencil_at(s, state), state.time_step, derivatives, local);
+  }
+
+
+  unsigned int
+  JunctionFamily::n_internal_variables(const unsigned int s) const
+  {
+    return materials[layout.junctions()[s].rod]->n_hinge_internal_variables();
+  }
+
+
+  void
+  JunctionFamily::update_internal_variables(const unsigned int  s,
+                                            const StencilState &state,
+                                            double             *updated) const
+  {
+    bending_increment(stencil_at(s, state), state.time_step, updated);
   }
 } // namespace rodnet

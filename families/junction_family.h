@@ -10,13 +10,17 @@
 
 namespace rodnet
 {
+  template <class Kernel, class Reference>
+  struct BendingStencil;
+
   /**
    * The junction elements (Lestringant & Kochmann eq. 4): a rod's segment
    * at a junction or rotation handle and the ghost segment that the
    * junction's quaternion turns, bent and twisted like a hinge of the rod
    * and priced by its material. Stress free where built: the ghost frame
    * starts as the segment's (Configuration), so there are no natural
-   * strains. Internal variables: InternalVariables::Owner::junction_element.
+   * strains. Internal variables: the material's hinge variables, per
+   * junction element.
    */
   class JunctionFamily : public ElementFamily
   {
@@ -45,7 +49,19 @@ namespace rodnet
              Derivatives         derivatives,
              LocalContribution  &local) const override;
 
+    unsigned int
+    n_internal_variables(unsigned int s) const override;
+
+    void
+    update_internal_variables(unsigned int        s,
+                              const StencilState &state,
+                              double             *updated) const override;
+
   private:
+    /// Stencil @p s at @p state.
+    BendingStencil<JunctionKernel, JunctionReference>
+    stencil_at(unsigned int s, const StencilState &state) const;
+
     const DofLayout                                       &layout;
     const std::vector<std::unique_ptr<JunctionKernel>>    &kernels;
     const std::vector<std::shared_ptr<const RodMaterial>> &materials;

@@ -42,12 +42,12 @@ namespace rodnet
                      l0,
                      stretch,
                      with_hessian);
-    const MaterialResponse<1> w = materials[stencil.rod]->segment_increment(
-      stretch.strain,
-      l0,
-      state.history.block(InternalVariables::Owner::segment, s),
-      state.time_step,
-      nullptr);
+    const MaterialResponse<1> w =
+      materials[stencil.rod]->segment_increment(stretch.strain,
+                                                l0,
+                                                state.history.block(*this, s),
+                                                state.time_step,
+                                                nullptr);
     local.energy = w.energy;
     if (derivatives == Derivatives::energy)
       return;
@@ -62,5 +62,32 @@ namespace rodnet
       w.tangent(0, 0) * stretch.gradient * stretch.gradient.transpose() +
       w.stress[0] * stretch.hessian;
     local.store(gradient, &hessian);
+  }
+
+
+  unsigned int
+  StretchFamily::n_internal_variables(const unsigned int s) const
+  {
+    return materials[layout.segments()[s].rod]->n_segment_internal_variables();
+  }
+
+
+  void
+  StretchFamily::update_internal_variables(const unsigned int  s,
+                                           const StencilState &state,
+                                           double             *updated) const
+  {
+    const SegmentStencil &stencil = layout.segments()[s];
+    const double          l0 = state.configuration.rest_length(stencil.cell);
+    StretchStrain         stretch;
+    evaluate_stretch(state.configuration.segment_dofs(state.u, stencil),
+                     l0,
+                     stretch,
+                     false);
+    materials[stencil.rod]->segment_increment(stretch.strain,
+                                              l0,
+                                              state.history.block(*this, s),
+                                              state.time_step,
+                                              updated);
   }
 } // namespace rodnet

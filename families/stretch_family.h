@@ -12,7 +12,7 @@ namespace rodnet
   /**
    * The segments of every rod: axial strain l/l0 - 1 of each segment
    * (elements/stretch_kernel.h) priced by its rod's material. Internal
-   * variables: InternalVariables::Owner::segment.
+   * variables: the material's segment variables, per segment.
    */
   class StretchFamily : public ElementFamily
   {
@@ -39,6 +39,14 @@ namespace rodnet
              const StencilState &state,
              Derivatives         derivatives,
              LocalContribution  &local) const override;
+
+    unsigned int
+    n_internal_variables(unsigned int s) const override;
+
+    void
+    update_internal_variables(unsigned int        s,
+                              const StencilState &state,
+                              double             *updated) const override;
 
   private:
     const DofLayout                                       &layout;

@@ -72,7 +72,7 @@ namespace
     scene.probes(*model);
     if (scene.method == SolutionMethod::time_stepping)
       {
-        if (scene.time_stepping.integrator != Integrator::quasi_static)
+        if (scene.time_stepping.dynamic())
           scene.inertia();
         VectorType u, v;
         scene.initial_state(*model, u, v);

@@ -2,8 +2,6 @@
 #include <io/network_generator_entries.h>
 #include <io/rod_generator_entries.h>
 
-#include <stdexcept>
-
 namespace rodnet
 {
   std::optional<ProblemSize>
@@ -37,52 +35,5 @@ namespace rodnet
       return r;
     }();
     return registry;
-  }
-
-  void
-  GeneratorRegistry::add(const std::string &name,
-                         const std::string &description,
-                         Factory            factory)
-  {
-    for (const Entry &e : entries)
-      if (e.name == name)
-        throw std::logic_error("generator \"" + name + "\" registered twice");
-    entries.push_back({name, description, std::move(factory)});
-  }
-
-  const GeneratorRegistry::Entry &
-  GeneratorRegistry::find(const std::string &name) const
-  {
-    std::string known;
-    for (const Entry &e : entries)
-      {
-        if (e.name == name)
-          return e;
-        known += (known.empty() ? "" : ", ") + e.name;
-      }
-    throw std::invalid_argument(
-      "unknown generator \"" + name +
-      "\"; known generators: " + (known.empty() ? "(none)" : known));
-  }
-
-  std::unique_ptr<GeometryGenerator>
-  GeneratorRegistry::create(const std::string &name) const
-  {
-    return find(name).factory();
-  }
-
-  std::vector<std::string>
-  GeneratorRegistry::names() const
-  {
-    std::vector<std::string> result;
-    for (const Entry &e : entries)
-      result.push_back(e.name);
-    return result;
-  }
-
-  std::string
-  GeneratorRegistry::description(const std::string &name) const
-  {
-    return find(name).description;
   }
 } // namespace rodnet

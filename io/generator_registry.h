@@ -3,11 +3,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <base/registry.h>
 #include <core/rod_graph.h>
 #include <elements/quaternion.h>
 #include <io/problem_size.h>
 
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -80,61 +80,25 @@ namespace rodnet
   };
 
   /**
-   * Name-keyed factory of geometry generators (ASPECT's pattern: name,
-   * description, declaration, factory), in the order of registration,
-   * which is the order of the "Generator" selection. The registrations are
-   * one line each in generator_registry.cc.
+   * The geometry generators by name (base/registry.h), in the order of
+   * registration, which is the order of the "Generator" selection (the
+   * first is its default). The registrations are one line each in
+   * register_rod_generators() and register_network_generators().
    */
-  class GeneratorRegistry
+  class GeneratorRegistry : public Registry<GeometryGenerator>
   {
   public:
-    using Factory = std::function<std::unique_ptr<GeometryGenerator>()>;
+    /// An empty registry (instance() has every generator of rodnet).
+    GeneratorRegistry()
+        : Registry<GeometryGenerator>("generator",
+                                      "generators",
+                                      RegistryOrder::registration)
+    {
+    }
 
     /// The process-wide registry with every generator of rodnet.
     static const GeneratorRegistry &
     instance();
-
-    /// Registers @p factory under @p name with a one-line @p description;
-    /// throws if the name is taken.
-    void
-    add(const std::string &name,
-        const std::string &description,
-        Factory            factory);
-
-    /// Registers the default-constructed @p Generator under @p name.
-    template <class Generator>
-    void
-    add(const std::string &name, const std::string &description)
-    {
-      add(name, description, [] { return std::make_unique<Generator>(); });
-    }
-
-    /// Creates the generator registered as @p name; throws
-    /// std::invalid_argument listing the known names otherwise.
-    std::unique_ptr<GeometryGenerator>
-    create(const std::string &name) const;
-
-    /// Registered names, in the order of registration.
-    std::vector<std::string>
-    names() const;
-
-    /// Description given at registration; throws as create() does.
-    std::string
-    description(const std::string &name) const;
-
-  private:
-    struct Entry
-    {
-      std::string name;
-      std::string description;
-      Factory     factory;
-    };
-
-    /// The entry of @p name; throws listing the known names otherwise.
-    const Entry &
-    find(const std::string &name) const;
-
-    std::vector<Entry> entries;
   };
 } // namespace rodnet
 

@@ -429,7 +429,7 @@ namespace rodnet
   std::vector<RodInertia>
   Scene::inertia() const
   {
-    const std::string       integrator = to_string(time_stepping.integrator);
+    const std::string      &integrator = time_stepping.integrator;
     std::vector<RodInertia> result;
     for (const unsigned int g : rod_groups())
       {

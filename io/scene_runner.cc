@@ -301,7 +301,7 @@ namespace rodnet
             "only, not by time stepping");
       TimeIntegrator::Parameters parameters   = scene.time_stepping;
       parameters.strain_limits.fiber_distance = scene.fiber_distances();
-      const bool dynamic = parameters.integrator != Integrator::quasi_static;
+      const bool     dynamic                  = parameters.dynamic();
       TimeIntegrator integrator(*model,
                                 dynamic ? scene.inertia() :
                                           std::vector<RodInertia>(),
@@ -321,7 +321,7 @@ namespace rodnet
                                         "time",
                                         checks);
       if (log != nullptr)
-        *log << "rodnet (time stepping, " << to_string(parameters.integrator)
+        *log << "rodnet (time stepping, " << parameters.integrator
              << "): " << model->network().rods().size() << " rod(s), "
              << model->layout().n_dofs()
              << " DoFs, t = " << parameters.start_time << " to "

@@ -132,11 +132,11 @@ namespace rodnet
       throw std::invalid_argument(entry + "End time\": " + number(p.end_time) +
                                   " s lies before the start time " +
                                   number(p.start_time) + " s");
-    if (p.integrator == Integrator::quasi_static)
+    if (!p.dynamic())
       return;
     // Throws for a material group without density or section.
     inertia();
-    if (p.integrator == Integrator::midpoint)
+    if (p.integrator == "midpoint")
       for (const unsigned int g : rod_groups())
         {
           const RodMaterial &m = *material_groups[g].material;

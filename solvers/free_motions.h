@@ -8,15 +8,30 @@
 namespace rodnet
 {
   /**
-   * The rigid motions that no support of @p model stops, at the state
-   * @p u: for every connected part of the network (rods joined through
-   * junctions), the infinitesimal translations t and rotations w about its
-   * centroid c that leave every fixed DoF unchanged. Such a motion moves a
-   * vertex by t + w x (x - c), the twist of a segment of unit tangent e by
-   * w . e (the material frame turns with the rod, beyond the parallel
-   * transport of the reference frame), and a junction's quaternion
-   * increment by w / 2; it costs no energy, so the static tangent is
-   * singular along it and no load can be balanced there.
+   * The rigid motions of @p model at the state @p u that neither a support
+   * nor the energy stops: for every connected part of the network (rods
+   * joined through junctions), the infinitesimal translations t and
+   * rotations w about its centroid c that leave every fixed DoF unchanged
+   * and along which the tangent is singular. Such a motion moves a vertex
+   * by t + w x (x - c), the twist of a segment of unit tangent e by w . e
+   * (the material frame turns with the rod, beyond the parallel transport
+   * of the reference frame), and a junction's quaternion increment by w / 2
+   * at the reference; no load can be balanced along it.
+   *
+   * The rods' own energy does not resist a rigid motion, but a family that
+   * ties the rods to the ground does: an ElasticFoundation holds every
+   * motion that moves a vertex along its springs. A rod on a foundation in
+   * every direction is held unless it is straight: it can still spin about
+   * its own line, which moves no vertex, only the twists; springs along z
+   * alone leave the translations in x and y and the rotations about z.
+   * The energy is asked through the Hessians of every element family's
+   * stencils at @p u and load factor 0 (a load is no support), evaluated
+   * only when the supports leave a part some motion, each family measured
+   * against its own stiffness (a soft foundation under stiff rods holds as
+   * well as a stiff one). This is exact where @p u is unstressed (rods
+   * stress free as built, at their undeformed state); where it is
+   * stressed, the geometric stiffness of the stresses is part of the
+   * Hessians and can hold a rotation that no support holds.
    *
    * Returns an empty string if every part is held; otherwise one line
    * naming each free part and its motions ("rod 0 can translate along

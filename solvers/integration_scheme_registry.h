@@ -1,27 +1,24 @@
 #ifndef RODNET_SOLVERS_INTEGRATION_SCHEME_REGISTRY_H
 #define RODNET_SOLVERS_INTEGRATION_SCHEME_REGISTRY_H
 
+#include <base/registry.h>
 #include <solvers/integration_scheme.h>
-
-#include <memory>
-#include <string>
-#include <vector>
 
 namespace rodnet
 {
-  /// The names of the registered integration schemes, in the order of
-  /// registration ("quasi-static", "backward euler", "newmark",
-  /// "midpoint").
-  std::vector<std::string>
-  integration_scheme_names();
+  /// Integration schemes by name, made on a StepSystem.
+  using IntegrationSchemeRegistry =
+    Registry<IntegrationScheme, const StepSystem &>;
 
   /**
-   * The scheme registered as @p name, working on @p system (which must
-   * outlive it). Throws std::invalid_argument for an unknown name, listing
-   * the known ones.
+   * The time integrators (TimeIntegrator::Parameters::integrator, the scene
+   * entry "Integrator"), in the order of registration, which is the order
+   * of the selection and its help in --help: "quasi-static", "backward
+   * euler", "newmark", "midpoint". A new scheme adds its line to
+   * integration_scheme_registry.cc.
    */
-  std::unique_ptr<IntegrationScheme>
-  create_integration_scheme(const std::string &name, const StepSystem &system);
+  const IntegrationSchemeRegistry &
+  integration_scheme_registry();
 } // namespace rodnet
 
 #endif

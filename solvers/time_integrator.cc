@@ -17,12 +17,6 @@ namespace rodnet
 {
   namespace
   {
-    const std::vector<std::pair<Integrator, std::string>> integrator_names = {
-      {Integrator::quasi_static, "quasi-static"},
-      {Integrator::backward_euler, "backward euler"},
-      {Integrator::newmark, "newmark"},
-      {Integrator::midpoint, "midpoint"}};
-
     std::string
     time_string(const double t)
     {
@@ -32,29 +26,6 @@ namespace rodnet
       return s.str();
     }
   } // namespace
-
-  std::string
-  to_string(const Integrator integrator)
-  {
-    for (const auto &[value, name] : integrator_names)
-      if (value == integrator)
-        return name;
-    return "unknown";
-  }
-
-  Integrator
-  parse_integrator(const std::string &name)
-  {
-    std::string known;
-    for (const auto &[value, n] : integrator_names)
-      {
-        if (n == name)
-          return value;
-        known += (known.empty() ? "" : ", ") + n;
-      }
-    throw std::invalid_argument("unknown time integrator \"" + name +
-                                "\"; known: " + known);
-  }
 
   TimeIntegrator::TimeIntegrator(RodModel                      &model,
                                  const std::vector<RodInertia> &inertia,
@@ -83,8 +54,9 @@ namespace rodnet
     if (!(p.min_step_fraction > 0 && p.min_step_fraction <= 1))
       throw std::invalid_argument(
         "time stepping: the minimum step fraction must lie in (0, 1]");
-    scheme         = create_integration_scheme(to_string(p.integrator), system);
-    preload_scheme = create_integration_scheme("quasi-static", system);
+    scheme = integration_scheme_registry().create(p.integrator, system);
+    preload_scheme =
+      integration_scheme_registry().create("quasi-static", system);
     if (scheme->needs_stored_energy() && model.has_internal_variables())
       throw std::invalid_argument(
         "time stepping: the midpoint rule conserves a stored energy, which "

@@ -18,31 +18,6 @@
 
 namespace rodnet
 {
-  /// Time discretization of a TimeIntegrator (see there for the equations).
-  enum class Integrator
-  {
-    /// No inertia: equilibrium at every time (creep, relaxation).
-    quasi_static,
-    /// Backward Euler: first order, dissipative.
-    backward_euler,
-    /// Newmark average acceleration (trapezoidal rule): second order, no
-    /// numerical dissipation, any material.
-    newmark,
-    /// Implicit midpoint rule with Gonzalez's discrete gradient: second
-    /// order, conserves the energy of elastic rods exactly.
-    midpoint
-  };
-
-  /// The scene name of @p integrator ("quasi-static", "backward euler",
-  /// "newmark", "midpoint").
-  std::string
-  to_string(Integrator integrator);
-
-  /// Inverse of to_string(); throws std::invalid_argument listing the
-  /// names otherwise.
-  Integrator
-  parse_integrator(const std::string &name);
-
   /**
    * Implicit time stepping of a RodModel (Lestringant & Kochmann sections
    * 2.4-2.5): every step of length h from the state (u_n, v_n) at t_n
@@ -89,8 +64,9 @@ namespace rodnet
    * so is energy growth under constant loads (Parameters::
    * energy_growth_limit): the signature of an unstable integration.
    *
-   * Each Integrator is an IntegrationScheme (solvers/<name>_scheme.h), created
-   * by its name from integration_scheme_registry.cc; TimeIntegrator does
+   * Each integrator is an IntegrationScheme (solvers/<name>_scheme.h),
+   * created by its name from integration_scheme_registry(); TimeIntegrator
+   * does
    * what is the same for all: the predictor, the tolerance, the Newton
    * solve of one step, step halving, the commit, the checks. A step that
    * fails or throws leaves the model's ModelState as it was (StateGuard).
@@ -100,9 +76,11 @@ namespace rodnet
   public:
     struct Parameters
     {
-      Integrator integrator = Integrator::newmark;
-      double     start_time = 0;
-      double     end_time   = 0;
+      /// The time discretization: the name of a scheme registered in
+      /// integration_scheme_registry() (see the equations above).
+      std::string integrator = "newmark";
+      double      start_time = 0;
+      double      end_time   = 0;
       /// Nominal time step (s); steps land on start_time + k time_step and
       /// on end_time.
       double time_step = 0;
@@ -159,6 +137,14 @@ namespace rodnet
       /// subsection of @p prm.
       void
       parse_parameters(const dealii::ParameterHandler &prm);
+
+      /// Whether the integrator has inertia: all but "quasi-static", which
+      /// needs no density.
+      bool
+      dynamic() const
+      {
+        return integrator != "quasi-static";
+      }
     };
 
     struct StepInfo

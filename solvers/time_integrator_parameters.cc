@@ -1,5 +1,6 @@
 #include <deal.II/base/patterns.h>
 
+#include <solvers/integration_scheme_registry.h>
 #include <solvers/time_integrator.h>
 
 namespace rodnet
@@ -11,23 +12,18 @@ namespace rodnet
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
     using dealii::Patterns::Selection;
-    std::string names;
-    for (const Integrator i : {Integrator::quasi_static,
-                               Integrator::backward_euler,
-                               Integrator::newmark,
-                               Integrator::midpoint})
-      names += (names.empty() ? "" : "|") + to_string(i);
-    prm.declare_entry(
-      "Integrator",
-      to_string(Integrator::newmark),
-      Selection(names),
-      "quasi-static: equilibrium at every time, no inertia (creep, "
-      "relaxation). backward euler: first order, numerically damped. "
-      "newmark: average acceleration, second order, undamped. midpoint: "
-      "implicit midpoint rule with a discrete gradient, conserves the "
-      "energy of elastic rods (not for viscoelastic materials). All but "
-      "quasi-static need a Density in every material subsection in "
-      "use. [-]");
+    const IntegrationSchemeRegistry &schemes = integration_scheme_registry();
+    std::string                      names, help;
+    for (const std::string &name : schemes.names())
+      {
+        names += (names.empty() ? "" : "|") + name;
+        help += name + ": " + schemes.description(name) + ". ";
+      }
+    prm.declare_entry("Integrator",
+                      "newmark",
+                      Selection(names),
+                      help + "All but quasi-static need a Density in every "
+                             "material subsection in use. [-]");
     // No lower bound in the pattern: a bad step is reported by the
     // scene with what is wrong, rather than as a pattern mismatch.
     prm.declare_entry("Time step",
@@ -86,7 +82,7 @@ namespace rodnet
   TimeIntegrator::Parameters::parse_parameters(
     const dealii::ParameterHandler &prm)
   {
-    integrator    = parse_integrator(prm.get("Integrator"));
+    integrator    = prm.get("Integrator");
     time_step     = prm.get_double("Time step");
     start_time    = prm.get_double("Start time");
     end_time      = prm.get_double("End time");

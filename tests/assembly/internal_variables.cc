@@ -5,11 +5,14 @@
 // update alpha = (dt e + t_r alpha_prev) / (dt + t_r) of each hinge,
 // junction element and segment (e: the strain less the natural strain of
 // the helix, stress free as built); the energy does not change when the
-// reference is reset; time steps are checked.
+// reference is reset; time steps are checked. A family of its own with
+// history (a Maxwell element) is committed by the model like the rods'
+// families, and its energy reads the committed value.
 #include <core/network_generators.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <elements/stretch_kernel.h>
+#include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
 
 #include <gtest/gtest.h>
@@ -226,5 +229,118 @@ namespace
       EXPECT_THROW(model->set_time_step(bad), std::invalid_argument);
     EXPECT_NO_THROW(model->set_time_step(1e-3));
     EXPECT_NO_THROW(model->set_time_step(0));
+  }
+
+  /// A family of its own with history: a Maxwell element on one DoF, a
+  /// spring k in series with a dashpot of relaxation time t_r (that of the
+  /// material above) whose slip a
+  /// is the internal variable. W = k/2 (u - a)^2 at the committed a; the
+  /// commit takes a backward-Euler step of t_r da/dt = u - a.
+  class MaxwellAnchor : public ElementFamily
+  {
+  public:
+    static constexpr double stiffness = 3;
+
+    explicit MaxwellAnchor(const global_dof_index dof)
+        : dof(dof)
+    {
+    }
+
+    std::string
+    name() const override
+    {
+      return "Maxwell anchor";
+    }
+
+    unsigned int
+    n_stencils() const override
+    {
+      return 1;
+    }
+
+    void
+    get_dofs(unsigned int, std::vector<global_dof_index> &dofs) const override
+    {
+      dofs = {dof};
+    }
+
+    void
+    evaluate(const unsigned int  s,
+             const StencilState &state,
+             const Derivatives   derivatives,
+             LocalContribution  &local) const override
+    {
+      const double spring = state.u[dof] - state.history.block(*this, s)[0];
+      local.energy        = stiffness / 2 * spring * spring;
+      Eigen::Matrix<double, 1, 1> gradient, hessian;
+      gradient << stiffness * spring;
+      hessian << stiffness;
+      if (derivatives != Derivatives::energy)
+        local.store(gradient,
+                    derivatives == Derivatives::hessian ? &hessian : nullptr);
+    }
+
+    unsigned int
+    n_internal_variables(unsigned int) const override
+    {
+      return 1;
+    }
+
+    void
+    update_internal_variables(const unsigned int  s,
+                              const StencilState &state,
+                              double             *updated) const override
+    {
+      const double h = state.time_step;
+      updated[0]     = (h * state.u[dof] +
+                    relaxation_time * state.history.block(*this, s)[0]) /
+                   (h + relaxation_time);
+    }
+
+  private:
+    global_dof_index dof;
+  };
+
+  TEST(InternalVariablesOfAFamily, TheModelCommitsAFamilyOfItsOwn)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::straight(Vector3::Zero(), Vector3::UnitX(), 4),
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    RodModel model(std::move(network),
+                   {std::make_shared<LinearElasticRod>(
+                     RodStiffness{1, 1, 1, 1})});
+    EXPECT_FALSE(model.has_internal_variables());
+    const global_dof_index dof    = model.layout().vertex_dof(0, 0);
+    auto                   family = std::make_unique<MaxwellAnchor>(dof);
+    const MaxwellAnchor   &anchor = *family;
+    model.add_element_family(std::move(family));
+    EXPECT_TRUE(model.has_internal_variables());
+    model.finalize();
+    model.set_time_step(time_step);
+
+    // Two steps to u = 0.03, then 0.05, from a = 0, by hand; the energy of
+    // the anchor (the rod's does not change at fixed u) follows a.
+    const double k = MaxwellAnchor::stiffness, t_r = relaxation_time;
+    double       slip = 0;
+    VectorType   u    = model.create_vector();
+    for (const double value : {0.03, 0.05})
+      {
+        u[dof] = value;
+        u.compress(dealii::VectorOperation::insert);
+        const double before = model.assemble(u, 0.0, nullptr, nullptr);
+        model.commit_internal_variables(u);
+        const double committed =
+          (time_step * value + t_r * slip) / (time_step + t_r);
+        EXPECT_NEAR(model.internal_variables().block(anchor, 0)[0],
+                    committed,
+                    1e-15);
+        EXPECT_NEAR(
+          model.assemble(u, 0.0, nullptr, nullptr) - before,
+          k / 2 * (std::pow(value - committed, 2) - std::pow(value - slip, 2)),
+          1e-12);
+        slip = committed;
+      }
   }
 } // namespace

@@ -73,11 +73,11 @@ namespace rodnet
      * A SolverFailure ends the history early with its message.
      */
     inline SwingHistory
-    released_swing(RodModel        &model,
-                   const Integrator method,
-                   const double     h,
-                   const double     end_time,
-                   std::ostream    *log = nullptr)
+    released_swing(RodModel          &model,
+                   const std::string &method,
+                   const double       h,
+                   const double       end_time,
+                   std::ostream      *log = nullptr)
     {
       TimeIntegrator::Parameters p;
       p.integrator         = method;

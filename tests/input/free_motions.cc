@@ -1,6 +1,7 @@
 // A structure that can move freely is a bad scene (exit code 1, naming the
 // motion), not a solver failure; a mechanism inside a held structure stops
-// the solver (exit code 2) with a message that says so.
+// the solver (exit code 2) with a message that says so. An elastic
+// foundation holds what its springs stop and no more.
 #include <common/rod_models.h>
 #include <common/scene_text.h>
 #include <common/run_driver.h>
@@ -71,6 +72,40 @@ namespace
                    loaded_rod("  set Pinned vertices = start, end\n", "mid"),
                    "rotate about the axis through vertex 0:start along (1, "
                    "0, 0)");
+  }
+
+  TEST(FreeMotion, StraightRodOnAFoundationSpins)
+  {
+    // Springs in every direction hold the rod from the origin to (1, 0, 0)
+    // but for its spin about its own line, which moves only the twists.
+    expect_refused("foundation_spin",
+                   loaded_rod("", "mid") + "subsection Elastic foundation\n"
+                                           "  set Stiffness = 1\n"
+                                           "end\n",
+                   "the structure is not held: rod 0 can rotate about the "
+                   "axis through (0.5, 0, 0) along (1, 0, 0);");
+  }
+
+  TEST(FreeMotion, RingOnSpringsAlongZSlidesAndTurnsInItsPlane)
+  {
+    expect_refused("foundation_along_z",
+                   "subsection Geometry\n"
+                   "  set Generator = ring\n"
+                   "  set Center = 2, 1, 0\n"
+                   "  set Segments = 12\n"
+                   "  set Director d1 = 0, 0, 1\n"
+                   "end\n" +
+                     rodnet::testing::direct_material() + quiet +
+                     "subsection Elastic foundation\n"
+                     "  set Stiffness = 1\n"
+                     "  set Direction = 0, 0, 1\n"
+                     "end\n"
+                     "subsection Loads\n"
+                     "  set Point forces = 0:3: 0, 0, 1e-3\n"
+                     "end\n",
+                   "rod 0 can translate in the plane normal to (0, 0, 1) "
+                   "and rotate about the axis through (2, 1, 0) along (0, "
+                   "0, 1);");
   }
 
   TEST(Mechanism, FourBarLinkageIsReportedAsSuch)

@@ -1,7 +1,8 @@
-// The registries of generators and solution methods: an unknown name is
-// refused with the known ones listed, the scene's selections list exactly
-// the registered names, and a generator registered from outside is
-// declared and run through the registry alone.
+// The registries of generators, time integrators and solution methods: an
+// unknown name is refused with the known ones listed, the scene's
+// selections list exactly the registered names in the order of
+// registration (a registry's names are sorted otherwise), and a generator
+// registered from outside is declared and run through the registry alone.
 #include <deal.II/base/parameter_handler.h>
 
 #include <io/entry_tree.h>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -62,9 +64,10 @@ namespace
     const std::string message =
       message_of([] { GeneratorRegistry::instance().create("spiral"); });
     EXPECT_NE(message.find("unknown generator \"spiral\"; known generators: "
-                           "straight, arc, ring, helix, polyline, gmsh, "
-                           "frame, windmill, square lattice, hexagonal "
-                           "lattice, network file, gmsh network"),
+                           "\"straight\", \"arc\", \"ring\", \"helix\", "
+                           "\"polyline\", \"gmsh\", \"frame\", "
+                           "\"windmill\", \"square lattice\", \"hexagonal "
+                           "lattice\", \"network file\", \"gmsh network\""),
               std::string::npos)
       << message;
   }
@@ -91,6 +94,28 @@ namespace
               "network ]");
     EXPECT_EQ(tree.find("Solver")->find("Method")->pattern,
               "[Selection newton|dynamic relaxation|time stepping ]");
+    EXPECT_EQ(
+      tree.find("Solver")->find("Time stepping")->find("Integrator")->pattern,
+      "[Selection quasi-static|backward euler|newmark|midpoint ]");
+  }
+
+  TEST(Registries, OrderIsSortedOrThatOfRegistration)
+  {
+    Registry<GeometryGenerator> sorted("generator", "generators");
+    GeneratorRegistry           ordered;
+    for (const std::string name : {"tip", "base", "middle"})
+      {
+        sorted.add<TipGenerator>(name, "a rod to a tip");
+        ordered.add<TipGenerator>(name, "a rod to a tip");
+      }
+    EXPECT_EQ(sorted.names(),
+              (std::vector<std::string>{"base", "middle", "tip"}));
+    EXPECT_EQ(ordered.names(),
+              (std::vector<std::string>{"tip", "base", "middle"}));
+    EXPECT_NE(message_of([&] {
+                ordered.create("top");
+              }).find("known generators: \"tip\", \"base\", \"middle\""),
+              std::string::npos);
   }
 
   TEST(Registries, AGeneratorIsOneClassAndOneRegistration)
@@ -112,7 +137,7 @@ namespace
     EXPECT_DOUBLE_EQ((g.rod_points[0][1] - g.rod_points[0][0]).norm(), 2.);
     EXPECT_NE(message_of([&] {
                 registry.create("straight");
-              }).find("known generators: tip"),
+              }).find("known generators: \"tip\""),
               std::string::npos);
   }
 } // namespace

@@ -60,7 +60,7 @@ namespace
                   "end\n");
     const TimeIntegrator::Parameters &p = scene.time_stepping;
     EXPECT_EQ(scene.method, SolutionMethod::time_stepping);
-    EXPECT_EQ(p.integrator, Integrator::backward_euler);
+    EXPECT_EQ(p.integrator, "backward euler");
     EXPECT_EQ(p.time_step, 0.002);
     EXPECT_EQ(p.start_time, 0.5);
     EXPECT_EQ(p.end_time, 1.5);

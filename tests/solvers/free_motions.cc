@@ -1,11 +1,13 @@
 // Rigid motions that no support stops (describe_free_motions()): each case
 // of the issue gets the motion a hand analysis of its supports gives, and a
 // held structure gets none; StaticSolver refuses a free one before the
-// first step.
+// first step. An elastic foundation holds the motions that move a vertex
+// along its springs, and only those.
 #include <common/rod_models.h>
 #include <solvers/free_motions.h>
 #include <solvers/static_solver.h>
 
+#include <families/elastic_foundation.h>
 #include <gtest/gtest.h>
 #include <stdexcept>
 
@@ -107,6 +109,119 @@ namespace
     model->clamp_end("clamp", 0, true);
     const std::string text = motions_of(*model);
     expect_contains(text, "rod 1 can translate in any direction");
+    EXPECT_EQ(text.find("rod 0"), std::string::npos) << text;
+  }
+
+  /// Rests the rods of @p model on springs of modulus 1 along
+  /// @p direction (none: every direction).
+  void
+  add_foundation(RodModel &model, const std::optional<Vector3> &direction)
+  {
+    model.add_element_family(std::make_unique<ElasticFoundation>(
+      model.network(),
+      model.layout(),
+      ElasticFoundationParameters{1, direction, {}}));
+  }
+
+  /// A network with a closed ring of radius 1 about @p center in the xy
+  /// plane.
+  std::unique_ptr<RodNetwork>
+  ring_network(const Vector3 &center)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(
+      generators::ring(center, 1, Vector3::UnitX(), Vector3::UnitY(), 12),
+      true,
+      Vector3::UnitZ(),
+      "simple");
+    return network;
+  }
+
+  /// The ring about (2, 1, 0).
+  std::unique_ptr<RodModel>
+  ring()
+  {
+    return rodnet::testing::elastic_model(ring_network(Vector3(2, 1, 0)),
+                                          RodStiffness{1e4, 1, 1, 1});
+  }
+
+  TEST(FreeMotions, FoundationInEveryDirectionHoldsARing)
+  {
+    // Every rigid motion of a ring moves some vertex, which a spring stops.
+    auto model = ring();
+    add_foundation(*model, std::nullopt);
+    EXPECT_EQ(motions_of(*model), "");
+  }
+
+  TEST(FreeMotions, FoundationInEveryDirectionLeavesAStraightRodItsSpin)
+  {
+    // The spin about the rod's own line moves no vertex, only the twists,
+    // which no spring holds: the axis through the midpoint (0.5, 0, 0).
+    auto model = straight_rods();
+    add_foundation(*model, std::nullopt);
+    EXPECT_EQ(motions_of(*model),
+              "the structure is not held: rod 0 can rotate about the axis "
+              "through (0.5, 0, 0) along (1, 0, 0); add supports "
+              "(Supports/Clamped ends, Pinned vertices or Fixed components) "
+              "that stop these motions");
+
+    // A clamp holds the twist of its segment, and with it the spin.
+    auto clamped = straight_rods();
+    add_foundation(*clamped, std::nullopt);
+    clamped->clamp_end("clamp", 0, true);
+    EXPECT_EQ(motions_of(*clamped), "");
+  }
+
+  TEST(FreeMotions, FoundationAlongZLeavesTheMotionsInThePlane)
+  {
+    // Springs along z stop the translation along z and the rotations about
+    // x and y (they lift the ring); they leave the ring sliding in its
+    // plane and turning about the normal through any point, reported as
+    // the axis through its centre.
+    auto model = ring();
+    add_foundation(*model, Vector3::UnitZ());
+    EXPECT_EQ(motions_of(*model),
+              "the structure is not held: rod 0 can translate in the plane "
+              "normal to (0, 0, 1) and rotate about the axis through (2, 1, "
+              "0) along (0, 0, 1); add supports (Supports/Clamped ends, "
+              "Pinned vertices or Fixed components) that stop these motions");
+  }
+
+  TEST(FreeMotions, SupportsAndFoundationTogether)
+  {
+    // Vertex 0, at (3, 1, 0), held in x and y: the in-plane translations
+    // go, the rotation about the normal through it stays.
+    auto model = ring();
+    add_foundation(*model, Vector3::UnitZ());
+    model->fix_components("pin", 0, {{true, true, false}});
+    const std::string text = motions_of(*model);
+    expect_contains(text,
+                    "rod 0 can rotate about the axis through vertex 0:start "
+                    "along (0, 0, 1);");
+    EXPECT_EQ(text.find("translate"), std::string::npos) << text;
+  }
+
+  TEST(FreeMotions, FoundationHoldsOnlyTheRodsOnIt)
+  {
+    // The ring rests on the foundation, a separate straight rod does not:
+    // the ring is held, the rod free.
+    auto network = ring_network(Vector3::Zero());
+    network->add_rod(generators::straight(Vector3(0, 0, 1),
+                                          Vector3(1, 0, 1),
+                                          4),
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    auto model = rodnet::testing::elastic_model(std::move(network),
+                                                RodStiffness{1e4, 1, 1, 1});
+    model->add_element_family(std::make_unique<ElasticFoundation>(
+      model->network(),
+      model->layout(),
+      ElasticFoundationParameters{1, std::nullopt, {0}}));
+    const std::string text = motions_of(*model);
+    expect_contains(text,
+                    "not held: rod 1 can translate in any direction and "
+                    "rotate about any axis");
     EXPECT_EQ(text.find("rod 0"), std::string::npos) << text;
   }
 

@@ -133,7 +133,7 @@ namespace
                                                     1.0);
     auto model    = held_bar(material, n_segments, Vector3(0.01, 0.02, 0));
     TimeIntegrator::Parameters p;
-    p.integrator  = Integrator::quasi_static;
+    p.integrator  = "quasi-static";
     p.time_step   = 0.1;
     p.end_time    = 0.3;
     p.load_factor = [](const double t) { return t; };

@@ -248,7 +248,7 @@ namespace
     model->add_point_force(10, Vector3(0, 0, 1e-3));
     model->finalize();
     TimeIntegrator::Parameters parameters;
-    parameters.integrator = Integrator::quasi_static;
+    parameters.integrator = "quasi-static";
     parameters.time_step  = 0.1;
     parameters.end_time   = 1;
     TimeIntegrator integrator(*model, {}, parameters);

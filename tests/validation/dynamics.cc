@@ -27,7 +27,7 @@ namespace
   TEST(Dynamics, FirstFrequencyOfCantilever)
   {
     const double expected = cantilever_period();
-    for (const Integrator method : {Integrator::newmark, Integrator::midpoint})
+    for (const std::string method : {"newmark", "midpoint"})
       {
         auto model =
           cantilever(50,
@@ -37,10 +37,9 @@ namespace
           released_swing(*model, method, expected / 100, 4 * expected);
         ASSERT_EQ(h.failure, "");
         const double T = zero_crossing_period(h);
-        std::cout << to_string(method) << ": period " << T << ", expected "
-                  << expected << ", relative error " << T / expected - 1
-                  << std::endl;
-        EXPECT_NEAR(T / expected, 1, 0.01) << to_string(method);
+        std::cout << method << ": period " << T << ", expected " << expected
+                  << ", relative error " << T / expected - 1 << std::endl;
+        EXPECT_NEAR(T / expected, 1, 0.01) << method;
       }
   }
 
@@ -52,10 +51,8 @@ namespace
   TEST(Dynamics, EnergyOfLargeAmplitudeSwing)
   {
     const double                       T = 2 * M_PI / (1.8751 * 1.8751);
-    std::map<Integrator, SwingHistory> runs;
-    for (const Integrator method : {Integrator::midpoint,
-                                    Integrator::newmark,
-                                    Integrator::backward_euler})
+    std::map<std::string, SwingHistory> runs;
+    for (const std::string method : {"midpoint", "newmark", "backward euler"})
       {
         auto model =
           cantilever(20,
@@ -63,16 +60,15 @@ namespace
                      2.0);
         runs[method]          = released_swing(*model, method, T / 200, 5 * T);
         const SwingHistory &h = runs[method];
-        ASSERT_EQ(h.failure, "") << to_string(method);
-        ASSERT_EQ(h.energy.size(), 1000u) << to_string(method);
-        std::cout << to_string(method) << ": initial tip deflection "
-                  << h.tip.front() << ", energy drift " << energy_drift(h)
-                  << std::endl;
+        ASSERT_EQ(h.failure, "") << method;
+        ASSERT_EQ(h.energy.size(), 1000u) << method;
+        std::cout << method << ": initial tip deflection " << h.tip.front()
+                  << ", energy drift " << energy_drift(h) << std::endl;
       }
-    EXPECT_GT(runs[Integrator::midpoint].tip.front(), 0.45);
-    EXPECT_LT(energy_drift(runs[Integrator::midpoint]), 1e-6);
+    EXPECT_GT(runs["midpoint"].tip.front(), 0.45);
+    EXPECT_LT(energy_drift(runs["midpoint"]), 1e-6);
 
-    const SwingHistory &dissipative = runs[Integrator::backward_euler];
+    const SwingHistory &dissipative = runs["backward euler"];
     for (unsigned int i = 1; i < dissipative.energy.size(); ++i)
       ASSERT_LT(dissipative.energy[i], dissipative.energy[i - 1])
         << "step " << i;
@@ -95,7 +91,7 @@ namespace
     auto model = cantilever(20, material, P);
 
     TimeIntegrator::Parameters p;
-    p.integrator = Integrator::quasi_static;
+    p.integrator = "quasi-static";
     p.time_step  = t_c / 100;
     p.end_time   = 10 * t_c;
     TimeIntegrator     integrator(*model, {}, p);

@@ -6,6 +6,8 @@
 // 15 / beta away, change them by exp(-15) = 3e-7. The load is small, so
 // the rod stays linear (w0 / L = 4e-9). With springs along z only, a load
 // along y meets no foundation: the clamped-clamped beam, P l^3 / (192 EI).
+// A stiff ring on the foundation alone, without supports, is held by it and
+// tilts as a rigid body.
 #include <common/solve_model.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
@@ -118,5 +120,42 @@ namespace
     EXPECT_NEAR(along_z[n / 2][2], all[n / 2][2], 1e-6 * w0);
     EXPECT_NEAR(along_z[n / 2][1] / beam, 1, 1e-4);
     EXPECT_NEAR(along_z[n / 2][0], 0, 1e-6 * w0);
+  }
+
+  // A stiff ring (k R^4 / EI = 4e-6) on springs in every direction and no
+  // support: the foundation alone holds it (describe_free_motions(), which
+  // StaticSolver asks first). A force F normal to its plane at vertex 0
+  // moves it as a rigid body: it translates by F / (k L) and tilts about
+  // the diameter normal to that vertex by F R / (k R^2 L / 2), with L =
+  // 2 n R sin(pi / n) the length the springs are lumped over (the sum of
+  // the chords; the tilt's sum of k l_v (R cos phi_v)^2 is k R^2 L / 2).
+  // Vertex 0 rises by 3 F / (k L), the opposite vertex sinks by F / (k L).
+  TEST(ElasticFoundation, RingOnTheFoundationAloneTiltsRigidly)
+  {
+    const unsigned int n      = 64;
+    const double       radius = 1, force = 1e-3;
+    auto               network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::ring(Vector3::Zero(),
+                                      radius,
+                                      Vector3::UnitX(),
+                                      Vector3::UnitY(),
+                                      n),
+                     true,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->create_triangulation();
+    RodModel model(std::move(network),
+                   {std::make_shared<LinearElasticRod>(
+                     RodStiffness{1e8, 1e6, 1e6, 1e6})});
+    model.add_point_force(0, Vector3(0, 0, force));
+    model.add_element_family(std::make_unique<ElasticFoundation>(
+      model.network(),
+      model.layout(),
+      ElasticFoundationParameters{k, std::nullopt, {}}));
+    const VectorType u      = solve(model, 1);
+    const double     length = 2 * n * radius * std::sin(M_PI / n);
+    const double     lift   = force / (k * length);
+    EXPECT_NEAR(u[model.layout().vertex_dof(0, 2)] / (3 * lift), 1, 1e-4);
+    EXPECT_NEAR(u[model.layout().vertex_dof(n / 2, 2)] / -lift, 1, 1e-4);
   }
 } // namespace
