@@ -37,7 +37,10 @@ namespace rodnet
           std::make_unique<JunctionKernel>(rod.hinge_kernel, ghost_spin));
         rod_junction_kernels.push_back(junction_kernels.back().get());
       }
-    layout_        = std::make_unique<DofLayout>(*network_);
+    layout_ = std::make_unique<DofLayout>(*network_);
+    // Every DoF until finalize() is told which this process owns: vectors
+    // made before it (the reference frame of a clamp) must hold them all.
+    owned_dofs = dealii::complete_index_set(layout_->n_dofs());
     configuration_ = std::make_unique<Configuration>(*network_,
                                                      *layout_,
                                                      rod_kernels,

@@ -200,3 +200,18 @@ TEST(DealIILayout, FinalizeRefusesDofsThatAreNotAllTheModels)
   EXPECT_THROW(model->finalize(dealii::complete_index_set(n + 1)),
                std::invalid_argument);
 }
+
+namespace
+{
+  TEST(DealIILayout, VectorsMadeBeforeFinalizeHoldEveryDof)
+  {
+    // A clamp reads its reference frame from such a vector before the
+    // model is finalized (the Debug library refused the empty vector this
+    // once was; the Release one read past its end).
+    auto model = rodnet::testing::elastic_model(star(), {1e3, 1.0, 1.0, 0.8});
+    const VectorType u = model->create_vector();
+    EXPECT_EQ(u.size(), model->layout().n_dofs());
+    EXPECT_EQ(u.locally_owned_elements().n_elements(),
+              model->layout().n_dofs());
+  }
+} // namespace

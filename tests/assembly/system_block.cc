@@ -88,7 +88,7 @@ TEST(SystemBlock, AssemblesTheModelsTermsAtTheCallersRows)
   // A state off equilibrium, so that the residual is not zero.
   VectorType trial = u;
   trial[model->layout().vertex_dof(n_segments / 2, 1)] += 1e-2;
-  trial.compress(dealii::VectorOperation::insert);
+  trial.compress(dealii::VectorOperation::add);
 
   VectorType own_r = model->create_vector();
   MatrixType own_k;
