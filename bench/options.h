@@ -6,7 +6,7 @@
 #ifndef RODNET_BENCH_OPTIONS_H
 #define RODNET_BENCH_OPTIONS_H
 
-#include <deal.II/base/mpi.h>
+#include <base/mpi_session.h>
 
 #include <algorithm>
 #include <functional>
@@ -104,9 +104,7 @@ namespace rodnet
         {
           Options options;
           parse(argc, argv, options.command_line());
-          dealii::Utilities::MPI::MPI_InitFinalize mpi(argc,
-                                                       argv,
-                                                       options.threads);
+          rodnet::MPISession mpi(argc, argv, options.threads);
           benchmark(options);
         }
       catch (const std::exception &e)

@@ -65,7 +65,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  rodnet::MPISession mpi(argc, argv);
   unsigned int                             cells = 12, repeats = 5;
   bench::parse(argc,
                argv,

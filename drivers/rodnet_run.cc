@@ -1,7 +1,11 @@
 /**
- * @file rodnet-run: runs a scene file.
+ * @file The driver of rodnet-run, a module (librodnet-run-driver.so) that
+ * the launcher drivers/rodnet_launcher.cc loads: runs a scene file,
+ * several, or a sweep of one.
  *
  *   rodnet-run SCENE.prm|SCENE.json [--output DIR]
+ *   rodnet-run SCENE... [--output DIR]           several scenes, one process
+ *   rodnet-run SCENE --sweep Section/Entry=VALUES [--output DIR]
  *   rodnet-run --help       usage, exit codes and every scene entry
  *   rodnet-run --version    the versions of rodnet and deal.II
  *
@@ -12,21 +16,20 @@
 #include <deal.II/base/config.h>
 #include <deal.II/base/mpi.h>
 
+#include <base/mpi_session.h>
 #include <io/interrupt.h>
+#include <io/output_directory.h>
 #include <io/scene.h>
-#include <io/scene_file.h>
 #include <io/scene_help.h>
 #include <io/scene_runner.h>
+#include <io/scene_study.h>
 #include <materials/input_limits.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
-#include <unistd.h>
+#include <vector>
 
 namespace
 {
@@ -34,6 +37,9 @@ namespace
   usage(std::ostream &out)
   {
     out << "usage: rodnet-run SCENE.prm|SCENE.json [--output DIR]\n"
+           "       rodnet-run SCENE... [--output DIR]\n"
+           "       rodnet-run SCENE --sweep Section/Entry=VALUES [--output "
+           "DIR]\n"
            "       rodnet-run --help | --version\n";
   }
 
@@ -51,6 +57,10 @@ namespace
            "the step in progress (130\nfor Ctrl-C, 143 for SIGTERM; a second "
            "signal kills). After 2 and 128 + N the\noutputs of the steps done "
            "are complete.\n"
+           "Several scenes, or a sweep of one entry (VALUES: FROM:TO:COUNT "
+           "or a list split\nby ',' or ';'), run in one process into "
+           "DIR/<k>_<label>/, with DIR/summary.csv\nand .png (the probes "
+           "at each run's end); exit code: the first failed run's.\n"
            "\n"
            "A .prm scene sets entries in subsections:\n"
            "    subsection Loads\n"
@@ -73,25 +83,6 @@ namespace
     std::cerr << "rodnet-run: " << message << "\n";
     usage(std::cerr);
     return 1;
-  }
-
-  /// Creates @p directory if needed; throws std::invalid_argument saying
-  /// why it cannot hold the outputs.
-  void
-  prepare_output_directory(const std::string &directory)
-  {
-    std::error_code error;
-    std::filesystem::create_directories(directory, error);
-    if (error || !std::filesystem::is_directory(directory))
-      throw std::invalid_argument(
-        "cannot create the output directory \"" + directory +
-        "\": " + (error ? error.message() : "a file of that name exists") +
-        "; give another with --output DIR (or Output/Directory)");
-    if (access(directory.c_str(), W_OK) != 0)
-      throw std::invalid_argument("cannot write into the output directory \"" +
-                                  directory + "\": " + std::strerror(errno) +
-                                  "; give another with --output DIR (or "
-                                  "Output/Directory)");
   }
 
   /// The line after a run and the exit code of @p summary.
@@ -131,14 +122,90 @@ namespace
   }
 } // namespace
 
-int
-main(int argc, char **argv)
+namespace
+{
+  /// The command line of rodnet-run.
+  struct Arguments
+  {
+    std::vector<std::string> scene_files;
+    std::string              output;
+    bool                     output_given = false;
+    std::string              sweep;
+  };
+
+  /// Runs one scene as before studies existed: its outputs in @p output.
+  int
+  run_one_scene(const std::string &scene_file,
+                const std::string &output,
+                const bool         output_given)
+  {
+    const auto refuse_scene = [&scene_file](const std::exception &e) {
+      std::cerr << "rodnet-run: error in scene \"" << scene_file
+                << "\": " << rodnet::error_message(e) << std::endl;
+      return 1;
+    };
+    std::unique_ptr<rodnet::Scene> scene;
+    try
+      {
+        scene = rodnet::load_scene(scene_file);
+        if (output_given)
+          scene->output_directory = output;
+        rodnet::prepare_output_directory(scene->output_directory);
+      }
+    catch (const std::exception &e)
+      {
+        return refuse_scene(e);
+      }
+    try
+      {
+        return report(rodnet::run_scene(*scene,
+                                        scene->output_directory,
+                                        &std::cout),
+                      scene->output_directory);
+      }
+    catch (const std::exception &e)
+      {
+        return refuse_scene(e);
+      }
+  }
+
+  /// Several scenes, or a sweep of one, in this process (run_study()).
+  int
+  run_many(const Arguments &arguments)
+  {
+    try
+      {
+        const bool          sweep = !arguments.sweep.empty();
+        const rodnet::Sweep values =
+          sweep ? rodnet::parse_sweep(arguments.sweep) : rodnet::Sweep{};
+        const std::vector<rodnet::StudyRun> runs =
+          sweep ? rodnet::sweep_runs(arguments.scene_files[0], values) :
+                  rodnet::scene_runs(arguments.scene_files);
+        const std::string output =
+          arguments.output_given ?
+            arguments.output :
+            rodnet::load_scene(arguments.scene_files[0])->output_directory;
+        return rodnet::run_study(runs,
+                                 sweep ? values.entry : "scene",
+                                 output,
+                                 std::cout);
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "rodnet-run: " << rodnet::error_message(e) << std::endl;
+        return 1;
+      }
+  }
+} // namespace
+
+/// main() of rodnet-run, called by the launcher with its command line.
+extern "C" __attribute__((visibility("default"))) int
+rodnet_run_main(int argc, char **argv)
 {
   // Progress lines must reach a redirected stdout (a file, a pipe) as they
   // are written, not when a block fills: flush after every output.
   std::cout << std::unitbuf;
-  std::string scene_file, output;
-  bool        output_given = false;
+  Arguments arguments;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -155,50 +222,32 @@ main(int argc, char **argv)
                     << DEAL_II_TRILINOS_VERSION_MINOR << ")" << std::endl;
           return 0;
         }
-      if (arg == "--output")
+      if (arg == "--output" || arg == "--sweep")
         {
           if (i + 1 == argc || argv[i + 1][0] == '\0')
-            return refuse_arguments("--output needs a directory, e.g. "
-                                    "--output my_run");
-          output       = argv[++i];
-          output_given = true;
+            return refuse_arguments(
+              arg == "--output" ?
+                "--output needs a directory, e.g. --output my_run" :
+                "--sweep needs Section/Entry=VALUES, e.g. --sweep "
+                "\"Loads/Steps=10:40:4\"");
+          (arg == "--output" ? arguments.output : arguments.sweep) = argv[++i];
+          arguments.output_given = arguments.output_given || arg == "--output";
         }
-      else if (!arg.empty() && arg[0] != '-' && scene_file.empty())
-        scene_file = arg;
+      else if (!arg.empty() && arg[0] != '-')
+        arguments.scene_files.push_back(arg);
       else
         return refuse_arguments("unexpected argument \"" + arg + "\"");
     }
-  if (scene_file.empty())
+  if (arguments.scene_files.empty())
     return refuse_arguments("no scene file given");
+  if (!arguments.sweep.empty() && arguments.scene_files.size() > 1)
+    return refuse_arguments("--sweep varies one scene; " +
+                            std::to_string(arguments.scene_files.size()) +
+                            " were given");
 
-  const auto refuse_scene = [&scene_file](const std::exception &e) {
-    std::cerr << "rodnet-run: error in scene \"" << scene_file
-              << "\": " << rodnet::error_message(e) << std::endl;
-    return 1;
-  };
-  std::unique_ptr<rodnet::Scene> scene;
-  try
-    {
-      dealii::ParameterHandler prm;
-      rodnet::Scene::declare_parameters(prm);
-      rodnet::read_scene_file(prm, scene_file);
-      const std::string directory =
-        std::filesystem::path(scene_file).parent_path().string();
-      scene =
-        std::make_unique<rodnet::Scene>(prm,
-                                        directory.empty() ? "." : directory);
-      if (output_given)
-        scene->output_directory = output;
-      prepare_output_directory(scene->output_directory);
-    }
-  catch (const std::exception &e)
-    {
-      return refuse_scene(e);
-    }
-
-  // MPI (for Trilinos) only now: starting it takes a second, which a
-  // refused scene need not wait for.
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // MPI (for Trilinos) only now: a refused command line need not wait for
+  // it. Open MPI's fast options for a process no launcher started.
+  rodnet::MPISession mpi(argc, argv);
   if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 1)
     {
       std::cerr << "rodnet-run: runs on one MPI process for now\n";
@@ -206,15 +255,9 @@ main(int argc, char **argv)
     }
   // After MPI_Init, which installs handlers of its own.
   rodnet::stop_cleanly_on_signals();
-  try
-    {
-      return report(rodnet::run_scene(*scene,
-                                      scene->output_directory,
-                                      &std::cout),
-                    scene->output_directory);
-    }
-  catch (const std::exception &e)
-    {
-      return refuse_scene(e);
-    }
+  if (arguments.scene_files.size() == 1 && arguments.sweep.empty())
+    return run_one_scene(arguments.scene_files[0],
+                         arguments.output,
+                         arguments.output_given);
+  return run_many(arguments);
 }

@@ -4,7 +4,7 @@
 // model (rods, materials, supports, loads), its probes and, for time
 // stepping, the inertia and the initial state.
 #include <deal.II/base/exceptions.h>
-#include <deal.II/base/mpi.h>
+#include <base/mpi_session.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
@@ -26,7 +26,7 @@ namespace
   using namespace rodnet;
 
   /// MPI, initialized once (LLVMFuzzerInitialize()).
-  dealii::Utilities::MPI::MPI_InitFinalize *mpi_session = nullptr;
+  MPISession *mpi_session = nullptr;
 
   /// Mesh and network files of a scene are relative to the test inputs.
   const std::string scene_directory = RODNET_SOURCE_DIR "/tests/input/data";
@@ -89,7 +89,7 @@ LLVMFuzzerInitialize(int *argc, char ***argv)
 {
   if (__lsan_disable != nullptr)
     __lsan_disable();
-  mpi_session = new dealii::Utilities::MPI::MPI_InitFinalize(*argc, *argv, 1);
+  mpi_session = new MPISession(*argc, *argv);
   if (__lsan_enable != nullptr)
     __lsan_enable();
   return 0;

@@ -158,7 +158,8 @@ namespace rodnet
               const std::string                              &png_path,
               const std::string                              &title,
               const std::optional<std::pair<double, double>> &x_range,
-              const std::vector<std::string>                 &units)
+              const std::vector<std::string>                 &units,
+              const unsigned int                              unplotted)
   {
     // A failed plot must never cost the user a finished computation.
     try
@@ -170,7 +171,7 @@ namespace rodnet
         if (!header.empty() && header.back() == '\r')
           header.pop_back();
         const std::vector<std::string> columns = split_csv_line(header);
-        if (columns.size() < 3)
+        if (columns.size() < 3 + unplotted)
           return warn(png_path, "\"" + csv_path + "\" has no probe column");
         std::string line;
         bool        has_rows = false;
@@ -181,7 +182,7 @@ namespace rodnet
 
         // Probes have different units: one panel each, in two columns when
         // there are many.
-        const unsigned int n_probes = columns.size() - 2;
+        const unsigned int n_probes = columns.size() - 2 - unplotted;
         const unsigned int n_cols   = n_probes > 4 ? 2 : 1;
         const unsigned int n_rows   = (n_probes + n_cols - 1) / n_cols;
         const std::string  size     = std::to_string(640 * n_cols) + "," +

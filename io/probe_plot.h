@@ -18,6 +18,8 @@ namespace rodnet
    * that range of the abscissa only (a time history after its preload).
    * @p units, if given, are the units of the columns after "step" (the
    * abscissa first), shown in brackets in the axis labels: "tip_y [m]".
+   * The last @p unplotted columns get no panel (text, such as the status
+   * of a study's runs).
    *
    * Plotting is a convenience: if the table cannot be read, has no probe or
    * no row, or gnuplot is missing or fails, one warning line goes to
@@ -30,7 +32,8 @@ namespace rodnet
     const std::string                              &png_path,
     const std::string                              &title,
     const std::optional<std::pair<double, double>> &x_range = std::nullopt,
-    const std::vector<std::string>                 &units   = {});
+    const std::vector<std::string>                 &units   = {},
+    unsigned int                                    unplotted = 0);
 } // namespace rodnet
 
 #endif

@@ -50,6 +50,7 @@ namespace rodnet
         for (const auto &p : probes)
           {
             summary.probe_names.push_back(p->name());
+            summary.probe_units.push_back(p->unit());
             units.push_back(p->unit());
           }
       }

@@ -16,6 +16,8 @@ namespace rodnet
     /// Load factor where the lowest eigenvalue crossed zero (NaN if none).
     double                   critical_load_factor = std::nan("");
     std::vector<std::string> probe_names;
+    /// The unit of each probe ("m", "rad", "-"), in the order of the names.
+    std::vector<std::string> probe_units;
     /// What the first entry of every row is: "load_factor" for load
     /// stepping, "time" for time stepping.
     std::string abscissa = "load_factor";

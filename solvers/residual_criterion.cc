@@ -193,14 +193,34 @@ namespace rodnet
   }
 
   std::function<bool(const VectorType &, const VectorType &)>
-  ResidualCriterion::newton_test(const ResidualParts &tolerance,
-                                 ResidualParts       &reached) const
+  ResidualCriterion::stall_aware_test(StepTolerance &step,
+                                      ResidualParts &reached) const
   {
-    return
-      [this, &tolerance, &reached](const VectorType &x, const VectorType &r) {
-        reached = norms(x, r);
-        return within(reached, tolerance);
-      };
+    return [this, &step, &reached](const VectorType &x, const VectorType &r) {
+      reached = norms(x, r);
+      if (within(reached, step.tolerance))
+        return true;
+      const double excess = std::max(reached.force / step.tolerance.force,
+                                     reached.moment / step.tolerance.moment);
+      // Quadratic convergence more than halves the excess at every
+      // iteration; an excess kept over two iterations is a stall.
+      const bool stalled = step.excess_before_last > 0 &&
+                           excess > 0.5 * step.excess_before_last;
+      step.excess_before_last = step.excess_last;
+      step.excess_last        = excess;
+      if (!stalled || step.measured_again || excess > 1e3)
+        return false;
+      step.measured_again = true;
+      const RoundoffNoise here =
+        roundoff_noise(x, step.load_factor, step.extra_force);
+      step.noise.floor.force =
+        std::max(step.noise.floor.force, here.floor.force);
+      step.noise.floor.moment =
+        std::max(step.noise.floor.moment, here.floor.moment);
+      step.noise.rows = here.rows;
+      step.tolerance  = tolerance(step.scale, step.noise.floor, step.rtol);
+      return within(reached, step.tolerance);
+    };
   }
 
   RoundoffNoise

@@ -54,21 +54,28 @@ namespace rodnet
     problem.tangent = [&](const VectorType &x, MatrixType &k) {
       model.assemble(x, load_factor, nullptr, &k, true, extra_force);
     };
-    problem.converged = criterion.newton_test(tolerance, reached);
 
     JudgedResult  outcome;
     ResidualParts scale;
     RoundoffNoise noise;
+    ResidualCriterion::StepTolerance step{noise,
+                                          tolerance,
+                                          scale,
+                                          parameters.relative_tolerance,
+                                          load_factor,
+                                          extra_force};
+    problem.converged = criterion.stall_aware_test(step, reached);
     try
       {
         VectorType start = scale_state != nullptr ? *scale_state : u;
         model.apply_boundary_values(start, load_factor);
-        scale        = criterion.load_scale(start, load_factor, extra_force);
-        VectorType r = model.create_vector();
-        model.assemble(u, load_factor, &r, &tangent, true, extra_force);
+        scale = criterion.load_scale(start, load_factor, extra_force);
         noise = criterion.roundoff_noise(u, load_factor, extra_force);
         if (far_start)
           {
+            // Newton assembles its own tangent: the residual alone here.
+            VectorType r = model.create_vector();
+            model.assemble(u, load_factor, &r, nullptr, true, extra_force);
             const ResidualParts out_of_balance = criterion.norms(u, r);
             scale.force  = std::max(scale.force, out_of_balance.force);
             scale.moment = std::max(scale.moment, out_of_balance.moment);
@@ -82,20 +89,21 @@ namespace rodnet
 
     // The reactions in the scale are those of the start; the solution's
     // are what counts. Where they ask for a tighter tolerance, Newton goes
-    // on from the solution. The noise hardly changes within a step: it is
-    // measured at the start only.
+    // on from the solution. The noise is measured at the start, and again
+    // where Newton stalls (ResidualCriterion::stall_aware_test()).
     unsigned int iterations = 0;
-    outcome.noise           = noise;
     for (unsigned int round = 0; round < 3; ++round)
       {
         tolerance = ResidualCriterion::tolerance(scale,
                                                  noise.floor,
                                                  parameters.relative_tolerance);
+        step.excess_before_last = step.excess_last = 0;
         static_cast<NewtonSolver::Result &>(outcome) =
           NewtonSolver(parameters.newton).solve(problem, u, tangent);
         iterations += outcome.iterations;
         outcome.iterations = iterations;
         outcome.residual   = reached;
+        outcome.noise      = noise;
         if (!outcome.converged)
           {
             outcome.failure +=

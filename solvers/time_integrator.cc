@@ -371,7 +371,6 @@ namespace rodnet
         // predictor where inertia is what the residual balances.
         VectorType r = model.create_vector();
         problem.residual(x, r);
-        problem.tangent(x, tangent);
         const ResidualParts loads = criterion.load_scale(x, start.load_factor);
         const ResidualParts predicted = criterion.norms(x, r);
         const double        length    = model.length_scale();
@@ -386,12 +385,18 @@ namespace rodnet
             noise             = criterion.roundoff_noise(x, start.load_factor);
             steps_since_noise = 0;
           }
-        const ResidualParts tolerance =
+        ResidualParts tolerance =
           ResidualCriterion::tolerance(scale,
                                        noise.floor,
                                        parameters.relative_tolerance);
-        ResidualParts reached;
-        problem.converged = criterion.newton_test(tolerance, reached);
+        ResidualParts                    reached;
+        ResidualCriterion::StepTolerance step{noise,
+                                              tolerance,
+                                              scale,
+                                              parameters.relative_tolerance,
+                                              start.load_factor,
+                                              nullptr};
+        problem.converged = criterion.stall_aware_test(step, reached);
         static_cast<NewtonSolver::Result &>(result) =
           NewtonSolver(parameters.newton).solve(problem, x, tangent);
         result.residual = reached;

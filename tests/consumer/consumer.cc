@@ -1,7 +1,6 @@
 // An outside program that uses the installed rodnet package: a clamped
 // cantilever under a small tip load, checked against P L^3 / (3 EI).
-#include <deal.II/base/mpi.h>
-
+#include <base/mpi_session.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
@@ -14,7 +13,7 @@ int
 main(int argc, char **argv)
 {
   using namespace rodnet;
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPISession mpi(argc, argv);
 
   auto network = std::make_unique<RodNetwork>();
   network->add_rod(

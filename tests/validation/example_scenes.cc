@@ -108,6 +108,11 @@ namespace
     // post-buckled tip; the tip moves by about 1 along both axes.
     {"elastica", "tip_x", 0.059784, 5e-4, 1},
     {"elastica", "tip_y", 0.795217, 5e-4, 1},
+    // P1, the gravity cantilever: the inextensible elastica's tip
+    // (BENCHMARKS.md); the rod's extension (EA = 7854 N) puts it 3.4e-5
+    // lower, in one load step.
+    {"p1_gravity_cantilever", "tip_x", 0.5157790, 1e-4, 1},
+    {"p1_gravity_cantilever", "tip_z", -0.7938299, 1e-4, 1},
     // Beam on a Winkler foundation (Hetenyi): -P beta / (2 k) under the
     // load, times exp(-beta x)(cos beta x + sin beta x) at x = 1.6 (beta = 1).
     // Measured +6.2e-4 at beta h = 0.05 (second order).
