@@ -1,5 +1,5 @@
 // The third-party headers most of rodnet's sources include, precompiled once
-// per build tree (cmake/precompiled_headers.cmake): parsing them took 15 of
+// per build tree (cmake/target_setup.cmake): parsing them took 15 of
 // the 24 s a typical source file needed to compile. Only headers from outside
 // the project belong here, so that editing rodnet does not rebuild the
 // precompiled header.

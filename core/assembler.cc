@@ -2,6 +2,7 @@
 // its Hessian: for every stencil, element kernel (strains and their
 // derivatives) -> material (energy, stress, tangent) -> chain rule ->
 // constraints -> global Trilinos objects.
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/work_stream.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -78,7 +79,9 @@ namespace rodnet
         const unsigned int n = copy.dofs.size();
         // The stencil's DoFs in increasing order, so that each row is
         // merged with the sorted column indices of the matrix in one pass
-        // (insertion sort: stencils are small, of any size).
+        // (insertion sort: stencils are small, of any size). Scratch of
+        // each thread: copiers of one color run at the same time.
+        thread_local std::vector<unsigned int> order;
         order.resize(n);
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -157,27 +160,28 @@ namespace rodnet
       Epetra_CrsMatrix        *matrix;
       double                  *values;
       const std::vector<bool> *fixed;
-      /// Scratch of add(), which the (serial) copier calls.
-      mutable std::vector<unsigned int> order;
     };
   } // namespace
 
   void
-  RodModel::assemble_family(const ElementFamily &family,
-                            const StencilState  &state,
-                            const Derivatives    derivatives,
-                            const std::function<void(const LocalContribution &)>
-                              &copier) const
+  RodModel::assemble_family(
+    const ElementFamily                                  &family,
+    const StencilState                                   &state,
+    const Derivatives                                     derivatives,
+    const std::function<void(const LocalContribution &)> &copier,
+    const std::vector<std::vector<unsigned int>>         *colors,
+    double                                               &energy) const
   {
     // Kernels throw, e.g., where a tangent flipped; the first exception is
     // rethrown after the loop so that the caller can cut the step.
     std::exception_ptr failure;
     std::mutex         failure_mutex;
+    // Each stencil's energy in its own slot, summed in order afterwards:
+    // the same sum with one thread or several.
+    std::vector<double> energies(family.n_stencils(), 0.0);
     struct NoScratch
     {};
-    dealii::WorkStream::run(
-      0u,
-      family.n_stencils(),
+    const auto worker =
       [&](const unsigned int s, NoScratch &, LocalContribution &copy) {
         copy.dofs.clear();
         copy.energy = 0;
@@ -194,12 +198,26 @@ namespace rodnet
             if (!failure)
               failure = std::current_exception();
           }
-      },
-      copier,
-      NoScratch(),
-      LocalContribution());
+        energies[s] = copy.energy;
+      };
+    const auto add = [&](const LocalContribution &copy) {
+      if (!copy.dofs.empty())
+        copier(copy);
+    };
+    if (colors != nullptr)
+      dealii::WorkStream::run(
+        *colors, worker, add, NoScratch(), LocalContribution());
+    else
+      dealii::WorkStream::run(0u,
+                              family.n_stencils(),
+                              worker,
+                              add,
+                              NoScratch(),
+                              LocalContribution());
     if (failure)
       std::rethrow_exception(failure);
+    for (const double e : energies)
+      energy += e;
   }
 
 
@@ -208,19 +226,27 @@ namespace rodnet
     const VectorType                                     &u,
     const double                                          load_factor,
     const Derivatives                                     derivatives,
-    const std::function<void(const LocalContribution &)> &copier) const
+    const std::function<void(const LocalContribution &)> &copier,
+    const bool concurrent_copier) const
   {
-    double                                               energy = 0;
-    const std::function<void(const LocalContribution &)> add =
-      [&](const LocalContribution &copy) {
-        energy += copy.energy;
-        if (!copy.dofs.empty())
-          copier(copy);
-      };
+    // One thread: the serial loop (stencil order, as always). Several:
+    // colors one after the other, the stencils of a color in parallel,
+    // copier included (a color's stencils share no row).
+    const bool in_colors = concurrent_copier &&
+                           dealii::MultithreadInfo::n_threads() > 1 &&
+                           stencil_colors.size() == families.size();
     const StencilState state{
       u, *configuration_, history, step_length, load_factor};
-    for (const auto &family : families)
-      assemble_family(*family, state, derivatives, add);
+    double energy = 0;
+    for (unsigned int f = 0; f < families.size(); ++f)
+      assemble_family(*families[f],
+                      state,
+                      derivatives,
+                      copier,
+                      in_colors && !stencil_colors[f].empty() ?
+                        &stencil_colors[f] :
+                        nullptr,
+                      energy);
     return energy;
   }
 
@@ -305,7 +331,8 @@ namespace rodnet
       u,
       load_factor,
       derivatives_for(residual, tangent),
-      [&](const LocalContribution &copy) { scatter.add(copy); });
+      [&](const LocalContribution &copy) { scatter.add(copy); },
+      true);
     add_dead_loads(u, load_factor, extra_force, nullptr, energy, residual);
     if (residual != nullptr && apply_constraints)
       homogeneous_constraints.set_zero(*residual);

@@ -2,6 +2,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <core/rod_model.h>
+#include <core/stencil_coloring.h>
 #include <families/axis_moment_family.h>
 #include <families/hinge_family.h>
 #include <families/junction_family.h>
@@ -217,6 +218,8 @@ namespace rodnet
       for (unsigned int c = 0; c < 3; ++c)
         f_ext[layout_->vertex_dof(v, c)] += forces[v][c];
     f_ext.compress(dealii::VectorOperation::add);
+    for (const auto &family : families)
+      stencil_colors.push_back(color_stencils(*family, layout_->n_dofs()));
     finalized = true;
   }
 

@@ -534,13 +534,17 @@ namespace rodnet
     support_force(const Support &s, unsigned int k, const VectorType &r) const;
 
     /// The energy of every family at @p u, with each stencil's derivatives
-    /// handed to @p copier (serially).
+    /// handed to @p copier: serially, or, where @p copier may run on
+    /// several threads at once for stencils that share no DoF
+    /// (@p concurrent_copier) and deal.II has more than one thread, color
+    /// by color in parallel (stencil_colors).
     double
     assemble_families(
       const VectorType                                     &u,
       double                                                load_factor,
       Derivatives                                           derivatives,
-      const std::function<void(const LocalContribution &)> &copier) const;
+      const std::function<void(const LocalContribution &)> &copier,
+      bool concurrent_copier = false) const;
 
     /// Adds the dead load terms at @p load_factor (and @p extra_force, if
     /// not null) to @p energy and, at the rows @p block (null: the model's
@@ -567,14 +571,18 @@ namespace rodnet
                     const VectorType  *extra_force) const;
 
     /// Assembles the stencils of @p family at @p state, handing each
-    /// stencil's contribution to @p copier (serially); rethrows the first
-    /// exception of a stencil after the loop.
+    /// stencil's contribution to @p copier: serially, or in parallel within
+    /// each of @p colors if given; rethrows the first exception of a
+    /// stencil after the loop. Adds the family's energy to @p energy in
+    /// the stencils' order, whatever the threads.
     void
     assemble_family(
       const ElementFamily                                  &family,
       const StencilState                                   &state,
       Derivatives                                           derivatives,
-      const std::function<void(const LocalContribution &)> &copier) const;
+      const std::function<void(const LocalContribution &)> &copier,
+      const std::vector<std::vector<unsigned int>>         *colors,
+      double                                               &energy) const;
 
     /// Throws std::invalid_argument unless @p locally_owned_dofs can be the
     /// DoFs of this process (see finalize()).
@@ -606,7 +614,10 @@ namespace rodnet
     std::unique_ptr<DofLayout>                      layout_;
     std::unique_ptr<Configuration>                  configuration_;
     std::vector<std::unique_ptr<ElementFamily>>     families;
-    std::vector<Support>                            support_list;
+    /// Per family, its stencils in colors that share no DoF
+    /// (color_stencils(), finalize()): the scatter of several threads.
+    std::vector<std::vector<std::vector<unsigned int>>> stencil_colors;
+    std::vector<Support>                                support_list;
     std::multimap<global_dof_index, Hold>           holds;
     std::vector<Clamp>                              clamps;
     /// Per junction: whether its rotation is held (clamped, prescribed).
