@@ -8,9 +8,12 @@
  * "Start-up").
  */
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <cstring>
 #include <iostream>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -32,6 +35,49 @@ namespace
       }
     return false;
   }
+
+  /// The folder of this program's file, from /proc/self/exe (empty if the
+  /// link cannot be read).
+  std::string
+  program_folder()
+  {
+    std::vector<char> path(4096);
+    const ssize_t n = readlink("/proc/self/exe", path.data(), path.size());
+    if (n <= 0 || static_cast<std::size_t>(n) >= path.size())
+      return "";
+    const std::string file(path.data(), static_cast<std::size_t>(n));
+    return file.substr(0, file.rfind('/'));
+  }
+
+  /// Loads the driver by absolute path, next to this program (build tree)
+  /// or in the library folder beside it (installed), then by name. A
+  /// RUNPATH is not enough: under AddressSanitizer dlopen is called from
+  /// the sanitizer's runtime, whose search path does not hold ours.
+  void *
+  load_driver(std::string &errors)
+  {
+    const std::string name = "librodnet-run-driver.so";
+    const std::string folder = program_folder();
+    std::vector<std::string> candidates;
+    if (!folder.empty())
+      {
+        candidates.push_back(folder + "/" + name);
+        candidates.push_back(folder + "/" + RODNET_DRIVER_FROM_PROGRAM + "/" +
+                             name);
+      }
+    candidates.push_back(name);
+    // RTLD_GLOBAL: deal.II's and Trilinos's plugins (Open MPI's components)
+    // resolve symbols of the libraries the driver brings.
+    for (const std::string &candidate : candidates)
+      {
+        if (candidate != name && access(candidate.c_str(), F_OK) != 0)
+          continue;
+        if (void *driver = dlopen(candidate.c_str(), RTLD_NOW | RTLD_GLOBAL))
+          return driver;
+        errors += std::string("\n  ") + dlerror();
+      }
+    return nullptr;
+  }
 } // namespace
 
 int
@@ -45,12 +91,11 @@ main(int argc, char **argv)
                 << RODNET_TRILINOS_VERSION << ")" << std::endl;
       return 0;
     }
-  // RTLD_GLOBAL: deal.II's and Trilinos's plugins (Open MPI's components)
-  // resolve symbols of the libraries the driver brings.
-  void *driver = dlopen("librodnet-run-driver.so", RTLD_NOW | RTLD_GLOBAL);
+  std::string errors;
+  void *driver = load_driver(errors);
   if (driver == nullptr)
     {
-      std::cerr << "rodnet-run: cannot load its driver: " << dlerror()
+      std::cerr << "rodnet-run: cannot load its driver:" << errors
                 << std::endl;
       return 1;
     }
