@@ -38,6 +38,13 @@ namespace rodnet
     /// meaning: 1 for none beyond the main thread).
     MPISession(int &argc, char **&argv, unsigned int max_threads = 1);
 
+    /// Ends MPI (MPI_Finalize, through deal.II).
+    ~MPISession();
+
+    MPISession(const MPISession &) = delete;
+    MPISession &
+    operator=(const MPISession &) = delete;
+
   private:
     std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> session;
   };

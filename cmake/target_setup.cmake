@@ -14,10 +14,37 @@ option(RODNET_NATIVE
   "Compile with -O3 -march=native: faster, but the binaries run only on CPUs like this one"
   OFF)
 
-# deal.II's flags for the build type, and -O3 -march=native after them (the
-# last -O wins) where RODNET_NATIVE is on.
+# Debian's deal.II puts full debugging information (-g) into its Release
+# flags too, and compressed sections into its Debug flags; both cost build
+# time (doc/performance.md, "Build time").
+set(RODNET_DEBUG_INFO "" CACHE STRING
+  "Debugging information: full (deal.II's flags), lines (-g1: functions and line tables, enough for stack traces), none (-g0); empty: none in Release, full in Debug")
+set_property(CACHE RODNET_DEBUG_INFO PROPERTY STRINGS "" full lines none)
+set(_debug_info ${RODNET_DEBUG_INFO})
+if(_debug_info STREQUAL "")
+  if(CMAKE_BUILD_TYPE STREQUAL "Debug")
+    set(_debug_info full)
+  else()
+    set(_debug_info none)
+  endif()
+endif()
+if(NOT _debug_info MATCHES "^(full|lines|none)$")
+  message(FATAL_ERROR "RODNET_DEBUG_INFO is \"${RODNET_DEBUG_INFO}\": "
+    "choose full, lines or none (or leave it empty)")
+endif()
+set(RODNET_DEBUG_INFO_FLAGS "")
+if(_debug_info STREQUAL "lines")
+  set(RODNET_DEBUG_INFO_FLAGS -g1 -Wa,--nocompress-debug-sections)
+elseif(_debug_info STREQUAL "none")
+  set(RODNET_DEBUG_INFO_FLAGS -g0)
+endif()
+
+# deal.II's flags for the build type, then the ones that override them (the
+# last -O and -g win): the debugging information asked for, and
+# -O3 -march=native where RODNET_NATIVE is on.
 function(rodnet_compile_like_deal_ii target)
   deal_ii_setup_target(${target})
+  target_compile_options(${target} PRIVATE ${RODNET_DEBUG_INFO_FLAGS})
   if(RODNET_NATIVE)
     target_compile_options(${target} PRIVATE -O3 -march=native)
   endif()
