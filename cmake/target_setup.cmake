@@ -10,6 +10,9 @@
 # "Build time").
 option(RODNET_PRECOMPILED_HEADERS
   "Precompile the third-party headers once for all targets" ON)
+option(RODNET_UNITY_BUILD
+  "Compile the library's sources in batches of 8, one compiler run per batch"
+  ON)
 option(RODNET_NATIVE
   "Compile with -O3 -march=native: faster, but the binaries run only on CPUs like this one"
   OFF)
@@ -20,8 +23,8 @@ option(RODNET_NATIVE
 set(RODNET_DEBUG_INFO "" CACHE STRING
   "Debugging information: full (deal.II's flags), lines (-g1: functions and line tables, enough for stack traces), none (-g0); empty: none in Release, full in Debug")
 set_property(CACHE RODNET_DEBUG_INFO PROPERTY STRINGS "" full lines none)
-set(_debug_info ${RODNET_DEBUG_INFO})
-if(_debug_info STREQUAL "")
+set(_debug_info "${RODNET_DEBUG_INFO}")
+if("${_debug_info}" STREQUAL "")
   if(CMAKE_BUILD_TYPE STREQUAL "Debug")
     set(_debug_info full)
   else()
@@ -65,5 +68,18 @@ function(rodnet_setup_target target)
   rodnet_compile_like_deal_ii(${target})
   if(RODNET_PRECOMPILED_HEADERS)
     target_precompile_headers(${target} REUSE_FROM rodnet_pch)
+  endif()
+endfunction()
+
+# The library's sources compiled in batches (CMake's unity build): loading
+# the precompiled header takes 3.5 s per compiler run, and the batch's
+# sources share their template instantiations; the library compiled in
+# 260 s of CPU instead of 840 s (doc/performance.md, "Build time"). Names in
+# the anonymous namespaces of the library's files must therefore differ
+# from file to file.
+function(rodnet_compile_in_batches target)
+  if(RODNET_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES
+      UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
   endif()
 endfunction()

@@ -7,17 +7,12 @@ namespace rodnet
   {
     using namespace frame_algebra;
 
-    // Offsets of the hinge stencil in the local DoF vector (hinge_kernel.h).
-    constexpr int prev_vertex = 0;
-    constexpr int prev_twist  = 3;
-    constexpr int vertex      = 4;
-    constexpr int next_twist  = 7;
-    constexpr int next_vertex = 8;
+    using namespace hinge_offsets;
 
     /// The constant part of the hinge: its two reference frames and twist.
-    struct ReferenceSegments
+    struct HingeSegments
     {
-      explicit ReferenceSegments(const HingeReference &reference)
+      explicit HingeSegments(const HingeReference &reference)
           : prev(reference.frame_prev)
           , next(reference.frame_next)
           , twist(reference.twist)
@@ -31,7 +26,7 @@ namespace rodnet
     template <typename Number>
     std::array<Number, 3>
     hinge_strains(const std::array<Number, n_hinge_dofs> &u,
-                  const ReferenceSegments                &reference)
+                  const HingeSegments                    &reference)
     {
       const auto position = [&u](const int offset) {
         return Vec<Number>{{u[offset], u[offset + 1], u[offset + 2]}};
@@ -61,7 +56,7 @@ namespace rodnet
   ClassicHinge::strains(const HingeVector    &dofs,
                         const HingeReference &reference) const
   {
-    const ReferenceSegments reference_segments(reference);
+    const HingeSegments reference_segments(reference);
     return evaluate_values<3, n_hinge_dofs>(
       dofs,
       [&reference_segments](const auto &u) {
@@ -76,7 +71,7 @@ namespace rodnet
                          HingeStrains         &result,
                          const bool            with_hessian) const
   {
-    const ReferenceSegments reference_segments(reference);
+    const HingeSegments reference_segments(reference);
     differentiate<3, n_hinge_dofs>(
       dofs,
       [&reference_segments](const auto &u) {
@@ -87,7 +82,8 @@ namespace rodnet
       with_hessian ? &result.hessian : nullptr);
   }
 
-  RODNET_REGISTER_HINGE_KERNEL(ClassicHinge,
-                               "classic",
-                               "Lestringant & Kochmann (2020): curvature binormal and reference twist")
+  RODNET_REGISTER_HINGE_KERNEL(
+    ClassicHinge,
+    "classic",
+    "Lestringant & Kochmann (2020): curvature binormal and reference twist")
 } // namespace rodnet

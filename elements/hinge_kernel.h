@@ -20,6 +20,16 @@ namespace rodnet
    */
   constexpr unsigned int n_hinge_dofs = 11;
 
+  /// Where each block of a hinge stencil starts in its local DoF vector.
+  namespace hinge_offsets
+  {
+    constexpr int prev_vertex = 0;
+    constexpr int prev_twist  = 3;
+    constexpr int vertex      = 4;
+    constexpr int next_twist  = 7;
+    constexpr int next_vertex = 8;
+  } // namespace hinge_offsets
+
   using HingeVector = Eigen::Matrix<double, n_hinge_dofs, 1>;
   using HingeMatrix = Eigen::Matrix<double, n_hinge_dofs, n_hinge_dofs>;
 

@@ -10,9 +10,9 @@ namespace rodnet
     using namespace frame_algebra;
 
     /// The constant part of a junction.
-    struct ReferenceSegments
+    struct JunctionSegments
     {
-      explicit ReferenceSegments(const JunctionReference &reference)
+      explicit JunctionSegments(const JunctionReference &reference)
           : segment(reference.segment_frame)
           , ghost(reference.ghost_frame)
           , ghost_first(reference.ghost_first)
@@ -60,7 +60,7 @@ namespace rodnet
     template <typename Number>
     std::array<Number, 3>
     junction_strains(const std::array<Number, n_junction_dofs> &u,
-                     const ReferenceSegments                   &reference,
+                     const JunctionSegments                    &reference,
                      const bool                                 simple,
                      const GhostSpin                            spin)
     {
@@ -158,7 +158,7 @@ namespace rodnet
                           const JunctionReference &reference) const
   {
     check_input(dofs);
-    const ReferenceSegments reference_segments(reference);
+    const JunctionSegments reference_segments(reference);
     return evaluate_values<3, n_junction_dofs>(dofs, [&](const auto &u) {
       return junction_strains(u, reference_segments, simple, spin);
     });
@@ -172,7 +172,7 @@ namespace rodnet
                            const bool               with_hessian) const
   {
     check_input(dofs);
-    const ReferenceSegments reference_segments(reference);
+    const JunctionSegments reference_segments(reference);
     differentiate<3, n_junction_dofs>(
       dofs,
       [&](const auto &u) {

@@ -5,12 +5,7 @@ namespace rodnet
 {
   namespace
   {
-    // Offsets of the hinge stencil in the local DoF vector (hinge_kernel.h).
-    constexpr int prev_vertex = 0;
-    constexpr int prev_twist  = 3;
-    constexpr int vertex      = 4;
-    constexpr int next_twist  = 7;
-    constexpr int next_vertex = 8;
+    using namespace hinge_offsets;
 
     // A segment frame depends on the node positions through the edge
     // e = x_{j+1} - x_j only, so its variations are computed in the reduced
@@ -208,5 +203,6 @@ namespace rodnet
 
   RODNET_REGISTER_HINGE_KERNEL(SimpleHinge,
                                "simple",
-                               "Korner, Audoly & Bhattacharya (2021): simple bending and twisting measures")
+                               "Korner, Audoly & Bhattacharya (2021): simple "
+                               "bending and twisting measures")
 } // namespace rodnet

@@ -19,7 +19,7 @@ namespace rodnet
   namespace
   {
     // Prefix of every message, so a user sees which subsection is at fault.
-    constexpr char context[] = "linear elastic rod";
+    constexpr char linear_elastic_context[] = "linear elastic rod";
   } // namespace
 
 
@@ -28,17 +28,31 @@ namespace rodnet
                          const double        G,
                          const CrossSection &section)
   {
-    internal::check_positive_entry(context, "Young's modulus", E);
-    internal::check_positive_entry(context, "Shear modulus", G);
+    internal::check_positive_entry(linear_elastic_context,
+                                   "Young's modulus",
+                                   E);
+    internal::check_positive_entry(linear_elastic_context, "Shear modulus", G);
     const RodStiffness stiffness = {E * section.area,
                                     E * section.I1,
                                     E * section.I2,
                                     G * section.J};
     const std::string  inputs    = "the modulus and the cross section";
-    internal::check_derived_value(context, inputs, "EA", stiffness.EA);
-    internal::check_derived_value(context, inputs, "EI1", stiffness.EI1);
-    internal::check_derived_value(context, inputs, "EI2", stiffness.EI2);
-    internal::check_derived_value(context, inputs, "GJ", stiffness.GJ);
+    internal::check_derived_value(linear_elastic_context,
+                                  inputs,
+                                  "EA",
+                                  stiffness.EA);
+    internal::check_derived_value(linear_elastic_context,
+                                  inputs,
+                                  "EI1",
+                                  stiffness.EI1);
+    internal::check_derived_value(linear_elastic_context,
+                                  inputs,
+                                  "EI2",
+                                  stiffness.EI2);
+    internal::check_derived_value(linear_elastic_context,
+                                  inputs,
+                                  "GJ",
+                                  stiffness.GJ);
     return stiffness;
   }
 
@@ -109,15 +123,19 @@ namespace rodnet
       : rigidities(stiffness)
       , rest_shape(natural_shape)
   {
-    internal::check_positive_entry(context, "EA", stiffness.EA);
-    internal::check_positive_entry(context, "EI1", stiffness.EI1);
-    internal::check_positive_entry(context, "EI2", stiffness.EI2);
-    internal::check_positive_entry(context, "GJ", stiffness.GJ);
+    internal::check_positive_entry(linear_elastic_context, "EA", stiffness.EA);
+    internal::check_positive_entry(linear_elastic_context,
+                                   "EI1",
+                                   stiffness.EI1);
+    internal::check_positive_entry(linear_elastic_context,
+                                   "EI2",
+                                   stiffness.EI2);
+    internal::check_positive_entry(linear_elastic_context, "GJ", stiffness.GJ);
 
     const auto check_finite = [](const char *entry, const double value) {
       AssertThrow(std::abs(value) <= max_input_magnitude,
                   dealii::ExcMessage(
-                    internal::entry_message(context,
+                    internal::entry_message(linear_elastic_context,
                                             entry,
                                             "must be finite and at most 1e100",
                                             value)));
@@ -130,7 +148,7 @@ namespace rodnet
     AssertThrow(natural_shape.axial_eigenstrain > -1. &&
                   natural_shape.axial_eigenstrain <= max_input_magnitude,
                 dealii::ExcMessage(
-                  internal::entry_message(context,
+                  internal::entry_message(linear_elastic_context,
                                           "Axial eigenstrain",
                                           "must be finite and exceed -1",
                                           natural_shape.axial_eigenstrain)));
@@ -245,9 +263,11 @@ namespace rodnet
   void
   LinearElasticRod::parse_parameters(dealii::ParameterHandler &prm)
   {
-    const StiffnessInput input =
-      parse_stiffness_input(prm, context, "Young's modulus", true);
-    RodNaturalShape shape;
+    const StiffnessInput input = parse_stiffness_input(prm,
+                                                       linear_elastic_context,
+                                                       "Young's modulus",
+                                                       true);
+    RodNaturalShape      shape;
     shape.curvature1        = prm.get_double("Natural curvature 1");
     shape.curvature2        = prm.get_double("Natural curvature 2");
     shape.twist             = prm.get_double("Natural twist");

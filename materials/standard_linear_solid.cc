@@ -20,7 +20,7 @@ namespace rodnet
   namespace
   {
     // Prefix of every message, so a user sees which subsection is at fault.
-    constexpr char context[] = "standard linear solid";
+    constexpr char standard_linear_solid_context[] = "standard linear solid";
 
     /**
      * The condensed incremental response of independent SLS modes per unit
@@ -154,10 +154,18 @@ namespace rodnet
       , ratio(modulus_ratio)
       , t_relax(relaxation_time)
   {
-    internal::check_positive_entry(context, "EA", relaxed.EA);
-    internal::check_positive_entry(context, "EI1", relaxed.EI1);
-    internal::check_positive_entry(context, "EI2", relaxed.EI2);
-    internal::check_positive_entry(context, "GJ", relaxed.GJ);
+    internal::check_positive_entry(standard_linear_solid_context,
+                                   "EA",
+                                   relaxed.EA);
+    internal::check_positive_entry(standard_linear_solid_context,
+                                   "EI1",
+                                   relaxed.EI1);
+    internal::check_positive_entry(standard_linear_solid_context,
+                                   "EI2",
+                                   relaxed.EI2);
+    internal::check_positive_entry(standard_linear_solid_context,
+                                   "GJ",
+                                   relaxed.GJ);
 
     // Either degenerate Maxwell branch is an elastic rod that would carry
     // internal variables doing nothing; more likely an entry was forgotten
@@ -165,7 +173,7 @@ namespace rodnet
     AssertThrow(
       modulus_ratio > 0. && modulus_ratio <= max_input_magnitude,
       dealii::ExcMessage(internal::entry_message(
-        context,
+        standard_linear_solid_context,
         "Modulus ratio E2/E1",
         "must be positive and at most 1e100 (without the spring E2 the "
         "dashpot carries no stress: use \"linear elastic\" with "
@@ -173,7 +181,7 @@ namespace rodnet
         modulus_ratio)));
     AssertThrow(relaxation_time > 0. && relaxation_time <= max_input_magnitude,
                 dealii::ExcMessage(internal::entry_message(
-                  context,
+                  standard_linear_solid_context,
                   "Relaxation time",
                   "must be positive and at most 1e100 (t_r = eta/E2 = 0 is a "
                   "dashpot without viscosity, the \"linear elastic\" rod "
@@ -320,7 +328,10 @@ namespace rodnet
   {
     // Without a "Shear modulus" entry: both springs share nu.
     const StiffnessInput input =
-      parse_stiffness_input(prm, context, "Young's modulus E1", false);
+      parse_stiffness_input(prm,
+                            standard_linear_solid_context,
+                            "Young's modulus E1",
+                            false);
 
     // The constructor validates; assigning only afterwards leaves *this
     // untouched when an entry is rejected.
