@@ -44,17 +44,23 @@ namespace rodnet
     }
   } // namespace
 
-  namespace
+  namespace internal
   {
     /// The tangent restricted to the free DoFs as an Eigen sparse matrix
     /// (lower triangle: all SimplicialLDLT reads), the map from free to
-    /// global indices and the magnitudes of the diagonal.
+    /// global indices and the magnitudes of the diagonal. Not in the
+    /// anonymous namespace: ConstrainedFactorization::Data holds one.
     struct FreeBlock
     {
       Eigen::SparseMatrix<double> matrix;
       std::vector<unsigned int>   global;
       Eigen::VectorXd             diagonal;
     };
+  } // namespace internal
+
+  namespace
+  {
+    using internal::FreeBlock;
 
     FreeBlock
     sparse_free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,

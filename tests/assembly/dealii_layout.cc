@@ -5,11 +5,11 @@
 // the communicator and the DoFs its caller gives it.
 
 #include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/fe/fe_values.h>
 
-#include <solvers/static_solver.h>
-
 #include <common/rod_models.h>
+#include <solvers/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@ using namespace rodnet;
 
 namespace
 {
-  constexpr unsigned int n_segments = 4;
+  constexpr unsigned int n_layout_segments = 4;
 
   /// Three rods of length 1 from a hub at the origin, welded there, in the
   /// plane z = 0 (d1 = e_z).
@@ -26,10 +26,11 @@ namespace
   star()
   {
     auto network = std::make_unique<RodNetwork>();
-    for (const Vector3 &end : {Vector3(1, 0, 0),
-                               Vector3(0, 1, 0),
-                               Vector3(-1, -1, 0).normalized()})
-      network->add_rod(generators::straight(Vector3::Zero(), end, n_segments),
+    for (const Vector3 &end :
+         {Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(-1, -1, 0).normalized()})
+      network->add_rod(generators::straight(Vector3::Zero(),
+                                            end,
+                                            n_layout_segments),
                        false,
                        Vector3::UnitZ(),
                        "simple");
@@ -58,7 +59,8 @@ namespace
       u = model->create_vector();
       StaticSolver::Parameters parameters;
       parameters.n_steps = 2;
-      StaticSolver(*model, parameters).run(u, [](const auto &, const auto &) {});
+      StaticSolver(*model, parameters).run(u, [](const auto &, const auto &) {
+      });
     }
   };
 } // namespace
@@ -115,8 +117,8 @@ TEST(DealIILayout, AJunctionIsAnIdentityConstraintOfTheOtherEnds)
   const Vector3 hub_displacement =
     model.position(star.u, hub) - network.vertex(hub);
   ASSERT_GT(hub_displacement.norm(), 1e-3);
-  const dealii::Vector<double> values = model.field_values(star.u);
-  dealii::FEValues<1, 3>       fe_values(layout.dof_handler().get_fe(),
+  const dealii::Vector<double>        values = model.field_values(star.u);
+  dealii::FEValues<1, 3>              fe_values(layout.dof_handler().get_fe(),
                                    dealii::QTrapezoid<1>(),
                                    dealii::update_values);
   std::vector<dealii::Vector<double>> at_points(2, dealii::Vector<double>(4));
@@ -137,14 +139,13 @@ TEST(DealIILayout, AJunctionIsAnIdentityConstraintOfTheOtherEnds)
 
 TEST(DealIILayout, TheModelLivesOnItsCallersCommunicator)
 {
-  auto on_self =
-    std::make_unique<RodModel>(star(),
-                               std::vector<std::shared_ptr<const RodMaterial>>(
-                                 3,
-                                 std::make_shared<LinearElasticRod>(
-                                   RodStiffness{1e3, 1.0, 1.0, 0.8})),
-                               GhostSpin::exact,
-                               MPI_COMM_SELF);
+  auto on_self = std::make_unique<RodModel>(
+    star(),
+    std::vector<std::shared_ptr<const RodMaterial>>(
+      3,
+      std::make_shared<LinearElasticRod>(RodStiffness{1e3, 1.0, 1.0, 0.8})),
+    GhostSpin::exact,
+    MPI_COMM_SELF);
   auto on_world = rodnet::testing::elastic_model(star(), {1e3, 1.0, 1.0, 0.8});
   for (RodModel *model : {on_self.get(), on_world.get()})
     {
@@ -183,7 +184,7 @@ TEST(DealIILayout, TheModelLivesOnItsCallersCommunicator)
 TEST(DealIILayout, FinalizeRefusesDofsThatAreNotAllTheModels)
 {
   auto model = rodnet::testing::elastic_model(star(), {1e3, 1.0, 1.0, 0.8});
-  const auto n = model->layout().n_dofs();
+  const auto       n = model->layout().n_dofs();
   dealii::IndexSet half(n);
   half.add_range(0, n / 2);
   try

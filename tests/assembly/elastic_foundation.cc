@@ -6,9 +6,9 @@
 // a message naming them. Derivatives: tests/assembly/global_derivatives.
 #include <core/family_request.h>
 #include <core/rod_model.h>
-#include <families/elastic_foundation.h>
 #include <materials/linear_elastic_rod.h>
 
+#include <families/elastic_foundation.h>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -19,7 +19,7 @@ namespace
   /// Rod 0: (0,0,0)-(1,0,0)-(3,0,0); rod 1: (3,0,0)-(3,2,0)-(3,2.5,0),
   /// welded to rod 0 at (3,0,0); rod 2 far away: (0,5,0)-(1,5,0).
   std::unique_ptr<RodModel>
-  make_model()
+  foundation_model()
   {
     auto network = std::make_unique<RodNetwork>();
     network->add_rod({Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(3, 0, 0)},
@@ -46,26 +46,28 @@ namespace
 
   TEST(ElasticFoundation, EnergyIsTheSumOfTheSprings)
   {
-    const double k = 7;
-    const Vector3 n = Vector3(1, 2, 2) / 3;
-    auto          bare = make_model(), founded = make_model();
+    const double  k    = 7;
+    const Vector3 n    = Vector3(1, 2, 2) / 3;
+    auto          bare = foundation_model(), founded = foundation_model();
     ElasticFoundationParameters parameters;
     parameters.stiffness = k;
     parameters.direction = Vector3(1, 2, 2);
     parameters.rods      = {0, 1};
-    founded->add_element_family(std::make_unique<ElasticFoundation>(
-      founded->network(), founded->layout(), parameters));
+    founded->add_element_family(
+      std::make_unique<ElasticFoundation>(founded->network(),
+                                          founded->layout(),
+                                          parameters));
     bare->finalize();
     founded->finalize();
 
-    VectorType   u = founded->create_vector();
-    std::mt19937 random(3);
+    VectorType                             u = founded->create_vector();
+    std::mt19937                           random(3);
     std::uniform_real_distribution<double> small(-0.1, 0.1);
     for (unsigned int i = 0; i < u.size(); ++i)
       u[i] = small(random);
     // Vertices of rods 0 and 1 along them, with their Voronoi lengths:
     // halves of the adjacent segments; the knee gets 1 (rod 0) + 1 (rod 1).
-    const RodNetwork &net = founded->network();
+    const RodNetwork                                  &net = founded->network();
     const std::vector<std::pair<unsigned int, double>> springs = {
       {net.rods()[0].vertices[0], 0.5},
       {net.rods()[0].vertices[1], 1.5},
@@ -80,20 +82,21 @@ namespace
           displacement[c] = u[founded->layout().vertex_dof(v, c)];
         expected += 0.5 * k * length * std::pow(n.dot(displacement), 2);
       }
-    const double energy =
-      founded->elastic_energy(u) - bare->elastic_energy(u);
+    const double energy = founded->elastic_energy(u) - bare->elastic_energy(u);
     EXPECT_NEAR(energy, expected, 1e-12 * expected);
     EXPECT_GT(expected, 0);
   }
 
   TEST(ElasticFoundation, IsAddedBeforeFinalizeOnly)
   {
-    auto model = make_model();
+    auto model = foundation_model();
     model->finalize();
     ElasticFoundationParameters parameters;
     parameters.stiffness = 1;
-    EXPECT_THROW(model->add_element_family(std::make_unique<ElasticFoundation>(
-                   model->network(), model->layout(), parameters)),
+    EXPECT_THROW(model->add_element_family(
+                   std::make_unique<ElasticFoundation>(model->network(),
+                                                       model->layout(),
+                                                       parameters)),
                  std::logic_error);
   }
 
@@ -115,23 +118,26 @@ namespace
 
   TEST(ElasticFoundation, RefusesBadConstants)
   {
-    const auto  model = make_model();
-    const auto &net   = model->network();
-    const auto &dofs  = model->layout();
+    const auto                  model = foundation_model();
+    const auto                 &net   = model->network();
+    const auto                 &dofs  = model->layout();
     ElasticFoundationParameters parameters;
     parameters.stiffness = -1;
-    EXPECT_NE(refusal([&] { ElasticFoundation(net, dofs, parameters); })
-                .find("modulus k must be finite and not negative"),
+    EXPECT_NE(refusal([&] {
+                ElasticFoundation(net, dofs, parameters);
+              }).find("modulus k must be finite and not negative"),
               std::string::npos);
     parameters.stiffness = 1;
     parameters.rods      = {3};
-    EXPECT_NE(refusal([&] { ElasticFoundation(net, dofs, parameters); })
-                .find("rod 3 does not exist; the network has 3 rods"),
+    EXPECT_NE(refusal([&] {
+                ElasticFoundation(net, dofs, parameters);
+              }).find("rod 3 does not exist; the network has 3 rods"),
               std::string::npos);
     parameters.rods      = {};
     parameters.direction = Vector3::Zero();
-    EXPECT_NE(refusal([&] { ElasticFoundation(net, dofs, parameters); })
-                .find("direction of the springs must be a nonzero vector"),
+    EXPECT_NE(refusal([&] {
+                ElasticFoundation(net, dofs, parameters);
+              }).find("direction of the springs must be a nonzero vector"),
               std::string::npos);
   }
 

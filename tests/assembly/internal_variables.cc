@@ -36,7 +36,7 @@ namespace
 
   /// A helix, and a welded frame (junction elements) from the generator.
   std::unique_ptr<RodModel>
-  make_model(const bool network_model)
+  viscoelastic_model(const bool network_model)
   {
     std::unique_ptr<RodNetwork> network;
     if (network_model)
@@ -77,7 +77,7 @@ namespace
 
   TEST_P(InternalVariablesInAssembly, DerivativesOfIncrementalEnergy)
   {
-    const auto model = make_model(GetParam());
+    const auto model = viscoelastic_model(GetParam());
     ASSERT_TRUE(model->has_internal_variables());
     model->set_time_step(time_step);
     std::mt19937 random(11);
@@ -128,7 +128,7 @@ namespace
 
   TEST_P(InternalVariablesInAssembly, CommitStoresClosedFormUpdate)
   {
-    const auto model = make_model(GetParam());
+    const auto model = viscoelastic_model(GetParam());
     model->set_time_step(time_step);
     std::mt19937 random(5);
     VectorType   u = model->create_vector();
@@ -205,7 +205,7 @@ namespace
 
   TEST_P(InternalVariablesInAssembly, EnergyInvariantUnderReferenceReset)
   {
-    const auto model = make_model(GetParam());
+    const auto model = viscoelastic_model(GetParam());
     model->set_time_step(time_step);
     std::mt19937 random(3);
     VectorType   u = model->create_vector();
@@ -224,7 +224,7 @@ namespace
 
   TEST(InternalVariablesInAssembly, TimeStepIsChecked)
   {
-    const auto model = make_model(false);
+    const auto model = viscoelastic_model(false);
     for (const double bad : {-1.0, std::nan(""), HUGE_VAL})
       EXPECT_THROW(model->set_time_step(bad), std::invalid_argument);
     EXPECT_NO_THROW(model->set_time_step(1e-3));

@@ -21,8 +21,8 @@ namespace
 {
   using namespace rodnet;
 
-  const unsigned int n_segments = 10;
-  const RodStiffness stiffness{1e4, 1, 2, 1};
+  const unsigned int n_interface_segments = 10;
+  const RodStiffness interface_stiffness{1e4, 1, 2, 1};
 
   /// A straight rod from the origin to (1, 0, 0.5) of 10 segments, d1 = e_z.
   std::unique_ptr<RodNetwork>
@@ -31,7 +31,7 @@ namespace
     auto network = std::make_unique<RodNetwork>();
     network->add_rod(generators::straight(Vector3(0, 0, 0),
                                           Vector3(1, 0, 0.5),
-                                          n_segments),
+                                          n_interface_segments),
                      false,
                      Vector3::UnitZ(),
                      "simple");
@@ -45,23 +45,25 @@ namespace
     return std::make_unique<RodModel>(
       straight_rod(),
       std::vector<std::shared_ptr<const RodMaterial>>{
-        std::make_shared<LinearElasticRod>(stiffness)});
+        std::make_shared<LinearElasticRod>(interface_stiffness)});
   }
 
   std::unique_ptr<DrModel>
   dr_model()
   {
     return std::make_unique<DrModel>(straight_rod(),
-                                     std::vector<RodStiffness>{stiffness});
+                                     std::vector<RodStiffness>{
+                                       interface_stiffness});
   }
 
   /// A cantilever clamped at its start under a tip force and a weight.
   SupportsAndLoads
-  cantilever(const Vector3 &tip_force, const Vector3 &weight_per_length)
+  cantilever_supports(const Vector3 &tip_force,
+                      const Vector3 &weight_per_length)
   {
     SupportsAndLoads spec;
     spec.clamps.push_back({"clamp", RodEnd{0, true}});
-    spec.point_forces.push_back({n_segments, tip_force});
+    spec.point_forces.push_back({n_interface_segments, tip_force});
     spec.distributed_forces.push_back({0, weight_per_length});
     return spec;
   }
@@ -91,11 +93,11 @@ namespace
     loads.add_distributed_force(*network, 0, q);
     loads.add_point_force(*network, 4, point);
     const std::vector<Vector3> forces = loads.vertex_forces(*network);
-    const double               h      = std::sqrt(1.25) / n_segments;
-    ASSERT_EQ(forces.size(), n_segments + 1);
-    for (unsigned int v = 0; v <= n_segments; ++v)
+    const double               h      = std::sqrt(1.25) / n_interface_segments;
+    ASSERT_EQ(forces.size(), n_interface_segments + 1);
+    for (unsigned int v = 0; v <= n_interface_segments; ++v)
       {
-        const double  share = (v == 0 || v == n_segments) ? 0.5 : 1.0;
+        const double  share = (v == 0 || v == n_interface_segments) ? 0.5 : 1.0;
         const Vector3 expected =
           share * h * q + (v == 4 ? point : Vector3(Vector3::Zero()));
         EXPECT_LT((forces[v] - expected).norm(), 1e-14) << "vertex " << v;
@@ -110,14 +112,14 @@ namespace
   TEST(ModelInterface, SameSpecificationOnBothModels)
   {
     const Vector3 P(0, 1e-4, -2e-4), q(0, 0, -1e-4);
-    const double  L = std::sqrt(1.25), h = L / n_segments;
+    const double  L = std::sqrt(1.25), h = L / n_interface_segments;
     const Vector3 total = P + L * q;
 
     auto rods = rod_model();
-    rods->apply(cantilever(P, q));
+    rods->apply(cantilever_supports(P, q));
     rods->finalize();
     auto relaxed = dr_model();
-    relaxed->apply(cantilever(P, q));
+    relaxed->apply(cantilever_supports(P, q));
     relaxed->finalize();
     EXPECT_NEAR(rods->length_scale(), L, 1e-15);
     EXPECT_NEAR(relaxed->length_scale(), L, 1e-15);
@@ -150,8 +152,10 @@ namespace
   // What the element cannot represent is refused with one message.
   TEST(ModelInterface, DynamicRelaxationRefusesRotationalLoads)
   {
-    SupportsAndLoads spec = cantilever(Vector3::UnitY(), Vector3::Zero());
-    spec.moments.push_back({"tip", n_segments, {}, Vector3::UnitZ(), 1.0});
+    SupportsAndLoads spec =
+      cantilever_supports(Vector3::UnitY(), Vector3::Zero());
+    spec.moments.push_back(
+      {"tip", n_interface_segments, {}, Vector3::UnitZ(), 1.0});
     try
       {
         dr_model()->apply(spec);

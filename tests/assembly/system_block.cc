@@ -7,10 +7,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <common/rod_models.h>
 #include <core/system_block.h>
 #include <solvers/static_solver.h>
-
-#include <common/rod_models.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -19,8 +18,8 @@ using namespace rodnet;
 
 namespace
 {
-  constexpr unsigned int n_segments = 20;
-  const RodStiffness     stiffness{1e4, 2.0, 2.0, 1.5};
+  constexpr unsigned int n_block_segments = 20;
+  const RodStiffness     block_stiffness{1e4, 2.0, 2.0, 1.5};
 
   /// A cantilever along x of length 1, clamped at x = 0, with the tip
   /// force @p force.
@@ -28,9 +27,11 @@ namespace
   cantilever(const Vector3 &force)
   {
     auto model =
-      rodnet::testing::elastic_model(rodnet::testing::straight_network(n_segments), stiffness);
+      rodnet::testing::elastic_model(rodnet::testing::straight_network(
+                                       n_block_segments),
+                                     block_stiffness);
     model->clamp_end("clamp", 0, true);
-    model->add_point_force(n_segments, force);
+    model->add_point_force(n_block_segments, force);
     model->finalize();
     return model;
   }
@@ -87,7 +88,7 @@ TEST(SystemBlock, AssemblesTheModelsTermsAtTheCallersRows)
   const VectorType u     = solved(*model);
   // A state off equilibrium, so that the residual is not zero.
   VectorType trial = u;
-  trial[model->layout().vertex_dof(n_segments / 2, 1)] += 1e-2;
+  trial[model->layout().vertex_dof(n_block_segments / 2, 1)] += 1e-2;
   trial.compress(dealii::VectorOperation::add);
 
   VectorType own_r = model->create_vector();
@@ -122,14 +123,20 @@ TEST(SystemBlock, AssemblesTheModelsTermsAtTheCallersRows)
       const bool fixed = model->constraints().is_constrained(i);
       for (unsigned int j = 0; j < n; ++j)
         if (!fixed && !model->constraints().is_constrained(j))
-          EXPECT_NEAR(k.el(offset + i, offset + j),
-                      own_k.el(i, j),
-                      1e-12 * scale)
-            << i << ", " << j;
+          {
+            EXPECT_NEAR(k.el(offset + i, offset + j),
+                        own_k.el(i, j),
+                        1e-12 * scale)
+              << i << ", " << j;
+          }
         else if (i != j)
-          EXPECT_EQ(k.el(offset + i, offset + j), 0.0) << i << ", " << j;
+          {
+            EXPECT_EQ(k.el(offset + i, offset + j), 0.0) << i << ", " << j;
+          }
       if (fixed)
-        EXPECT_GT(k.el(offset + i, offset + i), 0.0) << "DoF " << i;
+        {
+          EXPECT_GT(k.el(offset + i, offset + i), 0.0) << "DoF " << i;
+        }
     }
 }
 
@@ -143,18 +150,19 @@ TEST(SystemBlock, CoupledWithTheCallersSpringGivesTheSeriesSpringDeflection)
   const double P = 1e-3, k = 1.7, k_g = 0.9;
   auto         alone = cantilever(Vector3(0, 0, P));
   const double w_0 =
-    alone->position(solved(*alone), n_segments)[2] - 0.0; // X_tip,z = 0
+    alone->position(solved(*alone), n_block_segments)[2] - 0.0; // X_tip,z = 0
   const double k_c = P / w_0;
   // The discrete cantilever's stiffness is near 3 EI / L^3, L the length
   // beyond the midpoint of the clamped first segment.
-  const double L = 1.0 - 0.5 / n_segments;
-  EXPECT_NEAR(k_c, 3 * stiffness.EI2 / std::pow(L, 3), 0.01 * k_c);
+  const double L = 1.0 - 0.5 / n_block_segments;
+  EXPECT_NEAR(k_c, 3 * block_stiffness.EI2 / std::pow(L, 3), 0.01 * k_c);
 
   const auto         model = cantilever(Vector3(0, 0, P));
   const unsigned int n     = model->layout().n_dofs();
   const SystemBlock  block = SystemBlock::at_offset(n, 1);
-  const unsigned int tip   = block.index(model->layout().vertex_dof(n_segments, 2));
-  MatrixType         K;
+  const unsigned int tip =
+    block.index(model->layout().vertex_dof(n_block_segments, 2));
+  MatrixType K;
   make_matrix(*model, block, n + 1, {{0, 0}, {0, tip}, {tip, 0}}, K);
   VectorType U(dealii::complete_index_set(n + 1), MPI_COMM_WORLD);
   VectorType R = U, dU = U;

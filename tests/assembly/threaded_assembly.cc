@@ -89,7 +89,10 @@ namespace
     model.finalize();
     for (const auto &family : model.element_families())
       if (family->name().find("hinge") != std::string::npos)
-        EXPECT_EQ(color_stencils(*family, model.layout().n_dofs()).size(), 3u);
+        {
+          EXPECT_EQ(color_stencils(*family, model.layout().n_dofs()).size(),
+                    3u);
+        }
   }
 
   /// Residual, tangent and energy at @p u on @p threads threads.

@@ -17,6 +17,7 @@
 #include <elements/dr_beam_kernel.h>
 #include <materials/dr_beam_energy.h>
 
+#include "common/relative_error.h"
 #include "hinge_configurations.h"
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -31,9 +32,9 @@ namespace
   using namespace rodnet;
   using namespace rodnet::testing;
 
-  constexpr double       step             = 1e-6;
-  constexpr double       tolerance        = 1e-6;
-  constexpr unsigned int n_configurations = 60;
+  constexpr double       dr_step      = 1e-6;
+  constexpr double       dr_tolerance = 1e-6;
+  constexpr unsigned int n_elements   = 60;
 
   using StrainVector = Eigen::Matrix<double, 6, 1>;
   using NodeVector   = Eigen::Matrix<double, n_dr_node_dofs, 1>;
@@ -70,14 +71,6 @@ namespace
                           reference.rest_length,
                           DrBeamKinematics(dofs, reference).strains(),
                           nullptr);
-  }
-
-  template <typename Vector>
-  double
-  relative_error(const Vector &analytic, const Vector &reference)
-  {
-    return (analytic - reference).cwiseAbs().maxCoeff() /
-           std::max(1.0, analytic.cwiseAbs().maxCoeff());
   }
 
   /// Stored components (n_x, n_y) of the unit normal @p n with n_z >= 0:
@@ -234,7 +227,7 @@ namespace
   {
     std::mt19937 rng(20);
     double       max_error = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_elements; ++n)
       {
         const double rho =
           n % 2 ? uniform(rng, 0, 0.95) : uniform(rng, 1.05, 3);
@@ -249,16 +242,18 @@ namespace
           EXPECT_EQ(normal.head<2>(), Eigen::Vector2d(n_x, n_y));
 
         Eigen::Matrix<double, 3, 2> fd;
-        fd.col(0) = (dr_normal(n_x + step, n_y) - dr_normal(n_x - step, n_y)) /
-                    (2 * step);
-        fd.col(1) = (dr_normal(n_x, n_y + step) - dr_normal(n_x, n_y - step)) /
-                    (2 * step);
+        fd.col(0) =
+          (dr_normal(n_x + dr_step, n_y) - dr_normal(n_x - dr_step, n_y)) /
+          (2 * dr_step);
+        fd.col(1) =
+          (dr_normal(n_x, n_y + dr_step) - dr_normal(n_x, n_y - dr_step)) /
+          (2 * dr_step);
         max_error =
           std::max(max_error, relative_error(dr_normal_jacobian(n_x, n_y), fd));
       }
     std::cout << "dr_normal_jacobian: max relative FD error " << max_error
               << std::endl;
-    EXPECT_LT(max_error, tolerance);
+    EXPECT_LT(max_error, dr_tolerance);
   }
 
   TEST(DrBeamDerivatives, FiniteDifferences)
@@ -271,7 +266,7 @@ namespace
                                             ReferenceKind::own_a_distinct_b};
     unsigned int        n_horizontal     = 0;
 
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_elements; ++n)
       {
         // Near (1e-3) and far (0.5) from the rest state; every other
         // element has a third of its normals horizontal (eq. 12-13, second
@@ -289,14 +284,14 @@ namespace
         for (unsigned int i = 0; i < n_dr_element_dofs; ++i)
           {
             DrElementVector plus = c.dofs, minus = c.dofs;
-            plus[i] += step;
-            minus[i] -= step;
+            plus[i] += dr_step;
+            minus[i] -= dr_step;
             fd.col(i) =
               (strains(plus, c.reference) - strains(minus, c.reference)) /
-              (2 * step);
+              (2 * dr_step);
             fd_energy[i] =
               (energy(plus, c.reference) - energy(minus, c.reference)) /
-              (2 * step);
+              (2 * dr_step);
           }
 
         for (unsigned int k = 0; k < 6; ++k)
@@ -326,8 +321,8 @@ namespace
               << max_energy_error << "; " << n_horizontal
               << " horizontal normals" << std::endl;
     EXPECT_GT(n_horizontal, 10u);
-    EXPECT_LT(max_strain_error.maxCoeff(), tolerance);
-    EXPECT_LT(max_energy_error, tolerance);
+    EXPECT_LT(max_strain_error.maxCoeff(), dr_tolerance);
+    EXPECT_LT(max_energy_error, dr_tolerance);
   }
 
   Vector3
@@ -363,7 +358,7 @@ namespace
                                     ReferenceKind::distinct_both,
                                     ReferenceKind::own_a_distinct_b};
     double              max_rest = 0, max_motion = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_elements; ++n)
       {
         // Normals about x turn only where none is horizontal.
         const bool  about_x = n % 2;
@@ -483,7 +478,7 @@ namespace
   void
   expect_strains_and_energy(const Chain        &chain,
                             const StrainVector &expected,
-                            const double        tolerance,
+                            const double        dr_tolerance,
                             const double        exact_energy,
                             const std::string  &name)
   {
@@ -491,7 +486,9 @@ namespace
       {
         const StrainVector s = as_vector(chain.strains(k));
         for (unsigned int i = 0; i < 6; ++i)
-          EXPECT_NEAR(s[i], expected[i], expected[i] == 0 ? 1e-14 : tolerance)
+          EXPECT_NEAR(s[i],
+                      expected[i],
+                      expected[i] == 0 ? 1e-14 : dr_tolerance)
             << name << ": element " << k << ", strain " << i;
       }
     std::cout << name << ": energy " << chain.energy() << ", beam theory "

@@ -15,6 +15,7 @@
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
 
+#include "common/relative_error.h"
 #include "hinge_configurations.h"
 #include <Sacado.hpp>
 #include <algorithm>
@@ -26,18 +27,10 @@ namespace
   using namespace rodnet;
   using namespace rodnet::testing;
 
-  constexpr double       step               = 1e-6;
-  constexpr double       tolerance          = 1e-6;
-  constexpr double       symmetry_tolerance = 1e-10;
-  constexpr unsigned int n_configurations   = 120;
-
-  template <typename Matrix>
-  double
-  relative_error(const Matrix &analytic, const Matrix &reference)
-  {
-    return (analytic - reference).cwiseAbs().maxCoeff() /
-           std::max(1.0, analytic.cwiseAbs().maxCoeff());
-  }
+  constexpr double       hinge_step               = 1e-6;
+  constexpr double       hinge_tolerance          = 1e-6;
+  constexpr double       hinge_symmetry_tolerance = 1e-10;
+  constexpr unsigned int n_hinges                 = 120;
 
   struct ErrorSummary
   {
@@ -88,7 +81,7 @@ namespace
     std::mt19937 rng(42);
     ErrorSummary errors;
 
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_hinges; ++n)
       {
         const HingeCase c = admissible_hinge(rng, *kernel);
         HingeStrains    s;
@@ -99,18 +92,18 @@ namespace
         for (unsigned int j = 0; j < n_hinge_dofs; ++j)
           {
             HingeVector plus = c.dofs, minus = c.dofs;
-            plus[j] += step;
-            minus[j] -= step;
+            plus[j] += hinge_step;
+            minus[j] -= hinge_step;
             fd_gradient.col(j) = (kernel->strains(plus, c.reference) -
                                   kernel->strains(minus, c.reference)) /
-                                 (2 * step);
+                                 (2 * hinge_step);
             HingeStrains s_plus, s_minus;
             kernel->evaluate(plus, c.reference, s_plus, false);
             kernel->evaluate(minus, c.reference, s_minus, false);
             for (unsigned int k = 0; k < 3; ++k)
               fd_hessian[k].col(j) =
                 (s_plus.gradient.row(k) - s_minus.gradient.row(k)).transpose() /
-                (2 * step);
+                (2 * hinge_step);
           }
 
         errors.value = std::max(errors.value,
@@ -136,9 +129,9 @@ namespace
       }
 
     errors.print(name);
-    EXPECT_LT(errors.gradient, tolerance);
-    EXPECT_LT(errors.hessian, tolerance);
-    EXPECT_LT(errors.symmetry, symmetry_tolerance);
+    EXPECT_LT(errors.gradient, hinge_tolerance);
+    EXPECT_LT(errors.hessian, hinge_tolerance);
+    EXPECT_LT(errors.symmetry, hinge_symmetry_tolerance);
     EXPECT_LT(errors.value, 1e-13 * std::max(1.0, errors.max_kappa));
   }
 
@@ -217,7 +210,7 @@ namespace
     const auto   kernel = create_hinge_kernel("simple");
     std::mt19937 rng(43);
     double       max_gradient_error = 0, max_hessian_error = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_hinges; ++n)
       {
         const HingeCase c = admissible_hinge(rng, *kernel);
         HingeStrains    s;
@@ -263,7 +256,7 @@ namespace
   {
     std::mt19937 rng(7);
     ErrorSummary errors;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_hinges; ++n)
       {
         SegmentVector dofs;
         for (unsigned int j = 0; j < n_segment_dofs; ++j)
@@ -277,14 +270,15 @@ namespace
         for (unsigned int j = 0; j < n_segment_dofs; ++j)
           {
             SegmentVector plus = dofs, minus = dofs;
-            plus[j] += step;
-            minus[j] -= step;
+            plus[j] += hinge_step;
+            minus[j] -= hinge_step;
             StretchStrain s_plus, s_minus;
             evaluate_stretch(plus, rest_length, s_plus, false);
             evaluate_stretch(minus, rest_length, s_minus, false);
-            fd_gradient[j] = (s_plus.strain - s_minus.strain) / (2 * step);
+            fd_gradient[j] =
+              (s_plus.strain - s_minus.strain) / (2 * hinge_step);
             fd_hessian.col(j) =
-              (s_plus.gradient - s_minus.gradient) / (2 * step);
+              (s_plus.gradient - s_minus.gradient) / (2 * hinge_step);
           }
 
         // evaluate() against the definition.
@@ -306,9 +300,9 @@ namespace
                                   SegmentMatrix(s.hessian.transpose())));
       }
     errors.print("stretch");
-    EXPECT_LT(errors.gradient, tolerance);
-    EXPECT_LT(errors.hessian, tolerance);
-    EXPECT_LT(errors.symmetry, symmetry_tolerance);
+    EXPECT_LT(errors.gradient, hinge_tolerance);
+    EXPECT_LT(errors.hessian, hinge_tolerance);
+    EXPECT_LT(errors.symmetry, hinge_symmetry_tolerance);
     EXPECT_LT(errors.value, 1e-14);
   }
 } // namespace

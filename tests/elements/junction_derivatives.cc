@@ -13,6 +13,7 @@
 #include <elements/junction_kernel.h>
 #include <elements/junction_moment.h>
 
+#include "common/relative_error.h"
 #include "junction_configurations.h"
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -24,18 +25,10 @@ namespace
   using namespace rodnet;
   using namespace rodnet::testing;
 
-  constexpr double       step               = 1e-6;
-  constexpr double       tolerance          = 1e-6;
-  constexpr double       symmetry_tolerance = 1e-10;
-  constexpr unsigned int n_configurations   = 120;
-
-  template <typename Matrix>
-  double
-  relative_error(const Matrix &analytic, const Matrix &reference)
-  {
-    return (analytic - reference).cwiseAbs().maxCoeff() /
-           std::max(1.0, analytic.cwiseAbs().maxCoeff());
-  }
+  constexpr double       junction_step               = 1e-6;
+  constexpr double       junction_tolerance          = 1e-6;
+  constexpr double       junction_symmetry_tolerance = 1e-10;
+  constexpr unsigned int n_junctions                 = 120;
 
   /**
    * Random junctions admissible for central differences: away from the
@@ -107,7 +100,7 @@ namespace
     double max_gradient = 0, max_hessian = 0, max_symmetry = 0, max_value = 0;
     double max_kappa = 0;
 
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_junctions; ++n)
       {
         const JunctionCase c = admissible_junction(rng, kernel, spin, n);
         JunctionStrains    s;
@@ -118,18 +111,18 @@ namespace
         for (unsigned int j = 0; j < n_junction_dofs; ++j)
           {
             JunctionVector plus = c.dofs, minus = c.dofs;
-            plus[j] += step;
-            minus[j] -= step;
+            plus[j] += junction_step;
+            minus[j] -= junction_step;
             fd_gradient.col(j) = (kernel.strains(plus, c.reference) -
                                   kernel.strains(minus, c.reference)) /
-                                 (2 * step);
+                                 (2 * junction_step);
             JunctionStrains s_plus, s_minus;
             kernel.evaluate(plus, c.reference, s_plus, false);
             kernel.evaluate(minus, c.reference, s_minus, false);
             for (unsigned int k = 0; k < 3; ++k)
               fd_hessian[k].col(j) =
                 (s_plus.gradient.row(k) - s_minus.gradient.row(k)).transpose() /
-                (2 * step);
+                (2 * junction_step);
           }
 
         max_value = std::max(max_value,
@@ -158,9 +151,9 @@ namespace
               << ", Hessian " << max_hessian << "; Hessian asymmetry "
               << max_symmetry << "; evaluate() vs strains() " << max_value
               << "; max |strain| " << max_kappa << std::endl;
-    EXPECT_LT(max_gradient, tolerance);
-    EXPECT_LT(max_hessian, tolerance);
-    EXPECT_LT(max_symmetry, symmetry_tolerance);
+    EXPECT_LT(max_gradient, junction_tolerance);
+    EXPECT_LT(max_hessian, junction_tolerance);
+    EXPECT_LT(max_symmetry, junction_symmetry_tolerance);
     EXPECT_LT(max_value, 1e-13 * std::max(1.0, max_kappa));
   }
 
@@ -176,7 +169,7 @@ namespace
     std::mt19937 rng(12);
     double       max_gradient = 0, max_hessian = 0;
     unsigned int n = 0;
-    while (n < n_configurations)
+    while (n < n_junctions)
       {
         const Vector3    axis = uniform(rng, 0.5, 2) * random_unit_vector(rng);
         const Quaternion rotation =
@@ -199,13 +192,14 @@ namespace
         for (unsigned int j = 0; j < 4; ++j)
           {
             Eigen::Vector4d plus = q, minus = q;
-            plus[j] += step;
-            minus[j] -= step;
+            plus[j] += junction_step;
+            minus[j] -= junction_step;
             const RotationAngle a_plus  = rotation_angle_about(axis, plus);
             const RotationAngle a_minus = rotation_angle_about(axis, minus);
-            fd_gradient[j] = (a_plus.angle - a_minus.angle) / (2 * step);
+            fd_gradient[j] =
+              (a_plus.angle - a_minus.angle) / (2 * junction_step);
             fd_hessian.col(j) =
-              (a_plus.gradient - a_minus.gradient) / (2 * step);
+              (a_plus.gradient - a_minus.gradient) / (2 * junction_step);
           }
         max_gradient =
           std::max(max_gradient, relative_error(a.gradient, fd_gradient));
@@ -213,11 +207,11 @@ namespace
           std::max(max_hessian, relative_error(a.hessian, fd_hessian));
         EXPECT_LT(relative_error(a.hessian,
                                  Eigen::Matrix4d(a.hessian.transpose())),
-                  symmetry_tolerance);
+                  junction_symmetry_tolerance);
       }
     std::cout << "rotation_angle_about: max relative FD error gradient "
               << max_gradient << ", Hessian " << max_hessian << std::endl;
-    EXPECT_LT(max_gradient, tolerance);
-    EXPECT_LT(max_hessian, tolerance);
+    EXPECT_LT(max_gradient, junction_tolerance);
+    EXPECT_LT(max_hessian, junction_tolerance);
   }
 } // namespace

@@ -14,6 +14,7 @@
 
 #include <elements/junction_kernel.h>
 
+#include "common/relative_error.h"
 #include "junction_configurations.h"
 #include <gtest/gtest.h>
 #include <iostream>
@@ -26,16 +27,9 @@ namespace
   using namespace rodnet;
   using namespace rodnet::testing;
 
-  constexpr unsigned int n_configurations = 200;
+  constexpr unsigned int n_rotated_junctions = 200;
 
   const std::vector<std::string> measures = {"simple", "classic"};
-
-  double
-  difference(const Vector3 &a, const Vector3 &b)
-  {
-    return (a - b).cwiseAbs().maxCoeff() /
-           std::max(1.0, a.cwiseAbs().maxCoeff());
-  }
 
   /// A random reference ghost tangent and finite rotation, with t~ away
   /// from t~*, where the binormal of eq. 26 is ill-conditioned.
@@ -56,7 +50,7 @@ namespace
   {
     std::mt19937 rng(21);
     double       max_difference = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_rotated_junctions; ++n)
       {
         const auto [tangent, rotation] = rotation_for_equation_26(rng);
         const double exact =
@@ -81,7 +75,7 @@ namespace
   {
     std::mt19937 rng(22);
     double       max_difference = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_rotated_junctions; ++n)
       {
         const Vector3         tangent = random_unit_vector(rng);
         const double          angle   = uniform(rng, -3.1, 3.1);
@@ -110,7 +104,7 @@ namespace
   {
     std::mt19937 rng(23);
     double       max_difference = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_rotated_junctions; ++n)
       {
         const auto [tangent, rotation] = rotation_for_equation_26(rng);
         const double small = ghost_spin(raw_quaternion(rotation, 1.7),
@@ -131,7 +125,7 @@ namespace
   {
     std::mt19937 rng(24);
     double       max_difference = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_rotated_junctions; ++n)
       {
         const Quaternion reference =
           frame_with_tangent(random_unit_vector(rng), uniform(rng, -pi, pi));
@@ -198,7 +192,7 @@ namespace
         const JunctionKernel junction(measure);
         std::mt19937         rng(25);
         double               max_difference = 0;
-        for (unsigned int n = 0; n < n_configurations; ++n)
+        for (unsigned int n = 0; n < n_rotated_junctions; ++n)
           {
             // Twist increments below pi: the ghost spin is an angle in
             // [-pi, pi], the hinge's twist increment is not wrapped.
@@ -209,10 +203,9 @@ namespace
               {
                 const JunctionCase j =
                   junction_of_hinge(c, ghost_first, uniform(rng, -3, 3));
-                max_difference =
-                  std::max(max_difference,
-                           difference(kappa,
-                                      junction.strains(j.dofs, j.reference)));
+                max_difference = std::max(
+                  max_difference,
+                  relative_error(kappa, junction.strains(j.dofs, j.reference)));
               }
           }
         std::cout << measure << ": junction vs hinge strains, max difference "
@@ -262,7 +255,7 @@ namespace
     const JunctionKernel junction(measure(), spin());
     std::mt19937         rng(26);
     double               max_strain = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_rotated_junctions; ++n)
       {
         const Vector3 T = random_unit_vector(rng);
         JunctionCase  c;
@@ -301,7 +294,7 @@ namespace
     const JunctionKernel junction(measure(), spin());
     std::mt19937         rng(27);
     double               max_rotation = 0, max_scale = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_rotated_junctions; ++n)
       {
         const JunctionCase c     = random_junction(rng,
                                                n % 2 == 0,
@@ -326,18 +319,18 @@ namespace
           raw_quaternion(conjugated, 1);
         moved.reference.segment_frame = Q * c.reference.segment_frame;
         moved.reference.ghost_frame   = Q * c.reference.ghost_frame;
-        max_rotation =
-          std::max(max_rotation,
-                   difference(kappa,
-                              junction.strains(moved.dofs, moved.reference)));
+        max_rotation                  = std::max(
+          max_rotation,
+          relative_error(kappa, junction.strains(moved.dofs, moved.reference)));
 
         JunctionCase scaled = c;
         scaled.dofs.segment<4>(junction_dofs::rotation) *=
           (n % 3 == 0 ? -1 : 1) * uniform(rng, 1e-3, 1e3);
         max_scale =
           std::max(max_scale,
-                   difference(kappa,
-                              junction.strains(scaled.dofs, scaled.reference)));
+                   relative_error(kappa,
+                                  junction.strains(scaled.dofs,
+                                                   scaled.reference)));
       }
     std::cout << label() << ": strains change by " << max_rotation
               << " under rigid rotations, by " << max_scale

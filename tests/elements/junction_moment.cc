@@ -16,14 +16,14 @@ namespace
   using namespace rodnet;
   using namespace rodnet::testing;
 
-  constexpr double       step             = 1e-6;
-  constexpr unsigned int n_configurations = 200;
+  constexpr double       moment_step        = 1e-6;
+  constexpr unsigned int n_moment_junctions = 200;
 
   TEST(RotationAngle, EqualsAngleOfRotationsAboutAxis)
   {
     std::mt19937 rng(31);
     double       max_difference = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_moment_junctions; ++n)
       {
         const Vector3 u     = random_unit_vector(rng);
         const double  angle = uniform(rng, -3.1, 3.1);
@@ -47,7 +47,7 @@ namespace
   {
     std::mt19937 rng(32);
     double       max_difference = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_moment_junctions; ++n)
       {
         const Vector3         u     = random_unit_vector(rng);
         const double          theta = uniform(rng, -3, 3);
@@ -72,7 +72,7 @@ namespace
   {
     std::mt19937 rng(33);
     double       max_error = 0;
-    for (unsigned int n = 0; n < n_configurations; ++n)
+    for (unsigned int n = 0; n < n_moment_junctions; ++n)
       {
         Matrix3 A;
         for (unsigned int i = 0; i < 9; ++i)
@@ -89,9 +89,9 @@ namespace
         for (unsigned int j = 0; j < 4; ++j)
           {
             Eigen::Vector4d plus = q, minus = q;
-            plus[j] += step;
-            minus[j] -= step;
-            gradient[j] = (energy(plus) - energy(minus)) / (2 * step);
+            plus[j] += moment_step;
+            minus[j] -= moment_step;
+            gradient[j] = (energy(plus) - energy(minus)) / (2 * moment_step);
           }
 
         const Vector3 omega = uniform(rng, 0.1, 2) * random_unit_vector(rng);
@@ -102,7 +102,8 @@ namespace
           return Eigen::Vector4d(r.w(), r.x(), r.y(), r.z());
         };
         const double derivative =
-          (energy(superposed(step)) - energy(superposed(-step))) / (2 * step);
+          (energy(superposed(moment_step)) - energy(superposed(-moment_step))) /
+          (2 * moment_step);
         max_error = std::max(max_error,
                              std::abs(spatial_moment(q, gradient).dot(omega) -
                                       derivative) /

@@ -37,7 +37,7 @@ namespace
   }
 
   /// A cantilever that runs as it is: every case breaks one thing of it.
-  const std::string cantilever =
+  const std::string valid_cantilever =
     rodnet::testing::direct_material() +
     "subsection Geometry\n  set Segments = 10\nend\n"
     "subsection Supports\n  set Clamped ends = start\nend\n"
@@ -55,10 +55,10 @@ namespace
   std::string
   with(const std::string &name, const std::string &entries)
   {
-    return cantilever + section(name, entries);
+    return valid_cantilever + section(name, entries);
   }
 
-  const std::string time_stepping =
+  const std::string valid_time_stepping =
     section("Solver",
             "  set Method = time stepping\n"
             "  subsection Time stepping\n"
@@ -66,7 +66,7 @@ namespace
             "    set Time step = 0.1\n"
             "  end\n");
 
-  const std::string data = RODNET_SOURCE_DIR "/tests/input/data/";
+  const std::string data_folder = RODNET_SOURCE_DIR "/tests/input/data/";
 
   const std::vector<BadInput> bad_inputs = {
     // Non-finite and absurd numbers, in every kind of entry.
@@ -92,12 +92,12 @@ namespace
      1,
      "entry \"Material/linear elastic/EA\": in \"1e308\", 1e308 exceeds 1e100"},
     {"overflowing_section",
-     cantilever + section("Material",
-                          "  subsection linear elastic\n"
-                          "    set Stiffness input = section\n"
-                          "    set Young's modulus = 1\n"
-                          "    set Radius = 1e90\n"
-                          "  end\n"),
+     valid_cantilever + section("Material",
+                                "  subsection linear elastic\n"
+                                "    set Stiffness input = section\n"
+                                "    set Young's modulus = 1\n"
+                                "    set Radius = 1e90\n"
+                                "  end\n"),
      ".prm",
      "",
      1,
@@ -124,16 +124,17 @@ namespace
      1,
      "Gravity"},
     {"huge_point",
-     cantilever + section("Geometry",
-                          "  set Generator = polyline\n"
-                          "  set Points = 0,0,0; 1e200,0,0\n"),
+     valid_cantilever + section("Geometry",
+                                "  set Generator = polyline\n"
+                                "  set Points = 0,0,0; 1e200,0,0\n"),
      ".prm",
      "",
      1,
      "entry \"Geometry/Points\": in \"0,0,0; 1e200,0,0\", 1e200 exceeds "
      "1e100"},
     {"huge_expression",
-     with("Loads", "  set Point forces = end: 0, 1, 0\n") + time_stepping +
+     with("Loads", "  set Point forces = end: 0, 1, 0\n") +
+       valid_time_stepping +
        section("Solver",
                "  subsection Time stepping\n"
                "    set Load factor = 1e300*t\n"
@@ -151,7 +152,7 @@ namespace
      1,
      "entry \"Loads/Steps\": 1000000000 load steps are more than the 100000"},
     {"billion_time_steps",
-     cantilever + time_stepping +
+     valid_cantilever + valid_time_stepping +
        section("Solver",
                "  subsection Time stepping\n"
                "    set Time step = 1e-9\n"
@@ -177,9 +178,9 @@ namespace
      "entry \"Geometry/Segments\": the model would have 1000000000 segments "
      "and 4000000003 DoFs and need about"},
     {"huge_lattice",
-     cantilever + section("Geometry",
-                          "  set Generator = square lattice\n"
-                          "  set Cells = 3000, 3000\n"),
+     valid_cantilever + section("Geometry",
+                                "  set Generator = square lattice\n"
+                                "  set Cells = 3000, 3000\n"),
      ".prm",
      "",
      1,
@@ -222,7 +223,8 @@ namespace
     {"json_syntax", "{\"Geometry\": {", ".json", "", 1, "not valid JSON"},
     // Found by fuzz/scene: a value that is not UTF-8 (a Latin-1 byte).
     {"value_not_utf8",
-     cantilever + section("Output", "  set Probes = tip\xff: position end x\n"),
+     valid_cantilever +
+       section("Output", "  set Probes = tip\xff: position end x\n"),
      ".prm",
      "",
      1,
@@ -230,40 +232,40 @@ namespace
     // A portal frame (several tags per entity) read as one kinked rod,
     // whose columns run along the default director.
     {"gmsh_frame_director_along_a_column",
-     cantilever + section("Geometry",
-                          "  set Generator = gmsh\n"
-                          "  set Mesh file = " +
-                            data + "frame_v41.msh\n"),
+     valid_cantilever + section("Geometry",
+                                "  set Generator = gmsh\n"
+                                "  set Mesh file = " +
+                                  data_folder + "frame_v41.msh\n"),
      ".prm",
      "",
      1,
      "rod 0, segment 2: the director d1 hint is parallel to the segment; "
      "choose another \"Director d1\""},
     {"lattice_as_gmsh_rods",
-     cantilever + section("Geometry",
-                          "  set Generator = gmsh\n"
-                          "  set Mesh file = " +
-                            data + "square_lattice_2x2.msh\n"),
+     valid_cantilever + section("Geometry",
+                                "  set Generator = gmsh\n"
+                                "  set Mesh file = " +
+                                  data_folder + "square_lattice_2x2.msh\n"),
      ".prm",
      "",
      1,
      "use \"Generator = gmsh network\""},
     {"output_without_directory",
-     cantilever,
+     valid_cantilever,
      ".prm",
      "--output",
      1,
      "rodnet-run: --output needs a directory, e.g. --output my_run"},
     {"output_is_a_file",
-     cantilever,
+     valid_cantilever,
      ".prm",
-     "--output " + data + "frame.net",
+     "--output " + data_folder + "frame.net",
      1,
      "cannot create the output directory"},
     {"scene_is_a_directory",
      "",
      "",
-     data,
+     data_folder,
      1,
      "this is a directory, not a scene file"},
     {"missing_scene", "", "", "no_such_scene.prm", 1, "does not exist"},
@@ -381,7 +383,7 @@ namespace
   TEST(BadInputTable, ByteOrderMarkIsSkipped)
   {
     // A UTF-8 byte-order mark, as some editors write, before a valid scene.
-    std::ofstream("bom.prm") << "\xEF\xBB\xBF" << cantilever;
+    std::ofstream("bom.prm") << "\xEF\xBB\xBF" << valid_cantilever;
     const rodnet::testing::DriverOutcome o =
       run_driver_with("bom.prm --output out_bom");
     EXPECT_EQ(o.exit_code, 0) << o.output;

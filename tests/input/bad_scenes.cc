@@ -14,7 +14,7 @@ namespace
   using Outcome = rodnet::testing::DriverOutcome;
   using namespace rodnet::testing;
 
-  const std::string material = direct_material();
+  const std::string bad_scene_material = direct_material();
 
   TEST(BadScene, UnknownEntry)
   {
@@ -52,7 +52,7 @@ namespace
                        "  set Points = 0,0,0; 1,0,0; 1,0,0; 2,0,0\n"
                        "  set Segments = 2\n"
                        "end\n" +
-                         material,
+                         bad_scene_material,
                        "zero-length segment");
   }
 
@@ -64,7 +64,7 @@ namespace
                        "  set Points = 0,0,0; 1,0,0; 1,1,0; 0,0,0; 0,-1,0\n"
                        "  set Segments = 1\n"
                        "end\n" +
-                         material,
+                         bad_scene_material,
                        "coincide");
   }
 
@@ -97,7 +97,7 @@ namespace
   TEST(BadScene, DynamicRelaxationHasNoEigenvalue)
   {
     expect_input_error("dr_eigenvalue",
-                       material + dynamic_relaxation +
+                       bad_scene_material + dynamic_relaxation +
                          "subsection Supports\n  set Clamped ends = start\n"
                          "end\n"
                          "subsection Output\n  set Probes = mu: eigenvalue\n"
@@ -108,7 +108,7 @@ namespace
   TEST(BadScene, DynamicRelaxationHasNoNaturalCurvature)
   {
     expect_input_error("dr_natural_curvature",
-                       material +
+                       bad_scene_material +
                          "subsection Material\n"
                          "  subsection linear elastic\n"
                          "    set Natural curvature 1 = 2\n"
@@ -125,7 +125,7 @@ namespace
     expect_input_error("dr_horizontal_normal",
                        "subsection Geometry\n  set Director d1 = 0, 1, 0\n"
                        "end\n" +
-                         material + dynamic_relaxation,
+                         bad_scene_material + dynamic_relaxation,
                        "rod 0");
   }
 
@@ -304,7 +304,7 @@ namespace
                  "  set Segments = 50\n"
                  "  set Director d1 = 0, 0, 1\n"
                  "end\n" +
-                   material +
+                   bad_scene_material +
                    "subsection Supports\n  set Clamped ends = start\nend\n"
                    "subsection Loads\n"
                    "  set Steps = 10\n"
@@ -395,7 +395,7 @@ namespace
   {
     expect_input_error("natural_shape",
                        quarter_arc + "  set Natural shape = curved\nend\n" +
-                         material,
+                         bad_scene_material,
                        "Natural shape");
   }
 
@@ -404,7 +404,8 @@ namespace
     // Stress free as built (or prestressed: the same check), the element
     // gets a curved rod wrong.
     expect_input_error("dr_curved",
-                       quarter_arc + "end\n" + material + dynamic_relaxation +
+                       quarter_arc + "end\n" + bad_scene_material +
+                         dynamic_relaxation +
                          "subsection Supports\n  set Clamped ends = start\n"
                          "end\n",
                        "rod 0, vertex 1: the rod turns by 11.25");
@@ -415,21 +416,21 @@ namespace
     const std::string midpoint = "  set Clamp at first segment midpoint = "
                                  "true\nend\n";
     expect_input_error("midpoint_unclamped",
-                       quarter_arc + midpoint + material +
+                       quarter_arc + midpoint + bad_scene_material +
                          "subsection Supports\n  set Clamped ends = end\n"
                          "end\n",
                        "the start of rod 0 is not clamped");
     expect_input_error("midpoint_ring",
                        "subsection Geometry\n  set Generator = ring\n" +
-                         midpoint + material,
+                         midpoint + bad_scene_material,
                        "the ring generator has no open rod start");
     expect_input_error("midpoint_network",
                        "subsection Geometry\n  set Generator = frame\n" +
-                         midpoint + material,
+                         midpoint + bad_scene_material,
                        "the frame generator has no open rod start");
     expect_input_error("midpoint_dr",
                        "subsection Geometry\n  set Director d1 = 0, 0, 1\n" +
-                         midpoint + material + dynamic_relaxation +
+                         midpoint + bad_scene_material + dynamic_relaxation +
                          "subsection Supports\n  set Clamped ends = start\n"
                          "end\n",
                        "clamps at a node");
@@ -439,16 +440,16 @@ namespace
   TEST(BadScene, ElasticFoundationDirectionIsNotAVector)
   {
     expect_input_error("foundation_direction",
-                       material +
+                       bad_scene_material +
                          "subsection Elastic foundation\n  set Stiffness = 1\n"
                          "  set Direction = up\nend\n",
-                         "Elastic foundation/Direction");
+                       "Elastic foundation/Direction");
   }
 
   TEST(BadScene, ElasticFoundationOnAMissingRod)
   {
     expect_input_error("foundation_rods",
-                       material +
+                       bad_scene_material +
                          "subsection Elastic foundation\n  set Stiffness = 1\n"
                          "  set Rods = 3\nend\n",
                        "rod 3 does not exist");
@@ -457,7 +458,7 @@ namespace
   TEST(BadScene, DynamicRelaxationHasNoElasticFoundation)
   {
     expect_input_error("dr_foundation",
-                       material + dynamic_relaxation +
+                       bad_scene_material + dynamic_relaxation +
                          "subsection Supports\n  set Clamped ends = start\n"
                          "end\n"
                          "subsection Elastic foundation\n  set Stiffness = 1\n"

@@ -3,8 +3,8 @@
 // the solver (exit code 2) with a message that says so. An elastic
 // foundation holds what its springs stop and no more.
 #include <common/rod_models.h>
-#include <common/scene_text.h>
 #include <common/run_driver.h>
+#include <common/scene_text.h>
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -20,17 +20,17 @@ namespace
                             "  set Plot = false\n"
                             "end\n";
 
-  const std::string rod = "subsection Geometry\n"
-                          "  set Segments = 20\n"
-                          "  set Director d1 = 0, 0, 1\n"
-                          "end\n" +
-                          rodnet::testing::direct_material() + quiet;
+  const std::string free_rod = "subsection Geometry\n"
+                               "  set Segments = 20\n"
+                               "  set Director d1 = 0, 0, 1\n"
+                               "end\n" +
+                               rodnet::testing::direct_material() + quiet;
 
   /// The straight rod with @p supports and a transverse force at @p vertex.
   std::string
   loaded_rod(const std::string &supports, const std::string &vertex)
   {
-    return rod + "subsection Supports\n" + supports +
+    return free_rod + "subsection Supports\n" + supports +
            "end\n"
            "subsection Loads\n"
            "  set Point forces = " +
@@ -53,7 +53,7 @@ namespace
 
   TEST(FreeMotion, NoSupports)
   {
-    expect_refused("free_rod",
+    expect_refused("rod",
                    loaded_rod("", "end"),
                    "rod 0 can translate in any direction and rotate about "
                    "any axis");

@@ -17,7 +17,7 @@ namespace
   /// contains every one of @p words.
   template <typename Action>
   void
-  expect_error(Action &&action, const std::vector<std::string> &words)
+  expect_junction_error(Action &&action, const std::vector<std::string> &words)
   {
     try
       {
@@ -55,7 +55,7 @@ namespace
   TEST(JunctionErrors, RodsThatDoNotMeet)
   {
     auto network = two_rods(1e-3);
-    expect_error(
+    expect_junction_error(
       [&] {
         network->add_junction("knee",
                               JunctionKind::welded,
@@ -67,7 +67,7 @@ namespace
   TEST(JunctionErrors, PinnedJunctionOfOneRod)
   {
     auto network = two_rods(0);
-    expect_error(
+    expect_junction_error(
       [&] {
         network->add_junction("p", JunctionKind::pinned, {{0, false}});
       },
@@ -78,7 +78,7 @@ namespace
   {
     auto network = two_rods(0);
     network->add_junction("a", JunctionKind::welded, {{0, false}, {1, true}});
-    expect_error(
+    expect_junction_error(
       [&] {
         network->add_junction("b", JunctionKind::clamped, {{1, true}});
       },
@@ -90,7 +90,7 @@ namespace
     auto network = two_rods(0);
     // The second rod's first segment has zero length: refused when the rod
     // is added, naming it, before any junction can use it.
-    expect_error(
+    expect_junction_error(
       [&] {
         network->add_rod({Vector3(2, 0, 0), Vector3(2, 0, 0), Vector3(3, 0, 0)},
                          false,
@@ -111,14 +111,17 @@ namespace
       std::move(network),
       {std::make_shared<LinearElasticRod>(RodStiffness{1, 1, 1, 1}),
        std::make_shared<LinearElasticRod>(RodStiffness{1, 1, 1, 1})});
-    expect_error([&] { model.prescribe_rotation(0, Quaternion(1, 0.1, 0, 0)); },
-                 {"norm", "not 1"});
-    expect_error([&] { model.prescribe_rotation(0, Vector3(0, 0, 2), 1.0); },
-                 {"\"clamp\"", "unit vector"});
-    expect_error([&] { model.prescribe_rotation(1, Vector3::UnitZ(), 1.0); },
-                 {"\"knee\"", "pinned junction has no rotation"});
-    expect_error([&] { model.add_moment(0, Vector3::UnitZ(), 1.0); },
-                 {"\"clamp\"", "no free rotation"});
+    expect_junction_error(
+      [&] { model.prescribe_rotation(0, Quaternion(1, 0.1, 0, 0)); },
+      {"norm", "not 1"});
+    expect_junction_error(
+      [&] { model.prescribe_rotation(0, Vector3(0, 0, 2), 1.0); },
+      {"\"clamp\"", "unit vector"});
+    expect_junction_error(
+      [&] { model.prescribe_rotation(1, Vector3::UnitZ(), 1.0); },
+      {"\"knee\"", "pinned junction has no rotation"});
+    expect_junction_error([&] { model.add_moment(0, Vector3::UnitZ(), 1.0); },
+                          {"\"clamp\"", "no free rotation"});
     // A unit quaternion is accepted.
     EXPECT_NO_THROW(
       model.prescribe_rotation(0,

@@ -46,7 +46,7 @@ namespace
 
   /// Writes @p text to @p path; returns @p path.
   std::string
-  write(const std::string &path, const std::string &text)
+  write_scene_file(const std::string &path, const std::string &text)
   {
     std::ofstream(path) << text;
     return path;
@@ -101,7 +101,8 @@ namespace
     // w = P L^3 / (3 EI) with L = 1, EI = 1: each run has its own force
     // (relative error of the discrete, slightly nonlinear rod < 2e-3 at
     // P <= 2e-4).
-    const std::string scene = write("study_cantilever.prm", cantilever_scene("0"));
+    const std::string scene =
+      write_scene_file("study_cantilever.prm", cantilever_scene("0"));
     std::filesystem::remove_all("out_sweep");
     const auto o = run_driver_with(
       scene + " --sweep \"Loads/Point forces=end: 0, 0, 1e-4; end: 0, 0, "
@@ -123,8 +124,8 @@ namespace
         EXPECT_EQ(rows[k][3], "done");
         const double P = k * 1e-4;
         EXPECT_NEAR(std::stod(rows[k][2]), P / 3, 2e-3 * P / 3);
-        EXPECT_TRUE(std::filesystem::exists("out_sweep/" + rows[k][6] +
-                                            "/probes.csv"))
+        EXPECT_TRUE(
+          std::filesystem::exists("out_sweep/" + rows[k][6] + "/probes.csv"))
           << rows[k][6];
       }
     EXPECT_TRUE(std::filesystem::exists("out_sweep/summary.png"));
@@ -135,10 +136,10 @@ namespace
     // Load steps 1, 2, 3: the same answer, as many converged steps as the
     // value, and the value in the parameter column.
     const std::string scene =
-      write("study_steps.prm", cantilever_scene("1e-4"));
+      write_scene_file("study_steps.prm", cantilever_scene("1e-4"));
     std::filesystem::remove_all("out_steps");
-    const auto o = run_driver_with(
-      scene + " --sweep Loads/Steps=1:3:3 --output out_steps");
+    const auto o =
+      run_driver_with(scene + " --sweep Loads/Steps=1:3:3 --output out_steps");
     ASSERT_EQ(o.exit_code, 0) << o.output;
     const auto rows = read_csv("out_steps/summary.csv");
     ASSERT_EQ(rows.size(), 4u);
@@ -147,14 +148,17 @@ namespace
         EXPECT_EQ(std::stod(rows[k][1]), k);
         EXPECT_EQ(rows[k][4], std::to_string(k));
         EXPECT_NEAR(std::stod(rows[k][2]), 1e-4 / 3, 1e-7);
-        EXPECT_EQ(rows[k][6], std::to_string(k) + "_Steps=" + std::to_string(k));
+        EXPECT_EQ(rows[k][6],
+                  std::to_string(k) + "_Steps=" + std::to_string(k));
       }
   }
 
   TEST(Study, SeveralScenesInOneProcess)
   {
-    const std::string a = write("study_a.prm", cantilever_scene("1e-4"));
-    const std::string b = write("study_b.prm", cantilever_scene("-2e-4"));
+    const std::string a =
+      write_scene_file("study_a.prm", cantilever_scene("1e-4"));
+    const std::string b =
+      write_scene_file("study_b.prm", cantilever_scene("-2e-4"));
     std::filesystem::remove_all("out_two");
     const auto o = run_driver_with(a + " " + b + " --output out_two");
     ASSERT_EQ(o.exit_code, 0) << o.output;
@@ -169,7 +173,8 @@ namespace
   TEST(Study, EveryRunIsCheckedBeforeTheFirst)
   {
     // The third value is refused by the entry's pattern: nothing runs.
-    const std::string scene = write("study_bad.prm", cantilever_scene("1e-4"));
+    const std::string scene =
+      write_scene_file("study_bad.prm", cantilever_scene("1e-4"));
     std::filesystem::remove_all("out_bad");
     auto o = run_driver_with(
       scene + " --sweep \"Loads/Steps=1,2,two\" --output out_bad");
@@ -202,15 +207,16 @@ namespace
     // of half of it: the first run stops early (exit code 2), the second,
     // with 25, completes.
     const std::string scene =
-      write("study_fail.prm",
-            cantilever_scene("0.3") + "subsection Solver\n"
-                                      "  set Minimum step fraction = 0.5\n"
-                                      "end\n");
+      write_scene_file("study_fail.prm",
+                       cantilever_scene("0.3") +
+                         "subsection Solver\n"
+                         "  set Minimum step fraction = 0.5\n"
+                         "end\n");
     std::filesystem::remove_all("out_fail");
     const auto o = run_driver_with(
       scene + " --sweep \"Solver/Max iterations=1,25\" --output out_fail");
     EXPECT_EQ(o.exit_code, 2) << o.output;
-    std::istringstream lines(read_file("out_fail/summary.csv"));
+    std::istringstream       lines(read_file("out_fail/summary.csv"));
     std::vector<std::string> rows;
     for (std::string line; std::getline(lines, line);)
       rows.push_back(line);

@@ -58,16 +58,16 @@ namespace
 {
   using namespace rodnet;
 
-  constexpr unsigned int n_segments = 8;
-  const RodStiffness     stiffness{1e4, 1, 1, 1};
+  constexpr unsigned int n_probed_segments = 8;
+  const RodStiffness     probed_stiffness{1e4, 1, 1, 1};
 
   std::unique_ptr<RodNetwork>
-  straight_rod()
+  probed_rod_network()
   {
     auto network = std::make_unique<RodNetwork>();
     network->add_rod(generators::straight(Vector3(0, 0, 0),
                                           Vector3(1, 0, 0),
-                                          n_segments),
+                                          n_probed_segments),
                      false,
                      Vector3::UnitZ(),
                      "simple");
@@ -84,7 +84,7 @@ namespace
   {
     const Vector3 end_move(0.125, 0.3, 0.4);
     for (unsigned int c = 0; c < 3; ++c)
-      u[dof(n_segments, c)] = end_move[c];
+      u[dof(n_probed_segments, c)] = end_move[c];
     u[dof(4, 2)] = 0.25;
   }
 
@@ -102,8 +102,8 @@ namespace
 
   TEST(ProbeKinds, OneProbeClassReadsEitherModel)
   {
-    RodModel rods(straight_rod(),
-                  {std::make_shared<LinearElasticRod>(stiffness)});
+    RodModel rods(probed_rod_network(),
+                  {std::make_shared<LinearElasticRod>(probed_stiffness)});
     rods.finalize();
     VectorType u = rods.create_vector();
     displace(u, [&](unsigned int v, unsigned int c) {
@@ -114,7 +114,7 @@ namespace
     EXPECT_EQ(probes[0]->unit(), "m");
     expect_probe_values(evaluate_probes(probes, rods, u, 1.0));
 
-    DrModel beams(straight_rod(), {stiffness});
+    DrModel beams(probed_rod_network(), {probed_stiffness});
     beams.finalize();
     DrVector w = beams.create_vector();
     displace(w, [&](unsigned int v, unsigned int c) {
@@ -136,8 +136,8 @@ namespace
 
   TEST(ProbeKinds, MalformedProbesAreRefusedNamingThem)
   {
-    RodModel rods(straight_rod(),
-                  {std::make_shared<LinearElasticRod>(stiffness)});
+    RodModel rods(probed_rod_network(),
+                  {std::make_shared<LinearElasticRod>(probed_stiffness)});
     rods.finalize();
     const auto message = [&](const std::string &text) {
       try
@@ -158,9 +158,10 @@ namespace
               "\"energy\"");
     EXPECT_NE(message("d: distance start nowhere").find("nowhere"),
               std::string::npos);
-    EXPECT_NE(message("a: angle end").find("unknown probe kind \"angle\"; "
-                                           "known: distance <vertex> "
-                                           "<vertex> [m], eigenvalue"),
+    EXPECT_NE(message("a: angle end")
+                .find("unknown probe kind \"angle\"; "
+                      "known: distance <vertex> "
+                      "<vertex> [m], eigenvalue"),
               std::string::npos);
   }
 } // namespace

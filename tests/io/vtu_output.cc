@@ -287,11 +287,13 @@ TEST(VtuOutput, DrawsRodEndsAtAJunctionWithTheJunctionsDisplacement)
   unsigned int n_knee_points = 0;
   for (unsigned int p = 0; 3 * p < points.size(); ++p)
     {
-      const unsigned int cell   = p / 2;
-      const unsigned int vertex = dealii::TriaActiveIterator<
-                                    dealii::CellAccessor<1, 3>>(
-                                    &net.triangulation(), 0, cell)
-                                    ->vertex_index(p % 2);
+      const unsigned int cell = p / 2;
+      const unsigned int vertex =
+        dealii::TriaActiveIterator<dealii::CellAccessor<1, 3>>(
+          &net.triangulation(),
+          0,
+          cell)
+          ->vertex_index(p % 2);
       const bool    at_knee = net.vertex(vertex).isApprox(net.vertex(knee));
       const Vector3 expected =
         net.vertex(vertex) + (at_knee ? lift : Vector3::Zero());
@@ -361,7 +363,7 @@ TEST(VtuOutput, WritesDynamicRelaxationStates)
   for (unsigned int cell = 0; cell < n_segments; ++cell)
     for (unsigned int k = 0; k < 2; ++k)
       {
-        const unsigned int p = 2 * cell + k;
+        const unsigned int p   = 2 * cell + k;
         const Vector3 expected = model.network().vertex(cell + k) + translation;
         for (unsigned int c = 0; c < 3; ++c)
           {
@@ -402,9 +404,9 @@ TEST(ProbePlot, MakesPng)
     << "step,load_factor,tip x,\"a,b\",it's_y\n"
     << "0,0,0,1,5\n1,0.5,0.1,2,4\n2,1,0.3,2.5,nan\n";
   const fs::path png = dir / "probes.png";
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   plot_probes((dir / "probes.csv").string(), png.string(), "it's a test");
-  const std::string messages = testing::internal::GetCapturedStderr();
+  const std::string messages = ::testing::internal::GetCapturedStderr();
   EXPECT_EQ(messages, "");
   ASSERT_TRUE(fs::exists(png));
   EXPECT_GT(fs::file_size(png), 0u);
@@ -416,11 +418,11 @@ TEST(ProbePlot, WarnsOnceAndReturnsWhenItCannotPlot)
   const fs::path dir = scratch("no_plot");
   fs::create_directories(dir);
 
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   plot_probes((dir / "missing.csv").string(),
               (dir / "missing.png").string(),
               "missing");
-  std::string messages = testing::internal::GetCapturedStderr();
+  std::string messages = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(messages.find("warning"), std::string::npos);
   EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
 
@@ -428,11 +430,11 @@ TEST(ProbePlot, WarnsOnceAndReturnsWhenItCannotPlot)
   std::ofstream(dir / "probes.csv") << "step,load_factor,x\n0,0,1\n1,1,2\n";
   const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
   setenv("PATH", dir.c_str(), 1);
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   plot_probes((dir / "probes.csv").string(),
               (dir / "probes.png").string(),
               "no gnuplot");
-  messages = testing::internal::GetCapturedStderr();
+  messages = ::testing::internal::GetCapturedStderr();
   setenv("PATH", path.c_str(), 1);
   EXPECT_NE(messages.find("gnuplot"), std::string::npos) << messages;
   EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
@@ -447,11 +449,11 @@ TEST(ProbePlot, WarnsOnceWhenGnuplotFails)
   fs::create_directories(dir);
   // gnuplot refuses a panel without a single defined value.
   std::ofstream(dir / "probes.csv") << "step,load_factor,x\n0,0,nan\n";
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   plot_probes((dir / "probes.csv").string(),
               (dir / "probes.png").string(),
               "undefined");
-  const std::string messages = testing::internal::GetCapturedStderr();
+  const std::string messages = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(messages.find("undefined"), std::string::npos) << messages;
   EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
 }

@@ -13,12 +13,12 @@ using namespace rodnet;
 
 namespace
 {
-  const double pi = dealii::numbers::PI;
+  const double section_pi = dealii::numbers::PI;
 
   /// Message of the exception thrown by @p f, or "" if none is.
   template <typename F>
   std::string
-  error_message(F f)
+  section_error_message(F f)
   {
     try
       {
@@ -36,10 +36,10 @@ TEST(CrossSection, Circle)
 {
   const double r = 3e-3;
   const auto   c = circle_section(r);
-  EXPECT_DOUBLE_EQ(c.area, pi * r * r);
-  EXPECT_DOUBLE_EQ(c.I1, pi * std::pow(r, 4) / 4.);
-  EXPECT_DOUBLE_EQ(c.I2, pi * std::pow(r, 4) / 4.);
-  EXPECT_DOUBLE_EQ(c.J, pi * std::pow(r, 4) / 2.);
+  EXPECT_DOUBLE_EQ(c.area, section_pi * r * r);
+  EXPECT_DOUBLE_EQ(c.I1, section_pi * std::pow(r, 4) / 4.);
+  EXPECT_DOUBLE_EQ(c.I2, section_pi * std::pow(r, 4) / 4.);
+  EXPECT_DOUBLE_EQ(c.J, section_pi * std::pow(r, 4) / 2.);
 }
 
 TEST(CrossSection, SquareTorsionMatchesTable)
@@ -94,19 +94,23 @@ TEST(CrossSection, Explicit)
 
 TEST(CrossSection, RejectsInadmissibleDimensionsByName)
 {
-  EXPECT_NE(error_message([] { circle_section(0.); }).find("\"Radius\""),
+  EXPECT_NE(section_error_message([] {
+              circle_section(0.);
+            }).find("\"Radius\""),
             std::string::npos);
-  EXPECT_NE(error_message([] { circle_section(NAN); }).find("\"Radius\""),
+  EXPECT_NE(section_error_message([] {
+              circle_section(NAN);
+            }).find("\"Radius\""),
             std::string::npos);
-  EXPECT_NE(error_message([] {
+  EXPECT_NE(section_error_message([] {
               rectangle_section(1., -1.);
             }).find("\"Height\""),
             std::string::npos);
-  EXPECT_NE(error_message([] {
+  EXPECT_NE(section_error_message([] {
               rectangle_section(INFINITY, 1.);
             }).find("\"Width\""),
             std::string::npos);
-  EXPECT_NE(error_message([] {
+  EXPECT_NE(section_error_message([] {
               explicit_section(1., 1., 0., 1.);
             }).find("\"I2\""),
             std::string::npos);

@@ -16,14 +16,14 @@ using namespace rodnet;
 
 namespace
 {
-  const double pi = dealii::numbers::PI;
+  const double parameters_pi = dealii::numbers::PI;
 
   /**
    * Creates "linear elastic" through the registry, as a scene does, and
    * reads it from @p entries placed in its subsection.
    */
   LinearElasticRod
-  parse(const std::string &entries)
+  parse_linear_elastic(const std::string &entries)
   {
     const std::unique_ptr<RodMaterial> material =
       MaterialRegistry::instance().create("linear elastic");
@@ -46,11 +46,11 @@ namespace
 
   /// Message of the exception @p entries cause, or "" if none.
   std::string
-  error_message(const std::string &entries)
+  linear_elastic_error(const std::string &entries)
   {
     try
       {
-        parse(entries);
+        parse_linear_elastic(entries);
       }
     catch (const std::exception &e)
       {
@@ -63,30 +63,31 @@ namespace
 TEST(MaterialParameters, SectionCircleFromPoissonsRatio)
 {
   const double E = 1e8, nu = 0.5, r = 5e-3;
-  const auto   rod = parse("set Young's modulus = 1e8\n"
-                           "set Poisson's ratio = 0.5\n"
-                           "set Cross section = circle\n"
-                           "set Radius = 5e-3");
+  const auto   rod = parse_linear_elastic("set Young's modulus = 1e8\n"
+                                          "set Poisson's ratio = 0.5\n"
+                                          "set Cross section = circle\n"
+                                          "set Radius = 5e-3");
   const auto  &k   = rod.stiffness();
   EXPECT_NEAR(k.EI1, 0.0490874, 1e-6 * 0.0490874);
   EXPECT_NEAR(k.EI2, 0.0490874, 1e-6 * 0.0490874);
-  EXPECT_DOUBLE_EQ(k.EA, E * pi * r * r);
-  EXPECT_DOUBLE_EQ(k.GJ, E / (2. * (1. + nu)) * pi * std::pow(r, 4) / 2.);
+  EXPECT_DOUBLE_EQ(k.EA, E * parameters_pi * r * r);
+  EXPECT_DOUBLE_EQ(k.GJ,
+                   E / (2. * (1. + nu)) * parameters_pi * std::pow(r, 4) / 2.);
 }
 
 TEST(MaterialParameters, SectionRectangleWithShearModulusAndNaturalShape)
 {
   const double E = 2e9, G = 5e8, w = 0.02, h = 0.005;
-  const auto   rod = parse("set Young's modulus = 2e9\n"
-                           "set Shear modulus = 5e8\n"
-                           "set Poisson's ratio = -0.5\n"
-                           "set Cross section = rectangle\n"
-                           "set Width = 0.02\n"
-                           "set Height = 0.005\n"
-                           "set Natural curvature 1 = 1.5\n"
-                           "set Natural curvature 2 = -2\n"
-                           "set Natural twist = 0.25\n"
-                           "set Axial eigenstrain = -0.03");
+  const auto   rod = parse_linear_elastic("set Young's modulus = 2e9\n"
+                                          "set Shear modulus = 5e8\n"
+                                          "set Poisson's ratio = -0.5\n"
+                                          "set Cross section = rectangle\n"
+                                          "set Width = 0.02\n"
+                                          "set Height = 0.005\n"
+                                          "set Natural curvature 1 = 1.5\n"
+                                          "set Natural curvature 2 = -2\n"
+                                          "set Natural twist = 0.25\n"
+                                          "set Axial eigenstrain = -0.03");
   const auto  &k   = rod.stiffness();
   // Width along d1, height along d2; the given G overrides nu.
   EXPECT_DOUBLE_EQ(k.EA, E * w * h);
@@ -104,7 +105,8 @@ TEST(MaterialParameters, SectionRectangleWithShearModulusAndNaturalShape)
 
 TEST(MaterialParameters, SectionExplicit)
 {
-  const auto rod = parse("set Young's modulus = 10\n"
+  const auto rod =
+    parse_linear_elastic("set Young's modulus = 10\n"
                          "set Shear modulus = 4\n"
                          "set Cross section = explicit\n"
                          "set Area = 2\nset I1 = 3\nset I2 = 5\nset J = 7");
@@ -116,7 +118,8 @@ TEST(MaterialParameters, SectionExplicit)
 
 TEST(MaterialParameters, Direct)
 {
-  const auto rod = parse("set Stiffness input = direct\n"
+  const auto rod =
+    parse_linear_elastic("set Stiffness input = direct\n"
                          "set EA = 1e4\nset EI1 = 0.25\nset EI2 = 0.5\n"
                          "set GJ = 0.125");
   EXPECT_EQ(rod.stiffness().EA, 1e4);
@@ -132,33 +135,33 @@ TEST(MaterialParameters, ErrorsNameTheEntry)
                              "set EI1 = 1\nset EI2 = 1\nset GJ = 1\n";
   const std::string circle = "set Young's modulus = 1e8\nset Radius = 1e-3\n";
 
-  const std::string negative_ea = error_message(direct + "set EA = -1");
+  const std::string negative_ea = linear_elastic_error(direct + "set EA = -1");
   EXPECT_NE(negative_ea.find("EA"), std::string::npos) << negative_ea;
   EXPECT_NE(negative_ea.find("-1"), std::string::npos) << negative_ea;
 
-  const std::string unset_ea = error_message(direct);
+  const std::string unset_ea = linear_elastic_error(direct);
   EXPECT_NE(unset_ea.find("\"EA\""), std::string::npos) << unset_ea;
 
   const std::string zero_radius =
-    error_message("set Young's modulus = 1e8\nset Radius = 0");
+    linear_elastic_error("set Young's modulus = 1e8\nset Radius = 0");
   EXPECT_NE(zero_radius.find("\"Radius\""), std::string::npos) << zero_radius;
 
   const std::string zero_modulus =
-    error_message("set Young's modulus = 0\nset Radius = 1e-3");
+    linear_elastic_error("set Young's modulus = 0\nset Radius = 1e-3");
   EXPECT_NE(zero_modulus.find("\"Young's modulus\""), std::string::npos)
     << zero_modulus;
 
   const std::string large_nu =
-    error_message(circle + "set Poisson's ratio = 0.7");
+    linear_elastic_error(circle + "set Poisson's ratio = 0.7");
   EXPECT_NE(large_nu.find("Poisson's ratio"), std::string::npos) << large_nu;
 
   const std::string nu_minus_one =
-    error_message(circle + "set Poisson's ratio = -1");
+    linear_elastic_error(circle + "set Poisson's ratio = -1");
   EXPECT_NE(nu_minus_one.find("\"Poisson's ratio\""), std::string::npos)
     << nu_minus_one;
 
   const std::string unknown_section =
-    error_message(circle + "set Cross section = hexagon");
+    linear_elastic_error(circle + "set Cross section = hexagon");
   EXPECT_NE(unknown_section.find("Cross section"), std::string::npos)
     << unknown_section;
   EXPECT_NE(unknown_section.find("hexagon"), std::string::npos)
@@ -189,19 +192,23 @@ TEST(MaterialParameters, RegistryListsKnownMaterials)
 // inertia from: A = pi r^2 of a circle, and EA = E A; none for "direct".
 TEST(MaterialParameters, CrossSectionOfTheStiffnessInput)
 {
-  const LinearElasticRod rod = parse("set Young's modulus = 2e11\n"
-                                     "set Cross section = circle\n"
-                                     "set Radius = 0.01");
+  const LinearElasticRod rod =
+    parse_linear_elastic("set Young's modulus = 2e11\n"
+                         "set Cross section = circle\n"
+                         "set Radius = 0.01");
   ASSERT_TRUE(rod.cross_section().has_value());
-  EXPECT_NEAR(rod.cross_section()->area, pi * 1e-4, 1e-15 * pi * 1e-4);
+  EXPECT_NEAR(rod.cross_section()->area,
+              parameters_pi * 1e-4,
+              1e-15 * parameters_pi * 1e-4);
   ASSERT_TRUE(rod.straight_linear_elastic_stiffness().has_value());
   EXPECT_NEAR(rod.straight_linear_elastic_stiffness()->EA,
-              2e11 * pi * 1e-4,
-              1e-15 * 2e11 * pi * 1e-4);
+              2e11 * parameters_pi * 1e-4,
+              1e-15 * 2e11 * parameters_pi * 1e-4);
 
-  const LinearElasticRod direct = parse("set Stiffness input = direct\n"
-                                        "set EA = 1\nset EI1 = 2\n"
-                                        "set EI2 = 3\nset GJ = 4");
+  const LinearElasticRod direct =
+    parse_linear_elastic("set Stiffness input = direct\n"
+                         "set EA = 1\nset EI1 = 2\n"
+                         "set EI2 = 3\nset GJ = 4");
   EXPECT_FALSE(direct.cross_section().has_value());
 }
 
@@ -209,9 +216,10 @@ TEST(MaterialParameters, CrossSectionOfTheStiffnessInput)
 // straight linear elastic stiffness.
 TEST(MaterialParameters, NaturalShapeHasNoStraightStiffness)
 {
-  const LinearElasticRod rod = parse("set Stiffness input = direct\n"
-                                     "set EA = 1\nset EI1 = 2\n"
-                                     "set EI2 = 3\nset GJ = 4\n"
-                                     "set Natural twist = 0.5");
+  const LinearElasticRod rod =
+    parse_linear_elastic("set Stiffness input = direct\n"
+                         "set EA = 1\nset EI1 = 2\n"
+                         "set EI2 = 3\nset GJ = 4\n"
+                         "set Natural twist = 0.5");
   EXPECT_FALSE(rod.straight_linear_elastic_stiffness().has_value());
 }

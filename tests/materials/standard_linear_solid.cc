@@ -65,7 +65,7 @@ namespace
    */
   template <typename F>
   std::string
-  error_message(F f)
+  flat_error_message(F f)
   {
     try
       {
@@ -567,7 +567,7 @@ TEST(StandardLinearSolid, RejectsNegativeTimeStep)
 TEST(StandardLinearSolid, RejectsInadmissibleConstantsByName)
 {
   const auto message = [](const RodStiffness &k, double r, double t) {
-    return error_message([&] { StandardLinearSolid(k, r, t); });
+    return flat_error_message([&] { StandardLinearSolid(k, r, t); });
   };
   const auto names = [](const std::string &text, const std::string &entry) {
     return text.find("standard linear solid: entry \"" + entry + "\"") !=
@@ -601,7 +601,7 @@ namespace
   /// Creates "standard linear solid" through the registry, as a scene does,
   /// and reads it from @p entries placed in its subsection.
   StandardLinearSolid
-  parse(const std::string &entries)
+  parse_standard_linear_solid(const std::string &entries)
   {
     const std::unique_ptr<RodMaterial> material =
       MaterialRegistry::instance().create("standard linear solid");
@@ -626,12 +626,12 @@ namespace
 TEST(StandardLinearSolid, ParametersFromSection)
 {
   const double E1 = 1e8, r = 5e-3, pi = dealii::numbers::PI;
-  const auto   sls = parse("set Young's modulus E1 = 1e8\n"
-                           "set Poisson's ratio = 0.5\n"
-                           "set Radius = 5e-3\n"
-                           "set Modulus ratio E2/E1 = 0.3\n"
-                           "set Relaxation time = 0.00334");
-  const auto  &k   = sls.relaxed_stiffness();
+  const auto  sls = parse_standard_linear_solid("set Young's modulus E1 = 1e8\n"
+                                                "set Poisson's ratio = 0.5\n"
+                                                "set Radius = 5e-3\n"
+                                                "set Modulus ratio E2/E1 = 0.3\n"
+                                                "set Relaxation time = 0.00334");
+  const auto &k   = sls.relaxed_stiffness();
   EXPECT_DOUBLE_EQ(k.EA, E1 * pi * r * r);
   EXPECT_DOUBLE_EQ(k.EI1, E1 * pi * std::pow(r, 4) / 4.);
   EXPECT_DOUBLE_EQ(k.EI2, E1 * pi * std::pow(r, 4) / 4.);
@@ -642,11 +642,12 @@ TEST(StandardLinearSolid, ParametersFromSection)
 
 TEST(StandardLinearSolid, ParametersDirect)
 {
-  const auto sls = parse("set Stiffness input = direct\n"
-                         "set EA = 1e4\nset EI1 = 0.25\nset EI2 = 0.5\n"
-                         "set GJ = 0.125\n"
-                         "set Modulus ratio E2/E1 = 2\n"
-                         "set Relaxation time = 1.5");
+  const auto sls =
+    parse_standard_linear_solid("set Stiffness input = direct\n"
+                                "set EA = 1e4\nset EI1 = 0.25\nset EI2 = 0.5\n"
+                                "set GJ = 0.125\n"
+                                "set Modulus ratio E2/E1 = 2\n"
+                                "set Relaxation time = 1.5");
   EXPECT_EQ(sls.relaxed_stiffness().EA, 1e4);
   EXPECT_EQ(sls.relaxed_stiffness().EI1, 0.25);
   EXPECT_EQ(sls.relaxed_stiffness().EI2, 0.5);
@@ -659,7 +660,7 @@ TEST(StandardLinearSolid, ParametersDirect)
 TEST(StandardLinearSolid, ParameterErrorsNameTheEntry)
 {
   const auto message = [](const std::string &entries) {
-    return error_message([&] { parse(entries); });
+    return flat_error_message([&] { parse_standard_linear_solid(entries); });
   };
   const std::string viscous = "set Modulus ratio E2/E1 = 0.3\n"
                               "set Relaxation time = 1\n";

@@ -18,7 +18,7 @@ namespace
   /// 1) clamped by a junction at its start, with a welded rotation handle
   /// "tip" at its end.
   std::unique_ptr<RodModel>
-  cantilever(const double EA = 1e4)
+  cantilever_with_EA(const double EA = 1e4)
   {
     auto network = rodnet::testing::straight_network(20);
     network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
@@ -33,7 +33,7 @@ namespace
     // on the handle's quaternion rows, 2 M in their own units, and M in
     // N m; the forces are zero.
     const double M     = 0.3;
-    auto         model = cantilever();
+    auto         model = cantilever_with_EA();
     model->add_moment(1, Vector3(0, 0.6, 0.8), M);
     model->finalize();
     const ResidualCriterion criterion(*model);
@@ -57,7 +57,7 @@ namespace
     // At the solved state of a tip force P the clamp carries P and P L:
     // the scales are P and P L, whatever the (tiny) deflection.
     const double P     = 1e-3;
-    auto         model = cantilever();
+    auto         model = cantilever_with_EA();
     model->add_point_force(model->network().rods()[0].vertices.back(),
                            Vector3(0, 0, P));
     model->finalize();
@@ -78,7 +78,7 @@ namespace
     // of eps |x| EA / l times sqrt(n).
     for (const double EA : {1e4, 1e8})
       {
-        auto model = cantilever(EA);
+        auto model = cantilever_with_EA(EA);
         model->add_point_force(model->network().rods()[0].vertices.back(),
                                Vector3(0, 0.5, 0.5));
         model->finalize();

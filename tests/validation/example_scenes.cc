@@ -165,8 +165,10 @@ namespace
     for (const auto &entry :
          std::filesystem::directory_iterator(RODNET_SOURCE_DIR "/scenes"))
       if (entry.path().extension() == ".prm")
-        EXPECT_TRUE(covered.count(entry.path().stem().string()) == 1)
-          << "scenes/" << entry.path().filename().string()
-          << " is run by no test";
+        {
+          EXPECT_TRUE(covered.count(entry.path().stem().string()) == 1)
+            << "scenes/" << entry.path().filename().string()
+            << " is run by no test";
+        }
   }
 } // namespace
