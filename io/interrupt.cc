@@ -25,7 +25,10 @@ namespace rodnet
     action.sa_handler       = record_signal;
     sigemptyset(&action.sa_mask);
     // One-shot: the second signal finds the default action again.
-    action.sa_flags = SA_RESETHAND;
+    // SA_RESTART: a signal that arrives during a system call (writing an
+    // output file, waiting for a child) must not fail that call with EINTR
+    // and turn a clean stop into an error.
+    action.sa_flags = SA_RESETHAND | SA_RESTART;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
   }

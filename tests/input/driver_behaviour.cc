@@ -132,7 +132,7 @@ namespace
     ASSERT_TRUE(rows) << read_file(stderr_path);
 
     ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal) << read_file(stderr_path);
     // Every row complete, from step 0 on, and the message names the last.
     const std::vector<std::string> csv =
       lines_of(read_file(out + "/probes.csv"));
