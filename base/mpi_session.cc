@@ -2,7 +2,16 @@
 
 #include <cstdlib>
 
+// gcc says AddressSanitizer with __SANITIZE_ADDRESS__, clang (the fuzz
+// builds) with __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
+#  define RODNET_LEAK_SANITIZER 1
+#elif defined(__has_feature)
+#  if __has_feature(address_sanitizer)
+#    define RODNET_LEAK_SANITIZER 1
+#  endif
+#endif
+#if defined(RODNET_LEAK_SANITIZER)
 #  include <sanitizer/lsan_interface.h>
 #endif
 
@@ -23,13 +32,13 @@ namespace rodnet
     public:
       MPILeaksIgnored()
       {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RODNET_LEAK_SANITIZER)
         __lsan_disable();
 #endif
       }
       ~MPILeaksIgnored()
       {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RODNET_LEAK_SANITIZER)
         __lsan_enable();
 #endif
       }
