@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <memory>
+#include <string>
 
 namespace rodnet
 {
@@ -14,22 +15,20 @@ namespace rodnet
   started_by_mpi_launcher();
 
   /**
-   * For a process that no launcher started (one MPI rank, a "singleton"),
-   * sets the Open MPI options that make MPI_Init cheap, unless the user has
-   * set them: no orted daemon (ess_singleton_isolated), the ob1 messaging
-   * layer and only the "self" transport (a single rank talks to nobody).
-   * Open MPI then starts in 0.06 s instead of 0.44 s (doc/performance.md,
-   * "Start-up"). Does nothing for a process started by a launcher, whose
-   * options are the launcher's business. Must run before MPI_Init.
-   */
-  void
-  prefer_fast_singleton_mpi();
-
-  /**
    * MPI for the life of a program, as deal.II's MPI_InitFinalize (which it
-   * holds), with Open MPI's fast singleton options first
-   * (prefer_fast_singleton_mpi()). Every program of rodnet starts MPI with
-   * it; a user's program may too.
+   * holds). Every program of rodnet starts MPI with it; a user's program
+   * may too.
+   *
+   * For a process that no launcher started (one MPI rank, a "singleton")
+   * it first sets the Open MPI options that make MPI_Init cheap, unless the
+   * user has set them: no orted daemon (ess_singleton_isolated), the ob1
+   * messaging layer and only the "self" transport (a single rank talks to
+   * nobody). Open MPI then starts in 0.06 s instead of 0.44 s
+   * (doc/performance.md, "Start-up"). Such singletons all have the same
+   * name, so each gets a session directory base of its own
+   * ($TMPDIR/rodnet-mpi-XXXXXX, removed at the end; orte_tmpdir_base, unless
+   * the user set it): many rodnet processes may run side by side. A
+   * process started by a launcher keeps the launcher's options.
    */
   class MPISession
   {
@@ -46,6 +45,8 @@ namespace rodnet
     operator=(const MPISession &) = delete;
 
   private:
+    /// The session directory base made for this process ("" if none).
+    std::string private_session_base;
     std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> session;
   };
 } // namespace rodnet

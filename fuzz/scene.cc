@@ -4,7 +4,6 @@
 // model (rods, materials, supports, loads), its probes and, for time
 // stepping, the inertia and the initial state.
 #include <deal.II/base/exceptions.h>
-#include <base/mpi_session.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
@@ -12,14 +11,9 @@
 #include <io/scene_file.h>
 
 #include "fuzz_input.h"
+#include <base/mpi_session.h>
+#include <cstdlib>
 #include <sstream>
-
-// LeakSanitizer's interface, where the runtime is linked (weak: the replay
-// programs of unsanitized builds have none).
-extern "C" void
-__lsan_disable() __attribute__((weak));
-extern "C" void
-__lsan_enable() __attribute__((weak));
 
 namespace
 {
@@ -80,18 +74,17 @@ namespace
   }
 } // namespace
 
-// MPI for the Trilinos objects of the model, for the whole run. Open MPI
-// loses memory in the plugins that it unloads, in MPI_Init and in
-// MPI_Finalize, where LeakSanitizer cannot name a library to suppress it by:
-// its allocations in MPI_Init are not tracked, and it is not finalized.
+// MPI for the Trilinos objects of the model, for the whole run; ended at
+// exit (libFuzzer and the replay program end with exit()), which removes
+// the process's MPI session directory (base/mpi_session.h).
 extern "C" int
 LLVMFuzzerInitialize(int *argc, char ***argv)
 {
-  if (__lsan_disable != nullptr)
-    __lsan_disable();
   mpi_session = new MPISession(*argc, *argv);
-  if (__lsan_enable != nullptr)
-    __lsan_enable();
+  std::atexit([] {
+    delete mpi_session;
+    mpi_session = nullptr;
+  });
   return 0;
 }
 
