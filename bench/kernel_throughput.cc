@@ -13,17 +13,20 @@
 //      stencils, the rate counts hinges only;
 //  (b) the gradient alone, RodModel::assemble(u, 0, &r, nullptr);
 //  (c) the bare loops without global assembly over pre-gathered local DoF
-//      vectors: the kernel's evaluate() alone, the kernel with the material
-//      and the chain rule (the local gradient / Hessian of each stencil), and
-//      the same for the segments, so that (a) - (c) is the cost of gathering
-//      and scattering through deal.II and Trilinos.
+//      vectors: the kernel's evaluate() alone, and evaluate_bending() (the
+//      kernel with the material and the chain rule: the local gradient /
+//      Hessian of each stencil, as the assembly computes it), and the same
+//      for the segments, so that (a) - (c) is the cost of gathering and
+//      scattering through deal.II and Trilinos.
 // Every figure is the median of the repeats with its range (min-max).
 //
-// Usage: kernel_throughput [--threads n] [--repeats n] (defaults 1 and 7:
-// the peer figures are single-threaded).
+// Usage: kernel_throughput [--threads n] [--repeats n] [--kernel NAME]
+// [--vertices N] (defaults 1, 7, both kernels, N = 1e3 and 1e5: the peer
+// figures are single-threaded; one kernel and one N for a profile).
 #include <core/rod_model.h>
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
+#include <families/bending_response.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
 
@@ -34,6 +37,7 @@
 #include <iostream>
 #include <random>
 #include <string>
+#include <vector>
 
 using namespace rodnet;
 
@@ -43,13 +47,19 @@ namespace
   {
     unsigned int threads = 1;
     unsigned int repeats = 7;
+    /// One hinge kernel, or "" for both.
+    std::string kernel;
+    /// One N, or 0 for 1e3 and 1e5.
+    unsigned int vertices = 0;
 
     /// The options of the usage line above.
     std::vector<bench::Option>
     command_line()
     {
       return {bench::number("--threads", threads),
-              bench::number("--repeats", repeats, 5)};
+              bench::number("--repeats", repeats, 5),
+              bench::text("--kernel", kernel),
+              bench::number("--vertices", vertices)};
     }
   };
 
@@ -139,31 +149,30 @@ namespace
         }
       sink = sink + sum;
     };
-    // The local part of RodModel::assemble: kernel, material and chain rule
-    // (Korner et al. eq. 4.5), without gather and scatter.
+    // The local part of RodModel::assemble: evaluate_bending()
+    // (families/bending_response.h), i.e. kernel, material, chain rule
+    // (Korner et al. eq. 4.5) and the copy into the local contribution,
+    // without gather and scatter.
     auto local_loop = [&](const bool with_hessian) {
-      HingeStrains strains;
-      HingeMatrix  hessian;
-      double       sum = 0;
+      LocalContribution local;
+      double            sum = 0;
       for (unsigned int h = 0; h < hinges.size(); ++h)
         {
-          kernel.evaluate(hinge_dofs[h],
-                          configuration.hinge_reference(h),
-                          strains,
-                          with_hessian);
-          const MaterialResponse<3> w =
-            material->hinge_energy(strains.kappa,
-                                   configuration.voronoi_length(h));
-          const HingeVector gradient = strains.gradient.transpose() * w.stress;
-          sum += w.energy + gradient[0];
-          if (with_hessian)
-            {
-              hessian =
-                strains.gradient.transpose() * w.tangent * strains.gradient;
-              for (unsigned int c = 0; c < 3; ++c)
-                hessian += w.stress[c] * strains.hessian[c];
-              sum += hessian(0, 0);
-            }
+          const BendingStencil<HingeKernel, HingeReference> stencil{
+            kernel,
+            hinge_dofs[h],
+            configuration.hinge_reference(h),
+            *material,
+            configuration.voronoi_length(h),
+            nullptr,
+            Vector3::Zero()};
+          evaluate_bending(stencil,
+                           0.0,
+                           with_hessian ? Derivatives::hessian :
+                                          Derivatives::gradient,
+                           local);
+          sum += local.energy + local.vector[0] +
+                 (with_hessian ? local.matrix(0, 0) : 0.);
         }
       sink = sink + sum;
     };
@@ -221,8 +230,14 @@ namespace
                           "(c) local E+g: kernel+material+chain",
                           "    segments local E+g+H (time only)",
                           "    segments local E+g (time only)"};
-    for (const unsigned int n : {1000u, 100000u})
-      for (const std::string kernel : {"simple", "classic"})
+    const std::vector<unsigned int> sizes =
+      options.vertices > 0 ? std::vector<unsigned int>{options.vertices} :
+                             std::vector<unsigned int>{1000u, 100000u};
+    const std::vector<std::string> kernels =
+      !options.kernel.empty() ? std::vector<std::string>{options.kernel} :
+                                std::vector<std::string>{"simple", "classic"};
+    for (const unsigned int n : sizes)
+      for (const std::string &kernel : kernels)
         {
           const Timings            t = run_case(n, kernel, options.repeats);
           const bench::Statistics *values[] = {&t.assemble_hessian,

@@ -59,6 +59,66 @@ namespace rodnet
   };
 
   /**
+   * The weights of a contracted Hessian as a function of the strains: the
+   * stress of a material at the strains of a stencil, which a kernel's
+   * evaluate_weighted() asks for once it has computed them.
+   */
+  class StrainWeights
+  {
+  public:
+    /// The weights at the (integrated) strains @p kappa.
+    virtual Vector3
+    at(const Vector3 &kappa) const = 0;
+
+  protected:
+    ~StrainWeights() = default;
+  };
+
+  /**
+   * evaluate_weighted() from a kernel's three Hessians: @p kernel evaluates
+   * strains, gradient and Hessians into @p result, and @p weighted is
+   * sum_c w_c d^2 kappa_c / du^2 with w = @p weights at the strains. Any
+   * kernel with evaluate(dofs, reference, result, with_hessian) can use it.
+   */
+  template <class Kernel, class Reference>
+  void
+  weighted_from_hessians(const Kernel        &kernel,
+                         const HingeVector   &dofs,
+                         const Reference     &reference,
+                         const StrainWeights &weights,
+                         HingeStrains        &result,
+                         HingeMatrix         &weighted)
+  {
+    kernel.evaluate(dofs, reference, result, true);
+    const Vector3 w = weights.at(result.kappa);
+    weighted        = w[0] * result.hessian[0];
+    for (unsigned int c = 1; c < 3; ++c)
+      weighted += w[c] * result.hessian[c];
+  }
+
+  /**
+   * weighted_gradient() from a kernel's strain gradient: returns the strains
+   * and puts into @p weighted sum_c w_c d kappa_c / du with w = @p weights
+   * at the strains. Any kernel with evaluate(dofs, reference, result,
+   * with_hessian) can use it.
+   */
+  template <class Kernel, class Reference>
+  Vector3
+  gradient_from_jacobian(const Kernel        &kernel,
+                         const HingeVector   &dofs,
+                         const Reference     &reference,
+                         const StrainWeights &weights,
+                         HingeVector         &weighted)
+  {
+    // Per-thread scratch: its three unused Hessians are too large to put on
+    // the stack per stencil.
+    thread_local HingeStrains strains;
+    kernel.evaluate(dofs, reference, strains, false);
+    weighted.noalias() = strains.gradient.transpose() * weights.at(strains.kappa);
+    return strains.kappa;
+  }
+
+  /**
    * A hinge kernel: a stateless function of the local degrees of freedom
    * (current positions, twist increments from the reference) and the
    * reference data, returning the bending and twisting strains with their
@@ -87,6 +147,41 @@ namespace rodnet
              const HingeReference &reference,
              HingeStrains         &result,
              bool                  with_hessian) const = 0;
+
+    /**
+     * Strains and gradient into @p result, as evaluate(), and into
+     * @p weighted the Hessians summed with the weights that @p weights
+     * gives at the strains: sum_c w_c d^2 kappa_c / du^2, the geometric part
+     * of an energy's Hessian with stress w (Korner et al. eq. 4.5).
+     * result.hessian is scratch. The default sums evaluate()'s Hessians; a
+     * kernel whose Hessian terms are linear in a weighting overrides it
+     * with one contracted evaluation.
+     */
+    virtual void
+    evaluate_weighted(const HingeVector    &dofs,
+                      const HingeReference &reference,
+                      const StrainWeights  &weights,
+                      HingeStrains         &result,
+                      HingeMatrix          &weighted) const
+    {
+      weighted_from_hessians(*this, dofs, reference, weights, result, weighted);
+    }
+
+    /**
+     * Returns the strains and puts into @p weighted the gradient of
+     * sum_c w_c kappa_c with w = @p weights at the strains, held fixed: the
+     * energy gradient for the stress w, all that an assembly of the
+     * gradient alone needs. The default contracts evaluate()'s strain
+     * gradient; a kernel overrides it where the contraction saves work.
+     */
+    virtual Vector3
+    weighted_gradient(const HingeVector    &dofs,
+                      const HingeReference &reference,
+                      const StrainWeights  &weights,
+                      HingeVector          &weighted) const
+    {
+      return gradient_from_jacobian(*this, dofs, reference, weights, weighted);
+    }
   };
 
   /// The registry of hinge measures. A new measure is a HingeKernel in a

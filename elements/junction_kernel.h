@@ -113,6 +113,28 @@ namespace rodnet
              JunctionStrains         &result,
              bool                     with_hessian) const;
 
+    /// As HingeKernel::evaluate_weighted(): strains and gradient, and the
+    /// Hessians summed with the weights at the strains.
+    void
+    evaluate_weighted(const JunctionVector    &dofs,
+                      const JunctionReference &reference,
+                      const StrainWeights     &weights,
+                      JunctionStrains         &result,
+                      HingeMatrix             &weighted) const
+    {
+      weighted_from_hessians(*this, dofs, reference, weights, result, weighted);
+    }
+
+    /// As HingeKernel::weighted_gradient().
+    Vector3
+    weighted_gradient(const JunctionVector    &dofs,
+                      const JunctionReference &reference,
+                      const StrainWeights     &weights,
+                      HingeVector             &weighted) const
+    {
+      return gradient_from_jacobian(*this, dofs, reference, weights, weighted);
+    }
+
   private:
     bool      simple;
     GhostSpin spin;

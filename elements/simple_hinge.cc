@@ -24,9 +24,11 @@ namespace rodnet
      */
     struct SegmentKinematics
     {
+      /// With @p second_order the data of second_variation() too.
       SegmentKinematics(const Vector3    &edge,
                         const double      twist_increment,
-                        const Quaternion &reference_frame)
+                        const Quaternion &reference_frame,
+                        const bool        second_order)
           : length(edge.norm())
           , t(edge / length)
       {
@@ -42,6 +44,8 @@ namespace rodnet
         M                   = cross_matrix(t) - 0.5 * t * k.transpose();
         first.leftCols<3>() = M / length;
         first.col(3)        = t;
+        if (!second_order)
+          return;
 
         // Eq. 3.2 in the variable e, with delta t = Q delta e (eq. 3.1),
         // k . delta t = (k / l) . delta e and T . delta t = tau . delta e.
@@ -139,66 +143,167 @@ namespace rodnet
   }
 
 
+  namespace
+  {
+    /**
+     * One evaluation of the measure: both segments' kinematics, the
+     * rotation gradient q = s + v and the Jacobian of its hat variation,
+     * from which the gradient and any weighted sum of the strains'
+     * Hessians follow.
+     */
+    /// What a HingeKinematics is built for.
+    enum class Needs
+    {
+      /// weighted_gradient() only.
+      weighted_gradient,
+      /// strain_jacobian() too.
+      jacobian,
+      /// weighted_hessian() too.
+      hessian
+    };
+
+    struct HingeKinematics
+    {
+      HingeKinematics(const HingeVector    &dofs,
+                      const HingeReference &reference,
+                      const Needs           needs)
+          : prev(dofs.segment<3>(vertex) - dofs.segment<3>(prev_vertex),
+                 dofs[prev_twist],
+                 reference.frame_prev,
+                 needs == Needs::hessian)
+          , next(dofs.segment<3>(next_vertex) - dofs.segment<3>(vertex),
+                 dofs[next_twist],
+                 reference.frame_next,
+                 needs == Needs::hessian)
+      {
+        const Quaternion q = rotation_gradient(prev.frame, next.frame);
+        s                  = q.w();
+        v                  = q.vec();
+
+        // Eq. 3.6: the hat variations of d^{i-1} and d^i are spatial
+        // vectors; the rotation gradient lives in the material frame of
+        // d^{i-1}, hence the pull-back by conj(d^{i-1}).
+        const Matrix3 pull_back = prev.frame.toRotationMatrix().transpose();
+
+        // Eq. 3.7: Im(delta q-hat q) = (s I - v_x) delta q-hat.
+        W           = s * Matrix3::Identity() - cross_matrix(v);
+        A.noalias() = W * pull_back;
+        if (needs == Needs::weighted_gradient)
+          return;
+        dq.leftCols<4>().noalias()  = -pull_back * prev.first;
+        dq.rightCols<4>().noalias() = pull_back * next.first;
+      }
+
+      /// weights . d kappa / d y (1 x 8) without the Jacobian: W dq = A
+      /// (-first^{i-1}, first^i).
+      Eigen::Matrix<double, 1, 8>
+      weighted_gradient(const Vector3 &weights) const
+      {
+        const Eigen::Matrix<double, 1, 3> a = weights.transpose() * A;
+        Eigen::Matrix<double, 1, 8>       g;
+        g.leftCols<4>().noalias()  = -a * prev.first;
+        g.rightCols<4>().noalias() = a * next.first;
+        return g;
+      }
+
+      /// d kappa / d y (3 x 8): delta kappa = 2 Im(delta q) = Im(delta
+      /// q-hat q), as delta q = delta q-hat q / 2.
+      ReducedJacobian
+      strain_jacobian() const
+      {
+        return W.lazyProduct(dq);
+      }
+
+      /**
+       * sum_c weights_c d^2 kappa_c / d y^2 (8 x 8): every term of eqs.
+       * 3.6-3.7 is linear in the row of W or of A it is seen through, so
+       * the weighted sum is one evaluation with the weighted rows.
+       */
+      ReducedHessian
+      weighted_hessian(const Vector3 &weights) const
+      {
+        const Vector3  a = A.transpose() * weights;
+        ReducedHessian h;
+        h.topLeftCorner<4, 4>()     = -prev.second_variation(a);
+        h.bottomRightCorner<4, 4>() = next.second_variation(a);
+        h.topRightCorner<4, 4>().setZero();
+        h.bottomLeftCorner<4, 4>().setZero();
+
+        // Second term of eq. 3.6, delta q-hat x (conj(d^{i-1}) delta
+        // d-hat^{i-1}) seen through W^T weights, symmetrized: the Hessian
+        // is the symmetric matrix of the quadratic form.
+        const Eigen::Matrix<double, 3, 4> crossed =
+          cross_matrix(W.transpose() * weights).lazyProduct(dq.leftCols<4>());
+        const Eigen::Matrix<double, 8, 4> cross_term =
+          dq.transpose().lazyProduct(crossed);
+        h.leftCols<4>() += 0.5 * cross_term;
+        h.topRows<4>() += 0.5 * cross_term.transpose();
+
+        // -|delta q-hat|^2 / 2 of eq. 3.7.
+        h.noalias() -= (0.5 * v.dot(weights)) * dq.transpose().lazyProduct(dq);
+        return h;
+      }
+
+      SegmentKinematics prev, next;
+      double            s;
+      Vector3           v;
+      ReducedJacobian   dq;
+      Matrix3           W, A;
+    };
+
+    /// C^T h C for the 8 x 11 Jacobian C of the reduced variables.
+    HingeMatrix
+    hessian_in_hinge_dofs(const ReducedHessian &h)
+    {
+      return to_hinge_dofs<n_hinge_dofs>(to_hinge_dofs<8>(h).transpose());
+    }
+  } // namespace
+
+
   void
   SimpleHinge::evaluate(const HingeVector    &dofs,
                         const HingeReference &reference,
                         HingeStrains         &result,
                         const bool            with_hessian) const
   {
-    const SegmentKinematics prev(dofs.segment<3>(vertex) -
-                                   dofs.segment<3>(prev_vertex),
-                                 dofs[prev_twist],
-                                 reference.frame_prev);
-    const SegmentKinematics next(dofs.segment<3>(next_vertex) -
-                                   dofs.segment<3>(vertex),
-                                 dofs[next_twist],
-                                 reference.frame_next);
-
-    const Quaternion q = rotation_gradient(prev.frame, next.frame);
-    const double     s = q.w();
-    const Vector3    v = q.vec();
-    result.kappa       = 2.0 * v;
-
-    // Eq. 3.6: the hat variations of d^{i-1} and d^i are spatial vectors;
-    // the rotation gradient lives in the material frame of d^{i-1}, hence
-    // the pull-back by conj(d^{i-1}).
-    const Matrix3   pull_back = prev.frame.toRotationMatrix().transpose();
-    ReducedJacobian dq;
-    dq.leftCols<4>()  = -pull_back * prev.first;
-    dq.rightCols<4>() = pull_back * next.first;
-
-    // Eq. 3.7: Im(delta q-hat q) = (s I - v_x) delta q-hat.
-    const Matrix3 W = s * Matrix3::Identity() - cross_matrix(v);
-    result.gradient = to_hinge_dofs<3>(W * dq);
+    const HingeKinematics hinge(dofs,
+                                reference,
+                                with_hessian ? Needs::hessian : Needs::jacobian);
+    result.kappa    = 2.0 * hinge.v;
+    result.gradient = to_hinge_dofs<3>(hinge.strain_jacobian());
     if (!with_hessian)
       return;
-
-    const Matrix3        A     = W * pull_back;
-    const ReducedHessian dq_dq = dq.transpose() * dq;
     for (unsigned int c = 0; c < 3; ++c)
-      {
-        ReducedHessian h;
-        const Vector3  weights      = A.row(c).transpose();
-        h.topLeftCorner<4, 4>()     = -prev.second_variation(weights);
-        h.bottomRightCorner<4, 4>() = next.second_variation(weights);
-        h.topRightCorner<4, 4>().setZero();
-        h.bottomLeftCorner<4, 4>().setZero();
+      result.hessian[c] =
+        hessian_in_hinge_dofs(hinge.weighted_hessian(Vector3::Unit(c)));
+  }
 
-        // Second term of eq. 3.6, delta q-hat x (conj(d^{i-1}) delta
-        // d-hat^{i-1}) seen through row c of W, symmetrized: the Hessian is
-        // the symmetric matrix of the quadratic form delta^2 kappa_c.
-        const Eigen::Matrix<double, 8, 4> cross_term =
-          dq.transpose() * cross_matrix(W.row(c).transpose()) *
-          dq.leftCols<4>();
-        h.leftCols<4>() += 0.5 * cross_term;
-        h.topRows<4>() += 0.5 * cross_term.transpose();
 
-        // -|delta q-hat|^2 / 2 of eq. 3.7.
-        h -= 0.5 * v[c] * dq_dq;
+  void
+  SimpleHinge::evaluate_weighted(const HingeVector    &dofs,
+                                 const HingeReference &reference,
+                                 const StrainWeights  &weights,
+                                 HingeStrains         &result,
+                                 HingeMatrix          &weighted) const
+  {
+    const HingeKinematics hinge(dofs, reference, Needs::hessian);
+    result.kappa    = 2.0 * hinge.v;
+    result.gradient = to_hinge_dofs<3>(hinge.strain_jacobian());
+    weighted =
+      hessian_in_hinge_dofs(hinge.weighted_hessian(weights.at(result.kappa)));
+  }
 
-        result.hessian[c] =
-          to_hinge_dofs<n_hinge_dofs>(to_hinge_dofs<8>(h).transpose());
-      }
+  Vector3
+  SimpleHinge::weighted_gradient(const HingeVector    &dofs,
+                                 const HingeReference &reference,
+                                 const StrainWeights  &weights,
+                                 HingeVector          &weighted) const
+  {
+    const HingeKinematics hinge(dofs, reference, Needs::weighted_gradient);
+    const Vector3         kappa = 2.0 * hinge.v;
+    weighted = to_hinge_dofs<1>(hinge.weighted_gradient(weights.at(kappa)))
+                 .transpose();
+    return kappa;
   }
 
   RODNET_REGISTER_HINGE_KERNEL(SimpleHinge,

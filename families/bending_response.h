@@ -51,6 +51,38 @@ namespace rodnet
   }
 
   /**
+   * The stress of a stencil's material as the weights of a kernel's
+   * contracted derivatives: at() runs the material's increment at the
+   * strains less the natural ones and keeps the whole response.
+   */
+  template <class Kernel, class Reference>
+  struct MaterialAtStrains : StrainWeights
+  {
+    MaterialAtStrains(const BendingStencil<Kernel, Reference> &stencil,
+                      const double                             time_step)
+        : stencil(stencil)
+        , time_step(time_step)
+    {
+    }
+
+    Vector3
+    at(const Vector3 &kappa) const override
+    {
+      response = stencil.material.hinge_increment(kappa - stencil.natural,
+                                                  stencil.voronoi_length,
+                                                  stencil.committed,
+                                                  time_step,
+                                                  nullptr);
+      return response.stress;
+    }
+
+    const BendingStencil<Kernel, Reference> &stencil;
+    const double                             time_step;
+    /// The response at the strains at() was last asked at.
+    mutable MaterialResponse<3> response;
+  };
+
+  /**
    * The energy of a bending-and-twisting stencil with its derivatives:
    * kernel strains minus natural strains -> material (energy, stress,
    * tangent) -> chain rule, with the elastic part J^T C J and the geometric
@@ -70,35 +102,35 @@ namespace rodnet
         local.energy = bending_increment(stencil, time_step, nullptr).energy;
         return;
       }
-    // Per-thread scratch: three 11 x 11 Hessians are too large to build
-    // per stencil.
-    thread_local HingeStrains strains;
-    const bool                with_hessian = derivatives == Derivatives::hessian;
-    stencil.kernel.evaluate(stencil.dofs,
-                            stencil.reference,
-                            strains,
-                            with_hessian);
-    strains.kappa -= stencil.natural;
-    const MaterialResponse<3> w =
-      stencil.material.hinge_increment(strains.kappa,
-                                       stencil.voronoi_length,
-                                       stencil.committed,
-                                       time_step,
-                                       nullptr);
-    local.energy               = w.energy;
-    const HingeVector gradient = strains.gradient.transpose() * w.stress;
-    if (!with_hessian)
+    // The material's response once the kernel knows the strains: its
+    // stress weighs the kernel's derivatives.
+    const MaterialAtStrains<Kernel, Reference> material(stencil, time_step);
+    if (derivatives == Derivatives::gradient)
       {
+        HingeVector gradient;
+        stencil.kernel.weighted_gradient(stencil.dofs,
+                                         stencil.reference,
+                                         material,
+                                         gradient);
+        local.energy = material.response.energy;
         local.store(gradient, static_cast<const HingeMatrix *>(nullptr));
         return;
       }
+    // Per-thread scratch: three 11 x 11 Hessians are too large to build
+    // per stencil.
+    thread_local HingeStrains strains;
+    HingeMatrix               hessian;
+    stencil.kernel.evaluate_weighted(stencil.dofs,
+                                     stencil.reference,
+                                     material,
+                                     strains,
+                                     hessian);
+    const MaterialResponse<3> &w = material.response;
+    local.energy                 = w.energy;
     const Eigen::Matrix<double, 3, n_hinge_dofs> cj =
-      w.tangent * strains.gradient;
-    HingeMatrix hessian;
-    hessian.noalias() = strains.gradient.transpose() * cj;
-    for (unsigned int c = 0; c < 3; ++c)
-      hessian += w.stress[c] * strains.hessian[c];
-    local.store(gradient, &hessian);
+      w.tangent.lazyProduct(strains.gradient);
+    hessian.noalias() += strains.gradient.transpose().lazyProduct(cj);
+    local.store(HingeVector(strains.gradient.transpose() * w.stress), &hessian);
   }
 } // namespace rodnet
 

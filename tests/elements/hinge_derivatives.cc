@@ -8,6 +8,11 @@
 // gradient with h = 1e-6: truncation O(h^2) and round-off O(eps / h) are
 // both far below the 1e-6 tolerance at this step.
 //
+// evaluate_weighted() and weighted_gradient() (the Hessians and the
+// gradients summed with weights that depend on the strains, as the assembly
+// asks for them) are checked against the same finite differences, summed
+// with the weights.
+//
 // The simple kernel is also compared with Sacado's forward-over-forward AD
 // of an independent, quaternion-by-quaternion transcription of Korner et
 // al. eqs. 2.3, 2.8, 2.11 and 2.13.
@@ -37,6 +42,7 @@ namespace
     double gradient  = 0;
     double hessian   = 0;
     double symmetry  = 0;
+    double weighted  = 0;
     double value     = 0;
     double max_kappa = 0;
 
@@ -44,7 +50,8 @@ namespace
     print(const std::string &name) const
     {
       std::cout << name << ": max relative FD error gradient " << gradient
-                << ", Hessian " << hessian << "; Hessian asymmetry " << symmetry
+                << ", Hessian " << hessian << ", weighted Hessian " << weighted
+                << "; Hessian asymmetry " << symmetry
                 << "; evaluate() vs strains() " << value << "; max |strain| "
                 << max_kappa << std::endl;
     }
@@ -73,6 +80,20 @@ namespace
         return c;
       }
   }
+
+  /// Fixed weights, and the strains they were asked at.
+  struct RecordingWeights : StrainWeights
+  {
+    Vector3
+    at(const Vector3 &kappa) const override
+    {
+      asked_at = kappa;
+      return weights;
+    }
+    Vector3 weights{0.3, -1.2, 0.7};
+    // Far from any strain: an error if at() was never asked.
+    mutable Vector3 asked_at = Vector3::Constant(1e30);
+  };
 
   void
   check_hinge_kernel(const std::string &name)
@@ -106,6 +127,38 @@ namespace
                 (2 * hinge_step);
           }
 
+        const RecordingWeights weights;
+        HingeStrains           s_weighted;
+        HingeMatrix            weighted;
+        kernel->evaluate_weighted(c.dofs,
+                                  c.reference,
+                                  weights,
+                                  s_weighted,
+                                  weighted);
+        HingeMatrix fd_weighted = HingeMatrix::Zero();
+        for (unsigned int k = 0; k < 3; ++k)
+          fd_weighted += weights.weights[k] * fd_hessian[k];
+        errors.weighted =
+          std::max({errors.weighted,
+                    relative_error(weighted, fd_weighted),
+                    relative_error(s_weighted.gradient, s.gradient),
+                    relative_error(weights.asked_at, s.kappa)});
+
+        // weighted_gradient(): the weighted sum of the strains' gradients.
+        const RecordingWeights gradient_weights;
+        HingeVector            weighted_gradient;
+        const Vector3          kappa = kernel->weighted_gradient(c.dofs,
+                                                        c.reference,
+                                                        gradient_weights,
+                                                        weighted_gradient);
+        errors.weighted = std::max(
+          {errors.weighted,
+           relative_error(weighted_gradient,
+                          HingeVector(fd_gradient.transpose() *
+                                      gradient_weights.weights)),
+           relative_error(kappa, s.kappa),
+           relative_error(gradient_weights.asked_at, s.kappa)});
+
         errors.value = std::max(errors.value,
                                 (s.kappa - kernel->strains(c.dofs, c.reference))
                                   .cwiseAbs()
@@ -131,6 +184,7 @@ namespace
     errors.print(name);
     EXPECT_LT(errors.gradient, hinge_tolerance);
     EXPECT_LT(errors.hessian, hinge_tolerance);
+    EXPECT_LT(errors.weighted, hinge_tolerance);
     EXPECT_LT(errors.symmetry, hinge_symmetry_tolerance);
     EXPECT_LT(errors.value, 1e-13 * std::max(1.0, errors.max_kappa));
   }
