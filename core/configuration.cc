@@ -104,53 +104,28 @@ namespace rodnet
                                      junction_refs[i])[2];
   }
 
-  namespace
-  {
-    /// The values of @p u indexed by global DoF where its storage allows it
-    /// (one process, contiguous map from 0), else null. Reading through
-    /// the vector's operator() costs a global-to-local lookup per entry.
-    const double *
-    global_values(const dealii::TrilinosWrappers::MPI::Vector &u)
-    {
-      const Epetra_BlockMap &map = u.trilinos_vector().Map();
-      return map.LinearMap() && map.MinMyGID() == 0 &&
-                 map.NumMyElements() == map.NumGlobalElements() ?
-               u.trilinos_vector()[0] :
-               nullptr;
-    }
-  } // namespace
-
   Vector3
-  Configuration::position(const dealii::TrilinosWrappers::MPI::Vector &u,
-                          const unsigned int                           v) const
+  Configuration::position(const DofValues &u, const unsigned int v) const
   {
-    if (const double *values = global_values(u))
-      return undeformed[v] + Vector3(values[layout->vertex_dof(v, 0)],
-                                     values[layout->vertex_dof(v, 1)],
-                                     values[layout->vertex_dof(v, 2)]);
     return undeformed[v] + Vector3(u[layout->vertex_dof(v, 0)],
                                    u[layout->vertex_dof(v, 1)],
                                    u[layout->vertex_dof(v, 2)]);
   }
 
   HingeVector
-  Configuration::hinge_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
-                            const HingeStencil &hinge) const
+  Configuration::hinge_dofs(const DofValues &u, const HingeStencil &hinge) const
   {
     HingeVector local;
     for (unsigned int b = 0; b < 3; ++b)
       local.segment<3>(4 * b) = position(u, hinge.vertices[b]);
     // Twist increments are measured from the reference (Korner eq. 2.8).
-    const double *values = global_values(u);
-    local[3]             = (values ? values[hinge.dofs[3]] : u[hinge.dofs[3]]) -
-               twist_at_reference[hinge.segment_prev];
-    local[7] = (values ? values[hinge.dofs[7]] : u[hinge.dofs[7]]) -
-               twist_at_reference[hinge.segment_next];
+    local[3] = u[hinge.dofs[3]] - twist_at_reference[hinge.segment_prev];
+    local[7] = u[hinge.dofs[7]] - twist_at_reference[hinge.segment_next];
     return local;
   }
 
   HingeVector
-  Configuration::junction_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+  Configuration::junction_dofs(const DofValues       &u,
                                const JunctionStencil &junction) const
   {
     HingeVector local;
@@ -177,7 +152,7 @@ namespace rodnet
   }
 
   SegmentVector
-  Configuration::segment_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
+  Configuration::segment_dofs(const DofValues      &u,
                               const SegmentStencil &segment) const
   {
     SegmentVector local;

@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <core/dof_layout.h>
+#include <core/dof_values.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
 #include <elements/junction_kernel.h>
@@ -50,23 +51,19 @@ namespace rodnet
 
     /// Current position of vertex @p v for the DoF vector @p u.
     Vector3
-    position(const dealii::TrilinosWrappers::MPI::Vector &u,
-             unsigned int                                 v) const;
+    position(const DofValues &u, unsigned int v) const;
 
     /// Local DoF vector of a hinge as its kernel expects it.
     HingeVector
-    hinge_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
-               const HingeStencil                          &hinge) const;
+    hinge_dofs(const DofValues &u, const HingeStencil &hinge) const;
 
     /// Local DoF vector of a segment, (x_j, x_{j+1}).
     SegmentVector
-    segment_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
-                 const SegmentStencil                        &segment) const;
+    segment_dofs(const DofValues &u, const SegmentStencil &segment) const;
 
     /// Local DoF vector of a junction element, (x_a, x_b, phi, q).
     HingeVector
-    junction_dofs(const dealii::TrilinosWrappers::MPI::Vector &u,
-                  const JunctionStencil                       &junction) const;
+    junction_dofs(const DofValues &u, const JunctionStencil &junction) const;
 
     /// Reference data of junction element number @p e.
     const JunctionReference &

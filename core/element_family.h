@@ -20,9 +20,10 @@ namespace rodnet
   /// committed internal variables, the time step and the load factor.
   struct StencilState
   {
-    const dealii::TrilinosWrappers::MPI::Vector &u;
-    const Configuration                         &configuration;
-    const InternalVariables                     &history;
+    /// The DoF vector, read through its storage where it allows it.
+    DofValues                u;
+    const Configuration     &configuration;
+    const InternalVariables &history;
     /// Time step of the materials' incremental update (0: stored energy).
     double time_step;
     /// Load factor of the assembly (load-like families scale with it).
@@ -90,10 +91,10 @@ namespace rodnet
      * domain (e.g. a flipped tangent); the assembly rethrows it.
      */
     virtual void
-    evaluate(unsigned int       s,
+    evaluate(unsigned int        s,
              const StencilState &state,
-             Derivatives        derivatives,
-             LocalContribution &local) const = 0;
+             Derivatives         derivatives,
+             LocalContribution  &local) const = 0;
 
     /**
      * @name History (for families whose energy depends on committed values)
