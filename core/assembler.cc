@@ -47,18 +47,18 @@ namespace rodnet
               m.ColMap().MinMyGID() == 0 && m.RowMap().MinMyGID() == 0 &&
               m.ColMap().NumMyElements() == m.RowMap().NumMyElements()))
           return false;
-        // Epetra sorts the column indices of each row when the matrix is
-        // filled; the merge in add() relies on it, so check (as cheap as
-        // zeroing the matrix).
+        // add() reads the compressed rows straight from Epetra's arrays,
+        // which exist once the storage is optimized (as FillComplete
+        // leaves it). Epetra sorts the column indices of each row when the
+        // matrix is filled; the merge in add() relies on it, so check (as
+        // cheap as zeroing the matrix).
+        const CsrArrays csr(m);
+        if (csr.offsets == nullptr)
+          return false;
         for (int row = 0; row < m.NumMyRows(); ++row)
-          {
-            int     length;
-            double *row_values;
-            int    *columns;
-            m.ExtractMyRowView(row, length, row_values, columns);
-            if (!std::is_sorted(columns, columns + length))
-              return false;
-          }
+          if (!std::is_sorted(csr.columns + csr.offsets[row],
+                              csr.columns + csr.offsets[row + 1]))
+            return false;
         return true;
       }
 
@@ -68,6 +68,7 @@ namespace rodnet
           : matrix(matrix == nullptr ?
                      nullptr :
                      &const_cast<Epetra_CrsMatrix &>(matrix->trilinos_matrix()))
+          , csr(this->matrix)
           , values(vector == nullptr ? nullptr : vector->trilinos_vector()[0])
           , fixed(fixed)
       {
@@ -100,11 +101,9 @@ namespace rodnet
               values[row] += copy.vector[i];
             if (matrix == nullptr)
               continue;
-            int     length;
-            double *row_values;
-            int    *columns;
-            matrix->ExtractMyRowView(row, length, row_values, columns);
-            int k = 0;
+            double    *row_values = csr.values + csr.offsets[row];
+            const int *columns    = csr.columns + csr.offsets[row];
+            int        k          = 0;
             for (unsigned int b = 0; b < n; ++b)
               {
                 const unsigned int j   = order[b];
@@ -149,15 +148,33 @@ namespace rodnet
       double &
       diagonal(const int row) const
       {
-        int     length;
-        double *row_values;
-        int    *columns;
-        matrix->ExtractMyRowView(row, length, row_values, columns);
-        return row_values[std::lower_bound(columns, columns + length, row) -
-                          columns];
+        const int *begin = csr.columns + csr.offsets[row];
+        const int *end   = csr.columns + csr.offsets[row + 1];
+        return csr.values[std::lower_bound(begin, end, row) - csr.columns];
       }
 
+      /// Epetra's compressed rows of an optimized matrix: row r holds the
+      /// columns and values [offsets[r], offsets[r + 1]); all null if the
+      /// storage is not optimized (or there is no matrix).
+      struct CsrArrays
+      {
+        explicit CsrArrays(const Epetra_CrsMatrix *m)
+        {
+          // Sets all three to null where the storage is not optimized.
+          if (m != nullptr)
+            m->ExtractCrsDataPointers(offsets, columns, values);
+        }
+        explicit CsrArrays(const Epetra_CrsMatrix &m)
+            : CsrArrays(&m)
+        {
+        }
+        int    *offsets = nullptr;
+        int    *columns = nullptr;
+        double *values  = nullptr;
+      };
+
       Epetra_CrsMatrix        *matrix;
+      CsrArrays                csr;
       double                  *values;
       const std::vector<bool> *fixed;
     };
@@ -180,7 +197,8 @@ namespace rodnet
     // the same sum with one thread or several.
     std::vector<double> energies(family.n_stencils(), 0.0);
     struct NoScratch
-    {};
+    {
+    };
     const auto worker =
       [&](const unsigned int s, NoScratch &, LocalContribution &copy) {
         copy.dofs.clear();
@@ -205,8 +223,11 @@ namespace rodnet
         copier(copy);
     };
     if (colors != nullptr)
-      dealii::WorkStream::run(
-        *colors, worker, add, NoScratch(), LocalContribution());
+      dealii::WorkStream::run(*colors,
+                              worker,
+                              add,
+                              NoScratch(),
+                              LocalContribution());
     else
       dealii::WorkStream::run(0u,
                               family.n_stencils(),
@@ -235,9 +256,12 @@ namespace rodnet
     const bool in_colors = concurrent_copier &&
                            dealii::MultithreadInfo::n_threads() > 1 &&
                            stencil_colors.size() == families.size();
-    const StencilState state{
-      u, *configuration_, history, step_length, load_factor};
-    double energy = 0;
+    const StencilState state{u,
+                             *configuration_,
+                             history,
+                             step_length,
+                             load_factor};
+    double             energy = 0;
     for (unsigned int f = 0; f < families.size(); ++f)
       assemble_family(*families[f],
                       state,
@@ -358,8 +382,13 @@ namespace rodnet
         "RodModel::assemble_into: the system block places " +
         std::to_string(block.size()) + " DoFs, the model has " +
         std::to_string(layout_->n_dofs()));
-    return assemble_mapped(
-      u, load_factor, block, residual, tangent, apply_constraints, nullptr);
+    return assemble_mapped(u,
+                           load_factor,
+                           block,
+                           residual,
+                           tangent,
+                           apply_constraints,
+                           nullptr);
   }
 
 
@@ -389,8 +418,11 @@ namespace rodnet
           for (unsigned int i = 0; i < copy.dofs.size(); ++i)
             diagonal[copy.dofs[i]] += copy.matrix(i, i);
         if (tangent != nullptr && residual != nullptr)
-          constraints.distribute_local_to_global(
-            copy.matrix, copy.vector, rows, *tangent, *residual);
+          constraints.distribute_local_to_global(copy.matrix,
+                                                 copy.vector,
+                                                 rows,
+                                                 *tangent,
+                                                 *residual);
         else if (tangent != nullptr)
           constraints.distribute_local_to_global(copy.matrix, rows, *tangent);
         else
