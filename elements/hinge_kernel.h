@@ -110,11 +110,10 @@ namespace rodnet
                          const StrainWeights &weights,
                          HingeVector         &weighted)
   {
-    // Per-thread scratch: its three unused Hessians are too large to put on
-    // the stack per stencil.
-    thread_local HingeStrains strains;
+    HingeStrains strains; // its Hessians are not used (nor initialized)
     kernel.evaluate(dofs, reference, strains, false);
-    weighted.noalias() = strains.gradient.transpose() * weights.at(strains.kappa);
+    weighted.noalias() =
+      strains.gradient.transpose() * weights.at(strains.kappa);
     return strains.kappa;
   }
 
