@@ -9,12 +9,14 @@
 #include <deal.II/lac/vector.h>
 
 #include <core/rod_model.h>
+#include <core/scatter_positions.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 
 namespace rodnet
@@ -29,10 +31,23 @@ namespace rodnet
      * set by finish()). It replaces AffineConstraints::
      * distribute_local_to_global, whose per-entry global-to-local lookups
      * and searches cost more than the kernels (see doc/performance.md).
+     * Each matrix entry goes to the place ScatterPositions found for it
+     * once per sparsity pattern, without searching its row.
      */
     class DirectScatter
     {
     public:
+      /// Epetra's compressed rows of @p m (null arrays where its storage
+      /// is not optimized).
+      static CsrArrays
+      csr_of(const Epetra_CrsMatrix &m)
+      {
+        CsrArrays csr;
+        m.ExtractCrsDataPointers(csr.offsets, csr.columns, csr.values);
+        csr.n_rows = m.NumMyRows();
+        return csr;
+      }
+
       /// Whether the fast path applies to @p matrix (or to vectors alone) of
       /// a model on @p communicator.
       static bool
@@ -43,34 +58,25 @@ namespace rodnet
         if (matrix == nullptr)
           return true;
         const Epetra_CrsMatrix &m = matrix->trilinos_matrix();
-        if (!(m.RowMap().LinearMap() && m.ColMap().LinearMap() &&
-              m.ColMap().MinMyGID() == 0 && m.RowMap().MinMyGID() == 0 &&
-              m.ColMap().NumMyElements() == m.RowMap().NumMyElements()))
-          return false;
-        // add() reads the compressed rows straight from Epetra's arrays,
-        // which exist once the storage is optimized (as FillComplete
-        // leaves it). Epetra sorts the column indices of each row when the
-        // matrix is filled; the merge in add() relies on it, so check (as
-        // cheap as zeroing the matrix).
-        const CsrArrays csr(m);
-        if (csr.offsets == nullptr)
-          return false;
-        for (int row = 0; row < m.NumMyRows(); ++row)
-          if (!std::is_sorted(csr.columns + csr.offsets[row],
-                              csr.columns + csr.offsets[row + 1]))
-            return false;
-        return true;
+        // add() writes straight into Epetra's arrays, which exist once the
+        // storage is optimized (as FillComplete leaves it).
+        return m.RowMap().LinearMap() && m.ColMap().LinearMap() &&
+               m.ColMap().MinMyGID() == 0 && m.RowMap().MinMyGID() == 0 &&
+               m.ColMap().NumMyElements() == m.RowMap().NumMyElements() &&
+               csr_of(m).offsets != nullptr;
       }
 
-      DirectScatter(MatrixType              *matrix,
-                    VectorType              *vector,
-                    const std::vector<bool> *fixed)
-          : matrix(matrix == nullptr ?
-                     nullptr :
-                     &const_cast<Epetra_CrsMatrix &>(matrix->trilinos_matrix()))
-          , csr(this->matrix)
+      /// @p positions: where the stencils' entries land in @p matrix's rows
+      /// (needed if @p matrix is not null).
+      DirectScatter(MatrixType                             *matrix,
+                    VectorType                             *vector,
+                    const std::vector<bool>                *fixed,
+                    std::shared_ptr<const ScatterPositions> positions)
+          : csr(matrix == nullptr ? CsrArrays() :
+                                    csr_of(matrix->trilinos_matrix()))
           , values(vector == nullptr ? nullptr : vector->trilinos_vector()[0])
           , fixed(fixed)
+          , positions(std::move(positions))
       {
       }
 
@@ -78,42 +84,22 @@ namespace rodnet
       add(const LocalContribution &copy) const
       {
         const unsigned int n = copy.dofs.size();
-        // The stencil's DoFs in increasing order, so that each row is
-        // merged with the sorted column indices of the matrix in one pass
-        // (insertion sort: stencils are small, of any size). Scratch of
-        // each thread: copiers of one color run at the same time.
-        thread_local std::vector<unsigned int> order;
-        order.resize(n);
+        if (values != nullptr)
+          for (unsigned int i = 0; i < n; ++i)
+            if (!is_fixed(copy.dofs[i]))
+              values[copy.dofs[i]] += copy.vector[i];
+        if (csr.values == nullptr)
+          return;
+        const std::uint8_t *at = positions->of(copy.family, copy.stencil);
+        if (at == nullptr)
+          return add_searching(copy);
         for (unsigned int i = 0; i < n; ++i)
           {
-            unsigned int k = i;
-            for (; k > 0 && copy.dofs[order[k - 1]] > copy.dofs[i]; --k)
-              order[k] = order[k - 1];
-            order[k] = i;
-          }
-        for (unsigned int a = 0; a < n; ++a)
-          {
-            const unsigned int i   = order[a];
-            const int          row = copy.dofs[i];
-            if (is_fixed(row))
-              continue;
-            if (values != nullptr)
-              values[row] += copy.vector[i];
-            if (matrix == nullptr)
-              continue;
-            double    *row_values = csr.values + csr.offsets[row];
-            const int *columns    = csr.columns + csr.offsets[row];
-            int        k          = 0;
-            for (unsigned int b = 0; b < n; ++b)
-              {
-                const unsigned int j   = order[b];
-                const int          col = copy.dofs[j];
-                if (is_fixed(col))
-                  continue;
-                while (columns[k] < col)
-                  ++k;
-                row_values[k] += copy.matrix(i, j);
-              }
+            double       *row_values = csr.values + csr.offsets[copy.dofs[i]];
+            const double *local      = &copy.matrix(i, 0);
+            for (unsigned int j = 0; j < n; ++j, ++at)
+              if (*at != ScatterPositions::skip())
+                row_values[*at] += local[j];
           }
       }
 
@@ -122,67 +108,81 @@ namespace rodnet
       void
       finish() const
       {
-        if (matrix == nullptr || fixed == nullptr)
+        if (csr.values == nullptr || fixed == nullptr)
           return;
         double       sum    = 0;
         unsigned int n_free = 0;
-        for (int row = 0; row < matrix->NumMyRows(); ++row)
+        for (int row = 0; row < csr.n_rows; ++row)
           if (!(*fixed)[row])
             {
               sum += std::abs(diagonal(row));
               ++n_free;
             }
         const double value = n_free > 0 ? sum / n_free : 1.0;
-        for (int row = 0; row < matrix->NumMyRows(); ++row)
+        for (int row = 0; row < csr.n_rows; ++row)
           if ((*fixed)[row])
             diagonal(row) = value;
       }
 
     private:
       bool
-      is_fixed(const int dof) const
+      is_fixed(const global_dof_index dof) const
       {
         return fixed != nullptr && (*fixed)[dof];
+      }
+
+      /// The entry (@p row, @p column) of the matrix, found in its row.
+      double &
+      entry(const global_dof_index row, const global_dof_index column) const
+      {
+        const int *begin = csr.columns + csr.offsets[row];
+        const int *end   = csr.columns + csr.offsets[row + 1];
+        return csr.values[std::find(begin, end, int(column)) - csr.columns];
       }
 
       double &
       diagonal(const int row) const
       {
-        const int *begin = csr.columns + csr.offsets[row];
-        const int *end   = csr.columns + csr.offsets[row + 1];
-        return csr.values[std::lower_bound(begin, end, row) - csr.columns];
+        return entry(row, row);
       }
 
-      /// Epetra's compressed rows of an optimized matrix: row r holds the
-      /// columns and values [offsets[r], offsets[r + 1]); all null if the
-      /// storage is not optimized (or there is no matrix).
-      struct CsrArrays
+      /// add() for a stencil of a family without positions (rows too long
+      /// for them): each entry searched in its row.
+      void
+      add_searching(const LocalContribution &copy) const
       {
-        explicit CsrArrays(const Epetra_CrsMatrix *m)
-        {
-          // Sets all three to null where the storage is not optimized.
-          if (m != nullptr)
-            m->ExtractCrsDataPointers(offsets, columns, values);
-        }
-        explicit CsrArrays(const Epetra_CrsMatrix &m)
-            : CsrArrays(&m)
-        {
-        }
-        int    *offsets = nullptr;
-        int    *columns = nullptr;
-        double *values  = nullptr;
-      };
+        for (unsigned int i = 0; i < copy.dofs.size(); ++i)
+          for (unsigned int j = 0; j < copy.dofs.size(); ++j)
+            if (!is_fixed(copy.dofs[i]) && !is_fixed(copy.dofs[j]))
+              entry(copy.dofs[i], copy.dofs[j]) += copy.matrix(i, j);
+      }
 
-      Epetra_CrsMatrix        *matrix;
-      CsrArrays                csr;
-      double                  *values;
-      const std::vector<bool> *fixed;
+      CsrArrays                               csr;
+      double                                 *values;
+      const std::vector<bool>                *fixed;
+      std::shared_ptr<const ScatterPositions> positions;
     };
+
+    /**
+     * Stencils per task of the colored WorkStream: each task looks up its
+     * thread's copy data (deal.II's ThreadLocalStorage, twice), so tasks of
+     * deal.II's default 8 stencils spend much of their time there; about
+     * four tasks per thread and color still balance the load.
+     */
+    unsigned int
+    chunk_size(const std::vector<std::vector<unsigned int>> &colors)
+    {
+      std::size_t largest = 0;
+      for (const auto &color : colors)
+        largest = std::max(largest, color.size());
+      const std::size_t tasks = 4 * dealii::MultithreadInfo::n_threads();
+      return std::clamp<std::size_t>(largest / tasks, 8, 256);
+    }
   } // namespace
 
   void
   RodModel::assemble_family(
-    const ElementFamily                                  &family,
+    const unsigned int                                    f,
     const StencilState                                   &state,
     const Derivatives                                     derivatives,
     const std::function<void(const LocalContribution &)> &copier,
@@ -195,14 +195,17 @@ namespace rodnet
     std::mutex         failure_mutex;
     // Each stencil's energy in its own slot, summed in order afterwards:
     // the same sum with one thread or several.
-    std::vector<double> energies(family.n_stencils(), 0.0);
+    const ElementFamily &family = *families[f];
+    std::vector<double>  energies(family.n_stencils(), 0.0);
     struct NoScratch
     {
     };
     const auto worker =
       [&](const unsigned int s, NoScratch &, LocalContribution &copy) {
         copy.dofs.clear();
-        copy.energy = 0;
+        copy.energy  = 0;
+        copy.family  = f;
+        copy.stencil = s;
         try
           {
             family.evaluate(s, state, derivatives, copy);
@@ -227,7 +230,9 @@ namespace rodnet
                               worker,
                               add,
                               NoScratch(),
-                              LocalContribution());
+                              LocalContribution(),
+                              2 * dealii::MultithreadInfo::n_threads(),
+                              chunk_size(*colors));
     else
       dealii::WorkStream::run(0u,
                               family.n_stencils(),
@@ -263,7 +268,7 @@ namespace rodnet
                              load_factor};
     double             energy = 0;
     for (unsigned int f = 0; f < families.size(); ++f)
-      assemble_family(*families[f],
+      assemble_family(f,
                       state,
                       derivatives,
                       copier,
@@ -348,10 +353,18 @@ namespace rodnet
                              apply_constraints,
                              extra_force);
 
-    const DirectScatter scatter(tangent,
-                                residual,
-                                apply_constraints ? &fixed_dof_mask : nullptr);
-    double              energy = assemble_families(
+    const std::vector<bool> *fixed =
+      apply_constraints ? &fixed_dof_mask : nullptr;
+    const DirectScatter scatter(
+      tangent,
+      residual,
+      fixed,
+      tangent == nullptr ? nullptr :
+                           scatter_positions->get(families,
+                                                  DirectScatter::csr_of(
+                                                    tangent->trilinos_matrix()),
+                                                  fixed));
+    double energy = assemble_families(
       u,
       load_factor,
       derivatives_for(residual, tangent),

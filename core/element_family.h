@@ -38,6 +38,10 @@ namespace rodnet
     dealii::Vector<double>        vector;
     std::vector<global_dof_index> dofs;
     double                        energy = 0;
+    /// Which stencil this is: its family's index in the model and its
+    /// index in the family (set by the assembly, for the scatter).
+    unsigned int family  = 0;
+    unsigned int stencil = 0;
 
     /// Copies an Eigen gradient (and Hessian, if not null) of any size.
     template <class Gradient, class Hessian>

@@ -17,6 +17,7 @@
 #include <core/model_state.h>
 #include <core/model.h>
 #include <core/rod_network.h>
+#include <core/scatter_positions.h>
 #include <core/system_block.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
@@ -570,14 +571,14 @@ namespace rodnet
                     bool               apply_constraints,
                     const VectorType  *extra_force) const;
 
-    /// Assembles the stencils of @p family at @p state, handing each
+    /// Assembles the stencils of family @p f at @p state, handing each
     /// stencil's contribution to @p copier: serially, or in parallel within
     /// each of @p colors if given; rethrows the first exception of a
     /// stencil after the loop. Adds the family's energy to @p energy in
     /// the stencils' order, whatever the threads.
     void
     assemble_family(
-      const ElementFamily                                  &family,
+      unsigned int                                          f,
       const StencilState                                   &state,
       Derivatives                                           derivatives,
       const std::function<void(const LocalContribution &)> &copier,
@@ -617,6 +618,10 @@ namespace rodnet
     /// Per family, its stencils in colors that share no DoF
     /// (color_stencils(), finalize()): the scatter of several threads.
     std::vector<std::vector<std::vector<unsigned int>>> stencil_colors;
+    /// Where the stencils' entries land in the rows of the tangent last
+    /// assembled (the direct scatter's; found again for a new pattern).
+    std::unique_ptr<ScatterPositionsCache> scatter_positions =
+      std::make_unique<ScatterPositionsCache>();
     std::vector<Support>                                support_list;
     std::multimap<global_dof_index, Hold>           holds;
     std::vector<Clamp>                              clamps;

@@ -67,12 +67,14 @@ namespace
       }
     candidates.push_back(name);
     // RTLD_GLOBAL: deal.II's and Trilinos's plugins (Open MPI's components)
-    // resolve symbols of the libraries the driver brings.
+    // resolve symbols of the libraries the driver brings. RTLD_LAZY: the
+    // ~100000 function relocations of deal.II (not linked with -z now) are
+    // bound at first call, not all at load (doc/performance.md, "Start-up").
     for (const std::string &candidate : candidates)
       {
         if (candidate != name && access(candidate.c_str(), F_OK) != 0)
           continue;
-        if (void *driver = dlopen(candidate.c_str(), RTLD_NOW | RTLD_GLOBAL))
+        if (void *driver = dlopen(candidate.c_str(), RTLD_LAZY | RTLD_GLOBAL))
           return driver;
         errors += std::string("\n  ") + dlerror();
       }

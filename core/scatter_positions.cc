@@ -1,0 +1,142 @@
+#include <core/scatter_positions.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// Four independent multiply-xor lanes (a serial hash would wait on
+    /// each multiply): the fingerprint is taken at every assembly.
+    class Fingerprint
+    {
+    public:
+      void
+      add(const int *data, const std::size_t n)
+      {
+        std::size_t i = 0;
+        for (; i + 4 <= n; i += 4)
+          for (unsigned int l = 0; l < 4; ++l)
+            lanes[l] =
+              (lanes[l] ^ static_cast<std::uint32_t>(data[i + l])) * prime;
+        for (; i < n; ++i)
+          lanes[0] = (lanes[0] ^ static_cast<std::uint32_t>(data[i])) * prime;
+      }
+
+      void
+      add(const std::uint64_t value)
+      {
+        lanes[1] = (lanes[1] ^ value) * prime;
+      }
+
+      std::uint64_t
+      value() const
+      {
+        return ((lanes[0] * prime ^ lanes[1]) * prime ^ lanes[2]) * prime ^
+               lanes[3];
+      }
+
+    private:
+      static constexpr std::uint64_t prime    = 0x100000001b3ULL;
+      std::uint64_t                  lanes[4] = {0xcbf29ce484222325ULL,
+                                                 0x84222325cbf29ce4ULL,
+                                                 0x9ce484222325cbf2ULL,
+                                                 0x2325cbf29ce48422ULL};
+    };
+  } // namespace
+
+
+  std::uint64_t
+  ScatterPositions::fingerprint(const CsrArrays         &csr,
+                                const std::vector<bool> *fixed)
+  {
+    Fingerprint hash;
+    hash.add(static_cast<std::uint64_t>(csr.n_rows));
+    hash.add(csr.offsets, csr.n_rows + 1);
+    hash.add(csr.columns, csr.offsets[csr.n_rows]);
+    hash.add(fixed == nullptr ? 0 : 1);
+    if (fixed != nullptr)
+      for (std::size_t i = 0; i < fixed->size(); i += 64)
+        {
+          std::uint64_t word = 0;
+          for (std::size_t b = 0; b < 64 && i + b < fixed->size(); ++b)
+            word |= static_cast<std::uint64_t>((*fixed)[i + b]) << b;
+          hash.add(word);
+        }
+    return hash.value();
+  }
+
+
+  ScatterPositions::ScatterPositions(
+    const std::vector<std::unique_ptr<ElementFamily>> &families,
+    const CsrArrays                                   &csr,
+    const std::vector<bool>                           *fixed,
+    const std::uint64_t                                fingerprint)
+      : pattern_fingerprint(fingerprint)
+  {
+    for (const auto &family : families)
+      this->families.push_back(find(*family, csr, fixed));
+  }
+
+
+  ScatterPositions::Family
+  ScatterPositions::find(const ElementFamily     &family,
+                         const CsrArrays         &csr,
+                         const std::vector<bool> *fixed)
+  {
+    const auto is_fixed = [&](const global_dof_index dof) {
+      return fixed != nullptr && (*fixed)[dof];
+    };
+    Family                        result;
+    std::vector<global_dof_index> dofs;
+    result.starts.reserve(family.n_stencils() + 1);
+    result.starts.push_back(0);
+    for (unsigned int s = 0; s < family.n_stencils(); ++s)
+      {
+        family.get_dofs(s, dofs);
+        for (const global_dof_index row : dofs)
+          {
+            const int *begin = csr.columns + csr.offsets[row];
+            const int *end   = csr.columns + csr.offsets[row + 1];
+            for (const global_dof_index column : dofs)
+              {
+                if (is_fixed(row) || is_fixed(column))
+                  {
+                    result.entries.push_back(skip());
+                    continue;
+                  }
+                const int *at = std::find(begin, end, int(column));
+                if (at == end)
+                  throw std::logic_error(
+                    "ScatterPositions: family \"" + family.name() +
+                    "\", stencil " + std::to_string(s) + " couples DoFs " +
+                    std::to_string(row) + " and " + std::to_string(column) +
+                    ", which the matrix's sparsity pattern does not hold");
+                if (at - begin >= skip())
+                  return Family();
+                result.entries.push_back(std::uint8_t(at - begin));
+              }
+          }
+        result.starts.push_back(result.entries.size());
+      }
+    result.entries.shrink_to_fit();
+    return result;
+  }
+
+
+  std::shared_ptr<const ScatterPositions>
+  ScatterPositionsCache::get(
+    const std::vector<std::unique_ptr<ElementFamily>> &families,
+    const CsrArrays                                   &csr,
+    const std::vector<bool>                           *fixed)
+  {
+    const std::uint64_t         key = ScatterPositions::fingerprint(csr, fixed);
+    std::lock_guard<std::mutex> lock(mutex);
+    if (positions == nullptr || positions->pattern() != key)
+      positions =
+        std::make_shared<const ScatterPositions>(families, csr, fixed, key);
+    return positions;
+  }
+} // namespace rodnet
