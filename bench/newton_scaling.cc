@@ -5,8 +5,10 @@
 // load F = 1e-4 * 3 EI / L^3 in -z (tip deflection 1e-4 L). One Newton
 // iteration from u = 0 is
 //   assemble: RodModel::assemble(u, 1, &r, &K) on the constrained system,
-//   solve:    Amesos KLU (TrilinosWrappers::SolverDirect), factorization
-//             (symbolic + numeric) and the triangular solves,
+//   solve:    the Newton solver's direct solver (TangentFactorization:
+//             band LU or Amesos KLU, --linear-solver), its numeric
+//             factorization and the triangular solves (its one-time set-up,
+//             KLU's symbolic analysis, counts in "setup"),
 // timed separately, median (min-max), for N = 1e2 ... 1e6 vertices
 // (N - 1 segments, about 4 N DoFs). The cost is linear in N when the time
 // per vertex stays constant; the program prints the ratios of consecutive
@@ -15,17 +17,16 @@
 // the tip deflection against P L^3 / (3 EI).
 //
 // Usage: newton_scaling [--threads n] [--repeats n] [--max-vertices n]
-// (defaults 1, 5 and 100000; N = 1e6 gets 3 repeats). The default stops at
+// [--linear-solver auto|klu|band] (defaults 1, 5, 100000 and auto; N = 1e6
+// gets 3 repeats). The default stops at
 // 1e5 because building the model is quadratic in N: RodNetwork::add_rod
 // compares every pair of vertices for coincidence, 15 s at 1e5 and an
 // estimated 25 min at 1e6 (see doc/performance.md).
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
-
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
+#include <solvers/tangent_factorization.h>
 
 #include <bench/options.h>
 #include <bench/timing.h>
@@ -40,9 +41,10 @@ namespace
 {
   struct Options
   {
-    unsigned int threads      = 1;
-    unsigned int repeats      = 5;
-    unsigned int max_vertices = 100000;
+    unsigned int threads       = 1;
+    unsigned int repeats       = 5;
+    unsigned int max_vertices  = 100000;
+    std::string  linear_solver = "auto";
 
     /// The options of the usage line above.
     std::vector<bench::Option>
@@ -50,7 +52,8 @@ namespace
     {
       return {bench::number("--threads", threads),
               bench::number("--repeats", repeats, 5),
-              bench::number("--max-vertices", max_vertices)};
+              bench::number("--max-vertices", max_vertices),
+              bench::text("--linear-solver", linear_solver)};
     }
   };
 
@@ -71,12 +74,15 @@ namespace
     unsigned int      n_dofs;
     double            setup;
     bench::Statistics assemble, factorize, solve, total;
+    std::string       solver;
     double            tip_ratio;
     double            relative_residual;
   };
 
   Result
-  run_case(const unsigned int n_vertices, const unsigned int repeats)
+  run_case(const unsigned int n_vertices,
+           const unsigned int repeats,
+           const std::string &linear_solver)
   {
     const double       start = bench::now();
     const double       E     = 1e8;
@@ -107,7 +113,9 @@ namespace
     VectorType du = model.create_vector();
     MatrixType K;
     model.initialize_matrix(K);
-    result.setup = bench::now() - start;
+    const auto direct = TangentFactorization::create(K, linear_solver);
+    result.solver     = direct->name();
+    result.setup      = bench::now() - start;
 
     std::vector<double> assemble, factorize, solve, total;
     // One warm-up iteration, then the timed ones; each starts from u = 0.
@@ -115,15 +123,10 @@ namespace
       {
         const double t0 = bench::now();
         model.assemble(u, 1.0, &r, &K);
-        const double                           t1 = bench::now();
-        dealii::SolverControl                  control;
-        dealii::TrilinosWrappers::SolverDirect direct(
-          control,
-          dealii::TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                                 "Amesos_Klu"));
-        direct.initialize(K);
+        const double t1 = bench::now();
+        direct->factorize();
         const double t2 = bench::now();
-        direct.solve(du, r);
+        direct->solve(r, du);
         const double t3 = bench::now();
         if (rep > 0)
           {
@@ -156,7 +159,7 @@ namespace
   void
   benchmark(const Options &options)
   {
-    std::cout << "One Newton iteration (assemble + Amesos KLU), clamped "
+    std::cout << "One Newton iteration (assemble + direct solve), clamped "
                  "straight rod, small tip load; "
               << options.threads << " thread(s); median (min-max) in s of "
               << options.repeats
@@ -170,13 +173,13 @@ namespace
       {
         const unsigned int repeats =
           n >= 1000000 ? std::min(3u, options.repeats) : options.repeats;
-        results.push_back(run_case(n, repeats));
+        results.push_back(run_case(n, repeats, options.linear_solver));
         const Result &r = results.back();
         char          line[400];
         std::snprintf(
           line,
           sizeof(line),
-          "N %8u  DoFs %8u  setup %.3g s\n"
+          "N %8u  DoFs %8u  setup %.3g s  linear solver %s\n"
           "  assemble  %-28s per vertex %.3g us\n"
           "  factorize %-28s per vertex %.3g us\n"
           "  solve     %-28s per vertex %.3g us\n"
@@ -186,6 +189,7 @@ namespace
           n,
           r.n_dofs,
           r.setup,
+          r.solver.c_str(),
           bench::format_time(r.assemble).c_str(),
           1e6 * r.assemble.median / n,
           bench::format_time(r.factorize).c_str(),

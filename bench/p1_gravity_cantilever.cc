@@ -28,7 +28,8 @@
 // Usage: p1_gravity_cantilever [--threads n] [--repeats n] [--steps n]
 // [--log 1] (the solver's step log, for diagnosis; it is inside the timing)
 // [--line-search name] (Newton's line search: "backtrack", "polynomial" or
-// "full step", the default)
+// "full step", the default) [--linear-solver auto|klu|band] (Newton's direct
+// solver, TangentFactorization; default auto)
 #include <solvers/static_solver.h>
 
 #include <bench/options.h>
@@ -49,11 +50,12 @@ namespace
 
   struct Options
   {
-    unsigned int threads     = 1;
-    unsigned int repeats     = 5;
-    unsigned int steps       = 0; ///< 0: choose
-    bool         log         = false;
-    std::string  line_search = "full step";
+    unsigned int threads       = 1;
+    unsigned int repeats       = 5;
+    unsigned int steps         = 0; ///< 0: choose
+    bool         log           = false;
+    std::string  line_search   = "full step";
+    std::string  linear_solver = "auto";
 
     /// The options of the usage line above.
     std::vector<bench::Option>
@@ -63,7 +65,8 @@ namespace
               bench::number("--repeats", repeats, 5),
               bench::number("--steps", steps),
               bench::flag("--log", log),
-              bench::text("--line-search", line_search)};
+              bench::text("--line-search", line_search),
+              bench::text("--linear-solver", linear_solver)};
     }
   };
 
@@ -85,8 +88,9 @@ namespace
     const std::unique_ptr<RodModel> model =
       bench::p1::rod_model(n_vertices, ea_scale);
     StaticSolver::Parameters parameters;
-    parameters.n_steps            = n_steps;
-    parameters.newton.line_search = options.line_search;
+    parameters.n_steps              = n_steps;
+    parameters.newton.line_search   = options.line_search;
+    parameters.newton.linear_solver = options.linear_solver;
     Outcome    outcome;
     VectorType u = model->create_vector();
     try

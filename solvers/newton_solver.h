@@ -13,9 +13,10 @@ namespace rodnet
 {
   /**
    * Newton's method with a line search, run by Trilinos NOX ("Line Search
-   * Based" solver, NOX::Epetra::Group) on deal.II's Trilinos vectors and
-   * matrix, with linear solves by Amesos KLU. deal.II 9.4 has no NOX
-   * wrapper; this is the thin interface between the two.
+   * Based" solver) on deal.II's Trilinos vectors and matrix through our own
+   * NOX group (NoxGroup), with linear solves by Amesos KLU or LAPACK's band
+   * LU (TangentFactorization). deal.II 9.4 has no NOX wrapper; this is the
+   * thin interface between the two.
    */
   class NewtonSolver
   {
@@ -31,6 +32,9 @@ namespace rodnet
       unsigned int max_iterations = 25;
       /// "backtrack", "polynomial" or "full step".
       std::string line_search = "full step";
+      /// The direct solver of the Newton systems: "auto", "klu" or "band"
+      /// (TangentFactorization).
+      std::string linear_solver = "auto";
 
       /// Declares the entries of these parameters ("Line search", "Max
       /// iterations") in the current subsection of @p prm, with their defaults

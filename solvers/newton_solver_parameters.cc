@@ -11,16 +11,18 @@ namespace rodnet
                       "full step",
                       dealii::Patterns::Selection(
                         "backtrack|polynomial|full step"),
-                      "Globalization of Newton's method (Trilinos NOX). The "
-                      "line searches reduce the residual norm, which for "
-                      "nearly inextensible rods (large EA) rejects good "
-                      "Newton steps; the default takes full steps and "
-                      "relies on load-step cutting instead. [-]");
+                      "Newton's globalization (NOX); line searches on "
+                      "|residual| reject good steps of stiff rods. [-]");
+    prm.declare_entry("Linear solver",
+                      "auto",
+                      dealii::Patterns::Selection("auto|klu|band"),
+                      "Newton's direct solver: Amesos KLU, LAPACK band LU "
+                      "(one process); auto: band if 32 wide at most. [-]");
     prm.declare_entry(
       "Max iterations",
       "25",
       dealii::Patterns::Integer(1),
-      "Newton iterations per load or time step before it is cut. [-]");
+      "Newton iterations per step before the step is cut. [-]");
   }
 
   void
@@ -28,6 +30,7 @@ namespace rodnet
     const dealii::ParameterHandler &prm)
   {
     line_search    = prm.get("Line search");
+    linear_solver  = prm.get("Linear solver");
     max_iterations = prm.get_integer("Max iterations");
   }
 } // namespace rodnet

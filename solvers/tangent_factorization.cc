@@ -1,0 +1,215 @@
+#include <deal.II/base/mpi.h>
+
+#include <solvers/tangent_factorization.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_LinearProblem.h>
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+extern "C"
+{
+  void
+  dgbtrf_(const int *m,
+          const int *n,
+          const int *kl,
+          const int *ku,
+          double    *ab,
+          const int *ldab,
+          int       *ipiv,
+          int       *info);
+  void
+  dgbtrs_(const char   *trans,
+          const int    *n,
+          const int    *kl,
+          const int    *ku,
+          const int    *nrhs,
+          const double *ab,
+          const int    *ldab,
+          const int    *ipiv,
+          double       *b,
+          const int    *ldb,
+          int          *info);
+}
+
+namespace rodnet
+{
+  namespace
+  {
+    using VectorType = TangentFactorization::VectorType;
+    using MatrixType = TangentFactorization::MatrixType;
+
+    /// Trilinos Amesos KLU.
+    class KluFactorization : public TangentFactorization
+    {
+    public:
+      explicit KluFactorization(const MatrixType &matrix)
+          : problem(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()),
+                    nullptr,
+                    nullptr)
+      {
+        Amesos factory;
+        solver.reset(factory.Create("Amesos_Klu", problem));
+        if (solver == nullptr || solver->SymbolicFactorization() != 0)
+          throw std::runtime_error(
+            "KLU (Trilinos Amesos) could not analyse the tangent");
+      }
+
+      void
+      factorize() override
+      {
+        if (solver->NumericFactorization() != 0)
+          throw std::runtime_error(
+            "the tangent is singular (KLU found no pivot)");
+      }
+
+      void
+      solve(const VectorType &b, VectorType &x) override
+      {
+        problem.SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
+        problem.SetLHS(&x.trilinos_vector());
+        if (solver->Solve() != 0)
+          throw std::runtime_error("KLU's solve failed");
+      }
+
+      std::string
+      name() const override
+      {
+        return "klu";
+      }
+
+    private:
+      Epetra_LinearProblem               problem;
+      std::unique_ptr<Amesos_BaseSolver> solver;
+    };
+
+
+    /// Calls @p f(row, column, value) for every stored entry of @p m (one
+    /// process: local and global indices are the same).
+    template <class Function>
+    void
+    for_each_entry(const Epetra_CrsMatrix &m, const Function &f)
+    {
+      for (int row = 0; row < m.NumMyRows(); ++row)
+        {
+          int     n;
+          int    *columns;
+          double *values;
+          m.ExtractMyRowView(row, n, values, columns);
+          for (int k = 0; k < n; ++k)
+            f(row, m.GCID(columns[k]), values[k]);
+        }
+    }
+
+
+    /// The lower and upper half-widths of the band of @p m's pattern.
+    std::pair<int, int>
+    band_widths(const Epetra_CrsMatrix &m)
+    {
+      int lower = 0, upper = 0;
+      for_each_entry(m, [&](const int row, const int column, double) {
+        lower = std::max(lower, row - column);
+        upper = std::max(upper, column - row);
+      });
+      return {lower, upper};
+    }
+
+
+    /**
+     * LAPACK's band LU with partial pivoting. The band is stored as
+     * LAPACK's dgbtrf asks (2 kl + ku + 1 rows: kl more for the fill of
+     * the row exchanges), column by column.
+     */
+    class BandFactorization : public TangentFactorization
+    {
+    public:
+      BandFactorization(const MatrixType         &matrix,
+                        const std::pair<int, int> kl_ku)
+          : matrix(matrix.trilinos_matrix())
+          , n(this->matrix.NumMyRows())
+          , kl(kl_ku.first)
+          , ku(kl_ku.second)
+          , ldab(2 * kl + ku + 1)
+          , pivots(n)
+      {
+      }
+
+      void
+      factorize() override
+      {
+        band.assign(std::size_t(ldab) * n, 0.0);
+        for_each_entry(matrix,
+                       [&](const int    row,
+                           const int    column,
+                           const double value) {
+                         band[std::size_t(kl + ku + row - column) +
+                              std::size_t(column) * ldab] = value;
+                       });
+        int info = 0;
+        dgbtrf_(&n, &n, &kl, &ku, band.data(), &ldab, pivots.data(), &info);
+        if (info != 0)
+          throw std::runtime_error(
+            "the tangent is singular (band LU: zero pivot in row " +
+            std::to_string(info) + ")");
+      }
+
+      void
+      solve(const VectorType &b, VectorType &x) override
+      {
+        x              = b;
+        const int one  = 1;
+        int       info = 0;
+        dgbtrs_("N",
+                &n,
+                &kl,
+                &ku,
+                &one,
+                band.data(),
+                &ldab,
+                pivots.data(),
+                x.trilinos_vector()[0],
+                &n,
+                &info);
+        if (info != 0)
+          throw std::runtime_error("the band LU solve failed");
+      }
+
+      std::string
+      name() const override
+      {
+        return "band";
+      }
+
+    private:
+      const Epetra_CrsMatrix &matrix;
+      const int               n, kl, ku, ldab;
+      std::vector<int>        pivots;
+      std::vector<double>     band;
+    };
+  } // namespace
+
+
+  std::unique_ptr<TangentFactorization>
+  TangentFactorization::create(const MatrixType  &matrix,
+                               const std::string &kind)
+  {
+    if (kind != "klu" && kind != "band" && kind != "auto")
+      throw std::invalid_argument("unknown linear solver \"" + kind +
+                                  "\"; known: auto, klu, band");
+    const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
+                               matrix.get_mpi_communicator()) == 1;
+    if (kind == "band" && !one_process)
+      throw std::invalid_argument(
+        "the band LU (Linear solver = band) runs on one process only");
+    if (kind == "klu" || !one_process)
+      return std::make_unique<KluFactorization>(matrix);
+    const std::pair<int, int> widths = band_widths(matrix.trilinos_matrix());
+    if (kind == "band" || (widths.first <= max_auto_band_width &&
+                           widths.second <= max_auto_band_width))
+      return std::make_unique<BandFactorization>(matrix, widths);
+    return std::make_unique<KluFactorization>(matrix);
+  }
+} // namespace rodnet

@@ -1,0 +1,62 @@
+#ifndef RODNET_SOLVERS_TANGENT_FACTORIZATION_H
+#define RODNET_SOLVERS_TANGENT_FACTORIZATION_H
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+
+namespace rodnet
+{
+  /**
+   * The direct solver of Newton's linear systems K x = b with the tangent
+   * K: factorized once per Newton iteration, then used for one or more
+   * solves. Two kinds:
+   *  - "klu": Trilinos Amesos KLU, sparse LU for any pattern; its
+   *    symbolic analysis (ordering) is done once, at construction.
+   *  - "band": LAPACK's band LU with partial pivoting (dgbtrf, dgbtrs) on
+   *    the tangent's band. A rod's DoFs are numbered along it, so its
+   *    tangent is a narrow band (half-width 11 for one rod), where the
+   *    band LU does a third of KLU's work and none of its bookkeeping;
+   *    a network's junction DoFs come last and widen the band.
+   * "auto" takes the band where its half-widths are at most
+   * max_auto_band_width, KLU otherwise (doc/performance.md).
+   */
+  class TangentFactorization
+  {
+  public:
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+    using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+    virtual ~TangentFactorization() = default;
+
+    /// The largest lower or upper half-width of the band for which "auto"
+    /// takes the band LU.
+    static constexpr int max_auto_band_width = 32;
+
+    /**
+     * A factorization of the matrices of @p matrix's pattern (its values
+     * are read at each factorize()): @p kind "klu", "band" or "auto".
+     * Throws std::invalid_argument for another kind, and for "band" on
+     * more than one process.
+     */
+    static std::unique_ptr<TangentFactorization>
+    create(const MatrixType &matrix, const std::string &kind);
+
+    /// Factorizes the matrix's current values. Throws std::runtime_error
+    /// naming the solver where the matrix is singular.
+    virtual void
+    factorize() = 0;
+
+    /// Solves K x = b with the last factorization.
+    virtual void
+    solve(const VectorType &b, VectorType &x) = 0;
+
+    /// "klu" or "band".
+    virtual std::string
+    name() const = 0;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,178 @@
+// The direct solvers of Newton's systems (TangentFactorization): LAPACK's
+// band LU and Amesos KLU solve a rod's tangent system to its backward
+// error; "auto" takes the band for one rod and KLU where junction DoFs
+// widen the band; a singular tangent is reported, not solved; and NOX's
+// line searches, which apply the Jacobian through our group, still work.
+
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <common/rod_models.h>
+#include <solvers/newton_solver.h>
+#include <solvers/tangent_factorization.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <stdexcept>
+
+using namespace rodnet;
+
+namespace
+{
+  /// A cantilever of 20 segments under a tip force, with its tangent and
+  /// residual assembled at a state off equilibrium.
+  struct RodSystem
+  {
+    std::unique_ptr<RodModel> model;
+    MatrixType                tangent;
+    VectorType                residual;
+
+    explicit RodSystem(std::unique_ptr<RodNetwork> network)
+    {
+      model = rodnet::testing::elastic_model(std::move(network),
+                                             {1e4, 2.0, 2.0, 1.5});
+      model->clamp_end("clamp", 0, true);
+      model->add_point_force(model->network().rods()[0].vertices.back(),
+                             Vector3(0, 0.3, 1.0));
+      model->finalize();
+      VectorType u = model->create_vector();
+      for (unsigned int i = 0; i < u.size(); ++i)
+        u[i] = 1e-3 * std::cos(0.7 * i);
+      u.compress(dealii::VectorOperation::insert);
+      residual = model->create_vector();
+      model->initialize_matrix(tangent);
+      model->assemble(u, 1.0, &residual, &tangent);
+    }
+  };
+
+  /// |K x - b| / |b| for the solution x of @p kind's solver.
+  double
+  backward_error(RodSystem &system, const std::string &kind, VectorType &x)
+  {
+    const auto solver = TangentFactorization::create(system.tangent, kind);
+    EXPECT_EQ(solver->name(), kind);
+    solver->factorize();
+    x = system.residual;
+    solver->solve(system.residual, x);
+    VectorType kx = x;
+    system.tangent.vmult(kx, x);
+    kx.add(-1.0, system.residual);
+    return kx.l2_norm() / system.residual.l2_norm();
+  }
+
+  /// Three rods welded at a hub at the origin.
+  std::unique_ptr<RodNetwork>
+  three_rod_hub()
+  {
+    auto network = std::make_unique<RodNetwork>();
+    for (const Vector3 &end :
+         {Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(0, 0, 1)})
+      network->add_rod(generators::straight(Vector3::Zero(), end, 8),
+                       false,
+                       end.cross(Vector3(1, 1, 1)).normalized(),
+                       "simple");
+    network->add_junction("hub",
+                          JunctionKind::welded,
+                          {{0, true}, {1, true}, {2, true}});
+    return network;
+  }
+} // namespace
+
+TEST(TangentFactorization, BandAndKluSolveARodsTangent)
+{
+  RodSystem  rod(rodnet::testing::straight_network(20));
+  VectorType band_x, klu_x;
+  EXPECT_LT(backward_error(rod, "band", band_x), 1e-12);
+  EXPECT_LT(backward_error(rod, "klu", klu_x), 1e-12);
+  VectorType difference = band_x;
+  difference.add(-1.0, klu_x);
+  EXPECT_LT(difference.l2_norm(), 1e-8 * klu_x.l2_norm());
+}
+
+TEST(TangentFactorization, AutoTakesTheBandForOneRodAndKluForAHub)
+{
+  RodSystem rod(rodnet::testing::straight_network(20));
+  EXPECT_EQ(TangentFactorization::create(rod.tangent, "auto")->name(), "band");
+  RodSystem hub(three_rod_hub());
+  EXPECT_EQ(TangentFactorization::create(hub.tangent, "auto")->name(), "klu");
+  VectorType x;
+  EXPECT_LT(backward_error(hub, "klu", x), 1e-12);
+  EXPECT_THROW(TangentFactorization::create(rod.tangent, "cholesky"),
+               std::invalid_argument);
+}
+
+TEST(TangentFactorization, ASingularTangentIsReported)
+{
+  // A 3 x 3 matrix whose last row and column are zero.
+  dealii::IndexSet all(3);
+  all.add_range(0, 3);
+  dealii::TrilinosWrappers::SparsityPattern pattern(all, MPI_COMM_WORLD);
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      pattern.add(i, j);
+  pattern.compress();
+  MatrixType singular;
+  singular.reinit(pattern);
+  singular.set(0, 0, 2.0);
+  singular.set(0, 1, 1.0);
+  singular.set(1, 0, 1.0);
+  singular.set(1, 1, 2.0);
+  singular.compress(dealii::VectorOperation::insert);
+  for (const std::string kind : {"band", "klu"})
+    {
+      const auto solver = TangentFactorization::create(singular, kind);
+      try
+        {
+          solver->factorize();
+          ADD_FAILURE() << kind << " factorized a singular matrix";
+        }
+      catch (const std::runtime_error &e)
+        {
+          EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos)
+            << e.what();
+        }
+    }
+}
+
+TEST(TangentFactorization, NoxLineSearchesApplyTheJacobianThroughOurGroup)
+{
+  // r_i(y) = y_i^3 + y_i - c_i from y = 3: the full Newton step
+  // overshoots; NOX's line searches (the polynomial one takes the slope
+  // F^T J d from applyJacobian) must converge to the root.
+  const unsigned int n = 4;
+  dealii::IndexSet   all(n);
+  all.add_range(0, n);
+  dealii::TrilinosWrappers::SparsityPattern pattern(all, MPI_COMM_WORLD);
+  for (unsigned int i = 0; i < n; ++i)
+    pattern.add(i, i);
+  pattern.compress();
+  const std::vector<double> c = {0.5, 1.0, 2.0, 10.0};
+  NewtonSolver::Problem     problem;
+  problem.residual = [&](const VectorType &y, VectorType &r) {
+    for (unsigned int i = 0; i < n; ++i)
+      r[i] = y[i] * y[i] * y[i] + y[i] - c[i];
+    r.compress(dealii::VectorOperation::insert);
+  };
+  problem.tangent = [&](const VectorType &y, MatrixType &k) {
+    for (unsigned int i = 0; i < n; ++i)
+      k.set(i, i, 3 * y[i] * y[i] + 1);
+    k.compress(dealii::VectorOperation::insert);
+  };
+  for (const std::string search : {"full step", "backtrack", "polynomial"})
+    for (const std::string kind : {"band", "klu"})
+      {
+        MatrixType tangent;
+        tangent.reinit(pattern);
+        VectorType x(all, MPI_COMM_WORLD);
+        x = 3.0;
+        NewtonSolver::Parameters parameters;
+        parameters.tolerance     = 1e-12;
+        parameters.line_search   = search;
+        parameters.linear_solver = kind;
+        const auto result = NewtonSolver(parameters).solve(problem, x, tangent);
+        EXPECT_TRUE(result.converged) << search << ", " << kind << ": "
+                                      << result.failure;
+        for (unsigned int i = 0; i < n; ++i)
+          EXPECT_NEAR(x[i] * x[i] * x[i] + x[i], c[i], 1e-11)
+            << search << ", " << kind;
+      }
+}
