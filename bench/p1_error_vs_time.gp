@@ -30,7 +30,7 @@ EOD
 # rodnet-run scenes/p1_gravity_cantilever.prm as a whole process (start-up
 # included; doc/performance.md, "Start-up"): time (s), tip error, N.
 $rodnet_process << EOD
-1.00,3.36e-5,1000
+0.551,3.36e-5,1000
 EOD
 $drm << EOD
 7.25,2.6e-4,50

@@ -29,7 +29,8 @@
 // [--log 1] (the solver's step log, for diagnosis; it is inside the timing)
 // [--line-search name] (Newton's line search: "backtrack", "polynomial" or
 // "full step", the default) [--linear-solver auto|klu|band] (Newton's direct
-// solver, TangentFactorization; default auto)
+// solver, TangentFactorization; default auto) [--only-n n] (one of the N
+// above only, e.g. to profile it)
 #include <solvers/static_solver.h>
 
 #include <bench/options.h>
@@ -56,6 +57,7 @@ namespace
     bool         log           = false;
     std::string  line_search   = "full step";
     std::string  linear_solver = "auto";
+    unsigned int only_n        = 0; ///< 0: every N
 
     /// The options of the usage line above.
     std::vector<bench::Option>
@@ -66,7 +68,8 @@ namespace
               bench::number("--steps", steps),
               bench::flag("--log", log),
               bench::text("--line-search", line_search),
-              bench::text("--linear-solver", linear_solver)};
+              bench::text("--linear-solver", linear_solver),
+              bench::number("--only-n", only_n)};
     }
   };
 
@@ -122,6 +125,8 @@ namespace
         bool robust = true;
         for (const unsigned int n : sizes)
           {
+            if (options.only_n > 0 && n != options.only_n)
+              continue;
             const Outcome o = solve(n, n_steps, ea_scale, options);
             std::cout << "  trial: N " << n << ", " << n_steps
                       << " step(s): " << (o.converged ? "converged" : "failed")
@@ -199,6 +204,8 @@ namespace
                   << options.repeats << " repeats\n";
         for (const unsigned int n : sizes)
           {
+            if (options.only_n > 0 && n != options.only_n)
+              continue;
             Outcome                   outcome;
             const std::vector<double> times =
               bench::time_repeats(options.repeats, [&] {

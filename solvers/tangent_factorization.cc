@@ -135,19 +135,32 @@ namespace rodnet
           , ldab(2 * kl + ku + 1)
           , pivots(n)
       {
+        // Each stored entry's place in the band, in the order of the
+        // compressed rows: a factorization then copies the values without
+        // asking the matrix for its rows and their global columns.
+        for_each_entry(this->matrix,
+                       [&](const int row, const int column, double) {
+                         places.push_back(place(row, column));
+                       });
       }
 
       void
       factorize() override
       {
         band.assign(std::size_t(ldab) * n, 0.0);
-        for_each_entry(matrix,
-                       [&](const int    row,
-                           const int    column,
-                           const double value) {
-                         band[std::size_t(kl + ku + row - column) +
-                              std::size_t(column) * ldab] = value;
-                       });
+        int    *offsets = nullptr, *columns = nullptr;
+        double *values = nullptr;
+        matrix.ExtractCrsDataPointers(offsets, columns, values);
+        if (values != nullptr && std::size_t(offsets[n]) == places.size())
+          for (std::size_t k = 0; k < places.size(); ++k)
+            band[places[k]] = values[k];
+        else // storage not optimized: row by row
+          for_each_entry(matrix,
+                         [&](const int    row,
+                             const int    column,
+                             const double value) {
+                           band[place(row, column)] = value;
+                         });
         int info = 0;
         dgbtrf_(&n, &n, &kl, &ku, band.data(), &ldab, pivots.data(), &info);
         if (info != 0)
@@ -184,10 +197,18 @@ namespace rodnet
       }
 
     private:
-      const Epetra_CrsMatrix &matrix;
-      const int               n, kl, ku, ldab;
-      std::vector<int>        pivots;
-      std::vector<double>     band;
+      /// Where entry (@p row, @p column) is in LAPACK's band storage.
+      std::size_t
+      place(const int row, const int column) const
+      {
+        return std::size_t(kl + ku + row - column) + std::size_t(column) * ldab;
+      }
+
+      const Epetra_CrsMatrix  &matrix;
+      const int                n, kl, ku, ldab;
+      std::vector<int>         pivots;
+      std::vector<std::size_t> places;
+      std::vector<double>      band;
     };
   } // namespace
 
