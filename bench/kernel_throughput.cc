@@ -18,7 +18,9 @@
 //      Hessian of each stencil, as the assembly computes it), and the same
 //      for the segments, so that (a) - (c) is the cost of gathering and
 //      scattering through deal.II and Trilinos.
-// Every figure is the median of the repeats with its range (min-max).
+// Every figure is the median of the repeats with its range (min-max); the
+// rates also go to kernel_throughput.csv in the current directory, from
+// which bench/k1_vs_fabsim.gp draws doc/k1_vs_fabsim.png.
 //
 // Usage: kernel_throughput [--threads n] [--repeats n] [--kernel NAME]
 // [--vertices N] (defaults 1, 7, both kernels, N = 1e3 and 1e5: the peer
@@ -26,7 +28,6 @@
 #include <core/rod_model.h>
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
-#include <families/bending_response.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
 
@@ -34,6 +35,8 @@
 #include <bench/timing.h>
 #include <cmath>
 #include <cstdlib>
+#include <families/bending_response.h>
+#include <fstream>
 #include <iostream>
 #include <random>
 #include <string>
@@ -222,6 +225,18 @@ namespace
               << " thread(s), median (min-max) of " << options.repeats
               << " repeats, rates in hinges/s (N - 2 hinges; the assembled "
                  "figures include the N - 1 segments in the time)\n";
+    // Short names of the rows for the CSV, in the order of rows[].
+    const char   *keys[] = {"assembled_egh",
+                            "assembled_gradient",
+                            "kernel_egh",
+                            "kernel_gradient",
+                            "local_egh",
+                            "local_gradient",
+                            "segments_egh",
+                            "segments_gradient"};
+    std::ofstream csv("kernel_throughput.csv");
+    csv << "N,kernel,threads,figure,hinges_per_s_median,hinges_per_s_min,"
+           "hinges_per_s_max\n";
     const char *rows[] = {"(a) E+g+H assembled into Trilinos matrix",
                           "(b) gradient assembled into vector",
                           "(c) kernel evaluate() with Hessians",
@@ -260,6 +275,11 @@ namespace
                             bench::format_time(*values[i]).c_str(),
                             bench::format_rate(n_hinges, *values[i]).c_str());
               std::cout << line;
+              // The fastest repeat has the largest rate.
+              csv << n << ',' << kernel << ',' << options.threads << ','
+                  << keys[i] << ',' << n_hinges / values[i]->median << ','
+                  << n_hinges / values[i]->max << ','
+                  << n_hinges / values[i]->min << '\n';
             }
           std::cout << "  share of (a) outside the local loops "
                        "(gather, scatter, WorkStream): "

@@ -1,0 +1,55 @@
+# K1 chart: hinges per second of rodnet's kernels against fabsim
+# (/work/shared/BENCHMARKS.md) and the goals of issue 13, for the energy,
+# gradient and Hessian assembled into a sparse matrix and for the gradient
+# alone, at N = 1e3 and 1e5, one thread. Reads the CSV written by
+# kernel_throughput; run from the directory that holds it:
+#   gnuplot -e "csv='kernel_throughput.csv'; out='doc/k1_vs_fabsim.png'" \
+#     bench/k1_vs_fabsim.gp
+if (!exists("csv")) csv = 'kernel_throughput.csv'
+if (!exists("out")) out = 'k1_vs_fabsim.png'
+
+set terminal pngcairo size 900,560 font ",11"
+set output out
+set datafile separator comma
+set logscale y
+set format y "10^{%L}"
+set yrange [1e4:3e7]
+set ylabel "hinges per second (log scale)"
+set title "K1 hinge kernel throughput, one thread: rodnet against fabsim"
+set key top left box opaque
+set grid ytics lc rgb "#dddddd"
+set style fill solid 0.85 border -1
+set boxwidth 0.2
+set xrange [-0.6:3.6]
+set bmargin 4
+set xtics ("E+g+H assembled\nN = 1e3" 0, "E+g+H assembled\nN = 1e5" 1, \
+           "gradient assembled\nN = 1e3" 2, "gradient assembled\nN = 1e5" 3)
+
+# fabsim (-O3 -march=native) of BENCHMARKS.md: slot, hinges/s.
+$fabsim << EOD
+0,3.55e5
+1,2.96e5
+2,4.86e6
+3,4.55e6
+EOD
+# Goals of issue 13: 3x fabsim for E+g+H (>= 1e6), 2x for the gradient
+# (>= 9e6).
+$goal << EOD
+0,1e6
+1,1e6
+2,9e6
+3,9e6
+EOD
+
+slot(n, figure) = (figure eq "assembled_egh" ? 0 : \
+                   figure eq "assembled_gradient" ? 2 : -10) + (n == 100000 ? 1 : 0)
+row(kernel) = (strcol(2) eq kernel && strcol(3) eq "1") ? \
+              slot(column(1), strcol(4)) : NaN
+
+plot $fabsim using ($1 - 0.22):2 with boxes lc rgb "#888888" title "fabsim", \
+     csv using (row("simple")):5 every ::1 with boxes lc rgb "#1f77b4" \
+         title "rodnet, simple kernel", \
+     csv using (row("classic") + 0.22):5 every ::1 with boxes lc rgb "#ff7f0e" \
+         title "rodnet, classic kernel", \
+     $goal using ($1 - 0.35):2:(0.7):(0) with vectors nohead dt 2 lw 2 \
+         lc rgb "#d62728" title "goal of issue 13"
