@@ -208,8 +208,8 @@ namespace rodnet
   {
     if (!isJacobian())
       return BadDependency;
-    const auto &in = NoxVector::values(input);
-    auto &out = const_cast<NoxVector::VectorType &>(NoxVector::values(result));
+    const auto &in  = NoxVector::values(input);
+    auto       &out = NoxVector::values(result);
     // J = K + a b^T, J^T = K^T + b a^T.
     const auto &a = transpose ? shared->rank_one_b : shared->rank_one_a;
     const auto &b = transpose ? shared->rank_one_a : shared->rank_one_b;
@@ -246,8 +246,8 @@ namespace rodnet
   {
     if (!isJacobian())
       return BadDependency;
-    const auto &in = NoxVector::values(input);
-    auto &out = const_cast<NoxVector::VectorType &>(NoxVector::values(result));
+    const auto &in  = NoxVector::values(input);
+    auto       &out = NoxVector::values(result);
     try
       {
         if (!shared->factorized)

@@ -25,6 +25,14 @@ namespace rodnet
   }
 
 
+  NoxVector::VectorType &
+  NoxVector::values(NOX::Abstract::Vector &v)
+  {
+    return const_cast<VectorType &>(
+      values(static_cast<const NOX::Abstract::Vector &>(v)));
+  }
+
+
   NOX::Abstract::Vector &
   NoxVector::init(const double gamma)
   {

@@ -10,7 +10,7 @@ namespace rodnet
   /**
    * NOX's vector interface over deal.II's Trilinos vector, so that NOX's
    * Newton solver works on the model's own vectors. (NOX's Epetra layer,
-   * NOX::Epetra::Vector, would do the same but brings 27 more shared
+   * NOX::Epetra::Vector, would do the same but brings 24 more shared
    * libraries into every process: Thyra, Stratimikos, Tpetra, ...;
    * doc/performance.md, "Start-up".)
    */
@@ -50,6 +50,8 @@ namespace rodnet
     /// The deal.II vector of @p v, which must be a NoxVector.
     static const VectorType &
     values(const NOX::Abstract::Vector &v);
+    static VectorType &
+    values(NOX::Abstract::Vector &v);
 
     NOX::Abstract::Vector &
     init(double gamma) override;
