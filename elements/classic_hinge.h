@@ -21,7 +21,10 @@ namespace rodnet
    * P_{t^{i-1}}^{t^i} d_1^{i-1} to d_1^i (modulo 2 pi), i.e. the classic
    * spatial-parallel-transport twist of the current configuration.
    *
-   * Derivatives come from forward automatic differentiation (Sacado).
+   * Gradient and Hessians are closed forms in the reduced variables of
+   * segment_kinematics.h (see classic_hinge.cc for their derivation);
+   * tests/elements/hinge_derivatives.cc checks them against finite
+   * differences and against automatic differentiation of eqs. 11-12.
    */
   class ClassicHinge : public HingeKernel
   {
@@ -38,6 +41,22 @@ namespace rodnet
              const HingeReference &reference,
              HingeStrains         &result,
              bool                  with_hessian) const override;
+
+    /// One evaluation with the weighted directors (three times less work
+    /// than three Hessians).
+    void
+    evaluate_weighted(const HingeVector    &dofs,
+                      const HingeReference &reference,
+                      const StrainWeights  &weights,
+                      HingeStrains         &result,
+                      HingeMatrix          &weighted) const override;
+
+    /// The contraction without the 3 x 11 strain gradient.
+    Vector3
+    weighted_gradient(const HingeVector    &dofs,
+                      const HingeReference &reference,
+                      const StrainWeights  &weights,
+                      HingeVector          &weighted) const override;
   };
 } // namespace rodnet
 

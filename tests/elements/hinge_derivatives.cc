@@ -15,8 +15,11 @@
 //
 // The simple kernel is also compared with Sacado's forward-over-forward AD
 // of an independent, quaternion-by-quaternion transcription of Korner et
-// al. eqs. 2.3, 2.8, 2.11 and 2.13.
+// al. eqs. 2.3, 2.8, 2.11 and 2.13; the classic kernel's closed forms with
+// the same AD of frame_algebra.h's templated eqs. 11-12 of Lestringant &
+// Kochmann (which the junction kernels differentiate that way).
 
+#include <elements/frame_algebra.h>
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
 
@@ -151,13 +154,13 @@ namespace
                                                         c.reference,
                                                         gradient_weights,
                                                         weighted_gradient);
-        errors.weighted = std::max(
-          {errors.weighted,
-           relative_error(weighted_gradient,
-                          HingeVector(fd_gradient.transpose() *
-                                      gradient_weights.weights)),
-           relative_error(kappa, s.kappa),
-           relative_error(gradient_weights.asked_at, s.kappa)});
+        errors.weighted =
+          std::max({errors.weighted,
+                    relative_error(weighted_gradient,
+                                   HingeVector(fd_gradient.transpose() *
+                                               gradient_weights.weights)),
+                    relative_error(kappa, s.kappa),
+                    relative_error(gradient_weights.asked_at, s.kappa)});
 
         errors.value = std::max(errors.value,
                                 (s.kappa - kernel->strains(c.dofs, c.reference))
@@ -302,6 +305,61 @@ namespace
     std::cout << "simple vs AD: max relative error gradient "
               << max_gradient_error << ", Hessian " << max_hessian_error
               << std::endl;
+    EXPECT_LT(max_gradient_error, 1e-12);
+    EXPECT_LT(max_hessian_error, 1e-12);
+  }
+
+  TEST(HingeDerivatives, ClassicAgainstAutomaticDifferentiation)
+  {
+    using namespace frame_algebra;
+    const auto   kernel = create_hinge_kernel("classic");
+    std::mt19937 rng(44);
+    double max_value_error = 0, max_gradient_error = 0, max_hessian_error = 0;
+    for (unsigned int n = 0; n < n_hinges; ++n)
+      {
+        const HingeCase c = admissible_hinge(rng, *kernel);
+        HingeStrains    s;
+        kernel->evaluate(c.dofs, c.reference, s, true);
+
+        const SegmentReference prev(c.reference.frame_prev),
+          next(c.reference.frame_next);
+        const auto strains = [&](const auto &u) {
+          using Number        = std::decay_t<decltype(u[0])>;
+          const auto position = [&u](const int offset) {
+            return Vec<Number>{{u[offset], u[offset + 1], u[offset + 2]}};
+          };
+          return classic_strains(
+            prev,
+            segment_directors(prev, unit_edge(position(0), position(4)), u[3]),
+            next,
+            segment_directors(next, unit_edge(position(4), position(8)), u[7]),
+            c.reference.twist);
+        };
+        HingeStrains ad;
+        differentiate<3, n_hinge_dofs>(c.dofs,
+                                       strains,
+                                       ad.kappa,
+                                       ad.gradient,
+                                       &ad.hessian);
+
+        max_value_error =
+          std::max(max_value_error, (s.kappa - ad.kappa).cwiseAbs().maxCoeff());
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            const Eigen::Matrix<double, 1, n_hinge_dofs> g = s.gradient.row(k),
+                                                         g_ad =
+                                                           ad.gradient.row(k);
+            max_gradient_error =
+              std::max(max_gradient_error, relative_error(g, g_ad));
+            max_hessian_error =
+              std::max(max_hessian_error,
+                       relative_error(s.hessian[k], ad.hessian[k]));
+          }
+      }
+    std::cout << "classic vs AD: max error strains " << max_value_error
+              << ", max relative error gradient " << max_gradient_error
+              << ", Hessian " << max_hessian_error << std::endl;
+    EXPECT_LT(max_value_error, 1e-13);
     EXPECT_LT(max_gradient_error, 1e-12);
     EXPECT_LT(max_hessian_error, 1e-12);
   }
