@@ -3,6 +3,7 @@
 // derivatives) -> material (energy, stress, tangent) -> chain rule ->
 // constraints -> global Trilinos objects.
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/work_stream.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -103,6 +104,23 @@ namespace rodnet
           }
       }
 
+      /// Zeroes the matrix's values (in pieces, on all threads: 64 MB
+      /// for a rod of 1e5 vertices).
+      void
+      zero_matrix() const
+      {
+        if (csr.values == nullptr)
+          return;
+        double *const values = csr.values;
+        dealii::parallel::apply_to_subranges(
+          std::size_t(0),
+          std::size_t(csr.offsets[csr.n_rows]),
+          [values](const std::size_t begin, const std::size_t end) {
+            std::fill(values + begin, values + end, 0.0);
+          },
+          std::size_t(1) << 16);
+      }
+
       /// Puts the mean free diagonal on the rows of fixed DoFs, so that
       /// the Newton increment is zero there and the scale matches.
       void
@@ -110,18 +128,19 @@ namespace rodnet
       {
         if (csr.values == nullptr || fixed == nullptr)
           return;
-        double       sum    = 0;
-        unsigned int n_free = 0;
+        const std::vector<std::ptrdiff_t> &places = positions->diagonal();
+        double                             sum    = 0;
+        unsigned int                       n_free = 0;
         for (int row = 0; row < csr.n_rows; ++row)
-          if (!(*fixed)[row])
+          if (!(*fixed)[row] && places[row] >= 0)
             {
-              sum += std::abs(diagonal(row));
+              sum += std::abs(csr.values[places[row]]);
               ++n_free;
             }
         const double value = n_free > 0 ? sum / n_free : 1.0;
         for (int row = 0; row < csr.n_rows; ++row)
-          if ((*fixed)[row])
-            diagonal(row) = value;
+          if ((*fixed)[row] && places[row] >= 0)
+            csr.values[places[row]] = value;
       }
 
     private:
@@ -140,12 +159,6 @@ namespace rodnet
         return csr.values[std::find(begin, end, int(column)) - csr.columns];
       }
 
-      double &
-      diagonal(const int row) const
-      {
-        return entry(row, row);
-      }
-
       /// add() for a stencil of a family without positions (rows too long
       /// for them): each entry searched in its row.
       void
@@ -162,22 +175,6 @@ namespace rodnet
       const std::vector<bool>                *fixed;
       std::shared_ptr<const ScatterPositions> positions;
     };
-
-    /**
-     * Stencils per task of the colored WorkStream: each task looks up its
-     * thread's copy data (deal.II's ThreadLocalStorage, twice), so tasks of
-     * deal.II's default 8 stencils spend much of their time there; about
-     * four tasks per thread and color still balance the load.
-     */
-    unsigned int
-    chunk_size(const std::vector<std::vector<unsigned int>> &colors)
-    {
-      std::size_t largest = 0;
-      for (const auto &color : colors)
-        largest = std::max(largest, color.size());
-      const std::size_t tasks = 4 * dealii::MultithreadInfo::n_threads();
-      return std::clamp<std::size_t>(largest / tasks, 8, 256);
-    }
   } // namespace
 
   void
@@ -186,7 +183,7 @@ namespace rodnet
     const StencilState                                   &state,
     const Derivatives                                     derivatives,
     const std::function<void(const LocalContribution &)> &copier,
-    const std::vector<std::vector<unsigned int>>         *colors,
+    const StencilBlocks                                  *blocks,
     double                                               &energy) const
   {
     // Kernels throw, e.g., where a tangent flipped; the first exception is
@@ -225,14 +222,24 @@ namespace rodnet
       if (!copy.dofs.empty())
         copier(copy);
     };
-    if (colors != nullptr)
-      dealii::WorkStream::run(*colors,
-                              worker,
-                              add,
-                              NoScratch(),
-                              LocalContribution(),
-                              2 * dealii::MultithreadInfo::n_threads(),
-                              chunk_size(*colors));
+    if (blocks != nullptr)
+      for (const std::vector<unsigned int> &color : blocks->colors)
+        dealii::parallel::apply_to_subranges(
+          std::size_t(0),
+          color.size(),
+          [&](const std::size_t begin, const std::size_t end) {
+            NoScratch         scratch;
+            LocalContribution copy;
+            for (std::size_t k = begin; k < end; ++k)
+              for (unsigned int s = blocks->first[color[k]];
+                   s < blocks->first[color[k] + 1];
+                   ++s)
+                {
+                  worker(s, scratch, copy);
+                  add(copy);
+                }
+          },
+          1);
     else
       dealii::WorkStream::run(0u,
                               family.n_stencils(),
@@ -256,11 +263,11 @@ namespace rodnet
     const bool concurrent_copier) const
   {
     // One thread: the serial loop (stencil order, as always). Several:
-    // colors one after the other, the stencils of a color in parallel,
-    // copier included (a color's stencils share no row).
+    // colors one after the other, the blocks of a color in parallel,
+    // copier included (a color's blocks share no row).
     const bool in_colors = concurrent_copier &&
                            dealii::MultithreadInfo::n_threads() > 1 &&
-                           stencil_colors.size() == families.size();
+                           stencil_blocks.size() == families.size();
     const StencilState state{u,
                              *configuration_,
                              history,
@@ -272,8 +279,8 @@ namespace rodnet
                       state,
                       derivatives,
                       copier,
-                      in_colors && !stencil_colors[f].empty() ?
-                        &stencil_colors[f] :
+                      in_colors && !stencil_blocks[f].empty() ?
+                        &stencil_blocks[f] :
                         nullptr,
                       energy);
     return energy;
@@ -342,16 +349,18 @@ namespace rodnet
   {
     if (residual != nullptr)
       *residual = 0;
-    if (tangent != nullptr)
-      *tangent = 0;
     if (!DirectScatter::applies(tangent, mpi_communicator))
-      return assemble_mapped(u,
-                             load_factor,
-                             SystemBlock::at_offset(layout_->n_dofs(), 0),
-                             residual,
-                             tangent,
-                             apply_constraints,
-                             extra_force);
+      {
+        if (tangent != nullptr)
+          *tangent = 0;
+        return assemble_mapped(u,
+                               load_factor,
+                               SystemBlock::at_offset(layout_->n_dofs(), 0),
+                               residual,
+                               tangent,
+                               apply_constraints,
+                               extra_force);
+      }
 
     const std::vector<bool> *fixed =
       apply_constraints ? &fixed_dof_mask : nullptr;
@@ -364,6 +373,7 @@ namespace rodnet
                                                   DirectScatter::csr_of(
                                                     tangent->trilinos_matrix()),
                                                   fixed));
+    scatter.zero_matrix();
     double energy = assemble_families(
       u,
       load_factor,

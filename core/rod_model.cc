@@ -219,7 +219,10 @@ namespace rodnet
         f_ext[layout_->vertex_dof(v, c)] += forces[v][c];
     f_ext.compress(dealii::VectorOperation::add);
     for (const auto &family : families)
-      stencil_colors.push_back(color_stencils(*family, layout_->n_dofs()));
+      stencil_blocks.push_back(
+        color_stencil_blocks(*family,
+                             layout_->n_dofs(),
+                             default_block_size(family->n_stencils())));
     finalized = true;
   }
 

@@ -18,6 +18,7 @@
 #include <core/model.h>
 #include <core/rod_network.h>
 #include <core/scatter_positions.h>
+#include <core/stencil_coloring.h>
 #include <core/system_block.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
@@ -538,7 +539,7 @@ namespace rodnet
     /// handed to @p copier: serially, or, where @p copier may run on
     /// several threads at once for stencils that share no DoF
     /// (@p concurrent_copier) and deal.II has more than one thread, color
-    /// by color in parallel (stencil_colors).
+    /// by color in parallel (stencil_blocks).
     double
     assemble_families(
       const VectorType                                     &u,
@@ -572,8 +573,9 @@ namespace rodnet
                     const VectorType  *extra_force) const;
 
     /// Assembles the stencils of family @p f at @p state, handing each
-    /// stencil's contribution to @p copier: serially, or in parallel within
-    /// each of @p colors if given; rethrows the first exception of a
+    /// stencil's contribution to @p copier: serially, or, if @p blocks is
+    /// given, color by color, the blocks of a color in parallel, each in
+    /// stencil order on one thread; rethrows the first exception of a
     /// stencil after the loop. Adds the family's energy to @p energy in
     /// the stencils' order, whatever the threads.
     void
@@ -582,7 +584,7 @@ namespace rodnet
       const StencilState                                   &state,
       Derivatives                                           derivatives,
       const std::function<void(const LocalContribution &)> &copier,
-      const std::vector<std::vector<unsigned int>>         *colors,
+      const StencilBlocks                                  *blocks,
       double                                               &energy) const;
 
     /// Throws std::invalid_argument unless @p locally_owned_dofs can be the
@@ -615,9 +617,10 @@ namespace rodnet
     std::unique_ptr<DofLayout>                      layout_;
     std::unique_ptr<Configuration>                  configuration_;
     std::vector<std::unique_ptr<ElementFamily>>     families;
-    /// Per family, its stencils in colors that share no DoF
-    /// (color_stencils(), finalize()): the scatter of several threads.
-    std::vector<std::vector<std::vector<unsigned int>>> stencil_colors;
+    /// Per family, its stencils in blocks, in colors of blocks that share no
+    /// DoF (color_stencil_blocks(), finalize()): the scatter of several
+    /// threads.
+    std::vector<StencilBlocks> stencil_blocks;
     /// Where the stencils' entries land in the rows of the tangent last
     /// assembled (the direct scatter's; found again for a new pattern).
     std::unique_ptr<ScatterPositionsCache> scatter_positions =

@@ -1,3 +1,5 @@
+#include <deal.II/base/parallel.h>
+
 #include <core/scatter_positions.h>
 
 #include <algorithm>
@@ -55,7 +57,28 @@ namespace rodnet
     Fingerprint hash;
     hash.add(static_cast<std::uint64_t>(csr.n_rows));
     hash.add(csr.offsets, csr.n_rows + 1);
-    hash.add(csr.columns, csr.offsets[csr.n_rows]);
+
+    // The columns (the bulk: 8 million for a rod of 1e5 vertices) in
+    // pieces of a fixed size, one hash each, then the hashes in order.
+    constexpr std::size_t      piece    = std::size_t(1) << 16;
+    const std::size_t          n        = csr.offsets[csr.n_rows];
+    const std::size_t          n_pieces = (n + piece - 1) / piece;
+    std::vector<std::uint64_t> pieces(n_pieces);
+    dealii::parallel::apply_to_subranges(
+      std::size_t(0),
+      n_pieces,
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p)
+          {
+            Fingerprint piece_hash;
+            piece_hash.add(csr.columns + p * piece,
+                           std::min(piece, n - p * piece));
+            pieces[p] = piece_hash.value();
+          }
+      },
+      4);
+    for (const std::uint64_t value : pieces)
+      hash.add(value);
     hash.add(fixed == nullptr ? 0 : 1);
     if (fixed != nullptr)
       for (std::size_t i = 0; i < fixed->size(); i += 64)
@@ -78,6 +101,15 @@ namespace rodnet
   {
     for (const auto &family : families)
       this->families.push_back(find(*family, csr, fixed));
+    diagonal_places.resize(csr.n_rows, -1);
+    for (int row = 0; row < csr.n_rows; ++row)
+      {
+        const int *begin = csr.columns + csr.offsets[row];
+        const int *end   = csr.columns + csr.offsets[row + 1];
+        const int *at    = std::find(begin, end, row);
+        if (at != end)
+          diagonal_places[row] = at - csr.columns;
+      }
   }
 
 

@@ -3,6 +3,7 @@
 
 #include <core/element_family.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -56,9 +57,20 @@ namespace rodnet
       std::uint64_t                                      fingerprint);
 
     /// A hash of the row offsets and column indices of @p csr and of the
-    /// DoFs @p fixed marks: equal for the same pattern and supports.
+    /// DoFs @p fixed marks: equal for the same pattern and supports. Taken
+    /// at every assembly, over fixed-size pieces of the columns hashed in
+    /// parallel, so that its value does not depend on the threads.
     static std::uint64_t
     fingerprint(const CsrArrays &csr, const std::vector<bool> *fixed);
+
+    /// Per row, the place of its diagonal entry in the values of the
+    /// compressed rows (what finish() of the scatter writes), or -1 where
+    /// the pattern has none.
+    const std::vector<std::ptrdiff_t> &
+    diagonal() const
+    {
+      return diagonal_places;
+    }
 
     /// The fingerprint these positions were found for.
     std::uint64_t
@@ -92,8 +104,9 @@ namespace rodnet
          const CsrArrays         &csr,
          const std::vector<bool> *fixed);
 
-    std::vector<Family> families;
-    std::uint64_t       pattern_fingerprint;
+    std::vector<Family>         families;
+    std::vector<std::ptrdiff_t> diagonal_places;
+    std::uint64_t               pattern_fingerprint;
   };
 
   /**

@@ -1,6 +1,7 @@
 // Assembly on several threads (RodModel::assemble_families with the
-// stencil colors): no two stencils of a color share a DoF, every stencil is
-// in one color, and two threads give the residual and tangent of one thread
+// colored stencil blocks): no two blocks of a color share a DoF, every
+// stencil is in one block and every block in one color, and two threads
+// give the residual and tangent of one thread
 // up to the order of the additions (1e-13 relative) and exactly its energy,
 // on a welded honeycomb (hinges, stretching, junction elements) in a
 // random state.
@@ -43,45 +44,56 @@ namespace
   TEST(StencilColoring, ColorsShareNoDofAndHoldEveryStencil)
   {
     const auto model = honeycomb();
-    for (const auto &family : model->element_families())
-      {
-        const auto colors =
-          color_stencils(*family, model->layout().n_dofs());
-        ASSERT_FALSE(colors.empty()) << family->name();
-        std::vector<unsigned int> seen(family->n_stencils(), 0);
-        for (const auto &color : colors)
-          {
-            std::set<global_dof_index>    dofs_of_color;
-            std::vector<global_dof_index> dofs;
-            for (const unsigned int s : color)
-              {
-                ++seen[s];
-                dofs.clear();
-                family->get_dofs(s, dofs);
-                for (const global_dof_index d : dofs)
-                  EXPECT_TRUE(dofs_of_color.insert(d).second)
-                    << family->name() << ": DoF " << d << " twice in a color";
-              }
-          }
-        for (unsigned int s = 0; s < seen.size(); ++s)
-          EXPECT_EQ(seen[s], 1u) << family->name() << " stencil " << s;
-        // Greedy coloring of a graph of bounded degree: a few colors.
-        EXPECT_LE(colors.size(), 12u) << family->name();
-      }
+    for (const unsigned int block_size : {1u, 3u, 16u})
+      for (const auto &family : model->element_families())
+        {
+          const StencilBlocks blocks =
+            color_stencil_blocks(*family, model->layout().n_dofs(), block_size);
+          ASSERT_FALSE(blocks.empty()) << family->name();
+          const unsigned int n_blocks = blocks.first.size() - 1;
+          EXPECT_EQ(blocks.first.front(), 0u);
+          EXPECT_EQ(blocks.first.back(), family->n_stencils());
+          std::vector<unsigned int> seen(n_blocks, 0);
+          for (const auto &color : blocks.colors)
+            {
+              std::set<global_dof_index>    dofs_of_color;
+              std::vector<global_dof_index> dofs;
+              for (const unsigned int b : color)
+                {
+                  ++seen[b];
+                  EXPECT_LE(blocks.first[b + 1] - blocks.first[b], block_size);
+                  std::set<global_dof_index> dofs_of_block;
+                  for (unsigned int s = blocks.first[b];
+                       s < blocks.first[b + 1];
+                       ++s)
+                    {
+                      family->get_dofs(s, dofs);
+                      dofs_of_block.insert(dofs.begin(), dofs.end());
+                    }
+                  for (const global_dof_index d : dofs_of_block)
+                    EXPECT_TRUE(dofs_of_color.insert(d).second)
+                      << family->name() << ": DoF " << d
+                      << " in two blocks of a color";
+                }
+            }
+          for (unsigned int b = 0; b < n_blocks; ++b)
+            EXPECT_EQ(seen[b], 1u) << family->name() << " block " << b;
+          // Greedy coloring of a graph of bounded degree: a few colors.
+          EXPECT_LE(blocks.colors.size(), 12u) << family->name();
+        }
   }
 
-  TEST(StencilColoring, AChainOfHingesNeedsThreeColors)
+  TEST(StencilColoring, AChainOfHingesNeedsThreeColorsTwoInBlocks)
   {
     // Hinge s sees vertices s-1..s+1 and segments s-1, s: hinges three
-    // apart share nothing.
+    // apart share nothing; blocks of at least two hinges share DoFs with
+    // their neighbours only.
     auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3::Zero(),
-                                          Vector3::UnitX(),
-                                          30,
-                                          false),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
+    network->add_rod(
+      generators::straight(Vector3::Zero(), Vector3::UnitX(), 30, false),
+      false,
+      Vector3::UnitZ(),
+      "simple");
     network->create_triangulation();
     RodModel model(std::move(network),
                    {std::make_shared<LinearElasticRod>(
@@ -90,8 +102,10 @@ namespace
     for (const auto &family : model.element_families())
       if (family->name().find("hinge") != std::string::npos)
         {
-          EXPECT_EQ(color_stencils(*family, model.layout().n_dofs()).size(),
-                    3u);
+          const global_dof_index n = model.layout().n_dofs();
+          EXPECT_EQ(color_stencil_blocks(*family, n, 1).colors.size(), 3u);
+          EXPECT_EQ(color_stencil_blocks(*family, n, 2).colors.size(), 2u);
+          EXPECT_EQ(color_stencil_blocks(*family, n, 8).colors.size(), 2u);
         }
   }
 
