@@ -42,7 +42,7 @@ namespace rodnet
     if (!(one_plus_cosine > parallel_transport_tolerance))
       throw ParallelTransportSingular(one_plus_cosine);
     const double  c = std::sqrt(0.5 * one_plus_cosine);
-    const Vector3 v = a.cross(b) / (2.0 * c);
+    const Vector3 v = (0.5 / c) * a.cross(b);
     return Quaternion(c, v[0], v[1], v[2]);
   }
 

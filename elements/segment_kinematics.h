@@ -165,7 +165,7 @@ namespace rodnet
                                               const Quaternion &reference_frame,
                                               const bool        second_order)
       : length(edge.norm())
-      , t(edge / length)
+      , t(edge * (1.0 / length))
   {
     const Vector3 T = reference_frame._transformVector(Vector3::UnitZ());
     // Eq. 2.8; current_director_frame() would recompute T.
@@ -174,18 +174,20 @@ namespace rodnet
 
     // Binormal of eq. 3.4; k is orthogonal to t, so M t = 0 and the
     // projector (I - t t^T) / l of eq. 3.1 is absorbed in M / l.
+    // Reciprocals once: a division costs several multiplications.
     const double  one_plus_cosine = 1.0 + T.dot(t);
-    const Vector3 k               = 2.0 * T.cross(t) / one_plus_cosine;
+    const Vector3 k               = (2.0 / one_plus_cosine) * T.cross(t);
+    const double  inverse_length  = 1.0 / length;
     M                             = cross_matrix(t) - 0.5 * t * k.transpose();
-    first.leftCols<3>()           = M / length;
+    first.leftCols<3>()           = inverse_length * M;
     first.col(3)                  = t;
     if (!second_order)
       return;
 
     // Eq. 3.2 in the variable e, with delta t = Q delta e (eq. 3.1),
     // k . delta t = (k / l) . delta e and T . delta t = tau . delta e.
-    k_over_l          = k / length;
-    const Vector3 tau = (T - T.dot(t) * t) / length;
+    k_over_l          = inverse_length * k;
+    const Vector3 tau = inverse_length * (T - T.dot(t) * t);
     k_tau = (k_over_l * tau.transpose() + tau * k_over_l.transpose()) /
             (4.0 * one_plus_cosine);
   }

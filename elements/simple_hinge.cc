@@ -72,28 +72,43 @@ namespace rodnet
         s                  = q.w();
         v                  = q.vec();
         kappa              = 2.0 * v;
+        if (needs == reduced::Needs::weighted_gradient)
+          return;
 
         // Eq. 3.6: the hat variations of d^{i-1} and d^i are spatial
         // vectors; the rotation gradient lives in the material frame of
         // d^{i-1}, hence the pull-back by conj(d^{i-1}).
         const Matrix3 pull_back = prev.frame.toRotationMatrix().transpose();
-
         // Eq. 3.7: Im(delta q-hat q) = (s I - v_x) delta q-hat.
-        W           = s * Matrix3::Identity() - cross_matrix(v);
-        A.noalias() = W * pull_back;
-        if (needs == reduced::Needs::weighted_gradient)
-          return;
+        W                           = s * Matrix3::Identity() - cross_matrix(v);
         dq.leftCols<4>().noalias()  = -pull_back * prev.first;
         dq.rightCols<4>().noalias() = pull_back * next.first;
       }
 
-      /// weights . d kappa / d y (1 x 8) without the Jacobian: W dq = A
+      /// W^T @p weights, with W = s I - v_x of eq. 3.7.
+      Vector3
+      seen_through_w(const Vector3 &weights) const
+      {
+        return s * weights + v.cross(weights);
+      }
+
+      /// The spatial vector a with weights . W delta q-hat = a . (delta
+      /// d-hat^i - delta d-hat^{i-1}): the pull-back's transpose is the
+      /// rotation by d^{i-1}.
+      Vector3
+      spatial_weight(const Vector3 &weights) const
+      {
+        return prev.frame._transformVector(seen_through_w(weights));
+      }
+
+      /// weights . d kappa / d y (1 x 8) without the Jacobian: a .
       /// (-first^{i-1}, first^i).
       Eigen::Matrix<double, 1, 8>
       weighted_gradient(const Vector3 &weights) const
       {
-        const Eigen::Matrix<double, 1, 3> a = weights.transpose() * A;
-        Eigen::Matrix<double, 1, 8>       g;
+        const Eigen::Matrix<double, 1, 3> a =
+          spatial_weight(weights).transpose();
+        Eigen::Matrix<double, 1, 8> g;
         g.leftCols<4>().noalias()  = -a * prev.first;
         g.rightCols<4>().noalias() = a * next.first;
         return g;
@@ -109,13 +124,13 @@ namespace rodnet
 
       /**
        * sum_c weights_c d^2 kappa_c / d y^2 (8 x 8): every term of eqs.
-       * 3.6-3.7 is linear in the row of W or of A it is seen through, so
-       * the weighted sum is one evaluation with the weighted rows.
+       * 3.6-3.7 is linear in the weights it is seen through, so the
+       * weighted sum is one evaluation.
        */
       reduced::Hessian
       weighted_hessian(const Vector3 &weights) const
       {
-        const Vector3    a = A.transpose() * weights;
+        const Vector3    a = spatial_weight(weights);
         reduced::Hessian h;
         h.topLeftCorner<4, 4>()     = -prev.second_variation(a);
         h.bottomRightCorner<4, 4>() = next.second_variation(a);
@@ -126,7 +141,7 @@ namespace rodnet
         // d-hat^{i-1}) seen through W^T weights, symmetrized: the Hessian
         // is the symmetric matrix of the quadratic form.
         const Eigen::Matrix<double, 3, 4> crossed =
-          cross_matrix(W.transpose() * weights).lazyProduct(dq.leftCols<4>());
+          cross_matrix(seen_through_w(weights)).lazyProduct(dq.leftCols<4>());
         const Eigen::Matrix<double, 8, 4> cross_term =
           dq.transpose().lazyProduct(crossed);
         h.leftCols<4>() += 0.5 * cross_term;
@@ -143,7 +158,7 @@ namespace rodnet
       Vector3           kappa;
       Vector3           v;
       reduced::Jacobian dq;
-      Matrix3           W, A;
+      Matrix3           W;
     };
   } // namespace
 
