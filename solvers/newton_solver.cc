@@ -176,9 +176,10 @@ namespace rodnet
   }
 
   NewtonSolver::Result
-  NewtonSolver::solve(const Problem &problem,
-                      VectorType    &x,
-                      MatrixType    &tangent) const
+  NewtonSolver::solve(const Problem             &problem,
+                      VectorType                &x,
+                      MatrixType                &tangent,
+                      TangentFactorizationCache *factorizations) const
   {
     const Teuchos::RCP<Teuchos::ParameterList> nox = nox_parameters(parameters);
     Teuchos::RCP<NoxGroup>                     group;
@@ -186,8 +187,13 @@ namespace rodnet
     NOX::StatusTest::StatusType outcome = NOX::StatusTest::Failed;
     try
       {
-        group = Teuchos::rcp(
-          new NoxGroup(problem, x, tangent, parameters.linear_solver));
+        group   = Teuchos::rcp(new NoxGroup(
+          problem,
+          x,
+          tangent,
+          factorizations != nullptr ?
+              factorizations->get(tangent, parameters.linear_solver) :
+              TangentFactorization::create(tangent, parameters.linear_solver)));
         solver  = NOX::Solver::buildSolver(group,
                                           status_tests(problem, parameters),
                                           nox);

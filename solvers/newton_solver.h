@@ -6,6 +6,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <solvers/tangent_factorization.h>
+
 #include <functional>
 #include <string>
 
@@ -88,10 +90,15 @@ namespace rodnet
     /**
      * Solves residual(x) = 0 from the initial guess @p x, which holds the
      * solution on return if converged (and the last iterate otherwise).
-     * @p tangent must have the sparsity of the problem's Jacobian.
+     * @p tangent must have the sparsity of the problem's Jacobian. With
+     * @p factorizations, the factorization of @p tangent (its symbolic
+     * part) is kept there for the next solve with the same tangent.
      */
     Result
-    solve(const Problem &problem, VectorType &x, MatrixType &tangent) const;
+    solve(const Problem             &problem,
+          VectorType                &x,
+          MatrixType                &tangent,
+          TangentFactorizationCache *factorizations = nullptr) const;
 
   private:
     Parameters parameters;

@@ -11,7 +11,7 @@ namespace rodnet
   {
     const NewtonSolver::Problem          &problem;
     NewtonSolver::MatrixType             &tangent;
-    std::unique_ptr<TangentFactorization> factorization;
+    std::shared_ptr<TangentFactorization> factorization;
     /// Whether the factorization is of the tangent's current values.
     bool factorized = false;
     /// The rank-one part a b^T of the Jacobian (if the problem has one).
@@ -22,13 +22,13 @@ namespace rodnet
   };
 
 
-  NoxGroup::NoxGroup(const NewtonSolver::Problem &problem,
-                     const NoxVector::VectorType &x,
-                     NewtonSolver::MatrixType    &tangent,
-                     const std::string           &linear_solver)
+  NoxGroup::NoxGroup(const NewtonSolver::Problem          &problem,
+                     const NoxVector::VectorType          &x,
+                     NewtonSolver::MatrixType             &tangent,
+                     std::shared_ptr<TangentFactorization> factorization)
       : shared(new Shared{problem,
                           tangent,
-                          TangentFactorization::create(tangent, linear_solver),
+                          std::move(factorization),
                           false,
                           {},
                           {},

@@ -29,10 +29,10 @@ namespace rodnet
     /// A group at @p x of @p problem, which assembles into @p tangent and
     /// solves with a factorization of @p linear_solver's kind
     /// (TangentFactorization::create()).
-    NoxGroup(const NewtonSolver::Problem &problem,
-             const NoxVector::VectorType &x,
-             NewtonSolver::MatrixType    &tangent,
-             const std::string           &linear_solver);
+    NoxGroup(const NewtonSolver::Problem          &problem,
+             const NoxVector::VectorType          &x,
+             NewtonSolver::MatrixType             &tangent,
+             std::shared_ptr<TangentFactorization> factorization);
 
     /// Why the last residual, tangent or solve failed (empty if none did).
     const std::string &

@@ -99,7 +99,8 @@ namespace rodnet
                                                  parameters.relative_tolerance);
         step.excess_before_last = step.excess_last = 0;
         static_cast<NewtonSolver::Result &>(outcome) =
-          NewtonSolver(parameters.newton).solve(problem, u, tangent);
+          NewtonSolver(parameters.newton)
+            .solve(problem, u, tangent, &factorizations);
         iterations += outcome.iterations;
         outcome.iterations = iterations;
         outcome.residual   = reached;

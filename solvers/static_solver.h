@@ -4,6 +4,7 @@
 #include <core/rod_model.h>
 #include <solvers/equilibrium_check.h>
 #include <solvers/newton_solver.h>
+#include <solvers/tangent_factorization.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/strain_range.h>
 
@@ -317,6 +318,8 @@ namespace rodnet
     ResidualCriterion criterion;
     StrainMonitor     strains;
     MatrixType        tangent;
+    /// The tangent's factorization, kept across Newton solves.
+    TangentFactorizationCache factorizations;
     /// Tangent without the support constraints, for linear_prediction().
     MatrixType unconstrained_tangent;
     double     critical_load = std::nan("");

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <core/scatter_positions.h>
 #include <solvers/tangent_factorization.h>
 
 #include <Amesos.h>
@@ -232,5 +233,31 @@ namespace rodnet
                            widths.second <= max_auto_band_width))
       return std::make_unique<BandFactorization>(matrix, widths);
     return std::make_unique<KluFactorization>(matrix);
+  }
+
+
+  std::shared_ptr<TangentFactorization>
+  TangentFactorizationCache::get(const MatrixType  &matrix,
+                                 const std::string &kind)
+  {
+    const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
+    CsrArrays               csr;
+    double                 *values = nullptr;
+    m.ExtractCrsDataPointers(csr.offsets, csr.columns, values);
+    csr.n_rows             = m.NumMyRows();
+    const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
+                               matrix.get_mpi_communicator()) == 1;
+    const bool          readable = one_process && csr.offsets != nullptr;
+    const std::uint64_t key =
+      readable ? ScatterPositions::fingerprint(csr, nullptr) : 0;
+    if (factorization == nullptr || !readable || &m != this->matrix ||
+        key != pattern || kind != this->kind)
+      {
+        factorization = TangentFactorization::create(matrix, kind);
+        this->matrix  = &m;
+        pattern       = key;
+        this->kind    = kind;
+      }
+    return factorization;
   }
 } // namespace rodnet

@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -56,6 +57,32 @@ namespace rodnet
     /// "klu" or "band".
     virtual std::string
     name() const = 0;
+  };
+
+  /**
+   * A tangent's factorization kept from one Newton solve to the next (load
+   * steps, time steps, the rounds of one step): KLU's symbolic analysis
+   * and the band's width and places are found once for as long as the
+   * tangent is the same matrix with the same pattern. The pattern is
+   * compared by a fingerprint of its compressed rows at each get(); on
+   * several processes, where there are none to read, every get() makes a
+   * new factorization.
+   */
+  class TangentFactorizationCache
+  {
+  public:
+    using MatrixType = TangentFactorization::MatrixType;
+
+    /// TangentFactorization::create(@p matrix, @p kind), or the kept one
+    /// if it was made for the same matrix, pattern and kind.
+    std::shared_ptr<TangentFactorization>
+    get(const MatrixType &matrix, const std::string &kind);
+
+  private:
+    std::shared_ptr<TangentFactorization> factorization;
+    const void                           *matrix  = nullptr;
+    std::uint64_t                         pattern = 0;
+    std::string                           kind;
   };
 } // namespace rodnet
 

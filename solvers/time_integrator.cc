@@ -398,7 +398,8 @@ namespace rodnet
                                               nullptr};
         problem.converged = criterion.stall_aware_test(step, reached);
         static_cast<NewtonSolver::Result &>(result) =
-          NewtonSolver(parameters.newton).solve(problem, x, tangent);
+          NewtonSolver(parameters.newton)
+            .solve(problem, x, tangent, &factorizations);
         result.residual = reached;
         result.scale    = scale;
         result.noise    = noise;

@@ -5,6 +5,7 @@
 #include <core/rod_model.h>
 #include <solvers/integration_scheme.h>
 #include <solvers/newton_solver.h>
+#include <solvers/tangent_factorization.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
 #include <solvers/strain_range.h>
@@ -305,6 +306,8 @@ namespace rodnet
     MatrixType                    mass; ///< unconstrained
     MatrixType constrained_mass;        ///< fixed rows and columns zero
     MatrixType tangent;
+    /// The tangent's factorization, kept across Newton solves.
+    TangentFactorizationCache factorizations;
     /// Rows with a nonzero mass diagonal.
     std::vector<bool> has_mass;
     StepSystem        system{model, mass, constrained_mass, has_mass};

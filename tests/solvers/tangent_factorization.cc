@@ -1,8 +1,11 @@
 // The direct solvers of Newton's systems (TangentFactorization): LAPACK's
 // band LU and Amesos KLU solve a rod's tangent system to its backward
 // error; "auto" takes the band for one rod and KLU where junction DoFs
-// widen the band; a singular tangent is reported, not solved; and NOX's
-// line searches, which apply the Jacobian through our group, still work.
+// widen the band; a singular tangent is reported, not solved; a kept
+// factorization (TangentFactorizationCache) is reused only for the same
+// matrix, pattern and kind, and solves new values to their backward error;
+// and NOX's line searches, which apply the Jacobian through our group,
+// still work.
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
@@ -100,6 +103,45 @@ TEST(TangentFactorization, AutoTakesTheBandForOneRodAndKluForAHub)
                std::invalid_argument);
 }
 
+TEST(TangentFactorization, AKeptFactorizationServesTheSamePatternOnly)
+{
+  RodSystem                 rod(rodnet::testing::straight_network(20));
+  TangentFactorizationCache cache;
+  for (const std::string kind : {"band", "klu"})
+    {
+      const auto first = cache.get(rod.tangent, kind);
+      EXPECT_EQ(first->name(), kind);
+      EXPECT_EQ(cache.get(rod.tangent, kind), first) << kind;
+
+      // New values, the same pattern: the kept factorization solves them.
+      VectorType u = rod.model->create_vector();
+      for (unsigned int i = 0; i < u.size(); ++i)
+        u[i] = 2e-3 * std::sin(1.3 * i);
+      u.compress(dealii::VectorOperation::insert);
+      rod.model->assemble(u, 0.5, &rod.residual, &rod.tangent);
+      const auto kept = cache.get(rod.tangent, kind);
+      EXPECT_EQ(kept, first) << kind;
+      kept->factorize();
+      VectorType x = rod.residual;
+      kept->solve(rod.residual, x);
+      VectorType kx = x;
+      rod.tangent.vmult(kx, x);
+      kx.add(-1.0, rod.residual);
+      EXPECT_LT(kx.l2_norm(), 1e-12 * rod.residual.l2_norm()) << kind;
+    }
+  // Another kind, another matrix, another pattern: a new factorization.
+  const auto klu = cache.get(rod.tangent, "klu");
+  EXPECT_NE(cache.get(rod.tangent, "band"), klu);
+  RodSystem  longer(rodnet::testing::straight_network(30));
+  const auto band = cache.get(rod.tangent, "band");
+  EXPECT_NE(cache.get(longer.tangent, "band"), band);
+  RodSystem hub(three_rod_hub());
+  hub.model->initialize_matrix(rod.tangent); // same object, new pattern
+  const auto after = cache.get(rod.tangent, "klu");
+  EXPECT_NE(after, klu);
+  EXPECT_EQ(cache.get(rod.tangent, "klu"), after);
+}
+
 TEST(TangentFactorization, ASingularTangentIsReported)
 {
   // A 3 x 3 matrix whose last row and column are zero.
@@ -169,8 +211,8 @@ TEST(TangentFactorization, NoxLineSearchesApplyTheJacobianThroughOurGroup)
         parameters.line_search   = search;
         parameters.linear_solver = kind;
         const auto result = NewtonSolver(parameters).solve(problem, x, tangent);
-        EXPECT_TRUE(result.converged) << search << ", " << kind << ": "
-                                      << result.failure;
+        EXPECT_TRUE(result.converged)
+          << search << ", " << kind << ": " << result.failure;
         for (unsigned int i = 0; i < n; ++i)
           EXPECT_NEAR(x[i] * x[i] * x[i] + x[i], c[i], 1e-11)
             << search << ", " << kind;
