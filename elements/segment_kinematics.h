@@ -21,7 +21,6 @@ namespace rodnet
     using SegmentHessian  = Eigen::Matrix4d;
     using Jacobian        = Eigen::Matrix<double, 3, 8>;
     using Hessian         = Eigen::Matrix<double, 8, 8>;
-    using Vector          = Eigen::Matrix<double, 8, 1>;
 
     /**
      * Chain rule through e^{i-1} = x_i - x_{i-1} and e^i = x_{i+1} - x_i:
