@@ -53,6 +53,11 @@ namespace rodnet
         mean_tangent = (t0 + t1) / chi;
         for (unsigned int j = 0; j < 2; ++j)
           directors[j] = segment[j].frame.toRotationMatrix();
+        if (needs == reduced::Needs::hessian)
+          for (unsigned int j = 0; j < 2; ++j)
+            projectors[j] =
+              (Matrix3::Identity() - segment[j].t * segment[j].t.transpose()) /
+              segment[j].length;
 
         for (unsigned int c = 0; c < 2; ++c)
           kappa[c] =
@@ -149,14 +154,6 @@ namespace rodnet
         return (v - t.dot(v) * t) / segment[j].length;
       }
 
-      /// Q^j as a matrix.
-      Matrix3
-      projector(const int j) const
-      {
-        const Vector3 &t = segment[j].t;
-        return (Matrix3::Identity() - t * t.transpose()) / segment[j].length;
-      }
-
       /**
        * delta^2 kb . mean at fixed mean: the Hessian of f(t^{i-1}, t^i) =
        * 2 mean . (t^{i-1} x t^i) / chi, carried to the edges by delta t =
@@ -168,7 +165,7 @@ namespace rodnet
       {
         const Vector3 &t0 = segment[0].t, &t1 = segment[1].t;
         const Vector3 &g0 = x.tangent_gradient[0], &g1 = x.tangent_gradient[1];
-        const Matrix3  q0 = projector(0), q1 = projector(1);
+        const Matrix3 &q0 = projectors[0], &q1 = projectors[1];
         const Matrix3  h00 = -(t1 * g0.transpose() + g0 * t1.transpose()) / chi;
         const Matrix3  h11 = -(t0 * g1.transpose() + g1 * t0.transpose()) / chi;
         const Matrix3  h01 =
@@ -207,14 +204,14 @@ namespace rodnet
         // d kb / d e^j and d tbar / d e^j.
         const std::array<Matrix3, 2> kb_jacobian = {
           {(-2.0 * cross_matrix(t1) - binormal * t1.transpose()) *
-             projector(0) / chi,
-           (2.0 * cross_matrix(t0) - binormal * t0.transpose()) * projector(1) /
-             chi}};
+             projectors[0] / chi,
+           (2.0 * cross_matrix(t0) - binormal * t0.transpose()) *
+             projectors[1] / chi}};
         const std::array<Matrix3, 2> tbar_jacobian = {
           {(Matrix3::Identity() - mean_tangent * t1.transpose()) *
-             projector(0) / chi,
+             projectors[0] / chi,
            (Matrix3::Identity() - mean_tangent * t0.transpose()) *
-             projector(1) / chi}};
+             projectors[1] / chi}};
 
         Eigen::Matrix<double, 8, 8> c = Eigen::Matrix<double, 8, 8>::Zero();
         for (int j = 0; j < 2; ++j)
@@ -257,9 +254,11 @@ namespace rodnet
       }
 
       std::array<SegmentKinematics, 2> segment;
-      std::array<Matrix3, 2>           directors;
-      double                           chi;
-      Vector3                          binormal, mean_tangent;
+      /// Q^j = (I - t t^T) / l, delta t^j = Q^j delta e^j (Hessians only).
+      std::array<Matrix3, 2> projectors;
+      std::array<Matrix3, 2> directors;
+      double                 chi;
+      Vector3                binormal, mean_tangent;
     };
   } // namespace
 
