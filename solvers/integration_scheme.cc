@@ -6,10 +6,17 @@ namespace rodnet
   IntegrationScheme::set_up(const StepStart       &step,
                             NewtonSolver::Problem &problem)
   {
-    const double c   = mass_coefficient(step.h);
+    const double c = mass_coefficient(step.h);
+    // The step minimizes Pi(y) + c/2 |y - base|_M^2 - p . y (the
+    // incremental potential of the scheme), whose gradient is the residual.
+    problem.energy = [this, &step](const VectorType &y, VectorType *r) {
+      const double energy =
+        system.model.assemble(y, step.load_factor, r, nullptr, true);
+      return energy + add_inertia(step, y, r);
+    };
     problem.residual = [this, &step](const VectorType &y, VectorType &r) {
       system.model.assemble(y, step.load_factor, &r, nullptr, true);
-      add_inertia(step, y, r);
+      add_inertia(step, y, &r);
     };
     problem.tangent = [this, &step, c](const VectorType &y, MatrixType &k) {
       system.model.assemble(y, step.load_factor, nullptr, &k, true);
@@ -18,14 +25,14 @@ namespace rodnet
     };
   }
 
-  void
+  double
   IntegrationScheme::add_inertia(const StepStart  &step,
                                  const VectorType &y,
-                                 VectorType       &r)
+                                 VectorType       *r)
   {
     const double c = mass_coefficient(step.h);
     if (c == 0)
-      return;
+      return 0;
     if (difference.size() != y.size())
       {
         difference.reinit(y);
@@ -34,10 +41,16 @@ namespace rodnet
     difference = y;
     difference -= step.base;
     system.mass.vmult(product, difference);
-    r.add(c, product);
-    if (const VectorType *extra = extra_inertial_force())
-      r.add(-1.0, *extra);
-    system.model.constraints().set_zero(r);
+    const VectorType *extra = extra_inertial_force();
+    const double      energy =
+      0.5 * c * (difference * product) - (extra != nullptr ? *extra * y : 0.0);
+    if (r == nullptr)
+      return energy;
+    r->add(c, product);
+    if (extra != nullptr)
+      r->add(-1.0, *extra);
+    system.model.constraints().set_zero(*r);
+    return energy;
   }
 
   void

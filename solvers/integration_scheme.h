@@ -48,7 +48,8 @@ namespace rodnet
   public:
     explicit IntegrationScheme(const StepSystem &system)
         : system(system)
-    {}
+    {
+    }
 
     virtual ~IntegrationScheme() = default;
 
@@ -69,6 +70,14 @@ namespace rodnet
     needs_stored_energy() const
     {
       return false;
+    }
+
+    /// Whether set_up() gives the step's incremental potential
+    /// (NewtonSolver::Problem::energy), which the energy line search needs.
+    virtual bool
+    has_incremental_potential() const
+    {
+      return true;
     }
 
     /// What to try, besides a smaller time step, when the energy of a run
@@ -118,10 +127,13 @@ namespace rodnet
     finish(const StepStart &step, const VectorType &x, VectorType &v) = 0;
 
   protected:
-    /// Adds c M (@p y - base) (and extra_inertial_force()) to @p r, then
-    /// zeroes its fixed rows; nothing without inertia.
-    void
-    add_inertia(const StepStart &step, const VectorType &y, VectorType &r);
+    /**
+     * Adds c M (@p y - base) (and -extra_inertial_force()) to @p r (if not
+     * null), then zeroes its fixed rows; returns the potential of those
+     * terms, c/2 (y - base).M(y - base) - p.y. Nothing without inertia.
+     */
+    double
+    add_inertia(const StepStart &step, const VectorType &y, VectorType *r);
 
     /// A force the scheme adds to the residual of its mass term, or null.
     virtual const VectorType *

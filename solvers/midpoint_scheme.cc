@@ -78,7 +78,7 @@ namespace rodnet
     const double coefficient = correction_terms(step, y, r, energy).first;
     model.constraints().set_zero(r);
     r.add(coefficient, mass_difference);
-    add_inertia(step, y, r);
+    add_inertia(step, y, &r);
   }
 
   void

@@ -34,6 +34,14 @@ namespace rodnet
       return true;
     }
 
+    /// The midpoint step's Jacobian is not symmetric (its rank-one part):
+    /// no potential.
+    bool
+    has_incremental_potential() const override
+    {
+      return false;
+    }
+
     double
     load_time(const double start, const double end) const override
     {

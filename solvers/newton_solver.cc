@@ -1,3 +1,4 @@
+#include <solvers/energy_line_search.h>
 #include <solvers/newton_solver.h>
 #include <solvers/nox_group.h>
 
@@ -61,6 +62,8 @@ namespace rodnet
     std::string
     nox_line_search_name(const std::string &name)
     {
+      if (name == "energy")
+        return "User Defined";
       if (name == "backtrack")
         return "Backtrack";
       if (name == "polynomial")
@@ -69,7 +72,7 @@ namespace rodnet
         return "Full Step";
       throw std::invalid_argument(
         "unknown line search \"" + name +
-        "\"; known: backtrack, polynomial, full step");
+        "\"; known: energy, backtrack, polynomial, full step");
     }
 
     /// NOX's parameters: a Newton direction, the named line search.
@@ -86,6 +89,10 @@ namespace rodnet
                      NOX::Utils::Error);
       Teuchos::ParameterList &search = list->sublist("Line Search");
       search.set("Method", nox_line_search_name(parameters.line_search));
+      if (parameters.line_search == "energy")
+        search.set<Teuchos::RCP<NOX::LineSearch::UserDefinedFactory>>(
+          "User Defined Line Search Factory",
+          Teuchos::rcp(new EnergyLineSearchFactory));
       list->sublist("Direction").set("Method", "Newton");
       return list;
     }
@@ -181,6 +188,14 @@ namespace rodnet
                       MatrixType                &tangent,
                       TangentFactorizationCache *factorizations) const
   {
+    if (parameters.line_search == "energy" && !problem.energy)
+      {
+        Result result;
+        result.failure = "the energy line search needs the potential of the "
+                         "problem, which this solve does not have";
+        result.residual_norm = NAN;
+        return result;
+      }
     const Teuchos::RCP<Teuchos::ParameterList> nox = nox_parameters(parameters);
     Teuchos::RCP<NoxGroup>                     group;
     Teuchos::RCP<NOX::Solver::Generic>         solver;

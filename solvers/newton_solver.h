@@ -32,7 +32,8 @@ namespace rodnet
       /// unless the problem brings its own test (Problem::converged).
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 25;
-      /// "backtrack", "polynomial" or "full step".
+      /// "energy" (EnergyLineSearch: needs Problem::energy), "backtrack",
+      /// "polynomial" (NOX's, on |residual|) or "full step".
       std::string line_search = "full step";
       /// The direct solver of the Newton systems: "auto", "klu" or "band"
       /// (TangentFactorization).
@@ -66,6 +67,14 @@ namespace rodnet
     {
       std::function<void(const VectorType &x, VectorType &residual)> residual;
       std::function<void(const VectorType &x, MatrixType &tangent)>  tangent;
+      /**
+       * Optional: for a problem whose residual is the gradient of a
+       * potential, the potential at x, with the residual written into
+       * @p residual (if not null) by the same assembly. Where set, the
+       * residual is computed through it, and the "energy" line search
+       * can judge steps by it.
+       */
+      std::function<double(const VectorType &x, VectorType *residual)> energy;
       /**
        * Optional dense part of the Jacobian: where set, the Jacobian at x
        * is tangent + a b^T, with a and b filled by this function, called

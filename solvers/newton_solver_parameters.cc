@@ -10,9 +10,9 @@ namespace rodnet
     prm.declare_entry("Line search",
                       "full step",
                       dealii::Patterns::Selection(
-                        "backtrack|polynomial|full step"),
-                      "Newton's globalization (NOX); line searches on "
-                      "|residual| reject good steps of stiff rods. [-]");
+                        "energy|backtrack|polynomial|full step"),
+                      "Newton's globalization: on the energy, or on "
+                      "|residual| (NOX's). [-]");
     prm.declare_entry("Linear solver",
                       "auto",
                       dealii::Patterns::Selection("auto|klu|band"),

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
 
 namespace rodnet
 {
@@ -82,6 +83,22 @@ namespace rodnet
 
 
   void
+  NoxGroup::forget_failure()
+  {
+    shared->failure.clear();
+  }
+
+
+  double
+  NoxGroup::energy() const
+  {
+    return f_valid && shared->problem.energy ?
+             energy_value :
+             std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+  void
   NoxGroup::reset()
   {
     f_valid = gradient_valid = newton_valid = jacobian_valid = false;
@@ -98,6 +115,7 @@ namespace rodnet
     *f             = *source.f;
     *gradient      = *source.gradient;
     *newton        = *source.newton;
+    energy_value   = source.energy_value;
     f_valid        = source.f_valid;
     gradient_valid = source.gradient_valid;
     newton_valid   = source.newton_valid;
@@ -134,7 +152,10 @@ namespace rodnet
       return Ok;
     try
       {
-        shared->problem.residual(x->values(), f->values());
+        if (shared->problem.energy)
+          energy_value = shared->problem.energy(x->values(), &f->values());
+        else
+          shared->problem.residual(x->values(), f->values());
       }
     catch (const std::exception &e)
       {

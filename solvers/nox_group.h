@@ -38,6 +38,16 @@ namespace rodnet
     const std::string &
     failure() const;
 
+    /// Forgets the recorded failure (a line search that stepped back from
+    /// a state it could not evaluate).
+    void
+    forget_failure();
+
+    /// The problem's potential energy at x (Problem::energy), NaN unless
+    /// computeF() computed it there.
+    double
+    energy() const;
+
     /// The kind of factorization used ("klu", "band").
     std::string
     linear_solver() const;
@@ -126,7 +136,9 @@ namespace rodnet
 
     std::shared_ptr<Shared> shared;
     Teuchos::RCP<NoxVector> x, f, gradient, newton;
-    bool f_valid = false, gradient_valid = false, newton_valid = false,
+    /// Problem::energy at x, computed with F.
+    double energy_value = 0;
+    bool   f_valid = false, gradient_valid = false, newton_valid = false,
          jacobian_valid = false;
   };
 } // namespace rodnet

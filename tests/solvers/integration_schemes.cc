@@ -3,9 +3,9 @@
 // integrator has its scheme with the coefficients of its equations
 // (TimeIntegrator's documentation): the mass coefficient c of
 // c M (u - u_n - h v_n) and the time at which the loads act.
-#include <materials/linear_elastic_rod.h>
-
 #include <common/held_bar.h>
+#include <core/mass_matrix.h>
+#include <materials/linear_elastic_rod.h>
 #include <solvers/integration_scheme_registry.h>
 #include <solvers/time_integrator.h>
 
@@ -31,10 +31,11 @@ namespace
   class IntegrationSchemes : public ::testing::Test
   {
   protected:
-    std::unique_ptr<RodModel> model = rodnet::testing::held_bar(
-      std::make_shared<LinearElasticRod>(RodStiffness{1, 1, 1, 1}),
-      2,
-      Vector3::Zero());
+    std::unique_ptr<RodModel> model =
+      rodnet::testing::held_bar(std::make_shared<LinearElasticRod>(
+                                  RodStiffness{1, 1, 1, 1}),
+                                2,
+                                Vector3::Zero());
     MatrixType        mass, constrained_mass;
     std::vector<bool> has_mass;
     StepSystem        system{*model, mass, constrained_mass, has_mass};
@@ -45,8 +46,10 @@ namespace
     const std::vector<std::string> names =
       integration_scheme_registry().names();
     EXPECT_EQ(names,
-              (std::vector<std::string>{
-                "quasi-static", "backward euler", "newmark", "midpoint"}));
+              (std::vector<std::string>{"quasi-static",
+                                        "backward euler",
+                                        "newmark",
+                                        "midpoint"}));
     try
       {
         integration_scheme_registry().create("leapfrog", system);
@@ -85,6 +88,86 @@ namespace
           << name;
         EXPECT_EQ(scheme->needs_stored_energy(), e.integrator == "midpoint")
           << name;
+      }
+  }
+
+  // The incremental potential each scheme gives the energy line search
+  // (Problem::energy) has the step's residual as its gradient: central
+  // differences along a direction of the free DoFs, at a bent state of a
+  // bar with mass, against residual . direction. The midpoint rule has
+  // none (its Jacobian is not symmetric) and says so.
+  TEST_F(IntegrationSchemes, IncrementalPotentialHasTheResidualAsGradient)
+  {
+    const std::vector<RodInertia> inertia{{2.0, 1e-3}};
+    assemble_mass_matrix(*model, inertia, MassKind::consistent, mass, false);
+    assemble_mass_matrix(*model,
+                         inertia,
+                         MassKind::consistent,
+                         constrained_mass,
+                         true);
+    VectorType u = model->create_vector(), base = model->create_vector(),
+               y = model->create_vector(), direction = model->create_vector();
+    for (unsigned int i = 0; i < u.size(); ++i)
+      {
+        u[i]         = 0.01 * std::sin(1.0 + i);
+        base[i]      = u[i] + 0.02 * std::cos(2.0 * i);
+        y[i]         = u[i] + 0.03 * std::sin(3.0 * i + 0.5);
+        direction[i] = std::cos(0.7 * i + 0.2);
+      }
+    for (VectorType *v : {&u, &base, &y, &direction})
+      v->compress(dealii::VectorOperation::insert);
+    model->apply_boundary_values(u, 1.0);
+    model->apply_boundary_values(y, 1.0);
+    model->constraints().set_zero(direction);
+    const StepStart step{u, base, 0.05, 1.0};
+
+    for (const std::string name : {"quasi-static", "backward euler", "newmark"})
+      {
+        const auto scheme = integration_scheme_registry().create(name, system);
+        ASSERT_TRUE(scheme->has_incremental_potential()) << name;
+        scheme->start(u, 1.0);
+        NewtonSolver::Problem problem;
+        scheme->set_up(step, problem);
+        ASSERT_TRUE(problem.energy) << name;
+        VectorType r = model->create_vector();
+        problem.residual(y, r);
+        VectorType r_with_energy = model->create_vector();
+        problem.energy(y, &r_with_energy);
+        r_with_energy -= r;
+        EXPECT_EQ(r_with_energy.linfty_norm(), 0.0) << name;
+
+        const double eps     = 1e-6;
+        VectorType   shifted = y;
+        shifted.add(eps, direction);
+        const double plus = problem.energy(shifted, nullptr);
+        shifted.add(-2 * eps, direction);
+        const double minus      = problem.energy(shifted, nullptr);
+        const double difference = (plus - minus) / (2 * eps);
+        const double slope      = r * direction;
+        EXPECT_NEAR(difference, slope, 1e-7 * std::abs(slope)) << name;
+      }
+    const auto midpoint =
+      integration_scheme_registry().create("midpoint", system);
+    EXPECT_FALSE(midpoint->has_incremental_potential());
+  }
+
+  TEST_F(IntegrationSchemes, EnergyLineSearchRefusesTheMidpointRule)
+  {
+    TimeIntegrator::Parameters p;
+    p.integrator         = "midpoint";
+    p.time_step          = 0.1;
+    p.end_time           = 1;
+    p.newton.line_search = "energy";
+    try
+      {
+        TimeIntegrator(*model, {{1, 1e-3}}, p);
+        ADD_FAILURE() << "the midpoint rule took the energy line search";
+      }
+    catch (const std::invalid_argument &e)
+      {
+        EXPECT_NE(std::string(e.what()).find("not the minimum of a potential"),
+                  std::string::npos)
+          << e.what();
       }
   }
 } // namespace

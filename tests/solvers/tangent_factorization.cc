@@ -9,6 +9,7 @@
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <common/diagonal_tangent.h>
 #include <common/rod_models.h>
 #include <solvers/newton_solver.h>
 #include <solvers/tangent_factorization.h>
@@ -180,13 +181,7 @@ TEST(TangentFactorization, NoxLineSearchesApplyTheJacobianThroughOurGroup)
   // r_i(y) = y_i^3 + y_i - c_i from y = 3: the full Newton step
   // overshoots; NOX's line searches (the polynomial one takes the slope
   // F^T J d from applyJacobian) must converge to the root.
-  const unsigned int n = 4;
-  dealii::IndexSet   all(n);
-  all.add_range(0, n);
-  dealii::TrilinosWrappers::SparsityPattern pattern(all, MPI_COMM_WORLD);
-  for (unsigned int i = 0; i < n; ++i)
-    pattern.add(i, i);
-  pattern.compress();
+  const unsigned int        n = 4;
   const std::vector<double> c = {0.5, 1.0, 2.0, 10.0};
   NewtonSolver::Problem     problem;
   problem.residual = [&](const VectorType &y, VectorType &r) {
@@ -203,8 +198,8 @@ TEST(TangentFactorization, NoxLineSearchesApplyTheJacobianThroughOurGroup)
     for (const std::string kind : {"band", "klu"})
       {
         MatrixType tangent;
-        tangent.reinit(pattern);
-        VectorType x(all, MPI_COMM_WORLD);
+        rodnet::testing::diagonal_tangent(n, tangent);
+        VectorType x(tangent.locally_owned_domain_indices(), MPI_COMM_WORLD);
         x = 3.0;
         NewtonSolver::Parameters parameters;
         parameters.tolerance     = 1e-12;
