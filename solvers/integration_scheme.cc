@@ -9,15 +9,11 @@ namespace rodnet
     const double c = mass_coefficient(step.h);
     // The step minimizes Pi(y) + c/2 |y - base|_M^2 - p . y (the
     // incremental potential of the scheme), whose gradient is the residual.
-    problem.energy = [this, &step](const VectorType &y, VectorType *r) {
+    problem.set_potential([this, &step](const VectorType &y, VectorType *r) {
       const double energy =
         system.model.assemble(y, step.load_factor, r, nullptr, true);
       return energy + add_inertia(step, y, r);
-    };
-    problem.residual = [this, &step](const VectorType &y, VectorType &r) {
-      system.model.assemble(y, step.load_factor, &r, nullptr, true);
-      add_inertia(step, y, &r);
-    };
+    });
     problem.tangent = [this, &step, c](const VectorType &y, MatrixType &k) {
       system.model.assemble(y, step.load_factor, nullptr, &k, true);
       if (c != 0)

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace rodnet
 {
@@ -75,6 +76,19 @@ namespace rodnet
        * can judge steps by it.
        */
       std::function<double(const VectorType &x, VectorType *residual)> energy;
+
+      /// Sets energy to @p potential and residual to its gradient, which
+      /// the same function computes.
+      void
+      set_potential(std::function<double(const VectorType &x,
+                                         VectorType       *residual)> potential)
+      {
+        energy   = std::move(potential);
+        residual = [energy = energy](const VectorType &x, VectorType &r) {
+          energy(x, &r);
+        };
+      }
+
       /**
        * Optional dense part of the Jacobian: where set, the Jacobian at x
        * is tangent + a b^T, with a and b filled by this function, called

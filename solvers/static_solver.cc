@@ -48,12 +48,9 @@ namespace rodnet
     model.apply_boundary_values(u, load_factor);
     ResidualParts         tolerance, reached;
     NewtonSolver::Problem problem;
-    problem.energy = [&](const VectorType &x, VectorType *r) {
+    problem.set_potential([&](const VectorType &x, VectorType *r) {
       return model.assemble(x, load_factor, r, nullptr, true, extra_force);
-    };
-    problem.residual = [&](const VectorType &x, VectorType &r) {
-      problem.energy(x, &r);
-    };
+    });
     problem.tangent = [&](const VectorType &x, MatrixType &k) {
       model.assemble(x, load_factor, nullptr, &k, true, extra_force);
     };

@@ -24,7 +24,7 @@ namespace
     problem() const
     {
       NewtonSolver::Problem problem;
-      problem.energy = [this](const VectorType &x, VectorType *r) {
+      problem.set_potential([this](const VectorType &x, VectorType *r) {
         double energy = 0;
         for (unsigned int i = 0; i < centre.size(); ++i)
           {
@@ -35,10 +35,7 @@ namespace
         if (r != nullptr)
           r->compress(dealii::VectorOperation::insert);
         return energy;
-      };
-      problem.residual = [problem](const VectorType &x, VectorType &r) {
-        problem.energy(x, &r);
-      };
+      });
       problem.tangent = [this](const VectorType &x, MatrixType &k) {
         k = 0;
         for (unsigned int i = 0; i < centre.size(); ++i)
