@@ -279,6 +279,7 @@ namespace rodnet
     const std::string solution_method = prm.get({"Solver"}, "Method");
     const double      bytes_per_dof =
       memory_per_dof(solution_method == "newton" ||
+                       solution_method == "continuation" ||
                        (solution_method == "time stepping" &&
                         prm.get({"Solver", "Time stepping"}, "Integrator") ==
                           "quasi-static"),
@@ -338,6 +339,11 @@ namespace rodnet
     relaxation.parse_parameters(prm);
     relaxation.n_steps = solver.n_steps;
     prm.leave_subsection();
+    prm.enter_subsection("Continuation");
+    continuation.parse_parameters(prm);
+    continuation.relative_tolerance = solver.relative_tolerance;
+    continuation.linear_solver      = solver.newton.linear_solver;
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -363,6 +369,8 @@ namespace rodnet
   Scene::planned_steps() const
   {
     const TimeIntegrator::Parameters &t = time_stepping;
+    if (method == SolutionMethod::continuation)
+      return continuation.max_steps;
     return method == SolutionMethod::time_stepping ?
              std::ceil((t.end_time - t.start_time) / t.time_step) +
                (t.preload_time > 0 ? t.preload_steps : 0) :

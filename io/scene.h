@@ -12,6 +12,7 @@
 #include <io/probes.h>
 #include <io/problem_size.h>
 #include <io/scene_families.h>
+#include <solvers/arclength_continuation.h>
 #include <io/solution_methods.h>
 #include <materials/cross_section.h>
 #include <solvers/dynamic_relaxation.h>
@@ -122,6 +123,9 @@ namespace rodnet
     SolutionMethod                method = SolutionMethod::newton;
     StaticSolver::Parameters      solver;
     DynamicRelaxation::Parameters relaxation;
+    /// Method = continuation: the path following's settings (the
+    /// tolerance and linear solver are those of the Newton entries).
+    ArclengthContinuation::Parameters continuation;
     /// Method = time stepping: the integrator's settings; its load_factor
     /// evaluates the scene's "Load factor" expression (and throws
     /// std::invalid_argument naming that entry where it is not finite).

@@ -164,6 +164,41 @@ namespace rodnet
       return model;
     }
 
+    /// Throws std::invalid_argument naming the first probe of @p probes
+    /// that asks for the lowest eigenvalue, which @p method (the end of
+    /// the message) does not track.
+    void
+    refuse_eigenvalue_probes(const ProbeList &probes, const std::string &method)
+    {
+      for (const auto &p : probes)
+        if (p->needs_lowest_eigenvalue())
+          throw std::invalid_argument("entry \"Output/Probes\", probe \"" +
+                                      p->name() + "\": " + method);
+    }
+
+    /**
+     * Runs @p solve, the solver's run over the steps; a SolverFailure
+     * or a stop request ends it into @p summary (every converged step is
+     * recorded by then).
+     */
+    template <class Solve>
+    void
+    run_guarded(RunSummary &summary, const Solve &solve)
+    {
+      try
+        {
+          solve();
+        }
+      catch (const SolverFailure &e)
+        {
+          summary.failure = e.what();
+        }
+      catch (const StopRequested &e)
+        {
+          summary.stopped_by = e.signal;
+        }
+    }
+
     RunSummary
     run_newton(const Scene       &scene,
                const std::string &output_directory,
@@ -193,47 +228,93 @@ namespace rodnet
 
       VectorType   u = model->create_vector();
       StaticSolver solver(*model, parameters, log);
-      try
-        {
-          // Step 0: the unloaded state, where every run starts; it is not
-          // checked (NaN in the check columns).
-          recorder.record(0,
-                          0.0,
-                          evaluate_probes(probes,
-                                          *model,
-                                          u,
-                                          0.0,
-                                          parameters.track_lowest_eigenvalue ?
-                                            solver.lowest_eigenvalue(u, 0.0) :
-                                            std::nan("")),
-                          u,
-                          {std::nan(""), std::nan("")});
-          solver.run(u,
-                     [&](const StaticSolver::StepInfo &info,
-                         const VectorType             &solution) {
-                       summary.unstable_steps += !info.check.stable;
-                       summary.out_of_range_steps += !info.strain.in_range;
-                       recorder.record(info.step,
-                                       info.load_factor,
-                                       evaluate_probes(probes,
-                                                       *model,
-                                                       solution,
-                                                       info.load_factor,
-                                                       info.lowest_eigenvalue),
-                                       solution,
-                                       {double(info.check.stable),
-                                        double(info.strain.in_range)});
-                     });
-        }
-      catch (const SolverFailure &e)
-        {
-          summary.failure = e.what();
-        }
-      catch (const StopRequested &e)
-        {
-          summary.stopped_by = e.signal;
-        }
+      run_guarded(summary, [&] {
+        // Step 0: the unloaded state, where every run starts; it is not
+        // checked (NaN in the check columns).
+        recorder.record(0,
+                        0.0,
+                        evaluate_probes(probes,
+                                        *model,
+                                        u,
+                                        0.0,
+                                        parameters.track_lowest_eigenvalue ?
+                                          solver.lowest_eigenvalue(u, 0.0) :
+                                          std::nan("")),
+                        u,
+                        {std::nan(""), std::nan("")});
+        solver.run(u,
+                   [&](const StaticSolver::StepInfo &info,
+                       const VectorType             &solution) {
+                     summary.unstable_steps += !info.check.stable;
+                     summary.out_of_range_steps += !info.strain.in_range;
+                     recorder.record(info.step,
+                                     info.load_factor,
+                                     evaluate_probes(probes,
+                                                     *model,
+                                                     solution,
+                                                     info.load_factor,
+                                                     info.lowest_eigenvalue),
+                                     solution,
+                                     {double(info.check.stable),
+                                      double(info.strain.in_range)});
+                   });
+      });
       summary.critical_load_factor = solver.critical_load_factor();
+      recorder.finish(output_directory);
+      return summary;
+    }
+
+    RunSummary
+    run_continuation(const Scene       &scene,
+                     const std::string &output_directory,
+                     std::ostream      *log)
+    {
+      const std::unique_ptr<RodModel> model =
+        build_with_progress(scene, log, [&] { return scene.build_model(); });
+      const ProbeList probes = scene.probes(*model);
+      refuse_eigenvalue_probes(probes,
+                               "continuation counts the negative eigenvalues "
+                               "(column negative_eigenvalues of probes.csv) "
+                               "instead of tracking the lowest");
+      ArclengthContinuation::Parameters parameters = scene.continuation;
+      parameters.strain_limits.fiber_distance      = scene.fiber_distances();
+
+      RunSummary               summary;
+      StepRecorder<VectorType> recorder(
+        scene,
+        output_directory,
+        probes,
+        *model,
+        summary,
+        "load_factor",
+        {"arclength", "branch", "negative_eigenvalues", "stable", "in_range"});
+      if (log != nullptr)
+        *log << "rodnet (continuation): " << model->network().rods().size()
+             << " rod(s), " << model->layout().n_dofs() << " DoFs" << std::endl;
+      VectorType            u = model->create_vector();
+      ArclengthContinuation solver(*model, parameters, log);
+      run_guarded(summary, [&] {
+        solver.run(u,
+                   [&](const ArclengthContinuation::StepInfo &info,
+                       const VectorType                      &solution) {
+                     summary.unstable_steps += !info.check.stable;
+                     summary.out_of_range_steps += !info.strain.in_range;
+                     recorder.record(info.step,
+                                     info.load_factor,
+                                     evaluate_probes(probes,
+                                                     *model,
+                                                     solution,
+                                                     info.load_factor),
+                                     solution,
+                                     {info.arclength,
+                                      double(info.branch),
+                                      double(info.check.negative_eigenvalues),
+                                      double(info.check.stable),
+                                      double(info.strain.in_range)});
+                   });
+      });
+      if (!solver.bifurcations().empty())
+        summary.critical_load_factor = solver.bifurcations().front();
       recorder.finish(output_directory);
       return summary;
     }
@@ -248,40 +329,33 @@ namespace rodnet
       const ProbeList probes = scene.probes(*model);
 
       RunSummary             summary;
-      StepRecorder<DrVector> recorder(
-        scene, output_directory, probes, *model, summary);
+      StepRecorder<DrVector> recorder(scene,
+                                      output_directory,
+                                      probes,
+                                      *model,
+                                      summary);
       if (log != nullptr)
         *log << "rodnet (dynamic relaxation): "
-             << model->network().rods().size() << " rod(s), "
-             << model->n_dofs() << " DoFs, " << model->n_elements()
-             << " elements" << std::endl;
+             << model->network().rods().size() << " rod(s), " << model->n_dofs()
+             << " DoFs, " << model->n_elements() << " elements" << std::endl;
 
       DrVector          u = model->create_vector();
       DynamicRelaxation solver(*model, scene.relaxation, log);
-      try
-        {
-          // Step 0: the unloaded state.
-          recorder.record(0, 0.0, evaluate_probes(probes, *model, u, 0.0), u);
-          solver.run(u,
-                     [&](const DynamicRelaxation::StepInfo &info,
-                         const DrVector                    &solution) {
-                       recorder.record(info.step,
-                                       info.load_factor,
-                                       evaluate_probes(probes,
-                                                       *model,
-                                                       solution,
-                                                       info.load_factor),
-                                       solution);
-                     });
-        }
-      catch (const SolverFailure &e)
-        {
-          summary.failure = e.what();
-        }
-      catch (const StopRequested &e)
-        {
-          summary.stopped_by = e.signal;
-        }
+      run_guarded(summary, [&] {
+        // Step 0: the unloaded state.
+        recorder.record(0, 0.0, evaluate_probes(probes, *model, u, 0.0), u);
+        solver.run(u,
+                   [&](const DynamicRelaxation::StepInfo &info,
+                       const DrVector                    &solution) {
+                     recorder.record(info.step,
+                                     info.load_factor,
+                                     evaluate_probes(probes,
+                                                     *model,
+                                                     solution,
+                                                     info.load_factor),
+                                     solution);
+                   });
+      });
       recorder.finish(output_directory);
       return summary;
     }
@@ -294,12 +368,9 @@ namespace rodnet
       const std::unique_ptr<RodModel> model =
         build_with_progress(scene, log, [&] { return scene.build_model(); });
       const ProbeList probes = scene.probes(*model);
-      for (const auto &p : probes)
-        if (p->needs_lowest_eigenvalue())
-          throw std::invalid_argument(
-            "entry \"Output/Probes\", probe \"" + p->name() +
-            "\": the lowest eigenvalue is tracked by Newton load stepping "
-            "only, not by time stepping");
+      refuse_eigenvalue_probes(probes,
+                               "the lowest eigenvalue is tracked by Newton "
+                               "load stepping only, not by time stepping");
       TimeIntegrator::Parameters parameters   = scene.time_stepping;
       parameters.strain_limits.fiber_distance = scene.fiber_distances();
       const bool     dynamic                  = parameters.dynamic();
@@ -344,42 +415,32 @@ namespace rodnet
             if (!dynamic)
               values.front() = info->stable;
           }
-        recorder.record(
-          step,
-          time,
-          evaluate_probes(probes, *model, u, load_factor),
-          u,
-          values);
+        recorder.record(step,
+                        time,
+                        evaluate_probes(probes, *model, u, load_factor),
+                        u,
+                        values);
       };
       VectorType u, v;
       scene.initial_state(*model, u, v);
-      try
-        {
-          // Without a preload the history begins with the initial state.
-          if (parameters.preload_time == 0)
-            {
-              const double load_factor =
-                parameters.load_factor(parameters.start_time);
-              model->apply_boundary_values(u, load_factor);
-              record(0, parameters.start_time, load_factor, u, nullptr);
-            }
-          integrator.run(
-            u,
-            v,
-            [&](const TimeIntegrator::StepInfo &info,
-                const VectorType               &state,
-                const VectorType &) {
-              record(info.step, info.time, info.load_factor, state, &info);
-            });
-        }
-      catch (const SolverFailure &e)
-        {
-          summary.failure = e.what();
-        }
-      catch (const StopRequested &e)
-        {
-          summary.stopped_by = e.signal;
-        }
+      run_guarded(summary, [&] {
+        // Without a preload the history begins with the initial state.
+        if (parameters.preload_time == 0)
+          {
+            const double load_factor =
+              parameters.load_factor(parameters.start_time);
+            model->apply_boundary_values(u, load_factor);
+            record(0, parameters.start_time, load_factor, u, nullptr);
+          }
+        integrator.run(
+          u,
+          v,
+          [&](const TimeIntegrator::StepInfo &info,
+              const VectorType               &state,
+              const VectorType &) {
+            record(info.step, info.time, info.load_factor, state, &info);
+          });
+      });
       // The preload's rows stay in probes.csv; the plot shows the motion,
       // whose time scale is usually far shorter.
       recorder.finish(output_directory,
@@ -451,6 +512,8 @@ namespace rodnet
           return run_dynamic_relaxation(scene, output_directory, log);
         case SolutionMethod::time_stepping:
           return run_time_stepping(scene, output_directory, log);
+        case SolutionMethod::continuation:
+          return run_continuation(scene, output_directory, log);
       }
     throw std::logic_error("run_scene: unknown solution method");
   }

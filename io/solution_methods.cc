@@ -1,4 +1,5 @@
 #include <io/solution_methods.h>
+#include <solvers/arclength_continuation.h>
 #include <solvers/dynamic_relaxation.h>
 #include <solvers/static_solver.h>
 #include <solvers/time_integrator.h>
@@ -28,6 +29,16 @@ namespace rodnet
       TimeIntegrator::Parameters::declare_parameters(prm);
       prm.leave_subsection();
     }
+
+    /// Subsection "Continuation" with the parameters of
+    /// ArclengthContinuation.
+    void
+    declare_continuation(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Continuation");
+      ArclengthContinuation::Parameters::declare_parameters(prm);
+      prm.leave_subsection();
+    }
   } // namespace
 
   const std::vector<SolutionMethodEntry> &
@@ -50,7 +61,12 @@ namespace rodnet
        "the discrete rods in time, with inertia or quasi-statically, for "
        "vibrations and viscoelastic materials (subsection Time stepping; "
        "the Newton entries of Solver apply to every time step).",
-       declare_time_stepping}};
+       declare_time_stepping},
+      {"continuation",
+       SolutionMethod::continuation,
+       "the discrete rods along their equilibrium path in the load factor, "
+       "through limit points and bifurcations (subsection Continuation).",
+       declare_continuation}};
     return methods;
   }
 

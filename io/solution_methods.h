@@ -14,6 +14,7 @@ namespace rodnet
     newton,             ///< discrete rods and junctions, StaticSolver
     dynamic_relaxation, ///< bending-active element, DynamicRelaxation
     time_stepping,      ///< discrete rods and junctions, TimeIntegrator
+    continuation, ///< discrete rods and junctions, ArclengthContinuation
   };
 
   /**

@@ -93,7 +93,8 @@ namespace
               "windmill|square lattice|hexagonal lattice|network file|gmsh "
               "network ]");
     EXPECT_EQ(tree.find("Solver")->find("Method")->pattern,
-              "[Selection newton|dynamic relaxation|time stepping ]");
+              "[Selection newton|dynamic relaxation|time stepping|"
+              "continuation ]");
     EXPECT_EQ(
       tree.find("Solver")->find("Time stepping")->find("Integrator")->pattern,
       "[Selection quasi-static|backward euler|newmark|midpoint ]");

@@ -141,6 +141,7 @@ namespace
 
   /// Scenes with a validation test of their own.
   const std::set<std::string> tested_elsewhere = {
+    "deep_arch",       // validation/continuation
     "gridshell",       // validation/gridshell
     "helical_spring",  // validation/helical_spring
     "hexagonal_truss", // validation/hexagonal_truss

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# The charts of doc/continuation.md: scenes/deep_arch.prm and the elastica
+# (scenes/elastica.prm without imperfection, EI2 = 2 EI1, followed to
+# P = 20 B/L^2) by continuation, each drawn as load against displacement
+# with stable equilibria solid and unstable ones dashed, the tangent's
+# negative eigenvalues and the corrector iterations of every step.
+#
+# Usage: bench/continuation_charts.sh [RODNET_RUN] [OUTPUT_DIR]
+#        (defaults build/release/rodnet-run, doc/)
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+run=${1:-$root/build/release/rodnet-run}
+out=${2:-$root/doc}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+"$run" "$root/scenes/deep_arch.prm" --output "$work/arch" > "$work/arch.log" 2>&1
+cat "$root/scenes/elastica.prm" - > "$work/elastica.prm" <<'END'
+subsection Material
+  subsection linear elastic
+    set EI2 = 2
+  end
+end
+subsection Loads
+  set Point forces = end: -1, 0, 0
+end
+subsection Solver
+  set Method = continuation
+  subsection Continuation
+    set Load factor range = -1, 20
+    set Initial step = 0.1
+  end
+end
+subsection Output
+  set Write VTU = false
+  set Probes = tip_x: position end x; tip_y: position end y
+end
+END
+"$run" "$work/elastica.prm" --output "$work/elastica" > "$work/elastica.log" 2>&1
+
+# Iterations per step from the log ("step k: ..., n iteration(s)").
+for case in arch elastica; do
+  sed -n 's/^step \([0-9]*\): .*, \([0-9]*\) iteration(s).*/\1 \2/p' \
+    "$work/$case.log" > "$work/$case.iterations"
+done
+
+# Columns: step, load_factor, probe 1, probe 2, arclength, branch,
+# negative_eigenvalues, stable, in_range. A segment is drawn solid where
+# both its ends are stable.
+plot_path() { # csv, x column, x label, y scale, title, png
+  gnuplot <<GP
+set terminal pngcairo size 1200,420 font ",11"
+set output "$6"
+set datafile separator ","
+set multiplot layout 1,3 title "$5"
+set grid
+set key bottom right
+set xlabel "$3"
+set ylabel "load factor"
+plot "$1" every ::1 using (\$$2):(\$8 > 0 ? \$2 : 1/0) with lines lw 2 lc rgb "#1f77b4" title "stable", \
+     "$1" every ::1 using (\$$2):(\$8 > 0 ? 1/0 : \$2) with lines dt 2 lw 2 lc rgb "#d62728" title "unstable"
+set xlabel "arclength"
+set ylabel "negative eigenvalues"
+set yrange [-0.2:2.2]
+plot "$1" every ::1 using 5:7 with steps lw 2 notitle
+set autoscale y
+set datafile separator whitespace
+set xlabel "step"
+set ylabel "corrector iterations"
+plot "$7" using 1:2 with impulses lw 2 notitle
+unset multiplot
+GP
+}
+plot_path "$work/arch/probes.csv" 3 "apex y [m]" 1 \
+  "deep arch (DaDeppo and Schmidt): limit load 8.97 EI/R^2 at lambda = 0.897" \
+  "$out/continuation_deep_arch.png" "$work/arch.iterations"
+plot_path "$work/elastica/probes.csv" 4 "tip deflection [L]" 1 \
+  "elastica without imperfection: bifurcation at pi^2/4, switch to the buckled branch" \
+  "$out/continuation_elastica.png" "$work/elastica.iterations"
+grep -h "limit point at\|bifurcation at" "$work/arch.log" "$work/elastica.log"
+echo "charts in $out: continuation_deep_arch.png, continuation_elastica.png"

@@ -1,0 +1,102 @@
+#include <solvers/arclength_continuation.h>
+#include <solvers/stability.h>
+#include <solvers/static_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace rodnet
+{
+  ArclengthContinuation::PathPoint
+  ArclengthContinuation::locate_bifurcation(const PathPoint &lo,
+                                            const double     ds_hi,
+                                            StepInfo        &info)
+  {
+    double       s_lo = 0, s_hi = ds_hi;
+    double       lambda_lo = lo.lambda, lambda_hi = lo.lambda + ds_hi * lo.t_lambda;
+    VectorType   u_lo      = lo.u;
+    JudgedResult result_lo;
+    const double tolerance =
+      parameters.bifurcation_tolerance * std::max(1.0, std::abs(lo.lambda));
+    model.set_state(*lo.state);
+    while (std::abs(lambda_hi - lambda_lo) > tolerance &&
+           s_hi - s_lo > 1e-14 * ds_hi)
+      {
+        const double s_mid  = 0.5 * (s_lo + s_hi);
+        VectorType   u      = u_lo;
+        double       lambda = lambda_lo + (s_mid - s_lo) * lo.t_lambda;
+        u.add(s_mid - s_lo, lo.t_u);
+        const JudgedResult result =
+          correct(lo, Constraint{&lo.t_u, lo.t_lambda, s_mid}, u, lambda);
+        if (!result.converged)
+          throw SolverFailure("locating the bifurcation near load factor " +
+                              std::to_string(lambda) +
+                              " failed: " + result.failure);
+        model.assemble(u, lambda, nullptr, &tangent);
+        if (tangent_inertia(tangent, model.constraints()).negative ==
+            lo.negative)
+          {
+            s_lo      = s_mid;
+            lambda_lo = lambda;
+            u_lo      = u;
+            result_lo = result;
+          }
+        else
+          {
+            s_hi      = s_mid;
+            lambda_hi = lambda;
+          }
+      }
+    located_bifurcations.push_back(0.5 * (lambda_lo + lambda_hi));
+    if (s_lo == 0)
+      {
+        model.set_state(*lo.state);
+        info.load_factor = lo.lambda;
+        return lo;
+      }
+    PathPoint b = accept(u_lo, lambda_lo, &lo, result_lo, info);
+    return b;
+  }
+
+  void
+  ArclengthContinuation::turn_to_null_vector(PathPoint &p)
+  {
+    model.assemble(p.u, p.lambda, nullptr, &tangent);
+    const ConstrainedFactorization factorization(tangent, model.constraints());
+    // Inverse iteration from a fixed pseudo-random start: near a
+    // bifurcation the tangent's smallest eigenvalue is far below the next.
+    std::mt19937                           random(1);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    std::vector<double>                    x(tangent.m());
+    for (double &v : x)
+      v = uniform(random);
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        x                 = factorization.solve(x);
+        const double norm = std::sqrt(
+          std::inner_product(x.begin(), x.end(), x.begin(), 0.0));
+        for (double &v : x)
+          v /= norm;
+      }
+    // A fixed sign: the largest entry positive.
+    const auto largest = std::max_element(
+      x.begin(), x.end(), [](double a, double b) {
+        return std::abs(a) < std::abs(b);
+      });
+    const double sign = *largest < 0 ? -1 : 1;
+    VectorType   phi  = model.create_vector();
+    for (global_dof_index i = 0; i < x.size(); ++i)
+      phi[i] = sign * x[i];
+    phi.compress(dealii::VectorOperation::insert);
+    // W-orthogonal to the path it leaves, unit.
+    const double along = dot_w(phi, p.t_u);
+    phi.add(-along, p.t_u);
+    const double phi_lambda = -along * p.t_lambda;
+    const double norm = std::sqrt(dot_w(phi, phi) + phi_lambda * phi_lambda);
+    p.t_u = phi;
+    p.t_u /= norm;
+    p.t_lambda = phi_lambda / norm;
+  }
+} // namespace rodnet

@@ -1,0 +1,296 @@
+#ifndef RODNET_SOLVERS_ARCLENGTH_CONTINUATION_H
+#define RODNET_SOLVERS_ARCLENGTH_CONTINUATION_H
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <core/rod_model.h>
+#include <solvers/equilibrium_check.h>
+#include <solvers/residual_criterion.h>
+#include <solvers/strain_range.h>
+#include <solvers/tangent_factorization.h>
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /**
+   * Pseudo-arclength continuation (Keller 1977) of the equilibria of a
+   * RodModel in the load factor lambda: the path (u(s), lambda(s)) is
+   * followed by steps of length ds along its tangent t, each corrected by
+   * Newton on the bordered system
+   *
+   *   [ K        R_lambda ] [du     ]     [ R                          ]
+   *   [ W t_u^T  t_lambda ] [dlambda] = - [ t.W (u - u0, lambda - l0) - ds ]
+   *
+   * (block elimination with two solves of the tangent K per iteration), so
+   * that it passes limit points, where K is singular and lambda turns,
+   * in either direction. R_lambda is the change of the residual with the
+   * load factor, prescribed DoFs moving with it (central differences). The
+   * norm W weighs positions by 1 / L^2 (L the model's length scale) and
+   * angles by 1: ds is dimensionless.
+   *
+   * At every converged point the constrained tangent's negative
+   * eigenvalues are counted (its inertia, check_equilibrium()). Where the
+   * count changes while lambda keeps its direction, the path has crossed a
+   * bifurcation: it is located by bisection of the step to
+   * Parameters::bifurcation_tolerance in lambda, and, if asked, the path
+   * switches there to the branch along the tangent's null vector (inverse
+   * iteration on the tangent at the bracket). A change of direction of
+   * lambda is a limit point (fold), reported with lambda at the turn.
+   *
+   * The reference configuration is reset at every converged point, as in
+   * load stepping (StaticSolver).
+   */
+  class ArclengthContinuation
+  {
+  public:
+    struct Parameters
+    {
+      /// Length of the first step (dimensionless arclength, see above).
+      double initial_step = 0.05;
+      double min_step     = 1e-6;
+      double max_step     = 0.5;
+      /// The path ends where lambda leaves [lower_limit, upper_limit],
+      /// landing on the limit.
+      double lower_limit = -1;
+      double upper_limit = 1;
+      /// Most converged points before the run stops with SolverFailure.
+      unsigned int max_steps = 500;
+      /// Step lengths adapt so that the corrector takes about this many
+      /// iterations.
+      unsigned int target_iterations = 6;
+      unsigned int max_iterations    = 15;
+      /// As StaticSolver::Parameters::relative_tolerance.
+      double relative_tolerance = 1e-9;
+      /// Load factors the path lands on exactly (with a corrector at fixed
+      /// lambda), in any order.
+      std::vector<double> output_points;
+      /// Locate a bifurcation to this bracket width in lambda.
+      double bifurcation_tolerance = 1e-8;
+      /// At a located bifurcation, follow the branch along the null
+      /// vector instead of the branch the path was on.
+      bool switch_branches = true;
+      std::string  linear_solver = "auto";
+      StrainLimits strain_limits;
+
+      /// Declares the entries in the current subsection of @p prm.
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /// Reads the entries of declare_parameters() from the current
+      /// subsection of @p prm.
+      void
+      parse_parameters(const dealii::ParameterHandler &prm);
+    };
+
+    /// What a converged point of the path is.
+    enum class PointKind
+    {
+      regular,
+      output_point, ///< landed on one of Parameters::output_points
+      limit_point,  ///< the path turned back in lambda at this step
+      bifurcation   ///< the stable side of a located bifurcation
+    };
+
+    struct StepInfo
+    {
+      unsigned int step        = 0;
+      double       load_factor = 0;
+      /// Sum of the chords' lengths (W norm) along the path so far.
+      double       arclength  = 0;
+      unsigned int iterations = 0;
+      /// Which branch: 0 from the start, +1 at each switch.
+      unsigned int  branch = 0;
+      PointKind     kind   = PointKind::regular;
+      ResidualParts residual;
+      double        wall_time = 0;
+      /// The tangent's direction dlambda/ds: negative where lambda falls.
+      double           load_factor_rate = 0;
+      EquilibriumCheck check;
+      StrainRange      strain;
+    };
+
+    using Observer =
+      std::function<void(const StepInfo &, const VectorType &solution)>;
+
+    ArclengthContinuation(RodModel         &model,
+                          const Parameters &parameters,
+                          std::ostream     *log = nullptr);
+
+    /**
+     * Follows the path from the equilibrium @p u at load factor 0 (usually
+     * the zero state) until lambda leaves the limits; @p u holds the last
+     * point. Calls @p on_converged at every converged point. Throws
+     * SolverFailure naming the load factor and the reason where a step
+     * fails at the smallest step length or after max_steps points.
+     */
+    void
+    run(VectorType &u, const Observer &on_converged);
+
+    /// Load factors of the located bifurcations, in path order.
+    const std::vector<double> &
+    bifurcations() const
+    {
+      return located_bifurcations;
+    }
+
+    /// Load factors of the limit points passed (lambda at the turn,
+    /// from a parabola through the three points around it).
+    const std::vector<double> &
+    limit_points() const
+    {
+      return passed_limit_points;
+    }
+
+  private:
+    /// A converged point of the path with its tangent (t_u, t_lambda),
+    /// unit in the W norm, and the model state it was reached with.
+    struct PathPoint
+    {
+      VectorType   u;
+      double       lambda = 0;
+      double       s      = 0;
+      VectorType   t_u;
+      double       t_lambda = 0;
+      unsigned int negative = 0;
+      /// Set once the point is accepted (ModelState has no empty value).
+      std::optional<ModelState> state;
+    };
+
+    /// The linear constraint n.(u - u0, lambda - lambda0) = length that
+    /// closes the corrector's system: the pseudo-arclength condition, or
+    /// lambda = target (n_u = 0, n_lambda = 1).
+    struct Constraint
+    {
+      const VectorType *n_u = nullptr; ///< null: no u part
+      double            n_lambda = 1;
+      double            length   = 0;
+    };
+
+    /// Newton on the bordered system from (@p u, @p lambda), with the
+    /// model's reference that of @p base; converged values on return.
+    JudgedResult
+    correct(const PathPoint  &base,
+            const Constraint &constraint,
+            VectorType       &u,
+            double           &lambda);
+
+    /// The path's tangent at the converged @p p (its reference reset),
+    /// oriented along @p previous (W inner product), or with lambda
+    /// increasing if there is none.
+    void
+    compute_tangent(PathPoint &p, const PathPoint *previous);
+
+    /// dR/dlambda at (@p u, @p lambda) with the fixed DoFs following
+    /// lambda (free rows), and the fixed DoFs' rate in @p fixed_rate.
+    void
+    load_factor_derivative(const VectorType &u,
+                           double            lambda,
+                           VectorType       &r_lambda,
+                           VectorType       &fixed_rate);
+
+    /// W inner product of two DoF vectors.
+    double
+    dot_w(const VectorType &a, const VectorType &b) const;
+
+    /// One step of length @p ds from @p p along its tangent, corrected;
+    /// false if the corrector fails or lands far from the prediction.
+    bool
+    step(const PathPoint &p,
+         double           ds,
+         VectorType      &u,
+         double          &lambda,
+         JudgedResult    &result);
+
+    /**
+     * Replaces the converged step (@p u, @p lambda, @p result) from @p p,
+     * which crossed @p target, by the equilibrium at lambda = @p target
+     * (from the chord's point there); @p ds becomes its pseudo-arclength
+     * from @p p. False (nothing changed) if that corrector fails.
+     */
+    bool
+    land(const PathPoint &p,
+         double           target,
+         VectorType      &u,
+         double          &lambda,
+         JudgedResult    &result,
+         double          &ds);
+
+    /**
+     * Locates the bifurcation between @p lo and the point at
+     * pseudo-arclength @p ds_hi along lo's tangent by bisection; returns
+     * the stable side's point (lo itself if no closer one was found),
+     * converged and accepted (@p info).
+     */
+    PathPoint
+    locate_bifurcation(const PathPoint &lo, double ds_hi, StepInfo &info);
+
+    /// Turns @p p's tangent to the null vector of the tangent stiffness at
+    /// @p p (inverse iteration), W-orthogonal to the path it leaves, unit.
+    void
+    turn_to_null_vector(PathPoint &p);
+
+    /**
+     * The step from @p p to @p q (whose @p q_info is ready) crossed a
+     * bifurcation: locates it, reports it, and either reports q and makes
+     * it @p p, or (switch_branches) makes @p p the bifurcation point with
+     * its tangent along the new branch.
+     */
+    bool
+    follow_bifurcation(PathPoint       &p,
+                       const PathPoint &q,
+                       double           ds,
+                       StepInfo        &q_info,
+                       const Observer  &on_converged);
+
+    /// Numbers, times, reports and observes the converged @p p.
+    void
+    finish_point(StepInfo &info, const PathPoint &p, const Observer &on_converged);
+
+    /// Makes (@p u, @p lambda) a point of the path after @p previous: the
+    /// reference reset, its tangent, checks; fills @p info.
+    PathPoint
+    accept(const VectorType   &u,
+           double              lambda,
+           const PathPoint    *previous,
+           const JudgedResult &result,
+           StepInfo           &info);
+
+    /// The output point or limit between lambda0 and lambda1 (exclusive
+    /// of lambda0) nearest to lambda0, if there is one.
+    std::optional<double>
+    crossed_target(double lambda0, double lambda1) const;
+
+    void
+    report(const StepInfo &info) const;
+
+    RodModel                 &model;
+    Parameters                parameters;
+    std::ostream             *log;
+    ResidualCriterion         criterion;
+    StrainMonitor             strains;
+    MatrixType                tangent;
+    TangentFactorizationCache factorizations;
+    /// Diagonal of the norm W.
+    VectorType          weights;
+    std::vector<double> located_bifurcations;
+    std::vector<double> passed_limit_points;
+
+    /// Where run() stands: the points reported, the branch, the (s,
+    /// lambda) of the last three points, whether the last step switched
+    /// branches, the time since the last point.
+    unsigned int                             n_points = 0;
+    unsigned int                             branch   = 0;
+    std::array<std::pair<double, double>, 3> recent{};
+    bool                                     just_switched = false;
+    dealii::Timer                            timer;
+  };
+} // namespace rodnet
+
+#endif

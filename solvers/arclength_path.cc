@@ -1,0 +1,193 @@
+#include <solvers/arclength_continuation.h>
+#include <solvers/free_motions.h>
+#include <solvers/static_solver.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// The load factor at the turn of the parabola lambda(s) through the
+    /// three points (s, lambda) around a limit point (the middle one's if
+    /// they are collinear).
+    double
+    parabola_extremum(const std::array<std::pair<double, double>, 3> &p)
+    {
+      const auto [s0, l0] = p[0];
+      const auto [s1, l1] = p[1];
+      const auto [s2, l2] = p[2];
+      // Newton's form: lambda = l0 + d01 (s - s0) + d012 (s - s0)(s - s1).
+      const double d01  = (l1 - l0) / (s1 - s0);
+      const double d12  = (l2 - l1) / (s2 - s1);
+      const double d012 = (d12 - d01) / (s2 - s0);
+      if (d012 == 0 || !std::isfinite(d012))
+        return l1;
+      const double s_turn = 0.5 * (s0 + s1) - d01 / (2 * d012);
+      return l0 + d01 * (s_turn - s0) + d012 * (s_turn - s0) * (s_turn - s1);
+    }
+  } // namespace
+
+  bool
+  ArclengthContinuation::land(const PathPoint &p,
+                              const double     target,
+                              VectorType      &u,
+                              double          &lambda,
+                              JudgedResult    &result,
+                              double          &ds)
+  {
+    // From the chord's point at the target, Newton at fixed lambda.
+    const double f        = (target - p.lambda) / (lambda - p.lambda);
+    VectorType   u_target = p.u;
+    u_target.sadd(1 - f, f, u);
+    double lambda_target = target;
+    model.set_state(*p.state);
+    JudgedResult landed = correct(p,
+                                  Constraint{nullptr, 1, target - p.lambda},
+                                  u_target,
+                                  lambda_target);
+    if (!landed.converged)
+      return false;
+    landed.iterations += result.iterations;
+    VectorType chord = u_target;
+    chord -= p.u;
+    ds     = dot_w(p.t_u, chord) + p.t_lambda * (target - p.lambda);
+    u      = u_target;
+    lambda = target;
+    result = landed;
+    return true;
+  }
+
+  void
+  ArclengthContinuation::finish_point(StepInfo         &info,
+                                      const PathPoint  &p,
+                                      const Observer   &on_converged)
+  {
+    info.step      = n_points++;
+    info.branch    = branch;
+    info.wall_time = timer.wall_time();
+    timer.restart();
+    report(info);
+    on_converged(info, p.u);
+    recent = {{recent[1], recent[2], {p.s, p.lambda}}};
+  }
+
+  void
+  ArclengthContinuation::run(VectorType &u, const Observer &on_converged)
+  {
+    const std::string free_motions = describe_free_motions(model, u);
+    if (!free_motions.empty())
+      throw std::invalid_argument(free_motions);
+    timer.restart();
+    n_points = 0;
+    branch   = 0;
+
+    // The start: the equilibrium at load factor 0 nearest to u.
+    PathPoint origin;
+    origin.u          = u;
+    origin.state      = model.state();
+    double       zero = 0;
+    JudgedResult result =
+      correct(origin, Constraint{nullptr, 1, 0}, u, zero);
+    if (!result.converged)
+      throw SolverFailure("no equilibrium at load factor 0 from the start: " +
+                          result.failure);
+    StepInfo  info;
+    PathPoint p = accept(u, 0, nullptr, result, info);
+    finish_point(info, p, on_converged);
+
+    double ds = parameters.initial_step;
+    while (p.lambda < parameters.upper_limit &&
+           p.lambda > parameters.lower_limit)
+      {
+        if (n_points > parameters.max_steps)
+          throw SolverFailure(
+            "the path did not leave the load factors [" +
+            std::to_string(parameters.lower_limit) + ", " +
+            std::to_string(parameters.upper_limit) + "] within " +
+            std::to_string(parameters.max_steps) +
+            " points (\"Max steps\"); it stands at load factor " +
+            std::to_string(p.lambda));
+        VectorType next   = p.u;
+        double     lambda = 0, ds_taken = ds;
+        info              = StepInfo();
+        const bool stepped = step(p, ds, next, lambda, result);
+        const auto target =
+          stepped ? crossed_target(p.lambda, lambda) : std::nullopt;
+        if (!stepped ||
+            (target && !land(p, *target, next, lambda, result, ds_taken)))
+          {
+            ds /= 2;
+            if (ds < parameters.min_step)
+              throw SolverFailure(
+                "the continuation step from load factor " +
+                std::to_string(p.lambda) +
+                " failed down to the smallest step length (\"Minimum "
+                "step\"): " +
+                result.failure);
+            continue;
+          }
+        if (target)
+          info.kind = PointKind::output_point;
+        PathPoint q = accept(next, lambda, &p, result, info);
+        if (q.t_lambda * p.t_lambda < 0)
+          {
+            info.kind = PointKind::limit_point;
+            passed_limit_points.push_back(
+              parabola_extremum({{recent[1], recent[2], {q.s, q.lambda}}}));
+            if (log != nullptr)
+              *log << "limit point at load factor " << std::setprecision(10)
+                   << passed_limit_points.back() << std::setprecision(6)
+                   << " (parabola through the points around it)"
+                   << std::endl;
+          }
+        else if (q.negative != p.negative && !just_switched)
+          {
+            if (follow_bifurcation(p, q, ds_taken, info, on_converged))
+              continue;
+          }
+        just_switched = false;
+        finish_point(info, q, on_converged);
+        p  = q;
+        ds = std::min(parameters.max_step,
+                      ds * std::clamp(double(parameters.target_iterations) /
+                                        std::max(1u, result.iterations),
+                                      0.5,
+                                      2.0));
+      }
+    u = p.u;
+  }
+
+  bool
+  ArclengthContinuation::follow_bifurcation(PathPoint       &p,
+                                            const PathPoint &q,
+                                            const double     ds,
+                                            StepInfo        &q_info,
+                                            const Observer  &on_converged)
+  {
+    StepInfo  info;
+    PathPoint b = locate_bifurcation(p, ds, info);
+    if (log != nullptr)
+      *log << "bifurcation at load factor " << std::setprecision(10)
+           << located_bifurcations.back() << std::setprecision(6)
+           << ": the tangent's negative eigenvalues go from " << p.negative
+           << " to " << q.negative << std::endl;
+    info.kind = PointKind::bifurcation;
+    if (b.s != p.s)
+      finish_point(info, b, on_converged);
+    if (!parameters.switch_branches)
+      {
+        finish_point(q_info, q, on_converged);
+        p = q;
+        return true;
+      }
+    turn_to_null_vector(b);
+    p             = b;
+    just_switched = true;
+    ++branch;
+    return true;
+  }
+} // namespace rodnet

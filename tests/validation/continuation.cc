@@ -1,0 +1,176 @@
+// Pseudo-arclength continuation (ArclengthContinuation) against exact and
+// published paths:
+//  - the planar elastica, clamped-free under a dead end load (VALIDATION.md;
+//    Korner et al. 2021, 5a), followed from P = 0 without imperfection: the
+//    bifurcation located on the straight branch against pi^2/4, then the
+//    switch onto the buckled branch and its tip positions at every
+//    tabulated load against the exact elliptic-integral solution;
+//  - the deep circular arch of DaDeppo & Schmidt (1975, "Instability of
+//    clamped-hinged circular arches subjected to a point load", Trans. ASME
+//    J. Appl. Mech. 42, 894-896): 215 degrees, clamped at one end, hinged
+//    at the other, a dead point load at the apex; the limit load
+//    P R^2 / EI = 8.97, passed with the snap-back that follows it.
+#include <common/elastica_exact.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <io/scene.h>
+#include <solvers/arclength_continuation.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using namespace rodnet;
+  using namespace rodnet::testing;
+  using Point = ArclengthContinuation::StepInfo;
+
+  /// The points of a continuation run of a scene, with the positions of
+  /// two vertices at each.
+  struct Path
+  {
+    std::vector<Point>                points;
+    std::vector<std::vector<Vector3>> positions;
+    std::vector<double>               bifurcations;
+    std::vector<double>               limit_points;
+  };
+
+  Path
+  follow(const std::string &prm_text, const std::vector<unsigned int> &vertices)
+  {
+    dealii::ParameterHandler prm;
+    Scene::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text);
+    const Scene scene(prm);
+    const auto  model = scene.build_model();
+    ArclengthContinuation solver(*model, scene.continuation);
+    VectorType            u = model->create_vector();
+    Path                  path;
+    solver.run(u, [&](const Point &info, const VectorType &solution) {
+      path.points.push_back(info);
+      path.positions.emplace_back();
+      for (const unsigned int v : vertices)
+        path.positions.back().push_back(model->position(solution, v));
+    });
+    path.bifurcations = solver.bifurcations();
+    path.limit_points = solver.limit_points();
+    return path;
+  }
+
+  std::string
+  elastica_continuation(const unsigned int n_segments)
+  {
+    // B = L = 1; EI2 = 2 EI1 makes the weaker plane the one that buckles.
+    return "subsection Geometry\n"
+           "  set Generator = straight\n"
+           "  set Segments = " +
+           std::to_string(n_segments) +
+           "\n"
+           "  set Clamp at first segment midpoint = true\n"
+           "  set Director d1 = 0, 0, 1\n"
+           "end\n"
+           "subsection Material\n"
+           "  subsection linear elastic\n"
+           "    set Stiffness input = direct\n"
+           "    set EA = 1e7\n"
+           "    set EI1 = 1\n"
+           "    set EI2 = 2\n"
+           "    set GJ = 1\n"
+           "  end\n"
+           "end\n"
+           "subsection Supports\n"
+           "  set Clamped ends = start\n"
+           "end\n"
+           "subsection Loads\n"
+           "  set Point forces = end: -1, 0, 0\n"
+           "end\n"
+           "subsection Solver\n"
+           "  set Method = continuation\n"
+           "  subsection Continuation\n"
+           "    set Load factor range = -1, 20\n"
+           "    set Output load factors = 2.5, 3, 4, 5, 7.5, 10\n"
+           "    set Initial step = 0.1\n"
+           "  end\n"
+           "end\n";
+  }
+
+  TEST(Continuation, ElasticaBifurcationLocated)
+  {
+    // The straight branch's inertia changes at the discrete Euler load,
+    // which converges as N^-2 (N = 100: -2.0e-5, N = 200: -2.3e-6
+    // relative). Finer meshes are limited by the sign of the weakest pivot
+    // at a stiff EA (N = 800: +1.8e-4; doc/continuation.md).
+    const Path path = follow(elastica_continuation(200), {200});
+    ASSERT_EQ(path.bifurcations.size(), 1u);
+    const double exact = M_PI * M_PI / 4;
+    EXPECT_NEAR(path.bifurcations[0], exact, 1e-4 * exact);
+    EXPECT_TRUE(path.limit_points.empty());
+    for (const Point &p : path.points)
+      {
+        // Before the switch: straight and stable below P_cr; after it,
+        // the buckled branch, stable (EI2 > EI1: no other mode is soft).
+        EXPECT_TRUE(p.check.stable) << "load factor " << p.load_factor;
+        EXPECT_EQ(p.branch, p.load_factor > path.bifurcations[0] + 1e-6);
+      }
+  }
+
+  TEST(Continuation, ElasticaTipsOnTheBuckledBranch)
+  {
+    // Errors at N = 100, 200, 400: 3.4e-4, 8.6e-5, 2.3e-5 (N^-2).
+    const unsigned int n    = 400;
+    const Path         path = follow(elastica_continuation(n), {n});
+    unsigned int       checked = 0;
+    for (std::size_t i = 0; i < path.points.size(); ++i)
+      for (const double P : {2.5, 3.0, 4.0, 5.0, 7.5, 10.0, 20.0})
+        if (path.points[i].load_factor == P)
+          {
+            const Vector3     tip   = path.positions[i][0];
+            const ElasticaTip exact = elastica_tip(P);
+            EXPECT_NEAR(tip[0], exact.x, 5e-5) << "P = " << P;
+            EXPECT_NEAR(std::hypot(tip[1], tip[2]), exact.delta, 5e-5)
+              << "P = " << P;
+            ++checked;
+          }
+    EXPECT_EQ(checked, 7u);
+    EXPECT_EQ(path.points.back().load_factor, 20.0);
+  }
+
+  TEST(Continuation, DeepArchLimitLoad)
+  {
+    // scenes/deep_arch.prm (its comment has the geometry), at N = 400.
+    // Limit load at N = 100, 200, 400: 8.930, 8.962, 8.970 (N^-2).
+    const unsigned int n = 400, m = n / 2;
+    std::ifstream      file(RODNET_SOURCE_DIR "/scenes/deep_arch.prm");
+    std::stringstream  scene;
+    scene << file.rdbuf() << "\nsubsection Geometry\n  set Segments = " << n
+          << "\nend\nsubsection Loads\n  set Point forces = " << m
+          << ": 0, -750, 0; " << m + 1 << ": 0, -250, 0\nend\n";
+    const Path path = follow(scene.str(), {m, m + 1});
+    // The limit load, then a snap-back through a second limit point at
+    // negative load, then the stiffening inverted arch up to lambda = 1.5.
+    ASSERT_EQ(path.limit_points.size(), 2u);
+    const double published = 8.97; // P R^2 / EI, DaDeppo & Schmidt
+    EXPECT_NEAR(path.limit_points[0] * 1000 * 1e4 / 1e6,
+                published,
+                0.005 * published);
+    EXPECT_LT(path.limit_points[1], 0);
+    EXPECT_TRUE(path.bifurcations.empty());
+    EXPECT_EQ(path.points.back().load_factor, 1.5);
+    // Stable up to the first limit point and after the second, unstable
+    // between them; the apex ends below the supports.
+    unsigned int folds = 0;
+    for (const Point &p : path.points)
+      {
+        folds += p.kind == ArclengthContinuation::PointKind::limit_point;
+        EXPECT_EQ(p.check.stable, folds != 1) << "step " << p.step;
+      }
+    const double apex_y = 0.75 * path.positions.back()[0][1] +
+                          0.25 * path.positions.back()[1][1];
+    EXPECT_LT(apex_y, -100 * std::sin(17.5 * M_PI / 180));
+  }
+} // namespace
