@@ -14,9 +14,9 @@ namespace rodnet
                                             const double     ds_hi,
                                             StepInfo        &info)
   {
-    double       s_lo = 0, s_hi = ds_hi;
-    double       lambda_lo = lo.lambda, lambda_hi = lo.lambda + ds_hi * lo.t_lambda;
-    VectorType   u_lo      = lo.u;
+    double s_lo = 0, s_hi = ds_hi;
+    double lambda_lo = lo.lambda, lambda_hi = lo.lambda + ds_hi * lo.t_lambda;
+    VectorType   u_lo = lo.u;
     JudgedResult result_lo;
     const double tolerance =
       parameters.bifurcation_tolerance * std::max(1.0, std::abs(lo.lambda));
@@ -32,8 +32,7 @@ namespace rodnet
           correct(lo, Constraint{&lo.t_u, lo.t_lambda, s_mid}, u, lambda);
         if (!result.converged)
           throw SolverFailure("locating the bifurcation near load factor " +
-                              std::to_string(lambda) +
-                              " failed: " + result.failure);
+                              number(lambda) + " failed: " + result.failure);
         model.assemble(u, lambda, nullptr, &tangent);
         if (tangent_inertia(tangent, model.constraints()).negative ==
             lo.negative)
@@ -74,15 +73,15 @@ namespace rodnet
       v = uniform(random);
     for (unsigned int k = 0; k < 6; ++k)
       {
-        x                 = factorization.solve(x);
-        const double norm = std::sqrt(
-          std::inner_product(x.begin(), x.end(), x.begin(), 0.0));
+        x = factorization.solve(x);
+        const double norm =
+          std::sqrt(std::inner_product(x.begin(), x.end(), x.begin(), 0.0));
         for (double &v : x)
           v /= norm;
       }
     // A fixed sign: the largest entry positive.
-    const auto largest = std::max_element(
-      x.begin(), x.end(), [](double a, double b) {
+    const auto largest =
+      std::max_element(x.begin(), x.end(), [](double a, double b) {
         return std::abs(a) < std::abs(b);
       });
     const double sign = *largest < 0 ? -1 : 1;
@@ -95,7 +94,7 @@ namespace rodnet
     phi.add(-along, p.t_u);
     const double phi_lambda = -along * p.t_lambda;
     const double norm = std::sqrt(dot_w(phi, phi) + phi_lambda * phi_lambda);
-    p.t_u = phi;
+    p.t_u             = phi;
     p.t_u /= norm;
     p.t_lambda = phi_lambda / norm;
   }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace rodnet
 {
@@ -32,11 +34,11 @@ namespace rodnet
   ArclengthContinuation::ArclengthContinuation(RodModel         &model,
                                                const Parameters &parameters,
                                                std::ostream     *log)
-    : model(model)
-    , parameters(parameters)
-    , log(log)
-    , criterion(model)
-    , strains(model, parameters.strain_limits)
+      : model(model)
+      , parameters(parameters)
+      , log(log)
+      , criterion(model)
+      , strains(model, parameters.strain_limits)
   {
     model.initialize_matrix(tangent);
     weights             = model.create_vector();
@@ -97,8 +99,8 @@ namespace rodnet
                                  double           &lambda)
   {
     JudgedResult result;
-    VectorType   r = model.create_vector(), r_lambda = r, fixed_rate = r,
-               a = r, b = r, change = r;
+    VectorType   r = model.create_vector(), r_lambda = r, fixed_rate = r, a = r,
+               b = r, change = r;
     const auto constraint_value = [&]() {
       change = u;
       change -= base.u;
@@ -123,9 +125,9 @@ namespace rodnet
         for (result.iterations = 0;; ++result.iterations)
           {
             model.assemble(u, lambda, &r, &tangent);
-            result.residual     = criterion.norms(u, r);
+            result.residual      = criterion.norms(u, r);
             result.residual_norm = r.l2_norm();
-            const double g      = constraint_value();
+            const double g       = constraint_value();
             if (!std::isfinite(result.residual_norm) || !std::isfinite(g))
               {
                 result.failure = "the residual is not finite";
@@ -144,8 +146,7 @@ namespace rodnet
                   "no convergence in " +
                   std::to_string(parameters.max_iterations) +
                   " corrector iterations (" +
-                  ResidualCriterion::describe(result.residual, tolerance) +
-                  ")";
+                  ResidualCriterion::describe(result.residual, tolerance) + ")";
                 return result;
               }
             // Block elimination of the bordered system: K a = -R,
@@ -157,10 +158,10 @@ namespace rodnet
             factorization->solve(r_lambda, b);
             double dlambda = -g / constraint.n_lambda;
             if (constraint.n_u)
-              dlambda = -(g + dot_w(*constraint.n_u, a)) /
-                        (constraint.n_lambda +
-                         dot_w(*constraint.n_u, fixed_rate) -
-                         dot_w(*constraint.n_u, b));
+              dlambda =
+                -(g + dot_w(*constraint.n_u, a)) /
+                (constraint.n_lambda + dot_w(*constraint.n_u, fixed_rate) -
+                 dot_w(*constraint.n_u, b));
             u.add(1.0, a, -dlambda, b);
             lambda += dlambda;
             model.apply_boundary_values(u, lambda);
@@ -175,10 +176,11 @@ namespace rodnet
   }
 
   void
-  ArclengthContinuation::compute_tangent(PathPoint &p, const PathPoint *previous)
+  ArclengthContinuation::compute_tangent(PathPoint       &p,
+                                         const PathPoint *previous)
   {
     VectorType r_lambda = model.create_vector(), fixed_rate = r_lambda,
-               b        = r_lambda;
+               b = r_lambda;
     load_factor_derivative(p.u, p.lambda, r_lambda, fixed_rate);
     model.assemble(p.u, p.lambda, nullptr, &tangent);
     bool solved = true;
@@ -209,10 +211,10 @@ namespace rodnet
         p.t_lambda = p.lambda - previous->lambda;
       }
     else
-      throw SolverFailure("the tangent at load factor " +
-                          std::to_string(p.lambda) +
+      throw SolverFailure("the tangent at load factor " + number(p.lambda) +
                           " is singular: the path has no direction there");
-    const double norm = std::sqrt(dot_w(p.t_u, p.t_u) + p.t_lambda * p.t_lambda);
+    const double norm =
+      std::sqrt(dot_w(p.t_u, p.t_u) + p.t_lambda * p.t_lambda);
     p.t_u /= norm;
     p.t_lambda /= norm;
     // Orient along the chord from the previous point: the tangent is
@@ -284,11 +286,11 @@ namespace rodnet
     info.iterations       = result.iterations;
     info.residual         = result.residual;
     info.load_factor_rate = q.t_lambda;
-    info.check            = check_equilibrium(
-      model, criterion, q.u, lambda, tangent, result, 1e-6);
+    info.check =
+      check_equilibrium(model, criterion, q.u, lambda, tangent, result, 1e-6);
     refuse_undetermined_state(info.check,
                               1e-3,
-                              "load factor " + std::to_string(lambda));
+                              "load factor " + number(lambda));
     info.strain = strains.evaluate(q.u);
     q.negative  = info.check.negative_eigenvalues;
     return q;
@@ -315,6 +317,14 @@ namespace rodnet
     return nearest;
   }
 
+  std::string
+  ArclengthContinuation::number(const double value)
+  {
+    std::ostringstream out;
+    out << std::setprecision(10) << value;
+    return out.str();
+  }
+
   void
   ArclengthContinuation::report(const StepInfo &info) const
   {
@@ -333,7 +343,8 @@ namespace rodnet
     if (!info.check.rounding_warning.empty())
       *log << "warning: rounding leaves the state at load factor "
            << info.load_factor << " uncertain by "
-           << info.check.rounding_uncertainty << " of the model size: "
-           << info.check.rounding_warning << std::endl;
+           << info.check.rounding_uncertainty
+           << " of the model size: " << info.check.rounding_warning
+           << std::endl;
   }
 } // namespace rodnet

@@ -75,8 +75,8 @@ namespace rodnet
       double bifurcation_tolerance = 1e-8;
       /// At a located bifurcation, follow the branch along the null
       /// vector instead of the branch the path was on.
-      bool switch_branches = true;
-      std::string  linear_solver = "auto";
+      bool         switch_branches = true;
+      std::string  linear_solver   = "auto";
       StrainLimits strain_limits;
 
       /// Declares the entries in the current subsection of @p prm.
@@ -168,7 +168,7 @@ namespace rodnet
     /// lambda = target (n_u = 0, n_lambda = 1).
     struct Constraint
     {
-      const VectorType *n_u = nullptr; ///< null: no u part
+      const VectorType *n_u      = nullptr; ///< null: no u part
       double            n_lambda = 1;
       double            length   = 0;
     };
@@ -251,7 +251,9 @@ namespace rodnet
 
     /// Numbers, times, reports and observes the converged @p p.
     void
-    finish_point(StepInfo &info, const PathPoint &p, const Observer &on_converged);
+    finish_point(StepInfo        &info,
+                 const PathPoint &p,
+                 const Observer  &on_converged);
 
     /// Makes (@p u, @p lambda) a point of the path after @p previous: the
     /// reference reset, its tangent, checks; fills @p info.
@@ -269,6 +271,10 @@ namespace rodnet
 
     void
     report(const StepInfo &info) const;
+
+    /// @p value in the shortest form that keeps 10 digits, for messages.
+    static std::string
+    number(double value);
 
     RodModel                 &model;
     Parameters                parameters;

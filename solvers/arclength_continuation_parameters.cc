@@ -51,9 +51,9 @@ namespace rodnet
   ArclengthContinuation::Parameters::parse_parameters(
     const dealii::ParameterHandler &prm)
   {
-    initial_step = prm.get_double("Initial step");
-    max_step     = prm.get_double("Maximum step");
-    min_step     = prm.get_double("Minimum step");
+    initial_step                    = prm.get_double("Initial step");
+    max_step                        = prm.get_double("Maximum step");
+    min_step                        = prm.get_double("Minimum step");
     const std::vector<double> range = dealii::Utilities::string_to_double(
       dealii::Utilities::split_string_list(prm.get("Load factor range")));
     lower_limit = range[0];

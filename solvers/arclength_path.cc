@@ -62,9 +62,9 @@ namespace rodnet
   }
 
   void
-  ArclengthContinuation::finish_point(StepInfo         &info,
-                                      const PathPoint  &p,
-                                      const Observer   &on_converged)
+  ArclengthContinuation::finish_point(StepInfo        &info,
+                                      const PathPoint &p,
+                                      const Observer  &on_converged)
   {
     info.step      = n_points++;
     info.branch    = branch;
@@ -87,11 +87,10 @@ namespace rodnet
 
     // The start: the equilibrium at load factor 0 nearest to u.
     PathPoint origin;
-    origin.u          = u;
-    origin.state      = model.state();
-    double       zero = 0;
-    JudgedResult result =
-      correct(origin, Constraint{nullptr, 1, 0}, u, zero);
+    origin.u            = u;
+    origin.state        = model.state();
+    double       zero   = 0;
+    JudgedResult result = correct(origin, Constraint{nullptr, 1, 0}, u, zero);
     if (!result.converged)
       throw SolverFailure("no equilibrium at load factor 0 from the start: " +
                           result.failure);
@@ -106,14 +105,15 @@ namespace rodnet
         if (n_points > parameters.max_steps)
           throw SolverFailure(
             "the path did not leave the load factors [" +
-            std::to_string(parameters.lower_limit) + ", " +
-            std::to_string(parameters.upper_limit) + "] within " +
+            number(parameters.lower_limit) + ", " +
+            number(parameters.upper_limit) + "] within " +
             std::to_string(parameters.max_steps) +
-            " points (\"Max steps\"); it stands at load factor " +
-            std::to_string(p.lambda));
+            " points (entry \"Solver/Continuation/Max points\"); it stands "
+            "at load factor " +
+            number(p.lambda));
         VectorType next   = p.u;
         double     lambda = 0, ds_taken = ds;
-        info              = StepInfo();
+        info               = StepInfo();
         const bool stepped = step(p, ds, next, lambda, result);
         const auto target =
           stepped ? crossed_target(p.lambda, lambda) : std::nullopt;
@@ -123,10 +123,9 @@ namespace rodnet
             ds /= 2;
             if (ds < parameters.min_step)
               throw SolverFailure(
-                "the continuation step from load factor " +
-                std::to_string(p.lambda) +
-                " failed down to the smallest step length (\"Minimum "
-                "step\"): " +
+                "the continuation step from load factor " + number(p.lambda) +
+                " failed down to the smallest step length (entry \"Solver/"
+                "Continuation/Minimum step\"): " +
                 result.failure);
             continue;
           }
@@ -141,8 +140,7 @@ namespace rodnet
             if (log != nullptr)
               *log << "limit point at load factor " << std::setprecision(10)
                    << passed_limit_points.back() << std::setprecision(6)
-                   << " (parabola through the points around it)"
-                   << std::endl;
+                   << " (parabola through the points around it)" << std::endl;
           }
         else if (q.negative != p.negative && !just_switched)
           {

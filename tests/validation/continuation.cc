@@ -10,17 +10,16 @@
 //    J. Appl. Mech. 42, 894-896): 215 degrees, clamped at one end, hinged
 //    at the other, a dead point load at the apex; the limit load
 //    P R^2 / EI = 8.97, passed with the snap-back that follows it.
-#include <common/elastica_exact.h>
-
 #include <deal.II/base/parameter_handler.h>
 
+#include <common/elastica_exact.h>
 #include <io/scene.h>
 #include <solvers/arclength_continuation.h>
 
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <gtest/gtest.h>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,8 +45,8 @@ namespace
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
     prm.parse_input_from_string(prm_text);
-    const Scene scene(prm);
-    const auto  model = scene.build_model();
+    const Scene           scene(prm);
+    const auto            model = scene.build_model();
     ArclengthContinuation solver(*model, scene.continuation);
     VectorType            u = model->create_vector();
     Path                  path;
@@ -122,8 +121,8 @@ namespace
   TEST(Continuation, ElasticaTipsOnTheBuckledBranch)
   {
     // Errors at N = 100, 200, 400: 3.4e-4, 8.6e-5, 2.3e-5 (N^-2).
-    const unsigned int n    = 400;
-    const Path         path = follow(elastica_continuation(n), {n});
+    const unsigned int n       = 400;
+    const Path         path    = follow(elastica_continuation(n), {n});
     unsigned int       checked = 0;
     for (std::size_t i = 0; i < path.points.size(); ++i)
       for (const double P : {2.5, 3.0, 4.0, 5.0, 7.5, 10.0, 20.0})
@@ -169,8 +168,8 @@ namespace
         folds += p.kind == ArclengthContinuation::PointKind::limit_point;
         EXPECT_EQ(p.check.stable, folds != 1) << "step " << p.step;
       }
-    const double apex_y = 0.75 * path.positions.back()[0][1] +
-                          0.25 * path.positions.back()[1][1];
+    const double apex_y =
+      0.75 * path.positions.back()[0][1] + 0.25 * path.positions.back()[1][1];
     EXPECT_LT(apex_y, -100 * std::sin(17.5 * M_PI / 180));
   }
 } // namespace
