@@ -33,9 +33,7 @@ namespace rodnet
         if (!result.converged)
           throw SolverFailure("locating the bifurcation near load factor " +
                               number(lambda) + " failed: " + result.failure);
-        model.assemble(u, lambda, nullptr, &tangent);
-        if (tangent_inertia(tangent, model.constraints()).negative ==
-            lo.negative)
+        if (negative_eigenvalues(model, u, lambda, tangent) == lo.negative)
           {
             s_lo      = s_mid;
             lambda_lo = lambda;

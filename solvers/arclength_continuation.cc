@@ -72,6 +72,14 @@ namespace rodnet
   }
 
   void
+  ArclengthContinuation::project_out(VectorType                    &v,
+                                     const std::vector<VectorType> &modes) const
+  {
+    for (const VectorType &m : modes)
+      v.add(-dot_w(m, v), m);
+  }
+
+  void
   ArclengthContinuation::load_factor_derivative(const VectorType &u,
                                                 const double      lambda,
                                                 VectorType       &r_lambda,
@@ -156,6 +164,10 @@ namespace rodnet
             r *= -1;
             factorization->solve(r, a);
             factorization->solve(r_lambda, b);
+            // Along a symmetry the tangent is singular and the residual
+            // does not change: those components are rounding, left out.
+            project_out(a, base.symmetries);
+            project_out(b, base.symmetries);
             double dlambda = -g / constraint.n_lambda;
             if (constraint.n_u)
               dlambda =
@@ -200,6 +212,7 @@ namespace rodnet
       {
         // du/dlambda: the fixed DoFs' rate, and K^-1 (-R_lambda) on the
         // free ones (b is zero at the fixed rows).
+        project_out(b, p.symmetries);
         p.t_u = fixed_rate;
         p.t_u -= b;
         p.t_lambda = 1;
@@ -280,6 +293,17 @@ namespace rodnet
     q.lambda = lambda;
     model.reset_reference(q.u);
     q.state = model.state();
+    for (VectorType &m : symmetry_modes(model, q.u, lambda))
+      {
+        // Gram-Schmidt in the W inner product.
+        project_out(m, q.symmetries);
+        const double norm = std::sqrt(dot_w(m, m));
+        if (norm > 1e-8)
+          {
+            m /= norm;
+            q.symmetries.push_back(std::move(m));
+          }
+      }
     compute_tangent(q, previous);
     info.load_factor      = lambda;
     info.arclength        = q.s;

@@ -159,6 +159,9 @@ namespace rodnet
       VectorType   t_u;
       double       t_lambda = 0;
       unsigned int negative = 0;
+      /// The symmetry modes at the point (symmetry_modes()), W-orthonormal:
+      /// the tangent is singular along them, and steps leave them out.
+      std::vector<VectorType> symmetries;
       /// Set once the point is accepted (ModelState has no empty value).
       std::optional<ModelState> state;
     };
@@ -194,6 +197,10 @@ namespace rodnet
                            double            lambda,
                            VectorType       &r_lambda,
                            VectorType       &fixed_rate);
+
+    /// Removes from @p v its W-projection on the W-orthonormal @p modes.
+    void
+    project_out(VectorType &v, const std::vector<VectorType> &modes) const;
 
     /// W inner product of two DoF vectors.
     double

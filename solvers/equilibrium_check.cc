@@ -1,12 +1,80 @@
 #include <solvers/equilibrium_check.h>
+#include <solvers/free_motions.h>
 #include <solvers/stability.h>
 #include <solvers/static_solver.h>
 
+#include <Eigen/Dense>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
 namespace rodnet
 {
+  namespace
+  {
+    /**
+     * The negative eigenvalues of the tangent of @p factorization (with
+     * @p inertia) on the complement of the symmetry modes of @p model at
+     * (@p u, @p load_factor). For the bordered matrix B = [K M; M^T 0]
+     * with the k modes M, Haynsworth's inertia additivity gives
+     * In(B) = In(K) + In(-M^T K^-1 M), and B has the inertia of K on the
+     * complement of M plus k positive and k negative eigenvalues: so
+     * n_-(K on M-perp) = n_-(K) + n_+(M^T K^-1 M) - k. A mode's own
+     * eigenvalue is rounding of either sign; this count is free of it.
+     * Only where the plain count has a negative eigenvalue to remove, and
+     * no zero pivot (where K^-1 M does not exist).
+     */
+    unsigned int
+    negative_beside_symmetries(const RodModel                 &model,
+                               const VectorType               &u,
+                               const double                    load_factor,
+                               const ConstrainedFactorization &factorization,
+                               const Inertia                  &inertia)
+    {
+      if (inertia.negative == 0 || inertia.zero > 0)
+        return inertia.negative;
+      const std::vector<VectorType> modes =
+        symmetry_modes(model, u, load_factor);
+      if (modes.empty())
+        return inertia.negative;
+      const unsigned int               k = modes.size();
+      std::vector<std::vector<double>> solved;
+      for (const VectorType &m : modes)
+        {
+          const double *values = m.trilinos_vector()[0];
+          solved.push_back(
+            factorization.solve(std::vector<double>(values, values + m.size())));
+        }
+      Eigen::MatrixXd s(k, k);
+      for (unsigned int a = 0; a < k; ++a)
+        for (unsigned int b = 0; b < k; ++b)
+          {
+            double sum = 0;
+            for (global_dof_index d = 0; d < modes[a].size(); ++d)
+              sum += modes[a][d] * solved[b][d];
+            s(a, b) = sum;
+          }
+      if (!s.allFinite())
+        return inertia.negative;
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
+        (s + s.transpose()) / 2);
+      const unsigned int positive = (eigen.eigenvalues().array() > 0).count();
+      return inertia.negative + positive - k;
+    }
+  } // namespace
+
+  unsigned int
+  negative_eigenvalues(const RodModel   &model,
+                       const VectorType &u,
+                       const double      load_factor,
+                       MatrixType       &tangent)
+  {
+    model.assemble(u, load_factor, nullptr, &tangent, true);
+    const ConstrainedFactorization factorization(tangent, model.constraints());
+    return negative_beside_symmetries(
+      model, u, load_factor, factorization, factorization.inertia());
+  }
+
   EquilibriumCheck
   check_equilibrium(const RodModel          &model,
                     const ResidualCriterion &criterion,
@@ -20,7 +88,8 @@ namespace rodnet
     model.assemble(u, load_factor, &r, &tangent, true);
     const ConstrainedFactorization factorization(tangent, model.constraints());
     EquilibriumCheck               check;
-    check.negative_eigenvalues = factorization.inertia().negative;
+    check.negative_eigenvalues = negative_beside_symmetries(
+      model, u, load_factor, factorization, factorization.inertia());
     check.stable               = check.negative_eigenvalues == 0;
     if (!result.rounding_limited)
       return check;

@@ -8,6 +8,20 @@
 
 namespace rodnet
 {
+  /**
+   * The negative eigenvalues of the constrained tangent of @p model at
+   * (@p u, @p load_factor), assembled into @p tangent, from its inertia
+   * (ConstrainedFactorization::inertia()), on the complement of the
+   * symmetry modes there (symmetry_modes(): motions along which the energy
+   * does not change, whose eigenvalue is rounding of either sign), so that
+   * the buckled elastica with EI1 = EI2 counts as stable.
+   */
+  unsigned int
+  negative_eigenvalues(const RodModel   &model,
+                       const VectorType &u,
+                       double            load_factor,
+                       MatrixType       &tangent);
+
   /// What the solvers check at a converged equilibrium besides its residual.
   struct EquilibriumCheck
   {
@@ -26,7 +40,8 @@ namespace rodnet
   /**
    * Checks the equilibrium @p u at @p load_factor that the solve @p result
    * accepted: one sparse LDL^T of the constrained tangent (assembled into
-   * @p tangent) gives its inertia (ConstrainedFactorization::inertia()),
+   * @p tangent) gives its inertia (negative_eigenvalues(): symmetry modes
+   * do not count),
    * and, where @p result was rounding-limited, the Newton correction of its
    * residual, which may not exceed @p uncertainty_limit without a warning
    * (ResidualCriterion::rounding_hint()).

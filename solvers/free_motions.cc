@@ -12,7 +12,29 @@ namespace rodnet
   namespace
   {
     using Kind = DofRoles::Kind;
-    using Row  = Eigen::Matrix<double, 1, 6>;
+    using Row  = Eigen::RowVectorXd;
+    /// Candidates of a rigid motion: translation t, rotation w L.
+    constexpr int rigid_columns = 6;
+    /// With the turn of every material frame of a rod about its tangents
+    /// (its twists all change alike), a symmetry of an isotropic rod.
+    constexpr int turn_columns = 7;
+
+    /// Largest energy (whitened: against each family's own stiffness along
+    /// the motion) of a motion that counts as free: at an unstressed state
+    /// a rigid motion meets rounding, 1e-17 in tests/solvers/free_motions;
+    /// one that a family resists meets 0.36 to 0.5.
+    constexpr double free_tolerance = 1e-10;
+    /// Largest second variation of the potential along a symmetry, per
+    /// unit angle of the motion squared, against twice the stored energy
+    /// of its part (symmetries_of()). The turned buckled column with
+    /// EI1 = EI2, a continuum symmetry that the discretization breaks,
+    /// meets at most 4.6e-6, 2e-10, 1e-8, 1.3e-8 and 3.8e-8 of it at N = 5,
+    /// 10, 20, 40 and 100 segments; a motion that the material or the
+    /// loads resist meets their energy scale: turned, a section with EI2 =
+    /// 1.01 EI1 meets 0.02 to 0.24, about 2 (EI2 - EI1) / EI1; a pendulum
+    /// turned against gravity its weight times its length against the
+    /// strain energy of its tension.
+    constexpr double symmetry_tolerance = 1e-4;
 
     /// Connected parts: the rods joined through junctions, by union-find.
     std::vector<unsigned int>
@@ -35,12 +57,16 @@ namespace rodnet
     }
 
     /// The upper triangle R of a QR factorization of the stacked rows,
-    /// kept 6 x 6 however many rows come in, so that the small singular
-    /// values of the constraint matrix stay accurate (A^T A would square
-    /// them into rounding).
+    /// kept width x width however many rows come in, so that the small
+    /// singular values of the constraint matrix stay accurate (A^T A would
+    /// square them into rounding).
     class StackedRows
     {
     public:
+      explicit StackedRows(const int width)
+        : r(Eigen::MatrixXd::Zero(width, width))
+      {}
+
       void
       add(const Row &row)
       {
@@ -63,17 +89,18 @@ namespace rodnet
       {
         if (pending.empty())
           return;
-        Eigen::MatrixXd stack(6 + pending.size(), 6);
-        stack.topRows(6) = r;
+        const int       width = r.cols();
+        Eigen::MatrixXd stack(width + pending.size(), width);
+        stack.topRows(width) = r;
         for (unsigned int k = 0; k < pending.size(); ++k)
-          stack.row(6 + k) = pending[k];
+          stack.row(width + k) = pending[k];
         pending.clear();
         const Eigen::HouseholderQR<Eigen::MatrixXd> qr(stack);
-        r = qr.matrixQR().topRows(6).triangularView<Eigen::Upper>();
+        r = qr.matrixQR().topRows(width).triangularView<Eigen::Upper>();
       }
 
       /// Zero rows until the first reduction: they change nothing.
-      Eigen::MatrixXd  r = Eigen::MatrixXd::Zero(6, 6);
+      Eigen::MatrixXd  r;
       std::vector<Row> pending;
     };
 
@@ -211,8 +238,12 @@ namespace rodnet
       /// Position and name of each held vertex (to name a point on an
       /// axis).
       std::vector<std::pair<Vector3, std::string>> held;
-      /// The free rigid motions: orthonormal columns (t, w length).
+      /// The free motions: orthonormal columns (t, w length[, turn
+      /// length]).
       Eigen::MatrixXd motions;
+      /// Whether its candidates include the turn of the material frames:
+      /// a single rod without junctions, when symmetries are sought.
+      bool turns = false;
     };
 
     /// The parts of the network at @p u, in the order of their union-find
@@ -313,7 +344,7 @@ namespace rodnet
                  const Vector3         &center,
                  const double           length)
     {
-      Row row = Row::Zero();
+      Row row = Row::Zero(rigid_columns);
       switch (roles.kind(d))
         {
           case Kind::position:
@@ -322,7 +353,7 @@ namespace rodnet
                 model.configuration().position(u, roles.owner(d));
               const Vector3 e = Vector3::Unit(roles.component(d));
               row.head<3>()   = e.transpose();
-              row.tail<3>()   = (x - center).cross(e).transpose() / length;
+              row.segment<3>(3) = (x - center).cross(e).transpose() / length;
               break;
             }
           case Kind::twist:
@@ -334,7 +365,7 @@ namespace rodnet
                 model.configuration().position(u,
                                                chain[(k + 1) % chain.size()]) -
                 model.configuration().position(u, chain[k]);
-              row.tail<3>() = tangent.normalized().transpose();
+              row.segment<3>(3) = tangent.normalized().transpose();
               break;
             }
           default:
@@ -345,10 +376,30 @@ namespace rodnet
                 v[c] = u[model.layout().rotation_dof(j, c + 1)];
               const Eigen::Matrix3d turn = Eigen::Matrix3d::Identity() -
                                            cross_matrix(v) + v * v.transpose();
-              row.tail<3>() = turn.row(roles.component(d) - 1);
+              row.segment<3>(3) = turn.row(roles.component(d) - 1);
               break;
             }
         }
+      return row;
+    }
+
+    /// The row of DoF @p d of part @p part (rigid_change()), with the turn
+    /// column where the part turns: a twist changes by the turn itself.
+    Row
+    candidate_change(const RodModel        &model,
+                     const DofRoles        &roles,
+                     const VectorType      &u,
+                     const global_dof_index d,
+                     const Part            &part)
+    {
+      const Row rigid =
+        rigid_change(model, roles, u, d, part.center, part.length);
+      if (!part.turns)
+        return rigid;
+      Row row = Row::Zero(turn_columns);
+      row.head(rigid_columns) = rigid;
+      if (roles.kind(d) == Kind::twist)
+        row[rigid_columns] = 1;
       return row;
     }
 
@@ -363,7 +414,8 @@ namespace rodnet
                                const unsigned int               p,
                                Part                            &part)
     {
-      StackedRows rows;
+      const int   width = part.turns ? turn_columns : rigid_columns;
+      StackedRows rows(width);
       for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
         {
           if (roles.kind(d) == Kind::inert ||
@@ -374,7 +426,7 @@ namespace rodnet
             part.held.emplace_back(
               model.configuration().position(u, roles.owner(d)),
               roles.vertex_name(roles.owner(d)));
-          rows.add(rigid_change(model, roles, u, d, part.center, part.length));
+          rows.add(candidate_change(model, roles, u, d, part));
         }
 
       const Eigen::JacobiSVD<Eigen::MatrixXd> svd   = rows.svd();
@@ -383,12 +435,13 @@ namespace rodnet
       for (int k = 0; k < sigma.size(); ++k)
         if (sigma[k] > 1e-9 * std::max(sigma[0], 1.0))
           ++rank;
-      return svd.matrixV().rightCols(6 - rank);
+      return svd.matrixV().rightCols(width - rank);
     }
 
     /**
      * Of the motions (columns of @p motions, DoF vectors M), those along
-     * which the tangent is singular: the null space of @p energy, the sum
+     * which the tangent is singular to @p tolerance: the null space of
+     * @p energy, the sum
      * of the families' M^T K_f M, measured against @p weight, the sum of
      * their M^T |diag K_f| M (the energy the motion would meet if each of
      * its DoFs moved alone), each family's pair in units of its own
@@ -399,7 +452,8 @@ namespace rodnet
     Eigen::MatrixXd
     null_motions(const Eigen::MatrixXd &motions,
                  const Eigen::MatrixXd &energy,
-                 const Eigen::MatrixXd &weight)
+                 const Eigen::MatrixXd &weight,
+                 const double           tolerance)
     {
       // An energy that does not resist a rigid motion m (one invariant
       // under it, at an unstressed state) has K m = 0 but for the rounding
@@ -408,7 +462,6 @@ namespace rodnet
       // part of its own weight (0.36 to 0.5 there and in
       // validation/elastic_foundation), however soft it is against the
       // rest, since every family is measured in its own units.
-      const double                                         tolerance = 1e-10;
       const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> weights(weight);
       const double    heaviest = weights.eigenvalues().maxCoeff();
       Eigen::MatrixXd unheld(motions.cols(), 0), whitened(motions.cols(), 0);
@@ -436,9 +489,10 @@ namespace rodnet
       if (unheld.cols() == motions.cols())
         return motions;
       if (unheld.cols() == 0)
-        return Eigen::MatrixXd(6, 0);
+        return Eigen::MatrixXd(motions.rows(), 0);
       const Eigen::HouseholderQR<Eigen::MatrixXd> qr(motions * unheld);
-      return qr.householderQ() * Eigen::MatrixXd::Identity(6, unheld.cols());
+      return qr.householderQ() *
+             Eigen::MatrixXd::Identity(motions.rows(), unheld.cols());
     }
 
     /// The DoF vectors of the parts' motions: column j holds the j-th
@@ -467,22 +521,24 @@ namespace rodnet
             continue;
           part_of_dof[d] = p;
           values.row(d).head(part.motions.cols()) =
-            rigid_change(model, roles, u, d, part.center, part.length) *
-            part.motions / change_unit(roles, d, part.length);
+            candidate_change(model, roles, u, d, part) * part.motions /
+            change_unit(roles, d, part.length);
         }
       return values;
     }
 
     /// Adds, per part, M^T K_s M to @p energy and M^T |diag K_s| M to
     /// @p weight for every stencil s of @p family, its Hessian K_s at
-    /// @p state and M the motions of the part (@p values) at its DoFs.
+    /// @p state and M the motions of the part (@p values) at its DoFs, and
+    /// |E_s| to @p stored if given.
     void
     add_family_grams(const ElementFamily             &family,
                      const StencilState              &state,
                      const Eigen::MatrixXd           &values,
                      const std::vector<unsigned int> &part_of_dof,
                      std::vector<Eigen::MatrixXd>    &energy,
-                     std::vector<Eigen::MatrixXd>    &weight)
+                     std::vector<Eigen::MatrixXd>    &weight,
+                     std::vector<double>             *stored = nullptr)
     {
       const unsigned int            none = energy.size();
       std::vector<global_dof_index> dofs;
@@ -514,6 +570,8 @@ namespace rodnet
                 if (part_of_dof[dofs[a]] == p)
                   m.row(a) = values.row(dofs[a]).head(m.cols());
               energy[p] += m.transpose() * hessian * m;
+              if (stored != nullptr)
+                (*stored)[p] += std::abs(local.energy);
               weight[p] +=
                 m.transpose() * hessian.diagonal().cwiseAbs().asDiagonal() * m;
             }
@@ -578,8 +636,90 @@ namespace rodnet
         }
       for (unsigned int p = 0; p < parts.size(); ++p)
         if (parts[p].motions.cols() > 0)
-          parts[p].motions =
-            null_motions(parts[p].motions, energy[p], weight[p]);
+          parts[p].motions = null_motions(parts[p].motions,
+                                          energy[p],
+                                          weight[p],
+                                          free_tolerance);
+    }
+
+    /// The largest change of @p mode in angles: positions over
+    /// @p length, twists in rad, quaternion components twice (they turn by
+    /// half the angle).
+    double
+    amplitude(const DofRoles        &roles,
+              const Eigen::VectorXd &mode,
+              const double           length)
+    {
+      double largest = 0;
+      for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+        largest = std::max(largest,
+                           std::abs(mode[d]) * change_unit(roles, d, 1.0) /
+                             (roles.kind(d) == Kind::position ? length : 1.0));
+      return largest;
+    }
+
+    /**
+     * Of the motions the supports leave to each part (part.motions), the
+     * combinations along which the potential at (@p u, @p load_factor)
+     * does not change: the eigenvectors c of A = sum_s M^T K_s M (every
+     * stencil's Hessian) whose eigenvalue, per unit angle of the motion
+     * squared, is at most symmetry_tolerance times twice the stored energy
+     * of the part. As DoF vectors; those that move nothing are dropped.
+     */
+    std::vector<VectorType>
+    symmetries_of(const RodModel                  &model,
+                  const DofRoles                  &roles,
+                  const VectorType                &u,
+                  const double                     load_factor,
+                  const std::vector<unsigned int> &part_of_rod,
+                  const std::vector<Part>         &parts)
+    {
+      std::vector<unsigned int> part_of_dof;
+      const Eigen::MatrixXd     values =
+        motion_vectors(model, roles, u, part_of_rod, parts, part_of_dof);
+      const StencilState           state{u,
+                               model.configuration(),
+                               model.internal_variables(),
+                               model.time_step(),
+                               load_factor};
+      std::vector<Eigen::MatrixXd> energy, weight;
+      for (const Part &part : parts)
+        energy.push_back(
+          Eigen::MatrixXd::Zero(part.motions.cols(), part.motions.cols()));
+      weight = energy;
+      std::vector<double> stored(parts.size(), 0.0);
+      for (const auto &family : model.element_families())
+        add_family_grams(
+          *family, state, values, part_of_dof, energy, weight, &stored);
+
+      std::vector<VectorType> modes;
+      for (unsigned int p = 0; p < parts.size(); ++p)
+        {
+          const int n = parts[p].motions.cols();
+          if (n == 0)
+            continue;
+          const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
+            (energy[p] + energy[p].transpose()) / 2);
+          for (int k = 0; k < n; ++k)
+            {
+              Eigen::VectorXd mode = Eigen::VectorXd::Zero(roles.n_dofs());
+              for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+                if (part_of_dof[d] == p)
+                  mode[d] = values.row(d).head(n) * eigen.eigenvectors().col(k);
+              const double angle = amplitude(roles, mode, parts[p].length);
+              if (angle < 1e-9 ||
+                  std::abs(eigen.eigenvalues()[k]) >
+                    symmetry_tolerance * 2 * stored[p] * angle * angle)
+                continue;
+              VectorType vector = model.create_vector();
+              for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+                if (mode[d] != 0)
+                  vector[d] = mode[d];
+              vector.compress(dealii::VectorOperation::insert);
+              modes.push_back(std::move(vector));
+            }
+        }
+      return modes;
     }
   } // namespace
 
@@ -607,5 +747,37 @@ namespace rodnet
     return "the structure is not held: " + join_motions(free_parts) +
            "; add supports (Supports/Clamped ends, Pinned vertices or Fixed "
            "components) that stop these motions";
+  }
+
+  std::vector<VectorType>
+  symmetry_modes(const RodModel   &model,
+                 const VectorType &u,
+                 const double      load_factor)
+  {
+    const DofRoles            roles(model);
+    std::vector<unsigned int> part_of_rod;
+    std::vector<Part>         parts = parts_at(model, u, part_of_rod);
+    std::vector<bool>         at_junction(model.network().rods().size());
+    for (const Junction &j : model.network().junctions())
+      {
+        // A rotation handle inside a rod (no rod end) belongs to no part
+        // here; such models are not searched.
+        if (j.ends.empty())
+          return {};
+        for (const RodEnd &end : j.ends)
+          at_junction[end.rod] = true;
+      }
+    bool any = false;
+    for (unsigned int p = 0; p < parts.size(); ++p)
+      {
+        parts[p].turns =
+          parts[p].rods.size() == 1 && !at_junction[parts[p].rods[0]];
+        parts[p].motions =
+          motions_the_supports_leave(model, roles, u, part_of_rod, p, parts[p]);
+        any = any || parts[p].motions.cols() > 0;
+      }
+    if (!any)
+      return {};
+    return symmetries_of(model, roles, u, load_factor, part_of_rod, parts);
   }
 } // namespace rodnet

@@ -4,6 +4,7 @@
 #include <core/rod_model.h>
 
 #include <string>
+#include <vector>
 
 namespace rodnet
 {
@@ -42,6 +43,26 @@ namespace rodnet
    */
   std::string
   describe_free_motions(const RodModel &model, const VectorType &u);
+
+  /**
+   * The symmetry modes of @p model at the equilibrium @p u and
+   * @p load_factor: motions along which the total potential does not
+   * change, so that the tangent is singular along them at every point of
+   * a branch, not only at a bifurcation. Candidates are, per connected
+   * part, the rigid motions of describe_free_motions() and, for a single
+   * rod without junctions, the turn of all its material frames about
+   * their tangents (its twists change alike), combined so that no fixed
+   * DoF moves; kept where the Hessians of every family at (@p u,
+   * @p load_factor), each in its own units, do not resist them. The
+   * buckled elastica with EI1 = EI2 has one: its plane turns about the
+   * load axis while its frames turn back at the clamp. Combinations that
+   * move no DoF (a straight rod about its line) are dropped. DoF vectors,
+   * zero at fixed DoFs.
+   */
+  std::vector<VectorType>
+  symmetry_modes(const RodModel   &model,
+                 const VectorType &u,
+                 double            load_factor);
 } // namespace rodnet
 
 #endif

@@ -199,8 +199,7 @@ namespace rodnet
   StaticSolver::negative_eigenvalues(const VectorType &u,
                                      const double      load_factor)
   {
-    model.assemble(u, load_factor, nullptr, &tangent, true);
-    return tangent_inertia(tangent, model.constraints()).negative;
+    return rodnet::negative_eigenvalues(model, u, load_factor, tangent);
   }
 
   void

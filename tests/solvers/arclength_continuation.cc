@@ -8,6 +8,7 @@
 // 0 is refused.
 #include <common/rod_models.h>
 #include <solvers/arclength_continuation.h>
+#include <solvers/free_motions.h>
 #include <solvers/static_solver.h>
 
 #include <cmath>
@@ -23,14 +24,14 @@ namespace
   /// EA = 1e5), clamped at its start, under the end load @p P along -x at
   /// load factor 1.
   std::unique_ptr<RodModel>
-  loaded_column(const double P)
+  loaded_column(const double P, const double EI2 = 2)
   {
     auto model = rodnet::testing::elastic_model(
       rodnet::testing::straight_network(20,
                                         Vector3(0, 0, 0),
                                         Vector3(1, 0, 0),
                                         true),
-      RodStiffness{1e5, 1, 2, 1});
+      RodStiffness{1e5, 1, EI2, 1});
     model->clamp_end("clamp", 0, true);
     model->add_point_force(model->network().n_vertices() - 1,
                            Vector3(-P, 0, 0));
@@ -104,13 +105,77 @@ namespace
                        EXPECT_TRUE(info.check.stable);
                        last_deflection = model->position(x, tip).norm();
                        if (info.branch == 1)
-                         EXPECT_GT(std::hypot(model->position(x, tip)[1],
-                                              model->position(x, tip)[2]),
-                                   0.01);
+                         {
+                           EXPECT_GT(std::hypot(model->position(x, tip)[1],
+                                                model->position(x, tip)[2]),
+                                     0.01);
+                         }
                      });
     EXPECT_EQ(landed, (std::vector<double>{2.6, 2.8}));
     ASSERT_EQ(continuation.bifurcations().size(), 1u);
     EXPECT_LT(last_deflection, 1); // buckled: the tip came closer
+  }
+
+  TEST(ArclengthContinuation, IsotropicColumnBucklesStably)
+  {
+    // EI1 = EI2: the buckled column's plane may turn about the load axis
+    // (one symmetry mode, whose eigenvalue is rounding of either sign). The
+    // path switches at the bifurcation (two modes cross there), counts
+    // every buckled point stable, and keeps its plane: the mode is left out
+    // of the steps.
+    const auto            model = loaded_column(1, 1);
+    ArclengthContinuation continuation(*model, up_to(3));
+    VectorType            u   = model->create_vector();
+    const unsigned int    tip = model->network().n_vertices() - 1;
+    std::vector<double>   planes;
+    continuation.run(u,
+                     [&](const ArclengthContinuation::StepInfo &info,
+                         const VectorType                      &x) {
+                       EXPECT_TRUE(info.check.stable)
+                         << "load factor " << info.load_factor;
+                       const Vector3 p = model->position(x, tip);
+                       if (info.branch == 1)
+                         planes.push_back(std::atan2(p[2], p[1]));
+                     });
+    ASSERT_EQ(continuation.bifurcations().size(), 1u);
+    ASSERT_GT(planes.size(), 3u);
+    for (const double plane : planes)
+      EXPECT_NEAR(plane, planes.front(), 1e-6);
+    // At the last point (load factor 3): one symmetry mode, none with
+    // EI2 = 2 at the same load.
+    EXPECT_EQ(symmetry_modes(*model, u, 3).size(), 1u);
+    const auto            anisotropic = loaded_column(1, 2);
+    ArclengthContinuation other(*anisotropic, up_to(3));
+    VectorType            v = anisotropic->create_vector();
+    other.run(v,
+              [](const ArclengthContinuation::StepInfo &, const VectorType &) {
+              });
+    EXPECT_EQ(symmetry_modes(*anisotropic, v, 3).size(), 0u);
+  }
+
+  TEST(ArclengthContinuation, StraightIsotropicColumnStaysUnstable)
+  {
+    // Without the switch, the straight column past P_cr = pi^2/4 has two
+    // buckling modes (either plane) below zero; the check for symmetry
+    // modes must not hide them (a straight rod turned about its line moves
+    // no DoF: no mode there).
+    const auto                        model = loaded_column(1, 1);
+    ArclengthContinuation::Parameters p     = up_to(3);
+    p.switch_branches                       = false;
+    ArclengthContinuation continuation(*model, p);
+    VectorType            u    = model->create_vector();
+    unsigned int          past = 0;
+    continuation.run(u,
+                     [&](const ArclengthContinuation::StepInfo &info,
+                         const VectorType &) {
+                       if (info.load_factor > 2.5)
+                         {
+                           EXPECT_EQ(info.check.negative_eigenvalues, 2u);
+                           ++past;
+                         }
+                     });
+    EXPECT_GT(past, 0u);
+    EXPECT_TRUE(symmetry_modes(*model, u, 3).empty());
   }
 
   TEST(ArclengthContinuation, TooFewPointsStopWithTheirEntry)
