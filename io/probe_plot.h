@@ -19,7 +19,9 @@ namespace rodnet
    * @p units, if given, are the units of the columns after "step" (the
    * abscissa first), shown in brackets in the axis labels: "tip_y [m]".
    * The last @p unplotted columns get no panel (text, such as the status
-   * of a study's runs).
+   * of a study's runs). Where the table has a column "stable" (Newton and
+   * continuation runs), the rows where it is 0 are drawn dashed and red:
+   * unstable equilibria.
    *
    * Plotting is a convenience: if the table cannot be read, has no probe or
    * no row, or gnuplot is missing or fails, one warning line goes to

@@ -158,8 +158,12 @@ namespace rodnet
                 return result;
               }
             // Block elimination of the bordered system: K a = -R,
-            // K b = R_lambda, du = a - dlambda b.
-            load_factor_derivative(u, lambda, r_lambda, fixed_rate);
+            // K b = R_lambda, du = a - dlambda b. R_lambda is taken at the
+            // start of the corrector and kept: it is constant for dead
+            // loads and changes little over a step otherwise, and two
+            // residual assemblies per iteration would double its cost.
+            if (result.iterations == 0)
+              load_factor_derivative(u, lambda, r_lambda, fixed_rate);
             factorization->factorize();
             r *= -1;
             factorization->solve(r, a);

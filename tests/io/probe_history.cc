@@ -67,9 +67,12 @@ namespace
     std::ifstream      script("probe_history_units/probes.png.gp");
     std::ostringstream text;
     text << script.rdbuf();
+    // Newton runs record which steps are stable: unstable ones dashed.
     for (const char *label : {"set xlabel 'load factor [-]'",
                               "set ylabel 'clamp_turn [rad]'",
-                              "set ylabel 'tip_x [m]'"})
+                              "set ylabel 'tip_x [m]'",
+                              "dashtype 2",
+                              "title 'unstable'"})
       EXPECT_NE(text.str().find(label), std::string::npos)
         << label << " missing in\n"
         << text.str();

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Cost of a continuation point against DoFs: the elastica (EI2 = 2 EI1,
+# no imperfection) at N = 1e2, 1e3, 1e4 segments, followed from
+# P = 0 through its bifurcation to P = 3 B/L^2 with output points at
+# 2.6, 2.8 (Solver/Method = continuation), against the same scene by load
+# stepping to P = 3 in as many equal steps as the continuation took points
+# (Solver/Method = newton, the baseline), in turn, median of REPEATS runs.
+# Prints a markdown table: N, DoFs, points, continuation s, s per point,
+# load stepping s, s per step, ratio per point.
+# Not 1e5 segments: a single rod's tangent there has a condition number of
+# about N^4 = 1e20, so the signs of its smallest pivots are rounding and
+# no stability count (continuation's or load stepping's) means anything
+# (doc/continuation.md, "Limits").
+#
+# Usage: bench/continuation_cost.sh [RODNET_RUN] [REPEATS (3)]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+run=${1:-$root/build/release/rodnet-run}
+repeats=${2:-3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+seconds() { # runs "$@", prints its wall seconds
+  local start end
+  start=$(date +%s%N)
+  "$@" > "$work/log" 2>&1 || { cat "$work/log" >&2; exit 1; }
+  end=$(date +%s%N)
+  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.4f", (b - a) / 1e9 }'
+}
+median() { tr ' ' '\n' | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
+scene() { # N, method block
+  cat <<END
+subsection Geometry
+  set Generator = straight
+  set Segments = $1
+  set Clamp at first segment midpoint = true
+  set Director d1 = 0, 0, 1
+end
+subsection Material
+  subsection linear elastic
+    set Stiffness input = direct
+    set EA = 1e7
+    set EI1 = 1
+    set EI2 = 2
+    set GJ = 1
+  end
+end
+subsection Supports
+  set Clamped ends = start
+end
+$2
+subsection Output
+  set Write VTU = false
+  set Plot = false
+  set Probes = tip_x: position end x
+end
+END
+}
+
+echo "| N | DoFs | points | continuation s | s per point | load steps s | s per step | ratio per point |"
+echo "|---|---|---|---|---|---|---|---|"
+for n in 100 1000 10000; do
+  scene $n "subsection Loads
+  set Point forces = end: -1, 0, 0
+end
+subsection Solver
+  set Method = continuation
+  subsection Continuation
+    set Load factor range = -1, 3
+    set Output load factors = 2.6, 2.8
+    set Initial step = 0.1
+  end
+end" > "$work/cont.prm"
+  "$run" "$work/cont.prm" --output "$work/c" > "$work/c.log" 2>&1
+  points=$(($(wc -l < "$work/c/probes.csv") - 2))
+  dofs=$(sed -n 's/.*segments, \([0-9]*\) DoFs.*/\1/p' "$work/c.log" | head -1)
+  scene $n "subsection Loads
+  set Steps = $points
+  set Point forces = end: -3, 3e-6, 0
+end
+subsection Solver
+  set Method = newton
+end" > "$work/steps.prm"
+  tc=() ts=()
+  for ((k = 0; k < repeats; ++k)); do
+    tc+=("$(seconds "$run" "$work/cont.prm" --output "$work/c")")
+    ts+=("$(seconds "$run" "$work/steps.prm" --output "$work/s")")
+  done
+  c=$(echo "${tc[*]}" | median)
+  s=$(echo "${ts[*]}" | median)
+  awk -v n=$n -v d="$dofs" -v p=$points -v c=$c -v s=$s 'BEGIN {
+    printf "| %d | %s | %d | %.3f | %.4f | %.3f | %.4f | %.2f |\n",
+      n, d, p, c, c / p, s, s / p, c / s }'
+done
