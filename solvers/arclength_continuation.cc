@@ -40,6 +40,13 @@ namespace rodnet
       , criterion(model)
       , strains(model, parameters.strain_limits)
   {
+    if (model.has_internal_variables())
+      // A path of equilibria has no time: a history-dependent material
+      // would answer with an arbitrary rate.
+      throw std::invalid_argument(
+        "continuation cannot follow a material with internal variables (a "
+        "viscoelastic law): its response depends on time; use time "
+        "stepping (quasi-static or dynamic, doc/dynamics.md)");
     model.initialize_matrix(tangent);
     weights             = model.create_vector();
     const double length = model.length_scale();

@@ -119,6 +119,9 @@ namespace rodnet
     using Observer =
       std::function<void(const StepInfo &, const VectorType &solution)>;
 
+    /// Throws std::invalid_argument for a model with internal variables
+    /// (a viscoelastic material: its response depends on time, which a
+    /// path of equilibria does not have).
     ArclengthContinuation(RodModel         &model,
                           const Parameters &parameters,
                           std::ostream     *log = nullptr);

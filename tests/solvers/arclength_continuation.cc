@@ -6,7 +6,9 @@
 // exactly; after the switch the column is buckled and stable. Too few points
 // stop the run with a message naming the entry; a load factor range without
 // 0 is refused.
+#include <common/held_bar.h>
 #include <common/rod_models.h>
+#include <materials/standard_linear_solid.h>
 #include <solvers/arclength_continuation.h>
 #include <solvers/free_motions.h>
 #include <solvers/static_solver.h>
@@ -195,6 +197,26 @@ namespace
     catch (const SolverFailure &e)
       {
         EXPECT_NE(std::string(e.what()).find("Max points"), std::string::npos)
+          << e.what();
+      }
+  }
+
+  TEST(ArclengthContinuation, ViscoelasticMaterialIsRefused)
+  {
+    // A path of equilibria has no time for a rate-dependent material.
+    auto model = rodnet::testing::held_bar(
+      std::make_shared<StandardLinearSolid>(RodStiffness{1, 1, 1, 1}, 0.3, 1),
+      10,
+      Vector3(0, 0.1, 0));
+    try
+      {
+        ArclengthContinuation continuation(*model, up_to(1));
+        FAIL() << "accepted";
+      }
+    catch (const std::invalid_argument &e)
+      {
+        EXPECT_NE(std::string(e.what()).find("internal variables"),
+                  std::string::npos)
           << e.what();
       }
   }
