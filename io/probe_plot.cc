@@ -144,6 +144,34 @@ namespace rodnet
                name;
     }
 
+    /**
+     * The gnuplot command of the panel of column @p column (1-based) of
+     * @p csv_path against column 2. Where the table says which rows are
+     * stable equilibria (column @p stable_column, 0 if none), those are
+     * drawn solid and the unstable ones dashed red, as charts of load
+     * paths through buckling and snap-through are read; the key only
+     * where @p key.
+     */
+    std::string
+    plot_command(const std::string &csv_path,
+                 const int          column,
+                 const int          stable_column,
+                 const bool         key)
+    {
+      const std::string style = " with linespoints pointtype 7 pointsize 0.5";
+      const std::string data  = "plot " + quote(csv_path) + " skip 1 using 2:";
+      if (stable_column == 0)
+        return data + std::to_string(column) + style + " notitle\n";
+      const std::string y = "column(" + std::to_string(column) + ")";
+      const std::string s =
+        "column(" + std::to_string(stable_column) + ") == 0";
+      return data + "(" + s + " ? 1/0 : " + y + ")" + style +
+             (key ? " title 'stable', " : " notitle, ") + quote(csv_path) +
+             " skip 1 using 2:(" + s + " ? " + y + " : 1/0)" + style +
+             " dashtype 2 linecolor rgb '#d62728'" +
+             (key ? " title 'unstable'" : " notitle") + "\n";
+    }
+
     bool
     warn(const std::string &png_path, const std::string &reason)
     {
@@ -215,40 +243,14 @@ namespace rodnet
                    << ":" << x_range->second << "]\n";
           script << "set multiplot layout " << n_rows << "," << n_cols
                  << " title " << quote(title) << "\n";
-          // Where the table says which rows are stable equilibria, those
-          // are drawn solid and the unstable ones dashed (red), as charts
-          // of load paths through buckling and snap-through are read.
           const auto stable =
             std::find(columns.begin(), columns.end(), "stable");
+          const int stable_column =
+            stable == columns.end() ? 0 : stable - columns.begin() + 1;
           for (unsigned int p = 0; p < n_probes; ++p)
-            {
-              script << "set ylabel "
-                     << quote(axis_label(columns[p + 2], units, p + 1))
-                     << "\n";
-              const std::string y = "column(" + std::to_string(p + 3) + ")";
-              if (stable == columns.end())
-                script << "plot " << quote(csv_path) << " skip 1 using 2:"
-                       << p + 3 << " with linespoints pointtype 7 "
-                       << "pointsize 0.5 notitle\n";
-              else
-                {
-                  const std::string s =
-                    "column(" +
-                    std::to_string(stable - columns.begin() + 1) + ")";
-                  // The key once, on the first panel.
-                  const bool key = p == 0;
-                  script << "plot " << quote(csv_path) << " skip 1 using 2:("
-                         << s << " == 0 ? 1/0 : " << y
-                         << ") with linespoints pointtype 7 pointsize 0.5 "
-                         << (key ? "title 'stable', " : "notitle, ")
-                         << quote(csv_path) << " skip 1 using 2:(" << s
-                         << " == 0 ? " << y
-                         << " : 1/0) with linespoints dashtype 2 "
-                         << "pointtype 7 pointsize 0.5 linecolor rgb "
-                         << "'#d62728' "
-                         << (key ? "title 'unstable'" : "notitle") << "\n";
-                }
-            }
+            script << "set ylabel "
+                   << quote(axis_label(columns[p + 2], units, p + 1)) << "\n"
+                   << plot_command(csv_path, p + 3, stable_column, p == 0);
           script << "unset multiplot\n";
           if (!script)
             return warn(png_path,
