@@ -578,6 +578,17 @@ namespace rodnet
         }
     }
 
+    /// A zero square matrix per part, of the size of its motions.
+    std::vector<Eigen::MatrixXd>
+    zero_grams(const std::vector<Part> &parts)
+    {
+      std::vector<Eigen::MatrixXd> grams;
+      for (const Part &part : parts)
+        grams.push_back(
+          Eigen::MatrixXd::Zero(part.motions.cols(), part.motions.cols()));
+      return grams;
+    }
+
     /**
      * Keeps, of the motions the supports leave to each part, those that
      * the energy does not stop either (null_motions()), from the Hessians
@@ -604,18 +615,12 @@ namespace rodnet
                                model.internal_variables(),
                                model.time_step(),
                                0.0};
-      const auto         zero_grams = [&parts] {
-        std::vector<Eigen::MatrixXd> grams;
-        for (const Part &part : parts)
-          grams.push_back(
-            Eigen::MatrixXd::Zero(part.motions.cols(), part.motions.cols()));
-        return grams;
-      };
-      std::vector<Eigen::MatrixXd> energy = zero_grams(), weight = zero_grams();
+      std::vector<Eigen::MatrixXd> energy = zero_grams(parts),
+                                   weight = zero_grams(parts);
       for (const auto &family : model.element_families())
         {
-          std::vector<Eigen::MatrixXd> family_energy = zero_grams();
-          std::vector<Eigen::MatrixXd> family_weight = zero_grams();
+          std::vector<Eigen::MatrixXd> family_energy = zero_grams(parts);
+          std::vector<Eigen::MatrixXd> family_weight = zero_grams(parts);
           add_family_grams(*family,
                            state,
                            values,
@@ -682,11 +687,8 @@ namespace rodnet
                                model.internal_variables(),
                                model.time_step(),
                                load_factor};
-      std::vector<Eigen::MatrixXd> energy, weight;
-      for (const Part &part : parts)
-        energy.push_back(
-          Eigen::MatrixXd::Zero(part.motions.cols(), part.motions.cols()));
-      weight = energy;
+      std::vector<Eigen::MatrixXd> energy = zero_grams(parts),
+                                   weight = zero_grams(parts);
       std::vector<double> stored(parts.size(), 0.0);
       for (const auto &family : model.element_families())
         add_family_grams(
