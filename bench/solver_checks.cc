@@ -22,6 +22,7 @@
 #include <solvers/free_motions.h>
 #include <solvers/static_solver.h>
 
+#include <bench/gridshell_scene.h>
 #include <bench/options.h>
 #include <bench/timing.h>
 #include <iostream>
@@ -30,43 +31,11 @@
 
 using namespace rodnet;
 
-namespace
-{
-  /// The gridshell scene with @p cells x @p cells cells of span 1.
-  std::string
-  gridshell_scene(const unsigned int cells)
-  {
-    std::ostringstream s;
-    s << "subsection Geometry\n  set Generator = square lattice\n"
-      << "  set Cells = " << cells << ", " << cells << "\n"
-      << "  set Beam length = " << 1.0 / cells << "\n"
-      << "  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
-      << "subsection Material\n  subsection linear elastic\n"
-      << "    set Stiffness input = direct\n    set EA = 1000\n"
-      << "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
-      << "subsection Supports\n  set Prescribed displacements = ";
-    for (unsigned int j = 0; j <= cells; ++j)
-      s << (j == 0 ? "" : "; ") << "@n_0_" << j << ": x=0.1 y=0 z=0; @n_"
-        << cells << "_" << j << ": x=-0.1 y=0 z=0";
-    s << "\nend\nsubsection Loads\n  set Steps = 40\n"
-      << "  set Distributed force = 0, 0, 0.01\nend\n";
-    return s.str();
-  }
-
-  void
-  print(const std::string &what, const std::vector<double> &samples)
-  {
-    std::printf("%-28s %s s\n",
-                what.c_str(),
-                bench::format_time(bench::statistics(samples)).c_str());
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
   rodnet::MPISession mpi(argc, argv);
-  unsigned int                             cells = 12, repeats = 5;
+  unsigned int       cells = 12, repeats = 5;
   bench::parse(argc,
                argv,
                {bench::number("--cells", cells, 1),
@@ -74,7 +43,7 @@ main(int argc, char **argv)
 
   dealii::ParameterHandler prm;
   Scene::declare_parameters(prm);
-  prm.parse_input_from_string(gridshell_scene(cells));
+  prm.parse_input_from_string(bench::gridshell_scene(cells));
   const Scene               scene(prm);
   std::unique_ptr<RodModel> model = scene.build_model();
   std::printf("gridshell of %u x %u cells: %u DoFs\n",
@@ -111,39 +80,40 @@ main(int argc, char **argv)
   model->initialize_matrix(tangent);
   const ResidualCriterion criterion(*model);
   const StrainMonitor     strains(*model, StrainLimits());
-  print("residual", bench::time_repeats(repeats, [&] {
-          model->assemble(u, load_factor, &r, nullptr);
-        }));
-  print("tangent", bench::time_repeats(repeats, [&] {
-          model->assemble(u, load_factor, nullptr, &tangent);
-        }));
-  print("KLU", bench::time_repeats(repeats, [&] {
-          VectorType                             du = model->create_vector();
-          dealii::SolverControl                  control(1, 0);
-          dealii::TrilinosWrappers::SolverDirect direct(control);
-          direct.solve(tangent, du, r);
-        }));
-  print("load scale", bench::time_repeats(repeats, [&] {
-          criterion.load_scale(u, load_factor);
-        }));
-  print("noise", bench::time_repeats(repeats, [&] {
-          criterion.roundoff_noise(u, load_factor);
-        }));
+  bench::print_time("residual", bench::time_repeats(repeats, [&] {
+                      model->assemble(u, load_factor, &r, nullptr);
+                    }));
+  bench::print_time("tangent", bench::time_repeats(repeats, [&] {
+                      model->assemble(u, load_factor, nullptr, &tangent);
+                    }));
+  bench::print_time("KLU", bench::time_repeats(repeats, [&] {
+                      VectorType            du = model->create_vector();
+                      dealii::SolverControl control(1, 0);
+                      dealii::TrilinosWrappers::SolverDirect direct(control);
+                      direct.solve(tangent, du, r);
+                    }));
+  bench::print_time("load scale", bench::time_repeats(repeats, [&] {
+                      criterion.load_scale(u, load_factor);
+                    }));
+  bench::print_time("noise", bench::time_repeats(repeats, [&] {
+                      criterion.roundoff_noise(u, load_factor);
+                    }));
   JudgedResult limited;
   limited.rounding_limited = true;
   limited.noise            = criterion.roundoff_noise(u, load_factor);
   limited.scale            = criterion.load_scale(u, load_factor);
-  print("equilibrium", bench::time_repeats(repeats, [&] {
-          check_equilibrium(*model,
-                            criterion,
-                            u,
-                            load_factor,
-                            tangent,
-                            limited,
-                            1e-6);
-        }));
-  print("strains", bench::time_repeats(repeats, [&] { strains.evaluate(u); }));
-  print("free motions", bench::time_repeats(repeats, [&] {
-          describe_free_motions(*model, u);
-        }));
+  bench::print_time("equilibrium", bench::time_repeats(repeats, [&] {
+                      check_equilibrium(*model,
+                                        criterion,
+                                        u,
+                                        load_factor,
+                                        tangent,
+                                        limited,
+                                        1e-6);
+                    }));
+  bench::print_time("strains",
+                    bench::time_repeats(repeats, [&] { strains.evaluate(u); }));
+  bench::print_time("free motions", bench::time_repeats(repeats, [&] {
+                      describe_free_motions(*model, u);
+                    }));
 }

@@ -89,6 +89,15 @@ namespace rodnet
                     time.max);
       return text;
     }
+
+    /// Prints "what   median (min-max) s" of the times @p samples.
+    inline void
+    print_time(const std::string &what, const std::vector<double> &samples)
+    {
+      std::printf("%-28s %s s\n",
+                  what.c_str(),
+                  format_time(statistics(samples)).c_str());
+    }
   } // namespace bench
 } // namespace rodnet
 

@@ -1,7 +1,6 @@
 
 #include <solvers/stability.h>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
@@ -9,41 +8,6 @@
 
 namespace rodnet
 {
-  namespace
-  {
-    /// The tangent restricted to the free DoFs as a dense matrix, and the
-    /// map from free to global indices.
-    std::pair<Eigen::MatrixXd, std::vector<unsigned int>>
-    free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-               const dealii::AffineConstraints<double>      &constraints)
-    {
-      const unsigned int        n_dofs = tangent.m();
-      std::vector<int>          free_index(n_dofs, -1);
-      std::vector<unsigned int> global;
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        if (!constraints.is_constrained(i))
-          {
-            free_index[i] = global.size();
-            global.push_back(i);
-          }
-      if (global.size() > max_dense_eigenvalue_dofs)
-        throw std::invalid_argument(
-          "the eigenvalue analysis is dense and limited to " +
-          std::to_string(max_dense_eigenvalue_dofs) +
-          " free DoFs; this model has " + std::to_string(global.size()) +
-          ": use fewer segments or switch the eigenvalue probe off");
-      Eigen::MatrixXd dense =
-        Eigen::MatrixXd::Zero(global.size(), global.size());
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        if (free_index[i] >= 0)
-          for (auto entry = tangent.begin(i); entry != tangent.end(i); ++entry)
-            if (free_index[entry->column()] >= 0)
-              dense(free_index[i], free_index[entry->column()]) =
-                entry->value();
-      return {dense, global};
-    }
-  } // namespace
-
   namespace internal
   {
     /// The tangent restricted to the free DoFs as an Eigen sparse matrix
@@ -113,10 +77,13 @@ namespace rodnet
 
   ConstrainedFactorization::ConstrainedFactorization(
     const dealii::TrilinosWrappers::SparseMatrix &tangent,
-    const dealii::AffineConstraints<double>      &constraints)
+    const dealii::AffineConstraints<double>      &constraints,
+    const double                                  shift)
       : data(std::make_unique<Data>())
   {
     data->block = sparse_free_block(tangent, constraints);
+    // Eigen factorizes scale A + offset I.
+    data->ldlt.setShift(-shift);
     if (!data->block.global.empty())
       data->ldlt.compute(data->block.matrix);
   }
@@ -180,6 +147,30 @@ namespace rodnet
     return solution;
   }
 
+  const std::vector<unsigned int> &
+  ConstrainedFactorization::free_dofs() const
+  {
+    return data->block.global;
+  }
+
+  void
+  ConstrainedFactorization::solve_free(Eigen::MatrixXd &block) const
+  {
+    if (data->block.global.empty())
+      return;
+    if (data->ldlt.info() == Eigen::Success)
+      block = data->ldlt.solve(block).eval();
+    if (data->ldlt.info() != Eigen::Success || !block.allFinite())
+      throw std::runtime_error("the tangent is singular");
+  }
+
+  double
+  ConstrainedFactorization::diagonal_scale() const
+  {
+    const Eigen::VectorXd &diagonal = data->block.diagonal;
+    return diagonal.size() == 0 ? 0.0 : diagonal.mean();
+  }
+
   Inertia
   tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,
                   const dealii::AffineConstraints<double>      &constraints,
@@ -188,38 +179,4 @@ namespace rodnet
     return ConstrainedFactorization(tangent, constraints).inertia(zero_ratio);
   }
 
-  std::vector<double>
-  lowest_eigenvalues(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                     const dealii::AffineConstraints<double>      &constraints,
-                     const unsigned int                            n)
-  {
-    const auto [dense, global] = free_block(tangent, constraints);
-    if (global.empty())
-      return {};
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      dense,
-      Eigen::EigenvaluesOnly);
-    if (solver.info() != Eigen::Success)
-      throw std::runtime_error("the dense eigenvalue solver did not converge");
-    const Eigen::VectorXd &all = solver.eigenvalues(); // increasing order
-    return std::vector<double>(all.data(),
-                               all.data() +
-                                 std::min<std::size_t>(n, global.size()));
-  }
-
-  std::pair<double, std::vector<double>>
-  lowest_eigenpair(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                   const dealii::AffineConstraints<double>      &constraints)
-  {
-    const auto [dense, global] = free_block(tangent, constraints);
-    if (global.empty())
-      throw std::invalid_argument("every DoF is constrained: no eigenpair");
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(dense);
-    if (solver.info() != Eigen::Success)
-      throw std::runtime_error("the dense eigenvalue solver did not converge");
-    std::vector<double> vector(tangent.m(), 0.0);
-    for (unsigned int k = 0; k < global.size(); ++k)
-      vector[global[k]] = solver.eigenvectors()(k, 0);
-    return {solver.eigenvalues()[0], vector};
-  }
 } // namespace rodnet

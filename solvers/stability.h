@@ -4,6 +4,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <Eigen/Core>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -30,14 +31,17 @@ namespace rodnet
    * to the DoFs that @p constraints leave free (Eigen's SimplicialLDLT, AMD
    * ordering), for the inertia of the tangent and solves with it. It costs
    * about as much as a Newton iteration's factorization, instead of a dense
-   * eigen-decomposition.
+   * eigen-decomposition. With a @p shift sigma it factorizes K_ff - sigma I
+   * instead (shift-invert eigen-solvers, lowest_eigenpairs()), whose
+   * inertia counts the eigenvalues of K_ff below sigma.
    */
   class ConstrainedFactorization
   {
   public:
     ConstrainedFactorization(
       const dealii::TrilinosWrappers::SparseMatrix &tangent,
-      const dealii::AffineConstraints<double>      &constraints);
+      const dealii::AffineConstraints<double>      &constraints,
+      double                                        shift = 0);
     ~ConstrainedFactorization();
 
     /**
@@ -58,6 +62,21 @@ namespace rodnet
     std::vector<double>
     solve(const std::vector<double> &rhs) const;
 
+    /// The free DoFs, in the order of the rows of solve_free()'s blocks.
+    const std::vector<unsigned int> &
+    free_dofs() const;
+
+    /// Overwrites each column b of @p block (one row per free DoF) by
+    /// (K_ff - sigma I)^-1 b. Throws std::runtime_error where the
+    /// factorization failed.
+    void
+    solve_free(Eigen::MatrixXd &block) const;
+
+    /// The mean magnitude of the diagonal of K_ff: the scale of its
+    /// eigenvalues where a shift must be small against them.
+    double
+    diagonal_scale() const;
+
   private:
     struct Data;
     std::unique_ptr<Data> data;
@@ -68,30 +87,6 @@ namespace rodnet
   tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,
                   const dealii::AffineConstraints<double>      &constraints,
                   double zero_ratio = 1e-12);
-
-  /// Largest number of free DoFs for which lowest_eigenvalues() forms a
-  /// dense matrix.
-  constexpr unsigned int max_dense_eigenvalue_dofs = 6000;
-
-  /**
-   * The @p n lowest eigenvalues, in increasing order, of the tangent
-   * restricted to the DoFs that @p constraints leave free (linearized
-   * stability: the state is stable while the lowest is positive). Dense
-   * symmetric eigensolver (Eigen); throws with a clear message beyond
-   * max_dense_eigenvalue_dofs.
-   */
-  std::vector<double>
-  lowest_eigenvalues(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                     const dealii::AffineConstraints<double>      &constraints,
-                     unsigned int                                  n = 1);
-  /**
-   * The lowest eigenvalue of the constrained tangent and its eigenvector,
-   * unit in the Euclidean norm, over all DoFs (zero at constrained ones).
-   * Same limits as lowest_eigenvalues().
-   */
-  std::pair<double, std::vector<double>>
-  lowest_eigenpair(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                   const dealii::AffineConstraints<double>      &constraints);
 } // namespace rodnet
 
 #endif

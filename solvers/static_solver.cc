@@ -5,6 +5,7 @@
 
 #include <solvers/equilibrium_check.h>
 #include <solvers/free_motions.h>
+#include <solvers/lowest_eigenpairs.h>
 #include <solvers/stability.h>
 #include <solvers/state_guard.h>
 #include <solvers/static_solver.h>
@@ -276,7 +277,7 @@ namespace rodnet
   {
     model.assemble(u, load_factor, nullptr, &tangent);
     const std::vector<double> values =
-      lowest_eigenvalues(tangent, model.constraints(), 1);
+      lowest_eigenpairs(tangent, model.constraints(), 1).values;
     return values.empty() ? std::nan("") : values[0];
   }
 
@@ -289,7 +290,7 @@ namespace rodnet
   {
     model.assemble(u, mode_load_factor, nullptr, &tangent);
     const std::vector<double> mode =
-      lowest_eigenpair(tangent, model.constraints()).second;
+      lowest_eigenpairs(tangent, model.constraints(), 1).vectors[0];
     // Displace the state along the mode so that its largest component
     // moves by the given fraction of the model size, and let Newton find
     // the equilibrium nearby, on both sides.

@@ -4,6 +4,7 @@
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
+#include <solvers/static_solver.h>
 
 #include <memory>
 
@@ -38,6 +39,19 @@ namespace rodnet::testing
       std::vector<std::shared_ptr<const RodMaterial>>(
         n_rods,
         std::make_shared<LinearElasticRod>(stiffness)));
+  }
+
+  /// The equilibrium of @p model (finalized here) under its whole load,
+  /// by Newton in one load step from the undeformed state.
+  inline VectorType
+  solve_in_one_step(RodModel &model)
+  {
+    model.finalize();
+    VectorType               u = model.create_vector();
+    StaticSolver::Parameters parameters;
+    parameters.n_steps = 1;
+    StaticSolver(model, parameters).run(u, [](const auto &, const auto &) {});
+    return u;
   }
 } // namespace rodnet::testing
 

@@ -1,0 +1,38 @@
+// The large welded lattice the solver benchmarks time (solver_checks,
+// lowest_eigenpairs): the square lattice of scenes/gridshell.prm with
+// n x n cells of span 1, 8 segments per lath, its two edges pushed together
+// by a tenth of the span and a small uplift.
+#ifndef RODNET_BENCH_GRIDSHELL_SCENE_H
+#define RODNET_BENCH_GRIDSHELL_SCENE_H
+
+#include <sstream>
+#include <string>
+
+namespace rodnet
+{
+  namespace bench
+  {
+    /// The gridshell scene with @p cells x @p cells cells of span 1.
+    inline std::string
+    gridshell_scene(const unsigned int cells)
+    {
+      std::ostringstream s;
+      s << "subsection Geometry\n  set Generator = square lattice\n"
+        << "  set Cells = " << cells << ", " << cells << "\n"
+        << "  set Beam length = " << 1.0 / cells << "\n"
+        << "  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
+        << "subsection Material\n  subsection linear elastic\n"
+        << "    set Stiffness input = direct\n    set EA = 1000\n"
+        << "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
+        << "subsection Supports\n  set Prescribed displacements = ";
+      for (unsigned int j = 0; j <= cells; ++j)
+        s << (j == 0 ? "" : "; ") << "@n_0_" << j << ": x=0.1 y=0 z=0; @n_"
+          << cells << "_" << j << ": x=-0.1 y=0 z=0";
+      s << "\nend\nsubsection Loads\n  set Steps = 40\n"
+        << "  set Distributed force = 0, 0, 0.01\nend\n";
+      return s.str();
+    }
+  } // namespace bench
+} // namespace rodnet
+
+#endif
