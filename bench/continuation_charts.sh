@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The charts of doc/continuation.md: scenes/deep_arch.prm and the elastica
+# The charts of doc/continuation.md: scenes/deep_arch.prm, the elastica
 # (scenes/elastica.prm without imperfection, EI2 = 2 EI1, followed to
-# P = 20 B/L^2) by continuation, each drawn as load against displacement
-# with stable equilibria solid and unstable ones dashed, the tangent's
-# negative eigenvalues and the corrector iterations of every step.
+# P = 20 B/L^2) and scenes/lee_frame.prm by continuation, each drawn as load
+# against displacement with stable equilibria solid and unstable ones
+# dashed, the tangent's negative eigenvalues and the corrector iterations of
+# every step; and the limit loads of Lee's frame at 100 and 200 segments per
+# member (the shipped scene has 50).
 #
 # Usage: bench/continuation_charts.sh [RODNET_RUN] [OUTPUT_DIR]
 #        (defaults build/release/rodnet-run, doc/)
@@ -37,9 +39,24 @@ subsection Output
 end
 END
 "$run" "$work/elastica.prm" --output "$work/elastica" > "$work/elastica.log" 2>&1
+"$run" "$root/scenes/lee_frame.prm" --output "$work/lee" > "$work/lee.log" 2>&1
+
+# Lee's frame on finer meshes: the load stays at L/5 from the corner,
+# vertex N/5 of the beam.
+for n in 100 200; do
+  { cat "$root/scenes/lee_frame.prm"
+    printf 'subsection Geometry\n  set Segments = %d\n' "$n"
+    printf '  set Network file = %s\nend\n' "$root/scenes/networks/lee_frame.net"
+    printf 'subsection Loads\n  set Point forces = 1:%d: 0, -1, 0\nend\n' $((n / 5))
+    printf 'subsection Output\n  set Probes = load_y: position 1:%d y\nend\n' $((n / 5))
+  } > "$work/lee_$n.prm"
+  "$run" "$work/lee_$n.prm" --output "$work/lee_$n" > "$work/lee_$n.log" 2>&1
+  echo "Lee's frame, $n segments per member:"
+  grep -h "limit point at" "$work/lee_$n.log"
+done
 
 # Iterations per step from the log ("step k: ..., n iteration(s)").
-for case in arch elastica; do
+for case in arch elastica lee; do
   sed -n 's/^step \([0-9]*\): .*, \([0-9]*\) iteration(s).*/\1 \2/p' \
     "$work/$case.log" > "$work/$case.iterations"
 done
@@ -47,7 +64,7 @@ done
 # Columns: step, load_factor, probe 1, probe 2, arclength, branch,
 # negative_eigenvalues, stable, in_range. A segment is drawn solid where
 # both its ends are stable.
-plot_path() { # csv, x column, x label, y scale, title, png
+plot_path() { # csv, x (a gnuplot expression of the columns), x label, y scale, title, png
   gnuplot <<GP
 set terminal pngcairo size 1200,420 font ",11"
 set output "$6"
@@ -57,8 +74,8 @@ set grid
 set key bottom right
 set xlabel "$3"
 set ylabel "load factor"
-plot "$1" every ::1 using (\$$2):(\$8 > 0 ? \$2 : 1/0) with lines lw 2 lc rgb "#1f77b4" title "stable", \
-     "$1" every ::1 using (\$$2):(\$8 > 0 ? 1/0 : \$2) with lines dt 2 lw 2 lc rgb "#d62728" title "unstable"
+plot "$1" every ::1 using ($2):(\$8 > 0 ? \$2 : 1/0) with lines lw 2 lc rgb "#1f77b4" title "stable", \
+     "$1" every ::1 using ($2):(\$8 > 0 ? 1/0 : \$2) with lines dt 2 lw 2 lc rgb "#d62728" title "unstable"
 set xlabel "arclength"
 set ylabel "negative eigenvalues"
 set yrange [-0.2:2.2]
@@ -71,11 +88,16 @@ plot "$7" using 1:2 with impulses lw 2 notitle
 unset multiplot
 GP
 }
-plot_path "$work/arch/probes.csv" 3 "apex y [m]" 1 \
+plot_path "$work/arch/probes.csv" '$3' "apex y [m]" 1 \
   "deep arch (DaDeppo and Schmidt): limit load 8.97 EI/R^2 at lambda = 0.897" \
   "$out/continuation_deep_arch.png" "$work/arch.iterations"
-plot_path "$work/elastica/probes.csv" 4 "tip deflection [L]" 1 \
+plot_path "$work/elastica/probes.csv" '$4' "tip deflection [L]" 1 \
   "elastica without imperfection: bifurcation at pi^2/4, switch to the buckled branch" \
   "$out/continuation_elastica.png" "$work/elastica.iterations"
-grep -h "limit point at\|bifurcation at" "$work/arch.log" "$work/elastica.log"
-echo "charts in $out: continuation_deep_arch.png, continuation_elastica.png"
+plot_path "$work/lee/probes.csv" '120 - $4' "load point deflection (down) [-]" 1 \
+  "Lee's frame: limit load 1.85 (Schweizerhof and Wriggers), snap-back, second limit point" \
+  "$out/continuation_lee_frame.png" "$work/lee.iterations"
+grep -h "limit point at\|bifurcation at" "$work/arch.log" "$work/elastica.log" \
+  "$work/lee.log"
+echo "charts in $out: continuation_deep_arch.png, continuation_elastica.png," \
+  "continuation_lee_frame.png"

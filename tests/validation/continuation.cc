@@ -10,11 +10,8 @@
 //    J. Appl. Mech. 42, 894-896): 215 degrees, clamped at one end, hinged
 //    at the other, a dead point load at the apex; the limit load
 //    P R^2 / EI = 8.97, passed with the snap-back that follows it.
-#include <deal.II/base/parameter_handler.h>
-
+#include <common/continuation_path.h>
 #include <common/elastica_exact.h>
-#include <io/scene.h>
-#include <solvers/arclength_continuation.h>
 
 #include <cmath>
 #include <fstream>
@@ -28,38 +25,6 @@ namespace
   using namespace rodnet;
   using namespace rodnet::testing;
   using Point = ArclengthContinuation::StepInfo;
-
-  /// The points of a continuation run of a scene, with the positions of
-  /// two vertices at each.
-  struct Path
-  {
-    std::vector<Point>                points;
-    std::vector<std::vector<Vector3>> positions;
-    std::vector<double>               bifurcations;
-    std::vector<double>               limit_points;
-  };
-
-  Path
-  follow(const std::string &prm_text, const std::vector<unsigned int> &vertices)
-  {
-    dealii::ParameterHandler prm;
-    Scene::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text);
-    const Scene           scene(prm);
-    const auto            model = scene.build_model();
-    ArclengthContinuation solver(*model, scene.continuation);
-    VectorType            u = model->create_vector();
-    Path                  path;
-    solver.run(u, [&](const Point &info, const VectorType &solution) {
-      path.points.push_back(info);
-      path.positions.emplace_back();
-      for (const unsigned int v : vertices)
-        path.positions.back().push_back(model->position(solution, v));
-    });
-    path.bifurcations = solver.bifurcations();
-    path.limit_points = solver.limit_points();
-    return path;
-  }
 
   std::string
   elastica_continuation(const unsigned int n_segments, const double EI2 = 2)
@@ -108,7 +73,7 @@ namespace
     // which converges as N^-2 (N = 100: -2.0e-5, N = 200: -2.3e-6
     // relative). Finer meshes are limited by the sign of the weakest pivot
     // at a stiff EA (N = 800: +1.8e-4; doc/continuation.md).
-    const Path path = follow(elastica_continuation(200), {200});
+    const ContinuationPath path = follow(elastica_continuation(200), {"200"});
     ASSERT_EQ(path.bifurcations.size(), 1u);
     const double exact = M_PI * M_PI / 4;
     EXPECT_NEAR(path.bifurcations[0], exact, 1e-4 * exact);
@@ -130,8 +95,9 @@ namespace
   {
     // Errors at N = 100, 200, 400: 3.4e-4, 8.6e-5, 2.3e-5 (N^-2), for
     // EI2 = 2 EI1 and EI2 = EI1 alike; every point stable.
-    const unsigned int n    = 400;
-    const Path         path = follow(elastica_continuation(n, GetParam()), {n});
+    const unsigned int     n = 400;
+    const ContinuationPath path =
+      follow(elastica_continuation(n, GetParam()), {std::to_string(n)});
     for (const Point &p : path.points)
       EXPECT_TRUE(p.check.stable) << "load factor " << p.load_factor;
     unsigned int checked = 0;
@@ -164,7 +130,8 @@ namespace
     scene << file.rdbuf() << "\nsubsection Geometry\n  set Segments = " << n
           << "\nend\nsubsection Loads\n  set Point forces = " << m
           << ": 0, -750, 0; " << m + 1 << ": 0, -250, 0\nend\n";
-    const Path path = follow(scene.str(), {m, m + 1});
+    const ContinuationPath path =
+      follow(scene.str(), {std::to_string(m), std::to_string(m + 1)});
     // The limit load, then a snap-back through a second limit point at
     // negative load, then the stiffening inverted arch up to lambda = 1.5.
     ASSERT_EQ(path.limit_points.size(), 2u);

@@ -145,6 +145,7 @@ namespace
     "gridshell",       // validation/gridshell
     "helical_spring",  // validation/helical_spring
     "hexagonal_truss", // validation/hexagonal_truss
+    "lee_frame",       // validation/continuation_snap
   };
 
   class ExampleScenes : public ::testing::TestWithParam<Expectation>
