@@ -264,6 +264,12 @@ namespace rodnet
                       "Plot the probes against the load factor (the time "
                       "for time stepping) into probes.png (needs "
                       "gnuplot). [-]");
+    prm.declare_entry("Mode shapes",
+                      "0",
+                      Integer(0, 1000),
+                      "Newton and continuation: the n lowest eigenvalues "
+                      "of the tangent at the last equilibrium into "
+                      "modes.csv, the modes into modes-NNNNN.vtu. [-]");
     prm.leave_subsection();
   }
 
@@ -356,7 +362,14 @@ namespace rodnet
     vtu_interval     = prm.get_integer("VTU interval");
     probe_text       = prm.get("Probes");
     plot             = prm.get_bool("Plot");
+    mode_shapes      = prm.get_integer("Mode shapes");
     prm.leave_subsection();
+    if (mode_shapes > 0 && method != SolutionMethod::newton &&
+        method != SolutionMethod::continuation)
+      throw std::invalid_argument(
+        "entry \"Output/Mode shapes\": the modes are those of the static "
+        "tangent at an equilibrium, which only \"Solver/Method = newton\" "
+        "and \"continuation\" find; set it to 0 for this method");
   }
 
   const ProblemSize &

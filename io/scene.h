@@ -12,9 +12,9 @@
 #include <io/probes.h>
 #include <io/problem_size.h>
 #include <io/scene_families.h>
-#include <solvers/arclength_continuation.h>
 #include <io/solution_methods.h>
 #include <materials/cross_section.h>
+#include <solvers/arclength_continuation.h>
 #include <solvers/dynamic_relaxation.h>
 #include <solvers/static_solver.h>
 #include <solvers/time_integrator.h>
@@ -134,6 +134,9 @@ namespace rodnet
     bool                       write_vtu    = true;
     unsigned int               vtu_interval = 1;
     bool                       plot         = true;
+    /// How many of the lowest eigenpairs of the last equilibrium's
+    /// tangent to write (io/mode_shapes.h); Newton and continuation.
+    unsigned int mode_shapes = 0;
     /// The element families the scene asks for beyond the rods' own
     /// (an elastic foundation, ...).
     std::vector<RequestedFamily> family_requests;

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <io/interrupt.h>
+#include <io/mode_shapes.h>
 #include <io/probe_plot.h>
 #include <io/run_limits.h>
 #include <io/scene_runner.h>
@@ -72,6 +73,7 @@ namespace rodnet
         row.insert(row.end(), values.begin(), values.end());
         summary.rows.push_back(row);
         summary.converged_steps = step;
+        last                    = {abscissa, u};
         if (vtu && step % scene.vtu_interval == 0)
           write_vtu(step, abscissa, u);
         throw_if_stop_requested();
@@ -94,6 +96,13 @@ namespace rodnet
           summary.outputs.push_back("probes.png");
         if (vtu_files > 0)
           summary.outputs.push_back("solution.pvd");
+      }
+
+      /// The abscissa and state of the last step recorded, if any.
+      const std::optional<std::pair<double, State>> &
+      last_recorded() const
+      {
+        return last;
       }
 
     private:
@@ -138,8 +147,50 @@ namespace rodnet
       /// The abscissa's unit, then each probe's.
       std::vector<std::string> units;
       /// The probe values of the step before, for continue_probes().
-      std::vector<double> previous_values;
+      std::vector<double>                     previous_values;
+      std::optional<std::pair<double, State>> last;
     };
+
+    /**
+     * Writes the mode shapes the scene asks for (Output/Mode shapes) at
+     * the last equilibrium @p recorder recorded, and lists their files in
+     * @p summary. The run's results are written by then: where the
+     * eigen-solver fails, a warning says so and the run goes on to its
+     * summary.
+     */
+    void
+    write_requested_modes(const Scene                    &scene,
+                          const RodModel                 &model,
+                          const StepRecorder<VectorType> &recorder,
+                          const std::string              &output_directory,
+                          RunSummary                     &summary,
+                          std::ostream                   *log)
+    {
+      const auto &last = recorder.last_recorded();
+      if (scene.mode_shapes == 0 || !last)
+        return;
+      try
+        {
+          const std::vector<std::string> files =
+            write_mode_shapes(model,
+                              last->second,
+                              last->first,
+                              scene.mode_shapes,
+                              output_directory,
+                              scene.write_vtu);
+          summary.outputs.insert(summary.outputs.end(),
+                                 files.begin(),
+                                 files.end());
+          if (log != nullptr)
+            *log << "mode shapes at load factor " << last->first
+                 << ": modes.csv" << std::endl;
+        }
+      catch (const std::exception &e)
+        {
+          std::cerr << "warning: no mode shapes written: " << e.what()
+                    << std::endl;
+        }
+    }
 
     /**
      * Runs @p build, the construction of a model of @p scene; a big one
@@ -261,6 +312,12 @@ namespace rodnet
       });
       summary.critical_load_factor = solver.critical_load_factor();
       recorder.finish(output_directory);
+      write_requested_modes(scene,
+                            *model,
+                            recorder,
+                            output_directory,
+                            summary,
+                            log);
       return summary;
     }
 
@@ -316,6 +373,12 @@ namespace rodnet
       if (!solver.bifurcations().empty())
         summary.critical_load_factor = solver.bifurcations().front();
       recorder.finish(output_directory);
+      write_requested_modes(scene,
+                            *model,
+                            recorder,
+                            output_directory,
+                            summary,
+                            log);
       return summary;
     }
 

@@ -44,12 +44,10 @@ namespace rodnet
       "Branch switching amplitude",
       "0",
       Double(0, 1),
-      "Where a converged equilibrium is unstable (negative lowest "
-      "eigenvalue), push it along the buckling mode, both ways, by a dead "
-      "force of this fraction of the applied load, remove that force in "
-      "four steps, and continue on the stable equilibrium of lower energy "
-      "found; 0 switches this off. Costs a dense eigenvalue analysis per "
-      "step. [-]");
+      "Where an equilibrium is unstable (negative lowest eigenvalue) or a "
+      "step fails past one, move the state along the lowest mode, both "
+      "ways, by this fraction of the model size, and go on from the stable "
+      "equilibrium of lower energy found nearby; 0: off. [-]");
   }
 
   void
