@@ -302,7 +302,12 @@ namespace rodnet
           case Kind::twist:
             return roles.cell_place(roles.owner(d)).first;
           default:
-            return network.junctions()[roles.owner(d)].ends.front().rod;
+            {
+              // A handle inside a rod has no ends: the rod it sits in.
+              const Junction &junction = network.junctions()[roles.owner(d)];
+              return junction.ends.empty() ? junction.interior->rod :
+                                             junction.ends.front().rod;
+            }
         }
     }
 
