@@ -262,6 +262,7 @@ namespace rodnet
     const std::function<void(const LocalContribution &)> &copier,
     const bool concurrent_copier) const
   {
+    follow_natural_shape(load_factor);
     // One thread: the serial loop (stencil order, as always). Several:
     // colors one after the other, the blocks of a color in parallel,
     // copier included (a color's blocks share no row).

@@ -24,6 +24,7 @@
 #include <materials/rod_material.h>
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -141,6 +142,20 @@ namespace rodnet
       const std::vector<SupportsAndLoads::AxisLoad> &rotations,
       const std::vector<SupportsAndLoads::AxisLoad> &moments) override;
     /// @}
+
+    /**
+     * Ramps the parts @p parts of the natural shape of the rods @p rods
+     * with the load factor, as the loads are: at load factor lambda their
+     * materials' natural curvatures, twist or axial eigenstrain are lambda
+     * times the given ones (RodMaterial::with_natural_shape_scaled()), so
+     * that load stepping and continuation follow a structure as its
+     * natural shape grows (before finalize()). Throws
+     * std::invalid_argument naming the rod where its material has no
+     * natural shape, or a rod that does not exist.
+     */
+    void
+    ramp_natural_shape(const NaturalShapeParts         &parts,
+                       const std::vector<unsigned int> &rods);
 
     /// @name Dead loads at load factor 1 (before finalize())
     /// @{
@@ -535,6 +550,11 @@ namespace rodnet
     Vector3
     support_force(const Support &s, unsigned int k, const VectorType &r) const;
 
+    /// Puts the materials of the ramped rods at @p load_factor
+    /// (ramp_natural_shape()); nothing if none is ramped or they are there.
+    void
+    follow_natural_shape(double load_factor) const;
+
     /// The energy of every family at @p u, with each stencil's derivatives
     /// handed to @p copier: serially, or, where @p copier may run on
     /// several threads at once for stencils that share no DoF
@@ -611,7 +631,15 @@ namespace rodnet
     MPI_Comm                                        mpi_communicator;
     dealii::IndexSet                                owned_dofs;
     std::unique_ptr<RodNetwork>                     network_;
-    std::vector<std::shared_ptr<const RodMaterial>> materials;
+    /// Per rod; the entries of ramped rods are replaced at each load factor
+    /// (follow_natural_shape()); the families hold a reference to it.
+    mutable std::vector<std::shared_ptr<const RodMaterial>> materials;
+    /// The materials as given, of the rods whose natural shape is ramped
+    /// (ramp_natural_shape()), null for the others; empty if none is.
+    std::vector<std::shared_ptr<const RodMaterial>> given_materials;
+    NaturalShapeParts                               ramped_parts;
+    /// The load factor the ramped materials are at (NaN: not yet set).
+    mutable double ramped_at = std::nan("");
     std::vector<std::unique_ptr<HingeKernel>>       kernels;
     std::vector<std::unique_ptr<JunctionKernel>>    junction_kernels;
     std::unique_ptr<DofLayout>                      layout_;

@@ -206,6 +206,13 @@ namespace rodnet
                       Double(0),
                       "Mass of the rod per unit undeformed length, for "
                       "gravity. [kg/m]");
+    prm.declare_entry("Ramped natural shape",
+                      "",
+                      Anything(),
+                      "Parts of the natural shape that the load factor "
+                      "scales as it scales the loads: \"curvature, twist, "
+                      "eigenstrain\" or some, then \": <rod>, ...\" or all "
+                      "rods. [-]");
     prm.leave_subsection();
   }
 
@@ -331,6 +338,8 @@ namespace rodnet
     distributed_force = get_vector(prm, "Distributed force");
     gravity           = get_vector(prm, "Gravity");
     mass_per_length   = prm.get_double("Mass per length");
+    natural_shape_ramp =
+      parse_natural_shape_ramp(prm.get("Ramped natural shape"));
     prm.leave_subsection();
   }
 
@@ -527,10 +536,30 @@ namespace rodnet
     for (const RequestedFamily &family : family_requests)
       model->add_element_family(family.request->create(*model));
     model->apply(supports_and_loads(model->network()));
+    if (natural_shape_ramp)
+      ramp_natural_shape(*model);
     model->finalize();
     if (midpoint_clamp)
       check_midpoint_clamps(*model);
     return model;
+  }
+
+  void
+  Scene::ramp_natural_shape(RodModel &model) const
+  {
+    std::vector<unsigned int> rods = natural_shape_ramp->rods;
+    if (rods.empty())
+      for (unsigned int r = 0; r < model.network().rods().size(); ++r)
+        rods.push_back(r);
+    try
+      {
+        model.ramp_natural_shape(natural_shape_ramp->parts, rods);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw std::invalid_argument("entry \"" + natural_shape_ramp_entry +
+                                    "\": " + e.what());
+      }
   }
 
   void
@@ -602,6 +631,11 @@ namespace rodnet
         "section \"" + family_requests.front().name +
         "\": the bending-active element of dynamic relaxation has no "
         "element families; use Solver/Method = newton");
+    if (natural_shape_ramp)
+      throw std::invalid_argument(
+        "entry \"" + natural_shape_ramp_entry +
+        "\": the bending-active element of dynamic relaxation has no "
+        "natural shape; use Solver/Method = newton or continuation");
     auto [network, materials] = build_network();
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)

@@ -9,6 +9,7 @@
 #include <core/rod_graph.h>
 #include <core/rod_model.h>
 #include <io/entry_tree.h>
+#include <io/natural_shape_ramp.h>
 #include <io/probes.h>
 #include <io/problem_size.h>
 #include <io/scene_families.h>
@@ -245,6 +246,11 @@ namespace rodnet
     /// "Clamp at first segment midpoint").
     void
     check_midpoint_clamps(const RodModel &model) const;
+
+    /// Ramps the natural shape of @p model as Loads/Ramped natural shape
+    /// says, naming the entry in errors.
+    void
+    ramp_natural_shape(RodModel &model) const;
     /// Rotation handles (RodNetwork::add_rotation_handle()) at the free
     /// vertices that moments and prescribed rotations name.
     void
@@ -297,6 +303,8 @@ namespace rodnet
       probe_text;
     Vector3     distributed_force, gravity;
     double      mass_per_length;
+    /// Loads/Ramped natural shape, if set.
+    std::optional<NaturalShapeRamp> natural_shape_ramp;
     ProblemSize model_size;
   };
 } // namespace rodnet

@@ -65,13 +65,10 @@ namespace rodnet
         "Clamp at first segment midpoint",
         "false",
         Bool(),
-        "Open rods (straight, arc, helix, polyline, gmsh): centre the first "
-        "segment on the rod's start, along the rod's tangent there (the "
-        "chain begins half a segment behind the start), so that the clamp "
-        "of the start, which Supports/Clamped ends must then hold, acts "
-        "exactly at the start with the rod's tangent, and the free length "
-        "is the rod's length. Not for rings, networks (clamp a node "
-        "instead) or dynamic relaxation. [-]");
+        "Open rods (not networks, nor dynamic relaxation): centre the first "
+        "segment on the rod's start along its tangent, so that the clamp of "
+        "the start (Supports/Clamped ends, required) acts exactly there and "
+        "the free length is the rod's length. [-]");
       prm.declare_entry(
         "Natural shape",
         to_string(NaturalShape::initial_geometry),

@@ -40,11 +40,9 @@ namespace rodnet
         "Density",
         "0",
         dealii::Patterns::Double(0),
-        "Mass density rho of the rods, for time stepping: a rod carries rho "
-        "A per length and rho (I1 + I2) of twist inertia, with A, I1, I2 "
-        "from the cross-section of the model's \"Stiffness input = "
-        "section\". 0 means not given, which static solves and "
-        "quasi-static time stepping accept. [kg/m^3]");
+        "Mass density rho for time stepping: rho A per length, rho (I1 + "
+        "I2) of twist inertia, from \"Stiffness input = section\"; 0: not "
+        "given (static and quasi-static runs). [kg/m^3]");
       const MaterialRegistry        &registry = MaterialRegistry::instance();
       const std::vector<std::string> names    = registry.names();
       std::string                    help     = "Constitutive law of the rods:";

@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 
 namespace rodnet
 {
@@ -152,6 +153,31 @@ namespace rodnet
                                           "Axial eigenstrain",
                                           "must be finite and exceed -1",
                                           natural_shape.axial_eigenstrain)));
+  }
+
+
+  std::shared_ptr<const RodMaterial>
+  LinearElasticRod::with_natural_shape_scaled(const NaturalShapeParts &parts,
+                                              const double factor) const
+  {
+    auto        scaled = std::make_shared<LinearElasticRod>(*this);
+    RodNaturalShape &shape = scaled->rest_shape;
+    if (parts.curvature)
+      {
+        shape.curvature1 *= factor;
+        shape.curvature2 *= factor;
+      }
+    if (parts.twist)
+      shape.twist *= factor;
+    if (parts.eigenstrain)
+      shape.axial_eigenstrain *= factor;
+    // A stress-free length (1 + eps0) l0 that is not positive has no rod.
+    if (!(shape.axial_eigenstrain > -1.))
+      throw std::invalid_argument(
+        "the axial eigenstrain " + std::to_string(rest_shape.axial_eigenstrain) +
+        " ramped by the load factor " + std::to_string(factor) +
+        " is -1 or less: no rod has a stress-free length of zero or less");
+    return scaled;
   }
 
 

@@ -106,6 +106,11 @@ namespace rodnet
     std::optional<RodStiffness>
     straight_linear_elastic_stiffness() const override;
 
+    /// A copy whose natural shape has the parts @p parts times @p factor.
+    std::shared_ptr<const RodMaterial>
+    with_natural_shape_scaled(const NaturalShapeParts &parts,
+                              double                   factor) const override;
+
     /// The rigidities in use.
     const RodStiffness &
     stiffness() const;

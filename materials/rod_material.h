@@ -76,6 +76,15 @@ namespace rodnet
    * and the arrays and return hinge_energy() / segment_energy(), so a static
    * solve may call the increment functions with any time step.
    */
+  /// Parts of a rod's natural shape (LinearElasticRod's RodNaturalShape)
+  /// that RodMaterial::with_natural_shape_scaled() scales.
+  struct NaturalShapeParts
+  {
+    bool curvature   = false; ///< both natural curvatures
+    bool twist       = false; ///< the natural twist rate
+    bool eigenstrain = false; ///< the axial eigenstrain
+  };
+
   class RodMaterial
   {
   public:
@@ -213,6 +222,16 @@ namespace rodnet
     {
       return std::nullopt;
     }
+
+    /**
+     * This material with the parts @p parts of its natural shape multiplied
+     * by @p factor: a natural shape ramped with the load factor
+     * (RodModel::ramp_natural_shape()). The default, for a material
+     * without a natural shape, throws std::invalid_argument.
+     */
+    virtual std::shared_ptr<const RodMaterial>
+    with_natural_shape_scaled(const NaturalShapeParts &parts,
+                              double                   factor) const;
 
     /// Declares the material's entries in the current subsection.
     virtual void

@@ -1,0 +1,51 @@
+// RodModel: a natural shape ramped with the load factor.
+#include <core/rod_model.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace rodnet
+{
+  void
+  RodModel::ramp_natural_shape(const NaturalShapeParts         &parts,
+                               const std::vector<unsigned int> &rods)
+  {
+    given_materials.resize(materials.size());
+    for (const unsigned int rod : rods)
+      {
+        if (rod >= materials.size())
+          throw std::invalid_argument(
+            "ramp_natural_shape: there is no rod " + std::to_string(rod) +
+            " (the network has " + std::to_string(materials.size()) + ")");
+        if (!given_materials[rod])
+          given_materials[rod] = materials[rod];
+        try
+          {
+            // Also checks, now, that the material has a natural shape.
+            materials[rod] =
+              given_materials[rod]->with_natural_shape_scaled(parts, 0.0);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw std::invalid_argument("rod " + std::to_string(rod) + ": " +
+                                        e.what());
+          }
+      }
+    ramped_parts = parts;
+    ramped_at    = 0.0;
+  }
+
+
+  void
+  RodModel::follow_natural_shape(const double load_factor) const
+  {
+    if (given_materials.empty() || load_factor == ramped_at)
+      return;
+    for (std::size_t rod = 0; rod < given_materials.size(); ++rod)
+      if (given_materials[rod])
+        materials[rod] =
+          given_materials[rod]->with_natural_shape_scaled(ramped_parts,
+                                                          load_factor);
+    ramped_at = load_factor;
+  }
+} // namespace rodnet

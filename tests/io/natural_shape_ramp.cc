@@ -1,0 +1,142 @@
+// Loads/Ramped natural shape: the load factor scales the chosen parts of
+// the rods' natural shape as it scales the loads. A cantilever whose
+// natural curvature and twist are ramped is, at each load step, the helix of
+// that fraction of its natural shape; one whose eigenstrain is ramped grows
+// by that fraction of it; the entry's errors name it.
+#include <common/run_scene_text.h>
+#include <common/scene_text.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+  using namespace rodnet;
+
+  /// A unit cantilever along x of @p n segments, clamped at its start
+  /// (first segment centred on it), with natural curvature @p curvature,
+  /// twist @p twist and eigenstrain @p eigenstrain, no load, @p steps load
+  /// steps, and the entry Ramped natural shape = @p ramp; probes: the
+  /// tip's position.
+  std::string
+  shaped_cantilever(const unsigned int n,
+                    const double       curvature,
+                    const double       twist,
+                    const double       eigenstrain,
+                    const unsigned int steps,
+                    const std::string &ramp)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "subsection Geometry\n  set Segments = " << n
+      << "\n  set Clamp at first segment midpoint = true\n"
+      << "  set Director d1 = 0, 0, 1\nend\n"
+         "subsection Material\n  subsection linear elastic\n"
+         "    set Stiffness input = direct\n    set EA = 100\n"
+         "    set EI1 = 1\n    set EI2 = 2\n    set GJ = 1\n"
+      << "    set Natural curvature 1 = " << curvature
+      << "\n    set Natural twist = " << twist
+      << "\n    set Axial eigenstrain = " << eigenstrain
+      << "\n  end\nend\n"
+         "subsection Supports\n  set Clamped ends = start\nend\n"
+         "subsection Loads\n  set Steps = "
+      << steps << "\n  set Ramped natural shape = " << ramp
+      << "\nend\n"
+         "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+         "  set Probes = x: position end x; y: position end y; z: "
+         "position end z\nend\n";
+    return s.str();
+  }
+
+  /// The tip position at the last step of @p summary.
+  std::vector<double>
+  tip(const RunSummary &summary)
+  {
+    const std::vector<double> &row = summary.rows.back();
+    return {row[1], row[2], row[3]};
+  }
+
+  TEST(NaturalShapeRamp, EachStepIsTheScaledHelix)
+  {
+    // Natural curvature k = 3 and twist tau = 2 ramped in four load steps
+    // (cut where Newton needs it), no load: at load factor lambda the rod is
+    // stress free, a helix of curvature lambda k and torsion lambda tau, whose
+    // chord over the arc length s = 1 is (R = k / w^2, c = tau / w^2, w =
+    // sqrt(k^2 + tau^2), all times lambda where due)
+    //   chord^2 = 2 R^2 (1 - cos w s) + (c w s)^2.
+    // The same shape present from the start fails to converge in four
+    // load steps from the straight rod: ramping it is the way there.
+    // The polygon's vertices lie on a helix whose curvature and torsion
+    // differ from the natural ones by O(h^2): the chords agree to 4.2e-5
+    // at n = 100 and 1.0e-5 at 200; tolerance 0.8 / n^2.
+    for (const unsigned int n : {100u, 200u})
+      {
+        const RunSummary ramped = rodnet::testing::run_scene_text(
+          shaped_cantilever(n, 3, 2, 0, 4, "curvature, twist"),
+          "natural_shape_ramp_output");
+        ASSERT_TRUE(ramped.failure.empty()) << ramped.failure;
+        ASSERT_EQ(ramped.rows.back()[0], 1.0);
+        double largest = 0;
+        for (std::size_t step = 1; step < ramped.rows.size(); ++step)
+          {
+            const double lambda = ramped.rows[step][0];
+            const double k = 3 * lambda, tau = 2 * lambda;
+            const double w2 = k * k + tau * tau, w = std::sqrt(w2);
+            const double R = k / w2, c = tau / w2;
+            const double chord =
+              std::sqrt(2 * R * R * (1 - std::cos(w)) + c * c * w2);
+            const std::vector<double> &row = ramped.rows[step];
+            const double               found =
+              std::sqrt(row[1] * row[1] + row[2] * row[2] + row[3] * row[3]);
+            largest = std::max(largest, std::abs(found / chord - 1));
+            EXPECT_NEAR(found / chord, 1.0, 0.8 / (n * n))
+              << n << " segments, step " << step;
+          }
+        std::cout << n << " segments: chord within " << largest
+                  << " of the helix's" << std::endl;
+      }
+  }
+
+  TEST(NaturalShapeRamp, EigenstrainOfChosenRod)
+  {
+    // Eigenstrain 0.1 ramped on rod 0 (the only one): the unloaded
+    // cantilever grows to 1.1 at load factor 1, exactly (stress free).
+    const RunSummary ramped = rodnet::testing::run_scene_text(
+      shaped_cantilever(20, 0, 0, 0.1, 2, "eigenstrain: 0"),
+      "natural_shape_ramp_eigenstrain");
+    ASSERT_TRUE(ramped.failure.empty()) << ramped.failure;
+    // The clamp holds the first segment (h = 1 / (n - 1/2), centred on
+    // the start), which keeps its length: the rest, 1 - h/2 long, grows by
+    // 5 % and 10 % at the two steps.
+    const double rest = 1 - 0.5 / 19.5;
+    EXPECT_NEAR(ramped.rows[1][1], 1 + 0.05 * rest, 1e-10);
+    EXPECT_NEAR(ramped.rows[2][1], 1 + 0.1 * rest, 1e-10);
+  }
+
+  TEST(NaturalShapeRamp, ErrorsNameTheEntry)
+  {
+    for (const std::string &ramp : {std::string("curvatures"),
+                                    std::string("twist: 3"),
+                                    std::string("eigenstrain: x"),
+                                    std::string("twist:")})
+      {
+        try
+          {
+            rodnet::testing::run_scene_text(
+              shaped_cantilever(20, 0, 0, 0, 1, ramp),
+              "natural_shape_ramp_error");
+            ADD_FAILURE() << "no error for \"" << ramp << "\"";
+          }
+        catch (const std::invalid_argument &e)
+          {
+            EXPECT_NE(std::string(e.what()).find(
+                        "entry \"Loads/Ramped natural shape\""),
+                      std::string::npos)
+              << e.what();
+          }
+      }
+  }
+} // namespace
