@@ -5,7 +5,8 @@
 # against displacement with stable equilibria solid and unstable ones
 # dashed, the tangent's negative eigenvalues and the corrector iterations of
 # every step; and the limit loads of Lee's frame at 100 and 200 segments per
-# member (the shipped scene has 50).
+# member (the shipped scene has 50). scenes/eigenstrain_column.prm: midspan
+# deflection against the eigenstrain's load factor.
 #
 # Usage: bench/continuation_charts.sh [RODNET_RUN] [OUTPUT_DIR]
 #        (defaults build/release/rodnet-run, doc/)
@@ -40,6 +41,8 @@ end
 END
 "$run" "$work/elastica.prm" --output "$work/elastica" > "$work/elastica.log" 2>&1
 "$run" "$root/scenes/lee_frame.prm" --output "$work/lee" > "$work/lee.log" 2>&1
+"$run" "$root/scenes/eigenstrain_column.prm" --output "$work/column" \
+  > "$work/column.log" 2>&1
 
 # Lee's frame on finer meshes: the load stays at L/5 from the corner,
 # vertex N/5 of the beam.
@@ -56,7 +59,7 @@ for n in 100 200; do
 done
 
 # Iterations per step from the log ("step k: ..., n iteration(s)").
-for case in arch elastica lee; do
+for case in arch elastica lee column; do
   sed -n 's/^step \([0-9]*\): .*, \([0-9]*\) iteration(s).*/\1 \2/p' \
     "$work/$case.log" > "$work/$case.iterations"
 done
@@ -97,7 +100,10 @@ plot_path "$work/elastica/probes.csv" '$4' "tip deflection [L]" 1 \
 plot_path "$work/lee/probes.csv" '120 - $4' "load point deflection (down) [-]" 1 \
   "Lee's frame: limit load 1.85 (Schweizerhof and Wriggers), snap-back, second limit point" \
   "$out/continuation_lee_frame.png" "$work/lee.iterations"
+plot_path "$work/column/probes.csv" '$3' "midspan deflection [L]" 1 \
+  "pinned column, eigenstrain = load factor x 10 x critical: bifurcation at the critical eigenstrain" \
+  "$out/continuation_eigenstrain_column.png" "$work/column.iterations"
 grep -h "limit point at\|bifurcation at" "$work/arch.log" "$work/elastica.log" \
-  "$work/lee.log"
+  "$work/lee.log" "$work/column.log"
 echo "charts in $out: continuation_deep_arch.png, continuation_elastica.png," \
-  "continuation_lee_frame.png"
+  "continuation_lee_frame.png, continuation_eigenstrain_column.png"
