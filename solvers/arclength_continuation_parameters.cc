@@ -71,6 +71,13 @@ namespace rodnet
         prm.get("Maximum step") + ")");
     output_points = dealii::Utilities::string_to_double(
       dealii::Utilities::split_string_list(prm.get("Output load factors")));
+    for (const double point : output_points)
+      if (!(point > lower_limit && point < upper_limit))
+        throw std::invalid_argument(
+          "entry \"Solver/Continuation/Output load factors\": " +
+          prm.get("Output load factors") + ": the path never reaches " +
+          std::to_string(point) + ", outside the load factor range (" +
+          prm.get("Load factor range") + ")");
     max_steps             = prm.get_integer("Max points");
     switch_branches       = prm.get_bool("Switch branches");
     bifurcation_tolerance = prm.get_double("Bifurcation tolerance");

@@ -1,5 +1,6 @@
 #include <solvers/arclength_continuation.h>
 #include <solvers/free_motions.h>
+#include <solvers/limit_point_estimate.h>
 #include <solvers/static_solver.h>
 
 #include <algorithm>
@@ -9,28 +10,6 @@
 
 namespace rodnet
 {
-  namespace
-  {
-    /// The load factor at the turn of the parabola lambda(s) through the
-    /// three points (s, lambda) around a limit point (the middle one's if
-    /// they are collinear).
-    double
-    parabola_extremum(const std::array<std::pair<double, double>, 3> &p)
-    {
-      const auto [s0, l0] = p[0];
-      const auto [s1, l1] = p[1];
-      const auto [s2, l2] = p[2];
-      // Newton's form: lambda = l0 + d01 (s - s0) + d012 (s - s0)(s - s1).
-      const double d01  = (l1 - l0) / (s1 - s0);
-      const double d12  = (l2 - l1) / (s2 - s1);
-      const double d012 = (d12 - d01) / (s2 - s0);
-      if (d012 == 0 || !std::isfinite(d012))
-        return l1;
-      const double s_turn = 0.5 * (s0 + s1) - d01 / (2 * d012);
-      return l0 + d01 * (s_turn - s0) + d012 * (s_turn - s0) * (s_turn - s1);
-    }
-  } // namespace
-
   bool
   ArclengthContinuation::land(const PathPoint &p,
                               const double     target,
@@ -115,6 +94,16 @@ namespace rodnet
         double     lambda = 0, ds_taken = ds;
         info               = StepInfo();
         const bool stepped = step(p, ds, next, lambda, result);
+        // A corrector that needs more than twice the iterations the step
+        // length aims at has come far from its prediction, perhaps onto
+        // another branch (a step over a snap-through): a shorter step
+        // follows the path, as long as there is one.
+        if (stepped && ds / 2 >= parameters.min_step &&
+            result.iterations > 2 * parameters.target_iterations)
+          {
+            ds /= 2;
+            continue;
+          }
         const auto target =
           stepped ? crossed_target(p.lambda, lambda) : std::nullopt;
         if (!stepped ||
@@ -136,7 +125,9 @@ namespace rodnet
           {
             info.kind = PointKind::limit_point;
             passed_limit_points.push_back(
-              parabola_extremum({{recent[1], recent[2], {q.s, q.lambda}}}));
+              n_points >= 2 ?
+                parabola_extremum({{recent[1], recent[2], {q.s, q.lambda}}}) :
+                slope_extremum(p.s, p.lambda, p.t_lambda, q.s, q.t_lambda));
             if (log != nullptr)
               *log << "limit point at load factor " << std::setprecision(10)
                    << passed_limit_points.back() << std::setprecision(6)

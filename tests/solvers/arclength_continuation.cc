@@ -16,6 +16,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -221,22 +222,29 @@ namespace
       }
   }
 
-  TEST(ArclengthContinuation, RangeWithoutZeroIsRefused)
+  TEST(ArclengthContinuation, RangeWithoutZeroOrOutputsOutsideIsRefused)
   {
-    dealii::ParameterHandler prm;
-    ArclengthContinuation::Parameters::declare_parameters(prm);
-    prm.set("Load factor range", "0.5, 1");
-    ArclengthContinuation::Parameters p;
-    try
+    // A range that does not hold the start, and an output point the path
+    // cannot reach (it would silently never be written).
+    for (const auto &[range, outputs, entry] :
+         {std::tuple{"0.5, 1", "", "Load factor range"},
+          std::tuple{"-1, 1", "0.5, 1.5", "Output load factors"}})
       {
-        p.parse_parameters(prm);
-        FAIL() << "accepted";
-      }
-    catch (const std::invalid_argument &e)
-      {
-        EXPECT_NE(std::string(e.what()).find("Load factor range"),
-                  std::string::npos)
-          << e.what();
+        dealii::ParameterHandler prm;
+        ArclengthContinuation::Parameters::declare_parameters(prm);
+        prm.set("Load factor range", range);
+        prm.set("Output load factors", outputs);
+        ArclengthContinuation::Parameters p;
+        try
+          {
+            p.parse_parameters(prm);
+            ADD_FAILURE() << "accepted " << range << " / " << outputs;
+          }
+        catch (const std::invalid_argument &e)
+          {
+            EXPECT_NE(std::string(e.what()).find(entry), std::string::npos)
+              << e.what();
+          }
       }
   }
 } // namespace
