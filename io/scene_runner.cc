@@ -6,6 +6,7 @@
 #include <io/run_limits.h>
 #include <io/scene_runner.h>
 #include <io/vtu_output.h>
+#include <solvers/lowest_eigenpairs.h>
 
 #include <cmath>
 #include <filesystem>
@@ -228,6 +229,27 @@ namespace rodnet
     }
 
     /**
+     * The lowest eigenvalue of @p model's constrained tangent at @p u and
+     * @p load_factor (assembled into @p tangent) where one of @p probes
+     * asks for it (lowest_eigenpairs(): sparse, linear in the DoFs); NaN
+     * otherwise.
+     */
+    double
+    lowest_eigenvalue_if_asked(const ProbeList  &probes,
+                               const RodModel   &model,
+                               const VectorType &u,
+                               const double      load_factor,
+                               MatrixType       &tangent)
+    {
+      if (!needs_lowest_eigenvalue(probes))
+        return std::nan("");
+      if (tangent.m() == 0)
+        model.initialize_matrix(tangent);
+      model.assemble(u, load_factor, nullptr, &tangent);
+      return lowest_eigenpairs(tangent, model.constraints(), 1).values[0];
+    }
+
+    /**
      * Runs @p solve, the solver's run over the steps; a SolverFailure
      * or a stop request ends it into @p summary (every converged step is
      * recorded by then).
@@ -328,11 +350,7 @@ namespace rodnet
     {
       const std::unique_ptr<RodModel> model =
         build_with_progress(scene, log, [&] { return scene.build_model(); });
-      const ProbeList probes = scene.probes(*model);
-      refuse_eigenvalue_probes(probes,
-                               "continuation counts the negative eigenvalues "
-                               "(column negative_eigenvalues of probes.csv) "
-                               "instead of tracking the lowest");
+      const ProbeList                   probes     = scene.probes(*model);
       ArclengthContinuation::Parameters parameters = scene.continuation;
       parameters.strain_limits.fiber_distance      = scene.fiber_distances();
 
@@ -350,6 +368,7 @@ namespace rodnet
              << " rod(s), " << model->layout().n_dofs() << " DoFs" << std::endl;
       VectorType            u = model->create_vector();
       ArclengthContinuation solver(*model, parameters, log);
+      MatrixType            tangent;
       run_guarded(summary, [&] {
         solver.run(u,
                    [&](const ArclengthContinuation::StepInfo &info,
@@ -361,7 +380,13 @@ namespace rodnet
                                      evaluate_probes(probes,
                                                      *model,
                                                      solution,
-                                                     info.load_factor),
+                                                     info.load_factor,
+                                                     lowest_eigenvalue_if_asked(
+                                                       probes,
+                                                       *model,
+                                                       solution,
+                                                       info.load_factor,
+                                                       tangent)),
                                      solution,
                                      {info.arclength,
                                       double(info.branch),

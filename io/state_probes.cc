@@ -73,5 +73,5 @@ namespace rodnet
   RODNET_REGISTER_PROBE_KIND(EigenvalueProbe,
                              "eigenvalue",
                              "eigenvalue [mixed]: the lowest eigenvalue of "
-                             "the constrained tangent (Newton only)")
+                             "the constrained tangent (Newton, continuation)")
 } // namespace rodnet

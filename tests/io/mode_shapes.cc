@@ -81,6 +81,38 @@ namespace
       }
   }
 
+  TEST(ModeShapes, EigenvalueProbeAlongAContinuation)
+  {
+    // The cantilever compressed by a tip force P = lambda (EI1 = 1,
+    // P_cr = pi^2 / 4) and followed by continuation: the lowest eigenvalue
+    // starts at h EI beta_1^4 (unloaded), falls to zero at the located
+    // bifurcation (the located point and the branch switch's start, within
+    // 1e-6 of it), and is positive again on the buckled branch.
+    const unsigned int n     = 100;
+    std::string        scene = cantilever_with_modes(n, "continuation");
+    scene += "subsection Loads\n  set Point forces = end: -1, 0, 0\nend\n"
+             "subsection Solver\n  subsection Continuation\n"
+             "    set Load factor range = -1, 3\n  end\nend\n"
+             "subsection Output\n  set Probes = mu: eigenvalue\nend\n";
+    const RunSummary summary =
+      rodnet::testing::run_scene_text(scene, "mode_shapes_probe");
+    ASSERT_TRUE(summary.failure.empty()) << summary.failure;
+    const std::size_t mu       = rodnet::testing::probe_column(summary, "mu");
+    const double      unloaded = std::pow(1.8751041, 4) / n;
+    EXPECT_NEAR(summary.rows.front()[mu] / unloaded, 1.0, 1e-3);
+    // The clamp holds the first segment: the free length is L - h/2, and
+    // P_cr = pi^2 EI / (4 (L - h/2)^2).
+    const double free_length = 1 - 0.5 / n;
+    ASSERT_NEAR(summary.critical_load_factor,
+                M_PI * M_PI / (4 * free_length * free_length),
+                1e-3);
+    for (const std::vector<double> &row : summary.rows)
+      if (std::abs(row[0] - summary.critical_load_factor) < 1e-6)
+        EXPECT_LT(std::abs(row[mu]), 1e-4 * unloaded);
+      else
+        EXPECT_GT(row[mu], 0) << "load factor " << row[0];
+  }
+
   TEST(ModeShapes, RefusedWithoutATangent)
   {
     try
