@@ -75,8 +75,12 @@ namespace rodnet
       double bifurcation_tolerance = 1e-8;
       /// At a located bifurcation, follow the branch along the null
       /// vector instead of the branch the path was on.
-      bool         switch_branches = true;
-      std::string  linear_solver   = "auto";
+      bool switch_branches = true;
+      /// With switch_branches: once the path has left the range (or Max
+      /// points), follow each switched branch's other side too, from its
+      /// bifurcation ("Switch branches = both").
+      bool         follow_both_branches = false;
+      std::string  linear_solver        = "auto";
       StrainLimits strain_limits;
 
       /// Declares the entries in the current subsection of @p prm.
@@ -259,6 +263,14 @@ namespace rodnet
                        StepInfo        &q_info,
                        const Observer  &on_converged);
 
+    /**
+     * Follows the path from @p p with first step length @p ds until it
+     * leaves the load factor range; throws SolverFailure where a step
+     * fails down to the minimum step or the points run out.
+     */
+    void
+    follow_path(PathPoint &p, double ds, const Observer &on_converged);
+
     /// Numbers, times, reports and observes the converged @p p.
     void
     finish_point(StepInfo        &info,
@@ -304,8 +316,13 @@ namespace rodnet
     unsigned int                             n_points = 0;
     unsigned int                             branch   = 0;
     std::array<std::pair<double, double>, 3> recent{};
-    bool                                     just_switched = false;
-    dealii::Timer                            timer;
+    /// Points reported since the path (re)started: recent holds as many.
+    unsigned int points_on_path = 0;
+    bool         just_switched  = false;
+    /// The other sides of switched branches, for follow_both_branches:
+    /// the bifurcation points with their tangents turned around.
+    std::vector<std::pair<PathPoint, StepInfo>> other_sides;
+    dealii::Timer                               timer;
   };
 } // namespace rodnet
 

@@ -38,9 +38,9 @@ namespace rodnet
                       "The run stops with an error after this many. [-]");
     prm.declare_entry("Switch branches",
                       "true",
-                      Bool(),
+                      dealii::Patterns::Selection("true|false|both"),
                       "At a located bifurcation, follow the branch along "
-                      "the null vector. [-]");
+                      "the null vector; both: then its other side too. [-]");
     prm.declare_entry("Bifurcation tolerance",
                       "1e-8",
                       Double(0, 1),
@@ -72,14 +72,15 @@ namespace rodnet
     output_points = dealii::Utilities::string_to_double(
       dealii::Utilities::split_string_list(prm.get("Output load factors")));
     for (const double point : output_points)
-      if (!(point > lower_limit && point < upper_limit))
+      if (!(point >= lower_limit && point <= upper_limit))
         throw std::invalid_argument(
           "entry \"Solver/Continuation/Output load factors\": " +
           prm.get("Output load factors") + ": the path never reaches " +
           std::to_string(point) + ", outside the load factor range (" +
           prm.get("Load factor range") + ")");
     max_steps             = prm.get_integer("Max points");
-    switch_branches       = prm.get_bool("Switch branches");
+    switch_branches       = prm.get("Switch branches") != "false";
+    follow_both_branches  = prm.get("Switch branches") == "both";
     bifurcation_tolerance = prm.get_double("Bifurcation tolerance");
   }
 } // namespace rodnet

@@ -52,6 +52,7 @@ namespace rodnet
     report(info);
     on_converged(info, p.u);
     recent = {{recent[1], recent[2], {p.s, p.lambda}}};
+    ++points_on_path;
   }
 
   void
@@ -61,8 +62,11 @@ namespace rodnet
     if (!free_motions.empty())
       throw std::invalid_argument(free_motions);
     timer.restart();
-    n_points = 0;
-    branch   = 0;
+    n_points       = 0;
+    points_on_path = 0;
+    branch         = 0;
+    recent         = {};
+    other_sides.clear();
 
     // The start: the equilibrium at load factor 0 nearest to u.
     PathPoint origin;
@@ -77,7 +81,34 @@ namespace rodnet
     PathPoint p = accept(u, 0, nullptr, result, info);
     finish_point(info, p, on_converged);
 
-    double ds = parameters.initial_step;
+    follow_path(p, parameters.initial_step, on_converged);
+    u = p.u;
+    // The other sides of the switched branches, each from its bifurcation
+    // (follow_both_branches); the path's last point stays u's.
+    while (!other_sides.empty())
+      {
+        auto [start, start_info] = other_sides.front();
+        other_sides.erase(other_sides.begin());
+        ++branch;
+        if (log != nullptr)
+          *log << "branch " << branch << ": the other side of the "
+               << "bifurcation at load factor " << number(start.lambda)
+               << std::endl;
+        points_on_path = 0;
+        just_switched  = true;
+        model.set_state(*start.state);
+        finish_point(start_info, start, on_converged);
+        follow_path(start, parameters.initial_step, on_converged);
+      }
+  }
+
+  void
+  ArclengthContinuation::follow_path(PathPoint      &p,
+                                     double          ds,
+                                     const Observer &on_converged)
+  {
+    StepInfo     info;
+    JudgedResult result;
     while (p.lambda < parameters.upper_limit &&
            p.lambda > parameters.lower_limit)
       {
@@ -125,13 +156,13 @@ namespace rodnet
           {
             info.kind = PointKind::limit_point;
             passed_limit_points.push_back(
-              n_points >= 2 ?
+              points_on_path >= 2 ?
                 parabola_extremum({{recent[1], recent[2], {q.s, q.lambda}}}) :
                 slope_extremum(p.s, p.lambda, p.t_lambda, q.s, q.t_lambda));
             if (log != nullptr)
               *log << "limit point at load factor " << std::setprecision(10)
                    << passed_limit_points.back() << std::setprecision(6)
-                   << " (parabola through the points around it)" << std::endl;
+                   << " (estimated from the points around it)" << std::endl;
           }
         else if (q.negative != p.negative && !just_switched)
           {
@@ -147,7 +178,6 @@ namespace rodnet
                                       0.5,
                                       2.0));
       }
-    u = p.u;
   }
 
   bool
@@ -174,6 +204,13 @@ namespace rodnet
         return true;
       }
     turn_to_null_vector(b);
+    if (parameters.follow_both_branches)
+      {
+        PathPoint other = b;
+        other.t_u *= -1;
+        other.t_lambda *= -1;
+        other_sides.emplace_back(std::move(other), info);
+      }
     p             = b;
     just_switched = true;
     ++branch;

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -85,6 +86,41 @@ namespace
         EXPECT_TRUE(p.check.stable) << "load factor " << p.load_factor;
         EXPECT_EQ(p.branch, p.load_factor > path.bifurcations[0] + 1e-6);
       }
+  }
+
+  TEST(Continuation, ElasticaBothBranches)
+  {
+    // Switch branches = both: after the buckled branch to P = 10, the path
+    // goes back to the bifurcation and follows the other side, the mirror
+    // image: the same tip x, the opposite deflection, at every output
+    // load factor (to the corrector's convergence, 1e-6 of L).
+    std::string scene = elastica_continuation(100);
+    scene.replace(scene.find("-1, 20"), 6, "-1, 10");
+    scene += "subsection Solver\n  subsection Continuation\n"
+             "    set Switch branches = both\n  end\nend\n";
+    const ContinuationPath path = follow(scene, {"100"});
+    ASSERT_EQ(path.bifurcations.size(), 1u);
+    std::map<double, Vector3> first, second;
+    for (std::size_t i = 0; i < path.points.size(); ++i)
+      {
+        const Point &p = path.points[i];
+        if (p.branch == 1)
+          first[p.load_factor] = path.positions[i][0];
+        else if (p.branch == 2)
+          second[p.load_factor] = path.positions[i][0];
+      }
+    // The second side starts at the bifurcation, as the first did.
+    EXPECT_NEAR(second.begin()->first, path.bifurcations[0], 1e-8);
+    unsigned int compared = 0;
+    for (const double P : {2.5, 3.0, 4.0, 5.0, 7.5, 10.0})
+      {
+        ASSERT_TRUE(first.count(P) && second.count(P)) << "P = " << P;
+        EXPECT_NEAR(first[P][0], second[P][0], 1e-6) << "P = " << P;
+        EXPECT_NEAR(first[P][1], -second[P][1], 1e-6) << "P = " << P;
+        EXPECT_GT(std::abs(first[P][1]), 0.1) << "P = " << P;
+        ++compared;
+      }
+    EXPECT_EQ(compared, 6u);
   }
 
   class ElasticaContinuation : public ::testing::TestWithParam<double>
