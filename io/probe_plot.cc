@@ -150,24 +150,36 @@ namespace rodnet
      * stable equilibria (column @p stable_column, 0 if none), those are
      * drawn solid and the unstable ones dashed red, as charts of load
      * paths through buckling and snap-through are read; the key only
-     * where @p key.
+     * where @p key. Where it has an arclength (column @p arclength_column,
+     * 0 if none), a row whose arclength falls below the one before starts
+     * the other side of a bifurcation (Switch branches = both): it is left
+     * undefined, so that no line joins the end of one side to the start of
+     * the next.
      */
     std::string
     plot_command(const std::string &csv_path,
                  const int          column,
                  const int          stable_column,
+                 const int          arclength_column,
                  const bool         key)
     {
-      const std::string style = " with linespoints pointtype 7 pointsize 0.5";
-      const std::string data  = "plot " + quote(csv_path) + " skip 1 using 2:";
-      if (stable_column == 0)
-        return data + std::to_string(column) + style + " notitle\n";
+      const std::string style  = " with linespoints pointtype 7 pointsize 0.5";
+      const auto        series = [&](const std::string &y) {
+        if (arclength_column == 0)
+          return quote(csv_path) + " skip 1 using 2:(" + y + ")";
+        const std::string s =
+          "column(" + std::to_string(arclength_column) + ")";
+        return "s0 = -1e300, " + quote(csv_path) + " skip 1 using 2:(r = " + s +
+               " < s0, s0 = " + s + ", r ? 1/0 : " + y + ")";
+      };
       const std::string y = "column(" + std::to_string(column) + ")";
-      const std::string s =
+      if (stable_column == 0)
+        return "plot " + series(y) + style + " notitle\n";
+      const std::string unstable =
         "column(" + std::to_string(stable_column) + ") == 0";
-      return data + "(" + s + " ? 1/0 : " + y + ")" + style +
-             (key ? " title 'stable', " : " notitle, ") + quote(csv_path) +
-             " skip 1 using 2:(" + s + " ? " + y + " : 1/0)" + style +
+      return "plot " + series(unstable + " ? 1/0 : " + y) + style +
+             (key ? " title 'stable', " : " notitle, ") +
+             series(unstable + " ? " + y + " : 1/0") + style +
              " dashtype 2 linecolor rgb '#d62728'" +
              (key ? " title 'unstable'" : " notitle") + "\n";
     }
@@ -247,10 +259,18 @@ namespace rodnet
             std::find(columns.begin(), columns.end(), "stable");
           const int stable_column =
             stable == columns.end() ? 0 : stable - columns.begin() + 1;
+          const auto arclength =
+            std::find(columns.begin(), columns.end(), "arclength");
+          const int arclength_column =
+            arclength == columns.end() ? 0 : arclength - columns.begin() + 1;
           for (unsigned int p = 0; p < n_probes; ++p)
             script << "set ylabel "
                    << quote(axis_label(columns[p + 2], units, p + 1)) << "\n"
-                   << plot_command(csv_path, p + 3, stable_column, p == 0);
+                   << plot_command(csv_path,
+                                   p + 3,
+                                   stable_column,
+                                   arclength_column,
+                                   p == 0);
           script << "unset multiplot\n";
           if (!script)
             return warn(png_path,

@@ -413,6 +413,31 @@ TEST(ProbePlot, MakesPng)
   EXPECT_EQ(read_text(png).substr(1, 3), "PNG");
 }
 
+TEST(ProbePlot, SidesOfABifurcationAreNotJoined)
+{
+  if (!gnuplot_on_path())
+    GTEST_SKIP() << "gnuplot is not on PATH";
+  const fs::path dir = scratch("plot_sides");
+  fs::create_directories(dir);
+  // A continuation table whose second side restarts at the bifurcation
+  // (arclength 1 after 2): that row is undefined in every series, so no
+  // line runs from (2, 0.8) back to (1, 0).
+  std::ofstream(dir / "probes.csv")
+    << "step,load_factor,y,arclength,branch,negative_eigenvalues,stable,"
+       "in_range\n"
+    << "0,0,0,0,0,0,1,1\n1,1,0,1,0,0,1,1\n2,2,0.8,2,1,0,1,1\n"
+    << "3,1,0,1,2,0,1,1\n4,2,-0.8,2,2,0,1,1\n";
+  const fs::path png = dir / "probes.png";
+  ::testing::internal::CaptureStderr();
+  plot_probes((dir / "probes.csv").string(), png.string(), "sides", {}, {}, 5);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  ASSERT_TRUE(fs::exists(png));
+  const std::string script = read_text(dir / "probes.png.gp");
+  EXPECT_NE(script.find("r = column(4) < s0, s0 = column(4), r ? 1/0 :"),
+            std::string::npos)
+    << script;
+}
+
 TEST(ProbePlot, WarnsOnceAndReturnsWhenItCannotPlot)
 {
   const fs::path dir = scratch("no_plot");
