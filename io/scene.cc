@@ -273,7 +273,7 @@ namespace rodnet
                       "gnuplot). [-]");
     prm.declare_entry("Mode shapes",
                       "0",
-                      Integer(0, 1000),
+                      Integer(0, 100),
                       "Newton and continuation: the n lowest eigenvalues "
                       "of the tangent at the last equilibrium into "
                       "modes.csv, the modes into modes-NNNNN.vtu. [-]");

@@ -106,7 +106,7 @@ namespace rodnet
     {
       const Eigen::Index size = factorization.free_dofs().size();
       const Eigen::Index max_columns =
-        std::min<Eigen::Index>(size, 40 * Eigen::Index(n) + 200);
+        std::min<Eigen::Index>(size, 10 * Eigen::Index(n) + 100);
       const Eigen::Index b = std::min<Eigen::Index>(block, size);
       std::mt19937       random(20261204);
       Eigen::MatrixXd    q(size, 0), t(0, 0);
@@ -306,7 +306,9 @@ namespace rodnet
       n_free += !constraints.is_constrained(i);
     if (n_free == 0)
       throw std::invalid_argument("every DoF is constrained: no eigenpair");
-    if (n_free <= max_dense_eigenpair_dofs || k == 0)
+    // The dense solver also where k is a fair part of the spectrum: the
+    // Lanczos basis would be as large as the space.
+    if (n_free <= max_dense_eigenpair_dofs || 4 * k >= n_free || k == 0)
       return dense_eigenpairs(tangent, constraints, k);
 
     Eigenpairs pairs;

@@ -63,7 +63,9 @@ namespace rodnet
    *
    * Throws std::invalid_argument if every DoF is constrained, and
    * std::runtime_error with the reason where no shift can be factorized or
-   * the iteration does not converge within 40 k + 200 Lanczos vectors.
+   * the iteration does not converge within 10 k + 100 Lanczos vectors
+   * (memory: that many vectors of the free DoFs). The dense solver also
+   * takes k of a quarter of the free DoFs or more.
    */
   Eigenpairs
   lowest_eigenpairs(const dealii::TrilinosWrappers::SparseMatrix &tangent,
