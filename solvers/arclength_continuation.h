@@ -254,7 +254,9 @@ namespace rodnet
      * The step from @p p to @p q (whose @p q_info is ready) crossed a
      * bifurcation: locates it, reports it, and either reports q and makes
      * it @p p, or (switch_branches) makes @p p the bifurcation point with
-     * its tangent along the new branch.
+     * its tangent along the new branch. False where the bisection finds no
+     * path from @p p to @p q's count (the step jumped onto another branch;
+     * the caller halves it), unless the step is already the shortest.
      */
     bool
     follow_bifurcation(PathPoint       &p,

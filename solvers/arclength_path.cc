@@ -168,6 +168,10 @@ namespace rodnet
           {
             if (follow_bifurcation(p, q, ds_taken, info, on_converged))
               continue;
+            // No path from p keeps its count up to q: the step jumped onto
+            // another branch. A shorter one stays on this path.
+            ds = ds_taken / 2;
+            continue;
           }
         just_switched = false;
         finish_point(info, q, on_converged);
@@ -188,7 +192,25 @@ namespace rodnet
                                             const Observer  &on_converged)
   {
     StepInfo  info;
-    PathPoint b = locate_bifurcation(p, ds, info);
+    PathPoint b;
+    try
+      {
+        b = locate_bifurcation(p, ds, info);
+      }
+    catch (const SolverFailure &e)
+      {
+        if (ds / 2 < parameters.min_step)
+          throw;
+        model.set_state(*p.state);
+        if (log != nullptr)
+          *log << "the step to load factor " << number(q.lambda)
+               << " changed the tangent's negative eigenvalues, but the path "
+                  "does not reach that point ("
+               << e.what()
+               << "): a jump onto another branch; the step is halved"
+               << std::endl;
+        return false;
+      }
     if (log != nullptr)
       *log << "bifurcation at load factor " << std::setprecision(10)
            << located_bifurcations.back() << std::setprecision(6)

@@ -123,6 +123,60 @@ namespace
     EXPECT_EQ(compared, 6u);
   }
 
+  /// A 3 x 3 welded lattice (8 segments per lath), its edges pushed
+  /// together by 0.015 of the span with an uplift, followed by
+  /// continuation to load factor 1 with the given extra Continuation
+  /// entries.
+  std::string
+  pushed_lattice(const std::string &continuation_entries)
+  {
+    std::string supports;
+    for (int j = 0; j <= 3; ++j)
+      supports += (j > 0 ? "; " : "") + std::string("@n_0_") +
+                  std::to_string(j) + ": x=0.015 y=0 z=0; @n_3_" +
+                  std::to_string(j) + ": x=-0.015 y=0 z=0";
+    return "subsection Geometry\n  set Generator = square lattice\n"
+           "  set Cells = 3, 3\n  set Beam length = 0.3333333333333333\n"
+           "  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
+           "subsection Material\n  subsection linear elastic\n"
+           "    set Stiffness input = direct\n    set EA = 1000\n"
+           "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
+           "subsection Supports\n  set Prescribed displacements = " +
+           supports +
+           "\nend\n"
+           "subsection Loads\n  set Distributed force = 0, 0, 0.0015\nend\n"
+           "subsection Solver\n  set Method = continuation\n"
+           "  subsection Continuation\n    set Load factor range = -1, 1\n" +
+           continuation_entries + "  end\nend\n";
+  }
+
+  TEST(Continuation, StepOntoAnotherBranchIsHalved)
+  {
+    // Near load factor 0.33 the lattice's path turns sharply (the crown
+    // rises fast at nearly constant load); default steps land past the
+    // turn on states with a negative eigenvalue that the path never
+    // reaches: no bisection finds a bifurcation between, and the run
+    // stopped there. The step is now halved. Reference: the same path in
+    // steps of at most 0.02 (146 points, no such landing).
+    const ContinuationPath coarse = follow(pushed_lattice(""), {"@n_1_1"});
+    const ContinuationPath fine =
+      follow(pushed_lattice("    set Initial step = 0.02\n"
+                            "    set Maximum step = 0.02\n"),
+             {"@n_1_1"});
+    for (const ContinuationPath *path : {&coarse, &fine})
+      {
+        EXPECT_TRUE(path->bifurcations.empty());
+        EXPECT_EQ(path->points.back().load_factor, 1.0);
+        for (const Point &p : path->points)
+          EXPECT_TRUE(p.check.stable) << "load factor " << p.load_factor;
+      }
+    EXPECT_LT(coarse.points.size(), fine.points.size() / 4);
+    EXPECT_NEAR(coarse.positions.back()[0][2],
+                fine.positions.back()[0][2],
+                1e-8);
+    EXPECT_GT(coarse.positions.back()[0][2], 0.07);
+  }
+
   class ElasticaContinuation : public ::testing::TestWithParam<double>
   {
   };
