@@ -5,7 +5,13 @@
 #ifndef RODNET_BENCH_GRIDSHELL_SCENE_H
 #define RODNET_BENCH_GRIDSHELL_SCENE_H
 
+#include <deal.II/base/parameter_handler.h>
+
+#include <io/scene.h>
+#include <solvers/static_solver.h>
+
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace rodnet
@@ -31,6 +37,40 @@ namespace rodnet
       s << "\nend\nsubsection Loads\n  set Steps = 40\n"
         << "  set Distributed force = 0, 0, 0.01\nend\n";
       return s.str();
+    }
+
+    /// The Scene of gridshell_scene(@p cells).
+    inline Scene
+    gridshell(const unsigned int cells)
+    {
+      dealii::ParameterHandler prm;
+      Scene::declare_parameters(prm);
+      prm.parse_input_from_string(gridshell_scene(cells));
+      return Scene(prm);
+    }
+
+    /// Solves @p model's first load step with @p parameters from the
+    /// undeformed state into @p u; that step's StepInfo.
+    inline StaticSolver::StepInfo
+    first_load_step(RodModel                       &model,
+                    const StaticSolver::Parameters &parameters,
+                    VectorType                     &u)
+    {
+      StaticSolver::StepInfo first;
+      u = model.create_vector();
+      try
+        {
+          StaticSolver(model, parameters)
+            .run(u,
+                 [&](const StaticSolver::StepInfo &info, const VectorType &) {
+                   first = info;
+                   throw std::runtime_error("first step done");
+                 });
+        }
+      catch (const std::runtime_error &)
+        {
+        }
+      return first;
     }
   } // namespace bench
 } // namespace rodnet

@@ -21,32 +21,8 @@
 #include <bench/options.h>
 #include <bench/timing.h>
 #include <cstdio>
-#include <stdexcept>
 
 using namespace rodnet;
-
-namespace
-{
-  /// The first converged load step of @p model.
-  VectorType
-  first_step(RodModel &model, const Scene &scene, double &load_factor)
-  {
-    VectorType u = model.create_vector();
-    try
-      {
-        StaticSolver(model, scene.solver)
-          .run(u, [&](const StaticSolver::StepInfo &info, const VectorType &) {
-            load_factor = info.load_factor;
-            throw std::runtime_error("first step done");
-          });
-      }
-    catch (const std::runtime_error &)
-      {
-      }
-    return u;
-  }
-
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -59,14 +35,12 @@ main(int argc, char **argv)
                 bench::number("--modes", modes, 1),
                 bench::number("--repeats", repeats, 1)});
 
-  dealii::ParameterHandler prm;
-  Scene::declare_parameters(prm);
-  prm.parse_input_from_string(bench::gridshell_scene(cells));
-  const Scene               scene(prm);
-  std::unique_ptr<RodModel> model       = scene.build_model();
-  double                    load_factor = 0;
-  const VectorType          u = first_step(*model, scene, load_factor);
-  MatrixType                tangent;
+  const Scene               scene = bench::gridshell(cells);
+  std::unique_ptr<RodModel> model = scene.build_model();
+  VectorType                u;
+  const double              load_factor =
+    bench::first_load_step(*model, scene.solver, u).load_factor;
+  MatrixType tangent;
   model->initialize_matrix(tangent);
   model->assemble(u, load_factor, nullptr, &tangent);
   const ConstrainedFactorization ldlt(tangent, model->constraints());

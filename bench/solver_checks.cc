@@ -41,10 +41,7 @@ main(int argc, char **argv)
                {bench::number("--cells", cells, 1),
                 bench::number("--repeats", repeats, 1)});
 
-  dealii::ParameterHandler prm;
-  Scene::declare_parameters(prm);
-  prm.parse_input_from_string(bench::gridshell_scene(cells));
-  const Scene               scene(prm);
+  const Scene               scene = bench::gridshell(cells);
   std::unique_ptr<RodModel> model = scene.build_model();
   std::printf("gridshell of %u x %u cells: %u DoFs\n",
               cells,
@@ -54,26 +51,14 @@ main(int argc, char **argv)
   // The first load step, with every check.
   StaticSolver::Parameters parameters = scene.solver;
   parameters.n_steps                  = 40;
-  VectorType   u                      = model->create_vector();
-  double       step_time = 0, load_factor = 0;
-  unsigned int iterations = 0;
-  try
-    {
-      StaticSolver(*model, parameters)
-        .run(u, [&](const StaticSolver::StepInfo &info, const VectorType &) {
-          step_time   = info.wall_time;
-          load_factor = info.load_factor;
-          iterations  = info.iterations;
-          throw std::runtime_error("first step done");
-        });
-    }
-  catch (const std::runtime_error &)
-    {
-    }
+  VectorType                   u;
+  const StaticSolver::StepInfo first =
+    bench::first_load_step(*model, parameters, u);
+  const double load_factor = first.load_factor;
   std::printf("first load step (load factor %g): %u iterations, %.3g s\n",
               load_factor,
-              iterations,
-              step_time);
+              first.iterations,
+              first.wall_time);
 
   VectorType r = model->create_vector();
   MatrixType tangent;
