@@ -20,14 +20,7 @@ repeats=${2:-3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-seconds() { # runs "$@", prints its wall seconds
-  local start end
-  start=$(date +%s%N)
-  "$@" > "$work/log" 2>&1 || { cat "$work/log" >&2; exit 1; }
-  end=$(date +%s%N)
-  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.4f", (b - a) / 1e9 }'
-}
-median() { tr ' ' '\n' | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+source "$root/bench/process_timing.sh"
 
 scene() { # N, method block
   cat <<END
@@ -82,13 +75,7 @@ end
 subsection Solver
   set Method = newton
 end" > "$work/steps.prm"
-  tc=() ts=()
-  for ((k = 0; k < repeats; ++k)); do
-    tc+=("$(seconds "$run" "$work/cont.prm" --output "$work/c")")
-    ts+=("$(seconds "$run" "$work/steps.prm" --output "$work/s")")
-  done
-  c=$(echo "${tc[*]}" | median)
-  s=$(echo "${ts[*]}" | median)
+  read -r c s < <(in_turn "$run" "$repeats" "$work/cont.prm" "$work/steps.prm")
   awk -v n=$n -v d="$dofs" -v p=$points -v c=$c -v s=$s 'BEGIN {
     printf "| %d | %s | %d | %.3f | %.4f | %.3f | %.4f | %.2f |\n",
       n, d, p, c, c / p, s, s / p, c / s }'

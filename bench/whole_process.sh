@@ -19,14 +19,7 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 meshes=(49 99 199 499 999)
 
-# Seconds of one run of "$@" (its output thrown away; a failure stops all).
-seconds() {
-  local start end
-  start=$(date +%s%N)
-  "$@" > "$work/log" 2>&1 || { cat "$work/log" >&2; exit 1; }
-  end=$(date +%s%N)
-  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.4f", (b - a) / 1e9 }'
-}
+source "$source_dir/bench/process_timing.sh"
 
 five_processes() {
   for n in "${meshes[@]}"; do
