@@ -2,8 +2,6 @@
 #include <io/vtu_output.h>
 #include <solvers/lowest_eigenpairs.h>
 
-#include <algorithm>
-#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -22,25 +20,6 @@ namespace rodnet
         csv << k + 1 << ',' << pairs.values[k] << '\n';
       if (!csv)
         throw std::runtime_error("cannot write \"" + path + "\"");
-    }
-
-    /// @p u moved along @p mode so that its largest component moves by a
-    /// tenth of @p model's size.
-    VectorType
-    moved_along(const RodModel            &model,
-                const VectorType          &u,
-                const std::vector<double> &mode)
-    {
-      double largest = 0;
-      for (const double m : mode)
-        largest = std::max(largest, std::abs(m));
-      const double amplitude = 0.1 * model.length_scale() / largest;
-      VectorType   moved     = u;
-      for (unsigned int i = 0; i < mode.size(); ++i)
-        if (mode[i] != 0)
-          moved[i] += amplitude * mode[i];
-      moved.compress(dealii::VectorOperation::add);
-      return moved;
     }
   } // namespace
 
@@ -62,7 +41,12 @@ namespace rodnet
       return {"modes.csv"};
     VtuOutput vtu(model.network(), directory, "modes");
     for (std::size_t k = 0; k < pairs.vectors.size(); ++k)
-      vtu.write(k + 1, k + 1, model, moved_along(model, u, pairs.vectors[k]));
+      vtu.write(k + 1,
+                k + 1,
+                model,
+                moved_along_mode(u,
+                                 pairs.vectors[k],
+                                 0.1 * model.length_scale()));
     return {"modes.csv", "modes.pvd"};
   }
 } // namespace rodnet

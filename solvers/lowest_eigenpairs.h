@@ -4,6 +4,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace rodnet
@@ -72,6 +74,29 @@ namespace rodnet
                     const dealii::AffineConstraints<double>      &constraints,
                     unsigned int                                  k,
                     double tolerance = 1e-9);
+
+  /**
+   * @p u moved along @p mode (one entry per DoF, as Eigenpairs::vectors)
+   * so that its largest component moves by @p distance (its sign the
+   * direction): a state pushed off an unstable equilibrium along its
+   * buckling mode, or a mode drawn on the state.
+   */
+  template <class VectorType>
+  VectorType
+  moved_along_mode(const VectorType          &u,
+                   const std::vector<double> &mode,
+                   const double               distance)
+  {
+    double largest = 0;
+    for (const double m : mode)
+      largest = std::max(largest, std::abs(m));
+    VectorType moved = u;
+    for (unsigned int i = 0; i < mode.size(); ++i)
+      if (mode[i] != 0)
+        moved[i] += distance / largest * mode[i];
+    moved.compress(dealii::VectorOperation::add);
+    return moved;
+  }
 } // namespace rodnet
 
 #endif

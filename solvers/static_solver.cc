@@ -294,11 +294,8 @@ namespace rodnet
     // Displace the state along the mode so that its largest component
     // moves by the given fraction of the model size, and let Newton find
     // the equilibrium nearby, on both sides.
-    double largest = 0;
-    for (const double m : mode)
-      largest = std::max(largest, std::abs(m));
-    const double amplitude =
-      parameters.branch_switch_amplitude * model.length_scale() / largest;
+    const double distance =
+      parameters.branch_switch_amplitude * model.length_scale();
 
     // The start's state returns unless a stable equilibrium is found.
     StateGuard                start(model);
@@ -307,10 +304,7 @@ namespace rodnet
     for (const double sign : {1.0, -1.0})
       {
         model.set_state(start.saved_state());
-        VectorType trial = u;
-        for (unsigned int i = 0; i < mode.size(); ++i)
-          trial[i] += sign * amplitude * mode[i];
-        trial.compress(dealii::VectorOperation::add);
+        VectorType trial = moved_along_mode(u, mode, sign * distance);
         if (!solve_at(trial, load_factor, nullptr, nullptr, true).converged)
           continue;
         model.reset_reference(trial);
