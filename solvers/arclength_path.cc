@@ -125,16 +125,6 @@ namespace rodnet
         double     lambda = 0, ds_taken = ds;
         info               = StepInfo();
         const bool stepped = step(p, ds, next, lambda, result);
-        // A corrector that needs more than twice the iterations the step
-        // length aims at has come far from its prediction, perhaps onto
-        // another branch (a step over a snap-through): a shorter step
-        // follows the path, as long as there is one.
-        if (stepped && ds / 2 >= parameters.min_step &&
-            result.iterations > 2 * parameters.target_iterations)
-          {
-            ds /= 2;
-            continue;
-          }
         const auto target =
           stepped ? crossed_target(p.lambda, lambda) : std::nullopt;
         if (!stepped ||
