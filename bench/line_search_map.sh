@@ -6,7 +6,9 @@
 # Newton iterations of the converged steps, the wall time, the tip and
 # whether the last equilibrium is stable (the probes' "stable" column).
 #
-# Usage: bench/line_search_map.sh [RODNET_RUN] (default build/release/rodnet-run)
+# Usage: [LINE_SEARCHES="trust region,energy"] bench/line_search_map.sh [RODNET_RUN]
+#        (default build/release/rodnet-run; LINE_SEARCHES: a comma-separated
+#        subset of the line searches, default all)
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 run=${1:-$root/build/release/rodnet-run}
@@ -23,8 +25,11 @@ problems=(
   "arc, out-of-plane end load, 1 step|arc|"
   "helical spring, 1 step|helical_spring|"
   "square lattice|square_lattice|"
+  "P1, N = 4000 (short stiff segments), 1 load step|p1_gravity_cantilever|subsection Geometry;set Segments = 3999;end"
+  "deep arch past its limit point (0.897), 10 load steps to 1|deep_arch|subsection Solver;set Method = newton;end;subsection Loads;set Steps = 10;end"
 )
-searches=("full step" "energy" "backtrack" "polynomial")
+IFS=, read -r -a searches <<<"${LINE_SEARCHES:-}"
+[ ${#searches[@]} -gt 0 ] || searches=("full step" "energy" "trust region" "backtrack" "polynomial")
 
 echo "| problem | line search | outcome | steps converged / cut | Newton iterations | wall s | tip x, y, z | stable |"
 echo "|---|---|---|---|---|---|---|---|"

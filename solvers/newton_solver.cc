@@ -1,6 +1,7 @@
 #include <solvers/energy_line_search.h>
 #include <solvers/newton_solver.h>
 #include <solvers/nox_group.h>
+#include <solvers/trust_region_newton.h>
 
 #include <NOX.H>
 #include <Teuchos_ParameterList.hpp>
@@ -68,11 +69,11 @@ namespace rodnet
         return "Backtrack";
       if (name == "polynomial")
         return "Polynomial";
-      if (name == "full step")
+      if (name == "full step" || name == "trust region")
         return "Full Step";
       throw std::invalid_argument(
         "unknown line search \"" + name +
-        "\"; known: energy, backtrack, polynomial, full step");
+        "\"; known: energy, backtrack, polynomial, full step, trust region");
     }
 
     /// NOX's parameters: a Newton direction, the named line search.
@@ -188,13 +189,23 @@ namespace rodnet
                       MatrixType                &tangent,
                       TangentFactorizationCache *factorizations) const
   {
-    if (parameters.line_search == "energy" && !problem.energy)
+    if (parameters.needs_potential() && (!problem.energy || problem.rank_one))
       {
         Result result;
-        result.failure = "the energy line search needs the potential of the "
-                         "problem, which this solve does not have";
+        result.failure = (parameters.line_search == "energy" ?
+                            "the energy line search" :
+                            "the trust region") +
+                         std::string(" needs the potential of the problem, "
+                                     "which this solve does not have");
         result.residual_norm = NAN;
         return result;
+      }
+    if (parameters.line_search == "trust region")
+      {
+        TrustRegionNewton::Parameters trust;
+        trust.tolerance      = parameters.tolerance;
+        trust.max_iterations = parameters.max_iterations;
+        return TrustRegionNewton(trust).solve(problem, x, tangent);
       }
     const Teuchos::RCP<Teuchos::ParameterList> nox = nox_parameters(parameters);
     Teuchos::RCP<NoxGroup>                     group;

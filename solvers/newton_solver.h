@@ -34,11 +34,20 @@ namespace rodnet
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 25;
       /// "energy" (EnergyLineSearch: needs Problem::energy), "backtrack",
-      /// "polynomial" (NOX's, on |residual|) or "full step".
+      /// "polynomial" (NOX's, on |residual|), "full step" or "trust region"
+      /// (TrustRegionNewton: needs Problem::energy, not run by NOX).
       std::string line_search = "full step";
       /// The direct solver of the Newton systems: "auto", "klu" or "band"
       /// (TangentFactorization).
       std::string linear_solver = "auto";
+
+      /// Whether the globalization judges steps by the problem's potential
+      /// (the energy line search and the trust region).
+      bool
+      needs_potential() const
+      {
+        return line_search == "energy" || line_search == "trust region";
+      }
 
       /// Declares the entries of these parameters ("Line search", "Max
       /// iterations") in the current subsection of @p prm, with their defaults

@@ -10,9 +10,9 @@ namespace rodnet
     prm.declare_entry("Line search",
                       "full step",
                       dealii::Patterns::Selection(
-                        "energy|backtrack|polynomial|full step"),
-                      "Newton's globalization: on the energy, or on "
-                      "|residual| (NOX's). [-]");
+                        "energy|backtrack|polynomial|full step|trust region"),
+                      "Newton's globalization (doc/nonlinear_solvers.md). "
+                      "[-]");
     prm.declare_entry("Linear solver",
                       "auto",
                       dealii::Patterns::Selection("auto|klu|band"),

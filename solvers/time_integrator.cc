@@ -62,13 +62,13 @@ namespace rodnet
         "time stepping: the midpoint rule conserves a stored energy, which "
         "a material with internal variables (a viscoelastic law) does not "
         "have; use newmark or backward euler");
-    if (p.newton.line_search == "energy" &&
-        !scheme->has_incremental_potential())
+    if (p.newton.needs_potential() && !scheme->has_incremental_potential())
       throw std::invalid_argument(
         "time stepping: the " + scheme->name() +
-        " step is not the minimum of a potential, which the energy line "
-        "search needs; use newmark, backward euler or quasi-static, or "
-        "another line search");
+        " step is not the minimum of a potential, which the " +
+        p.newton.line_search +
+        " globalization needs; use newmark, backward euler or quasi-static, "
+        "or another line search");
     model.initialize_matrix(tangent);
     last_increment = model.create_vector();
     if (!scheme->dynamic())

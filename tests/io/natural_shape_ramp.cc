@@ -51,14 +51,6 @@ namespace
     return s.str();
   }
 
-  /// The tip position at the last step of @p summary.
-  std::vector<double>
-  tip(const RunSummary &summary)
-  {
-    const std::vector<double> &row = summary.rows.back();
-    return {row[1], row[2], row[3]};
-  }
-
   TEST(NaturalShapeRamp, EachStepIsTheScaledHelix)
   {
     // Natural curvature k = 3 and twist tau = 2 ramped in four load steps
