@@ -6,7 +6,8 @@
 # dashed, the tangent's negative eigenvalues and the corrector iterations of
 # every step; and the limit loads of Lee's frame at 100 and 200 segments per
 # member (the shipped scene has 50). scenes/eigenstrain_column.prm: midspan
-# deflection against the eigenstrain's load factor.
+# deflection against the eigenstrain's load factor. scenes/rollup_lateral.prm:
+# the end moment against the tip's out-of-plane displacement.
 #
 # Usage: bench/continuation_charts.sh [RODNET_RUN] [OUTPUT_DIR]
 #        (defaults build/release/rodnet-run, doc/)
@@ -43,6 +44,12 @@ END
 "$run" "$root/scenes/lee_frame.prm" --output "$work/lee" > "$work/lee.log" 2>&1
 "$run" "$root/scenes/eigenstrain_column.prm" --output "$work/column" \
   > "$work/column.log" 2>&1
+cat "$root/scenes/rollup_lateral.prm" - > "$work/rollup.prm" <<'END'
+subsection Output
+  set Probes = tip_y: position end y; tip_z: position end z
+end
+END
+"$run" "$work/rollup.prm" --output "$work/rollup" > "$work/rollup.log" 2>&1
 
 # Lee's frame on finer meshes: the load stays at L/5 from the corner,
 # vertex N/5 of the beam.
@@ -59,7 +66,7 @@ for n in 100 200; do
 done
 
 # Iterations per step from the log ("step k: ..., n iteration(s)").
-for case in arch elastica lee column; do
+for case in arch elastica lee column rollup; do
   sed -n 's/^step \([0-9]*\): .*, \([0-9]*\) iteration(s).*/\1 \2/p' \
     "$work/$case.log" > "$work/$case.iterations"
 done
@@ -103,7 +110,11 @@ plot_path "$work/lee/probes.csv" '120 - $4' "load point deflection (down) [-]" 1
 plot_path "$work/column/probes.csv" '$3' "midspan deflection [L]" 1 \
   "pinned column, eigenstrain = load factor x 10 x critical: bifurcation at the critical eigenstrain" \
   "$out/continuation_eigenstrain_column.png" "$work/column.iterations"
+plot_path "$work/rollup/probes.csv" '-$4' "tip out of plane, -z [L]" 1 \
+  "roll-up, isotropic: lateral bifurcation at M = 2 pi EI/L x 0.25 (a quarter circle)" \
+  "$out/continuation_rollup.png" "$work/rollup.iterations"
 grep -h "limit point at\|bifurcation at" "$work/arch.log" "$work/elastica.log" \
-  "$work/lee.log" "$work/column.log"
+  "$work/lee.log" "$work/column.log" "$work/rollup.log"
 echo "charts in $out: continuation_deep_arch.png, continuation_elastica.png," \
-  "continuation_lee_frame.png, continuation_eigenstrain_column.png"
+  "continuation_lee_frame.png, continuation_eigenstrain_column.png," \
+  "continuation_rollup.png"

@@ -171,7 +171,8 @@ namespace rodnet
     /**
      * Moment @p moment about the fixed unit @p axis at junction
      * @p junction (Lestringant & Kochmann appendix C): the load potential
-     * -lambda M theta_u(q). The junction must have a free rotation:
+     * -lambda M theta_u(q), q the junction's rotation since the undeformed
+     * state (AxisMomentFamily). The junction must have a free rotation:
      * finalize() refuses one whose rotation is held. A moment at a rod end
      * or inside a rod acts on a rotation handle there
      * (RodNetwork::add_rotation_handle()).

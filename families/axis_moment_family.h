@@ -18,8 +18,13 @@ namespace rodnet
 
   /**
    * Applied moments about fixed axes at junction quaternions: the load
-   * potential -lambda M theta_u(q) of each (Lestringant & Kochmann
-   * eqs. 32-33), a stencil of the junction's four quaternion DoFs.
+   * potential -lambda M theta_u(q Q) of each (Lestringant & Kochmann
+   * eqs. 32-33), a stencil of the junction's four quaternion DoFs q (the
+   * increment since the reference) with Q the rotation at the reference:
+   * a function of the junction's whole rotation, so the load does not
+   * depend on where the steps ended. At a state where R v1 is orthogonal
+   * to u its load stiffness is that of a quasi-tangential moment with the
+   * lever R v1 (doc/continuation.md, "Roll-up under an end moment").
    */
   class AxisMomentFamily : public ElementFamily
   {

@@ -147,6 +147,7 @@ namespace
     "helical_spring",     // validation/helical_spring
     "hexagonal_truss",    // validation/hexagonal_truss
     "lee_frame",          // validation/continuation_snap
+    "rollup_lateral",     // validation/rollup_lateral
   };
 
   class ExampleScenes : public ::testing::TestWithParam<Expectation>
