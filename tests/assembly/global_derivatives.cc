@@ -1,14 +1,16 @@
 // The assembled residual is the gradient of the assembled total potential
 // energy and the assembled tangent is the gradient of the residual (central
 // finite differences), for both kernels, with and without an elastic
-// foundation (in every direction, or along one), on a rod in a random
-// state: this checks the DoF maps, the chain rule, the constraint handling
-// and the loop over element families together.
+// foundation (in every direction, or along one), with and without a moment
+// about a fixed axis at a rotation handle on the free end, on a rod in a
+// random state whose reference was reset away from the undeformed one: this
+// checks the DoF maps, the chain rule, the constraint handling and the loop
+// over element families together.
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
-#include <families/elastic_foundation.h>
 #include <materials/linear_elastic_rod.h>
 
+#include <families/elastic_foundation.h>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -25,13 +27,20 @@ namespace
   };
 
   std::unique_ptr<RodModel>
-  make_model(const std::string &kernel, const Foundation foundation)
+  make_model(const std::string &kernel,
+             const Foundation   foundation,
+             const bool         end_moment)
   {
     auto network = std::make_unique<RodNetwork>();
     network->add_rod(generators::helix(0.5, 0.1, 0.5, 12),
                      false,
                      Vector3(0.3, 0.2, 1.0),
                      kernel);
+    const unsigned int handle =
+      end_moment ?
+        network->add_rotation_handle("end",
+                                     network->rods()[0].vertices.back()) :
+        0;
     network->create_triangulation();
     auto model = std::make_unique<RodModel>(
       std::move(network),
@@ -48,24 +57,30 @@ namespace
         parameters.stiffness = 40;
         if (foundation == Foundation::directional)
           parameters.direction = Vector3(0.2, 0.3, 1.0);
-        model->add_element_family(std::make_unique<ElasticFoundation>(
-          model->network(), model->layout(), parameters));
+        model->add_element_family(
+          std::make_unique<ElasticFoundation>(model->network(),
+                                              model->layout(),
+                                              parameters));
       }
+    if (end_moment)
+      // The potential -M theta_u(q Q) of the junction's whole rotation, Q
+      // its rotation at the reference (a reset below moves it).
+      model->add_moment(handle, Vector3(0.3, -0.4, 0.8).normalized(), 0.9);
     model->finalize();
     return model;
   }
 
-  class GlobalDerivatives
-    : public ::testing::TestWithParam<std::tuple<std::string, Foundation>>
+  class GlobalDerivatives : public ::testing::TestWithParam<
+                              std::tuple<std::string, Foundation, bool>>
   {
   };
 
   TEST_P(GlobalDerivatives, ResidualAndTangentMatchFiniteDifferences)
   {
-    const auto [kernel, foundation]              = GetParam();
-    const auto                             model = make_model(kernel, foundation);
-    VectorType                             u     = model->create_vector();
-    std::mt19937                           random(7);
+    const auto [kernel, foundation, end_moment] = GetParam();
+    const auto   model = make_model(kernel, foundation, end_moment);
+    VectorType   u     = model->create_vector();
+    std::mt19937 random(7);
     std::uniform_real_distribution<double> small(-0.05, 0.05);
     for (unsigned int i = 0; i < u.size(); ++i)
       u[i] = small(random);
@@ -105,17 +120,19 @@ namespace
           }
       }
     std::cout << kernel << ", foundation " << static_cast<int>(foundation)
-              << ": residual error " << err_r / max_r
-              << ", tangent error " << err_k / max_k << std::endl;
+              << (end_moment ? ", end moment" : "") << ": residual error "
+              << err_r / max_r << ", tangent error " << err_k / max_k
+              << std::endl;
     EXPECT_LT(err_r / max_r, 1e-6);
     EXPECT_LT(err_k / max_k, 1e-6);
   }
 
-  INSTANTIATE_TEST_SUITE_P(HingeKernels,
-                           GlobalDerivatives,
-                           ::testing::Combine(
-                             ::testing::Values("simple", "classic"),
-                             ::testing::Values(Foundation::none,
-                                               Foundation::isotropic,
-                                               Foundation::directional)));
+  INSTANTIATE_TEST_SUITE_P(
+    HingeKernels,
+    GlobalDerivatives,
+    ::testing::Combine(::testing::Values("simple", "classic"),
+                       ::testing::Values(Foundation::none,
+                                         Foundation::isotropic,
+                                         Foundation::directional),
+                       ::testing::Bool()));
 } // namespace
