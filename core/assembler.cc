@@ -273,7 +273,7 @@ namespace rodnet
                              *configuration_,
                              history,
                              step_length,
-                             load_factor};
+                             applied_load_factor(load_factor)};
     double             energy = 0;
     for (unsigned int f = 0; f < families.size(); ++f)
       assemble_family(f,
@@ -290,12 +290,13 @@ namespace rodnet
 
   void
   RodModel::add_dead_loads(const VectorType  &u,
-                           const double       load_factor,
+                           const double       ramp,
                            const VectorType  *extra_force,
                            const SystemBlock *block,
                            double            &energy,
                            VectorType        *residual) const
   {
+    const double load_factor = applied_load_factor(ramp);
     // Potential -lambda f.x, with x = X + u; the constant f.X does not
     // change any derivative and is dropped.
     energy -= load_factor * (f_ext * u);

@@ -26,7 +26,9 @@ namespace rodnet
     const InternalVariables &history;
     /// Time step of the materials' incremental update (0: stored energy).
     double time_step;
-    /// Load factor of the assembly (load-like families scale with it).
+    /// Factor on the applied loads of the assembly (load-like families
+    /// scale with it): the load factor, or 1 where the loads are fixed
+    /// (RodModel::applied_load_factor()).
     double load_factor;
   };
 

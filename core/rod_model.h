@@ -157,6 +157,24 @@ namespace rodnet
     ramp_natural_shape(const NaturalShapeParts         &parts,
                        const std::vector<unsigned int> &rods);
 
+    /**
+     * Holds the dead loads and the applied moments at their full value at
+     * every load factor, which then ramps only the prescribed displacements
+     * and rotations and the ramped natural shape: a natural shape that grows
+     * (or a support that moves) under a load that is there all along
+     * (before finalize()).
+     */
+    void
+    fix_loads();
+
+    /// The factor on the dead loads and applied moments at @p load_factor:
+    /// @p load_factor, or 1 where the loads are fixed (fix_loads()).
+    double
+    applied_load_factor(double load_factor) const
+    {
+      return loads_fixed ? 1.0 : load_factor;
+    }
+
     /// @name Dead loads at load factor 1 (before finalize())
     /// @{
     void
@@ -569,8 +587,8 @@ namespace rodnet
       const std::function<void(const LocalContribution &)> &copier,
       bool concurrent_copier = false) const;
 
-    /// Adds the dead load terms at @p load_factor (and @p extra_force, if
-    /// not null) to @p energy and, at the rows @p block (null: the model's
+    /// Adds the dead load terms at @p load_factor (their factor
+    /// applied_load_factor(); and @p extra_force, if not null) to @p energy and, at the rows @p block (null: the model's
     /// own numbering), to @p residual (if not null).
     void
     add_dead_loads(const VectorType  &u,
@@ -641,6 +659,8 @@ namespace rodnet
     NaturalShapeParts                               ramped_parts;
     /// The load factor the ramped materials are at (NaN: not yet set).
     mutable double ramped_at = std::nan("");
+    /// Whether the loads stay at their full value (fix_loads()).
+    bool loads_fixed = false;
     std::vector<std::unique_ptr<HingeKernel>>       kernels;
     std::vector<std::unique_ptr<JunctionKernel>>    junction_kernels;
     std::unique_ptr<DofLayout>                      layout_;

@@ -37,6 +37,13 @@ namespace rodnet
 
 
   void
+  RodModel::fix_loads()
+  {
+    loads_fixed = true;
+  }
+
+
+  void
   RodModel::follow_natural_shape(const double load_factor) const
   {
     if (given_materials.empty() || load_factor == ramped_at)

@@ -126,14 +126,14 @@ namespace rodnet
     prm.declare_entry("Direction",
                       "all",
                       Anything(),
-                      "The direction the springs act along, \"x, y, z\" "
-                      "(e.g. the vertical of a rod lying on the ground), or "
-                      "\"all\" (a rod bonded to a substrate). [-]");
+                      "The springs' direction, \"x, y, z\" (the vertical "
+                      "of a rod on the ground), or \"all\" (a rod bonded "
+                      "to a substrate). [-]");
     prm.declare_entry("Rods",
                       "all",
                       Anything(),
-                      "The rods on the foundation: \"all\" or a list of rod "
-                      "numbers \"0, 2\". [-]");
+                      "Rods on the foundation: \"all\" or rod numbers "
+                      "\"0, 2\". [-]");
   }
 
 

@@ -204,8 +204,8 @@ namespace rodnet
     prm.declare_entry("Mass per length",
                       "0",
                       Double(0),
-                      "Mass of the rod per unit undeformed length, for "
-                      "gravity. [kg/m]");
+                      "Mass per unit undeformed length, for gravity. "
+                      "[kg/m]");
     prm.declare_entry("Ramped natural shape",
                       "",
                       Anything(),
@@ -213,6 +213,11 @@ namespace rodnet
                       "scales as it scales the loads: \"curvature, twist, "
                       "eigenstrain\" or some, then \": <rod>, ...\" or all "
                       "rods. [-]");
+    prm.declare_entry("Fixed loads",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "Forces and moments at full value at every load "
+                      "factor, which ramps only the rest. [-]");
     prm.leave_subsection();
   }
 
@@ -340,6 +345,13 @@ namespace rodnet
     mass_per_length   = prm.get_double("Mass per length");
     natural_shape_ramp =
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
+    fixed_loads = prm.get_bool("Fixed loads");
+    if (fixed_loads && !natural_shape_ramp && prescribed_displacements.empty() &&
+        prescribed_rotations.empty())
+      throw std::invalid_argument(
+        "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
+        "has nothing to ramp; give Loads/Ramped natural shape, "
+        "Supports/Prescribed displacements or Supports/Prescribed rotations");
     prm.leave_subsection();
   }
 
@@ -538,6 +550,8 @@ namespace rodnet
     model->apply(supports_and_loads(model->network()));
     if (natural_shape_ramp)
       ramp_natural_shape(*model);
+    if (fixed_loads)
+      model->fix_loads();
     model->finalize();
     if (midpoint_clamp)
       check_midpoint_clamps(*model);
@@ -636,6 +650,10 @@ namespace rodnet
         "entry \"" + natural_shape_ramp_entry +
         "\": the bending-active element of dynamic relaxation has no "
         "natural shape; use Solver/Method = newton or continuation");
+    if (fixed_loads)
+      throw std::invalid_argument(
+        "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "
+        "only; use Solver/Method = newton or continuation");
     auto [network, materials] = build_network();
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)

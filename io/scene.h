@@ -305,6 +305,8 @@ namespace rodnet
     double      mass_per_length;
     /// Loads/Ramped natural shape, if set.
     std::optional<NaturalShapeRamp> natural_shape_ramp;
+    /// Loads/Fixed loads.
+    bool        fixed_loads = false;
     ProblemSize model_size;
   };
 } // namespace rodnet

@@ -2,7 +2,9 @@
 // the rods' natural shape as it scales the loads. A cantilever whose
 // natural curvature and twist are ramped is, at each load step, the helix of
 // that fraction of its natural shape; one whose eigenstrain is ramped grows
-// by that fraction of it; the entry's errors name it.
+// by that fraction of it; one whose natural curvature grows under an end
+// moment held fixed (Loads/Fixed loads) is the arc of that curvature plus
+// the moment's; the entries' errors name them.
 #include <common/run_scene_text.h>
 #include <common/scene_text.h>
 
@@ -106,6 +108,65 @@ namespace
     const double rest = 1 - 0.5 / 19.5;
     EXPECT_NEAR(ramped.rows[1][1], 1 + 0.05 * rest, 1e-10);
     EXPECT_NEAR(ramped.rows[2][1], 1 + 0.1 * rest, 1e-10);
+  }
+
+  /// The chord 2 sin(k/2)/k of a unit arc of curvature @p k.
+  double
+  arc_chord(const double k)
+  {
+    return k == 0 ? 1.0 : 2 * std::sin(k / 2) / k;
+  }
+
+  TEST(NaturalShapeRamp, GrowsUnderAFixedMoment)
+  {
+    // Natural curvature k0 = 2 ramped in four steps under an end moment
+    // M = 0.5 about d1 (EI1 = 1). With no force at the tip the internal
+    // moment is M all along, EI1 (k - lambda k0) = M: at load factor
+    // lambda the rod is the arc of curvature lambda k0 + M / EI1 with the
+    // moment held at its full value (Loads/Fixed loads), and of curvature
+    // lambda (k0 + M / EI1) with the moment ramped too (the default).
+    // The polygon's curvature is the arc's to O(h^2): tolerance 0.8 / n^2.
+    const unsigned int n = 100;
+    for (const bool fixed : {true, false})
+      {
+        const RunSummary run = rodnet::testing::run_scene_text(
+          shaped_cantilever(n, 2, 0, 0, 4, "curvature") +
+            "subsection Loads\n  set Moments = end: 0,0,1 0.5\n"
+            "  set Fixed loads = " +
+            (fixed ? "true" : "false") + "\nend\n",
+          "natural_shape_ramp_fixed_moment");
+        ASSERT_TRUE(run.failure.empty()) << run.failure;
+        ASSERT_EQ(run.rows.back()[0], 1.0);
+        for (std::size_t step = 1; step < run.rows.size(); ++step)
+          {
+            const double lambda = run.rows[step][0];
+            const double k      = fixed ? 2 * lambda + 0.5 : lambda * 2.5;
+            const std::vector<double> &row = run.rows[step];
+            const double               chord =
+              std::sqrt(row[1] * row[1] + row[2] * row[2] + row[3] * row[3]);
+            EXPECT_NEAR(chord / arc_chord(k), 1.0, 0.8 / (n * n))
+              << (fixed ? "fixed" : "ramped") << " moment, load factor "
+              << lambda;
+          }
+      }
+  }
+
+  TEST(NaturalShapeRamp, FixedLoadsNeedSomethingToRamp)
+  {
+    try
+      {
+        rodnet::testing::run_scene_text(
+          shaped_cantilever(20, 2, 0, 0, 1, "") +
+            "subsection Loads\n  set Fixed loads = true\nend\n",
+          "natural_shape_ramp_fixed_error");
+        ADD_FAILURE() << "fixed loads with nothing ramped ran";
+      }
+    catch (const std::invalid_argument &e)
+      {
+        EXPECT_NE(std::string(e.what()).find("entry \"Loads/Fixed loads\""),
+                  std::string::npos)
+          << e.what();
+      }
   }
 
   TEST(NaturalShapeRamp, ErrorsNameTheEntry)
