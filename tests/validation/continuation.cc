@@ -5,6 +5,9 @@
 //    bifurcation located on the straight branch against pi^2/4, then the
 //    switch onto the buckled branch and its tip positions at every
 //    tabulated load against the exact elliptic-integral solution;
+//  - the heavy column (Korner et al. 5a), clamped, under its own distributed
+//    compressive dead load, without imperfection: the bifurcation located
+//    against q L^3 / B = (9/4) j_{-1/3,1}^2 = 7.83735 (VALIDATION.md);
 //  - the deep circular arch of DaDeppo & Schmidt (1975, "Instability of
 //    clamped-hinged circular arches subjected to a point load", Trans. ASME
 //    J. Appl. Mech. 42, 894-896): 215 degrees, clamped at one end, hinged
@@ -88,6 +91,43 @@ namespace
       }
   }
 
+  class HeavyColumnContinuation : public ::testing::TestWithParam<double>
+  {
+  };
+
+  TEST_P(HeavyColumnContinuation, BifurcationLocated)
+  {
+    // The elastica's rod under a distributed compressive dead load q per
+    // unit length instead of the end load, followed to q = 10 B/L^3: the
+    // straight branch loses stability at (9/4) j_{-1/3,1}^2 = 7.83735
+    // (from the first zero of the Bessel function J_{-1/3}); located at
+    // -1.03e-5 relative at N = 200 (-5.2e-5 at 100: N^-2). The buckled branch
+    // beyond is stable, with EI2 = 2 EI1 and with EI2 = EI1 (whose
+    // buckling plane may turn: a symmetry mode).
+    std::string scene = elastica_continuation(200, GetParam());
+    scene.replace(scene.find("-1, 20"), 6, "-1, 10");
+    scene += "subsection Loads\n  set Point forces =\n"
+             "  set Distributed force = -1, 0, 0\nend\n";
+    const ContinuationPath path = follow(scene, {"200"});
+    ASSERT_EQ(path.bifurcations.size(), 1u);
+    const double exact = 7.83735;
+    std::cout << "EI2 = " << GetParam() << " EI1: heavy column bifurcation "
+              << path.bifurcations[0] << ", relative error "
+              << path.bifurcations[0] / exact - 1 << std::endl;
+    EXPECT_NEAR(path.bifurcations[0], exact, 1e-4 * exact);
+    for (const Point &p : path.points)
+      EXPECT_TRUE(p.check.stable) << "load factor " << p.load_factor;
+    EXPECT_EQ(path.points.back().load_factor, 10.0);
+    // Buckled at q = 10: the top has moved sideways.
+    EXPECT_GT(std::hypot(path.positions.back()[0][1],
+                         path.positions.back()[0][2]),
+              0.1);
+  }
+
+  INSTANTIATE_TEST_SUITE_P(Sections,
+                           HeavyColumnContinuation,
+                           ::testing::Values(2.0, 1.0));
+
   TEST(Continuation, ElasticaBothBranches)
   {
     // Switch branches = both: after the buckled branch to P = 10, the path
@@ -98,7 +138,7 @@ namespace
     scene.replace(scene.find("-1, 20"), 6, "-1, 10");
     scene += "subsection Solver\n  subsection Continuation\n"
              "    set Switch branches = both\n  end\nend\n";
-    const ContinuationPath path = follow(scene, {"100"});
+    const ContinuationPath path = follow(scene, {"200"});
     ASSERT_EQ(path.bifurcations.size(), 1u);
     std::map<double, Vector3> first, second;
     for (std::size_t i = 0; i < path.points.size(); ++i)
