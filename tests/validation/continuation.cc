@@ -138,7 +138,7 @@ namespace
     scene.replace(scene.find("-1, 20"), 6, "-1, 10");
     scene += "subsection Solver\n  subsection Continuation\n"
              "    set Switch branches = both\n  end\nend\n";
-    const ContinuationPath path = follow(scene, {"200"});
+    const ContinuationPath path = follow(scene, {"100"});
     ASSERT_EQ(path.bifurcations.size(), 1u);
     std::map<double, Vector3> first, second;
     for (std::size_t i = 0; i < path.points.size(); ++i)
