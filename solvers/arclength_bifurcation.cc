@@ -11,17 +11,22 @@ namespace rodnet
 {
   ArclengthContinuation::PathPoint
   ArclengthContinuation::locate_bifurcation(const PathPoint &lo,
+                                            const PathPoint &hi,
                                             const double     ds_hi,
                                             StepInfo        &info)
   {
-    double s_lo = 0, s_hi = ds_hi;
-    double lambda_lo = lo.lambda, lambda_hi = lo.lambda + ds_hi * lo.t_lambda;
-    VectorType   u_lo = lo.u;
+    double       s_lo = 0, s_hi = ds_hi;
+    double       lambda_lo = lo.lambda, lambda_hi = hi.lambda;
+    VectorType   u_lo = lo.u, u_hi = hi.u;
     JudgedResult result_lo;
     const double tolerance =
       parameters.bifurcation_tolerance * std::max(1.0, std::abs(lo.lambda));
     model.set_state(*lo.state);
-    while (std::abs(lambda_hi - lambda_lo) > tolerance &&
+    // Down to the load factor's tolerance, and to 1e-6 of the step in
+    // arclength, for the continuity check below (near a limit point the
+    // load factor changes little along the path).
+    while ((std::abs(lambda_hi - lambda_lo) > tolerance ||
+            s_hi - s_lo > 1e-6 * ds_hi) &&
            s_hi - s_lo > 1e-14 * ds_hi)
       {
         const double s_mid  = 0.5 * (s_lo + s_hi);
@@ -44,8 +49,10 @@ namespace rodnet
           {
             s_hi      = s_mid;
             lambda_hi = lambda;
+            u_hi      = u;
           }
       }
+    require_continuous_bracket(lo, hi, u_lo, lambda_lo, u_hi, lambda_hi);
     located_bifurcations.push_back(0.5 * (lambda_lo + lambda_hi));
     if (s_lo == 0)
       {
@@ -55,6 +62,35 @@ namespace rodnet
       }
     PathPoint b = accept(u_lo, lambda_lo, &lo, result_lo, info);
     return b;
+  }
+
+  void
+  ArclengthContinuation::require_continuous_bracket(const PathPoint  &lo,
+                                                    const PathPoint  &hi,
+                                                    const VectorType &u_lo,
+                                                    const double      lambda_lo,
+                                                    const VectorType &u_hi,
+                                                    const double      lambda_hi)
+  {
+    // On one path the states on either side of a bifurcation meet as the
+    // bracket closes; states that stay apart belong to two branches, the
+    // corrector having jumped from one to the other within the bracket
+    // (a sharp turn of the path next to another branch).
+    VectorType difference = u_hi;
+    difference -= u_lo;
+    const double gap =
+      std::sqrt(dot_w(difference, difference) +
+                (lambda_hi - lambda_lo) * (lambda_hi - lambda_lo));
+    // The step's chord, measured when hi was accepted (before the reset of
+    // its reference).
+    const double chord = hi.s - lo.s;
+    if (gap > 1e-3 * chord)
+      throw SolverFailure(
+        "the states on either side of the change of negative eigenvalues near "
+        "load factor " +
+        number(lambda_lo) + " stay " + number(gap / chord) +
+        " of the step apart as the bracket closes: two branches, no "
+        "bifurcation between them");
   }
 
   void

@@ -237,13 +237,30 @@ namespace rodnet
          double          &ds);
 
     /**
-     * Locates the bifurcation between @p lo and the point at
-     * pseudo-arclength @p ds_hi along lo's tangent by bisection; returns
+     * Locates the bifurcation between @p lo and @p hi, the point at
+     * pseudo-arclength @p ds_hi along lo's tangent, by bisection; returns
      * the stable side's point (lo itself if no closer one was found),
-     * converged and accepted (@p info).
+     * converged and accepted (@p info). Throws SolverFailure where the
+     * bisection fails or the bracket's states do not meet
+     * (require_continuous_bracket()).
      */
     PathPoint
-    locate_bifurcation(const PathPoint &lo, double ds_hi, StepInfo &info);
+    locate_bifurcation(const PathPoint &lo,
+                       const PathPoint &hi,
+                       double           ds_hi,
+                       StepInfo        &info);
+
+    /// Throws SolverFailure where the states @p u_lo, @p u_hi that bracket
+    /// a change of the negative eigenvalues are further apart than 1e-3 of
+    /// the step from @p lo to @p hi (W norm with the load factor): they
+    /// lie on two branches, and the change is a jump between them.
+    void
+    require_continuous_bracket(const PathPoint  &lo,
+                               const PathPoint  &hi,
+                               const VectorType &u_lo,
+                               double            lambda_lo,
+                               const VectorType &u_hi,
+                               double            lambda_hi);
 
     /// Turns @p p's tangent to the null vector of the tangent stiffness at
     /// @p p (inverse iteration), W-orthogonal to the path it leaves, unit.

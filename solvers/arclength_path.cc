@@ -185,7 +185,7 @@ namespace rodnet
     PathPoint b;
     try
       {
-        b = locate_bifurcation(p, ds, info);
+        b = locate_bifurcation(p, q, ds, info);
       }
     catch (const SolverFailure &e)
       {

@@ -163,21 +163,27 @@ namespace
     EXPECT_EQ(compared, 6u);
   }
 
-  /// A 3 x 3 welded lattice (8 segments per lath), its edges pushed
-  /// together by 0.015 of the span with an uplift, followed by
+  /// An n x n welded lattice (8 segments per lath, unit span), its edges
+  /// pushed together by 0.015 of the span with an uplift, followed by
   /// continuation to load factor 1 with the given extra Continuation
   /// entries.
   std::string
-  pushed_lattice(const std::string &continuation_entries)
+  pushed_lattice(const int n, const std::string &continuation_entries)
   {
     std::string supports;
-    for (int j = 0; j <= 3; ++j)
+    for (int j = 0; j <= n; ++j)
       supports += (j > 0 ? "; " : "") + std::string("@n_0_") +
-                  std::to_string(j) + ": x=0.015 y=0 z=0; @n_3_" +
-                  std::to_string(j) + ": x=-0.015 y=0 z=0";
+                  std::to_string(j) + ": x=0.015 y=0 z=0; @n_" +
+                  std::to_string(n) + "_" + std::to_string(j) +
+                  ": x=-0.015 y=0 z=0";
+    std::ostringstream length;
+    length.precision(17);
+    length << 1.0 / n;
     return "subsection Geometry\n  set Generator = square lattice\n"
-           "  set Cells = 3, 3\n  set Beam length = 0.3333333333333333\n"
-           "  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
+           "  set Cells = " +
+           std::to_string(n) + ", " + std::to_string(n) +
+           "\n  set Beam length = " + length.str() +
+           "\n  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
            "subsection Material\n  subsection linear elastic\n"
            "    set Stiffness input = direct\n    set EA = 1000\n"
            "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
@@ -198,9 +204,10 @@ namespace
     // reaches: no bisection finds a bifurcation between, and the run
     // stopped there. The step is now halved. Reference: the same path in
     // steps of at most 0.02 (146 points, no such landing).
-    const ContinuationPath coarse = follow(pushed_lattice(""), {"@n_1_1"});
+    const ContinuationPath coarse = follow(pushed_lattice(3, ""), {"@n_1_1"});
     const ContinuationPath fine =
-      follow(pushed_lattice("    set Initial step = 0.02\n"
+      follow(pushed_lattice(3,
+                            "    set Initial step = 0.02\n"
                             "    set Maximum step = 0.02\n"),
              {"@n_1_1"});
     for (const ContinuationPath *path : {&coarse, &fine})
@@ -215,6 +222,35 @@ namespace
                 fine.positions.back()[0][2],
                 1e-8);
     EXPECT_GT(coarse.positions.back()[0][2], 0.07);
+  }
+
+  TEST(Continuation, JumpBetweenBranchesIsNoBifurcation)
+  {
+    // The 4 x 4 lattice's path turns as sharply near load factor 0.33, next
+    // to an unstable branch (one negative eigenvalue, the crown nearly
+    // flat): default steps landed on it, and the bisection between the two
+    // branches reported a bifurcation at 0.3348 and followed that branch to
+    // load factor 1, unstable. The states on either side of the bisection's
+    // bracket stay 1.2 steps apart there (they meet at a true
+    // bifurcation): now a jump, the step halved. Reference: the path in
+    // steps of at most 0.02, stable all along, no bifurcation.
+    const ContinuationPath coarse = follow(pushed_lattice(4, ""), {"@n_2_2"});
+    const ContinuationPath fine =
+      follow(pushed_lattice(4,
+                            "    set Initial step = 0.02\n"
+                            "    set Maximum step = 0.02\n"),
+             {"@n_2_2"});
+    for (const ContinuationPath *path : {&coarse, &fine})
+      {
+        EXPECT_TRUE(path->bifurcations.empty());
+        EXPECT_EQ(path->points.back().load_factor, 1.0);
+        for (const Point &p : path->points)
+          EXPECT_TRUE(p.check.stable) << "load factor " << p.load_factor;
+      }
+    EXPECT_NEAR(coarse.positions.back()[0][2],
+                fine.positions.back()[0][2],
+                1e-8);
+    EXPECT_GT(coarse.positions.back()[0][2], 0.08);
   }
 
   class ElasticaContinuation : public ::testing::TestWithParam<double>
