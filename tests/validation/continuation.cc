@@ -196,20 +196,41 @@ namespace
            continuation_entries + "  end\nend\n";
   }
 
-  TEST(Continuation, StepOntoAnotherBranchIsHalved)
+  /// A pushed lattice whose path turns sharply near load factor 0.33:
+  /// its cells, the vertex watched (an inner one) and a lower bound of
+  /// that vertex's rise at load factor 1.
+  struct SharpTurn
+  {
+    int         cells;
+    std::string vertex;
+    double      rise;
+  };
+
+  class PushedLattice : public ::testing::TestWithParam<SharpTurn>
+  {
+  };
+
+  TEST_P(PushedLattice, StepsOffThePathAreHalved)
   {
     // Near load factor 0.33 the lattice's path turns sharply (the crown
     // rises fast at nearly constant load); default steps land past the
-    // turn on states with a negative eigenvalue that the path never
-    // reaches: no bisection finds a bifurcation between, and the run
-    // stopped there. The step is now halved. Reference: the same path in
-    // steps of at most 0.02 (146 points, no such landing).
-    const ContinuationPath coarse = follow(pushed_lattice(3, ""), {"@n_1_1"});
+    // turn on another branch, with a negative eigenvalue that the path
+    // never reaches. 3 x 3: no bisection finds a bifurcation between, and
+    // the run stopped there. 4 x 4 (next to an unstable branch, the crown
+    // nearly flat): the bisection between the two branches reported a
+    // bifurcation at 0.3348 and followed that branch to load factor 1,
+    // unstable; the states on either side of its bracket stay 1.2 steps
+    // apart there (at a true bifurcation they meet). Both are now jumps,
+    // the step halved. Reference: the same path in steps of at most 0.02
+    // (146 and 179 points), stable all along, no bifurcation.
+    const SharpTurn        turn = GetParam();
+    const ContinuationPath coarse =
+      follow(pushed_lattice(turn.cells, ""), {turn.vertex});
     const ContinuationPath fine =
-      follow(pushed_lattice(3,
+      follow(pushed_lattice(turn.cells,
                             "    set Initial step = 0.02\n"
                             "    set Maximum step = 0.02\n"),
-             {"@n_1_1"});
+             {turn.vertex});
     for (const ContinuationPath *path : {&coarse, &fine})
       {
         EXPECT_TRUE(path->bifurcations.empty());
@@ -221,37 +242,13 @@ namespace
     EXPECT_NEAR(coarse.positions.back()[0][2],
                 fine.positions.back()[0][2],
                 1e-8);
-    EXPECT_GT(coarse.positions.back()[0][2], 0.07);
+    EXPECT_GT(coarse.positions.back()[0][2], turn.rise);
   }
 
-  TEST(Continuation, JumpBetweenBranchesIsNoBifurcation)
-  {
-    // The 4 x 4 lattice's path turns as sharply near load factor 0.33, next
-    // to an unstable branch (one negative eigenvalue, the crown nearly
-    // flat): default steps landed on it, and the bisection between the two
-    // branches reported a bifurcation at 0.3348 and followed that branch to
-    // load factor 1, unstable. The states on either side of the bisection's
-    // bracket stay 1.2 steps apart there (they meet at a true
-    // bifurcation): now a jump, the step halved. Reference: the path in
-    // steps of at most 0.02, stable all along, no bifurcation.
-    const ContinuationPath coarse = follow(pushed_lattice(4, ""), {"@n_2_2"});
-    const ContinuationPath fine =
-      follow(pushed_lattice(4,
-                            "    set Initial step = 0.02\n"
-                            "    set Maximum step = 0.02\n"),
-             {"@n_2_2"});
-    for (const ContinuationPath *path : {&coarse, &fine})
-      {
-        EXPECT_TRUE(path->bifurcations.empty());
-        EXPECT_EQ(path->points.back().load_factor, 1.0);
-        for (const Point &p : path->points)
-          EXPECT_TRUE(p.check.stable) << "load factor " << p.load_factor;
-      }
-    EXPECT_NEAR(coarse.positions.back()[0][2],
-                fine.positions.back()[0][2],
-                1e-8);
-    EXPECT_GT(coarse.positions.back()[0][2], 0.08);
-  }
+  INSTANTIATE_TEST_SUITE_P(Cells,
+                           PushedLattice,
+                           ::testing::Values(SharpTurn{3, "@n_1_1", 0.07},
+                                             SharpTurn{4, "@n_2_2", 0.08}));
 
   class ElasticaContinuation : public ::testing::TestWithParam<double>
   {
