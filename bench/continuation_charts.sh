@@ -12,11 +12,7 @@
 # Usage: bench/continuation_charts.sh [RODNET_RUN] [OUTPUT_DIR]
 #        (defaults build/release/rodnet-run, doc/)
 set -eu
-root=$(cd "$(dirname "$0")/.." && pwd)
-run=${1:-$root/build/release/rodnet-run}
-out=${2:-$root/doc}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/chart_paths.sh"
 
 "$run" "$root/scenes/deep_arch.prm" --output "$work/arch" > "$work/arch.log" 2>&1
 cat "$root/scenes/elastica.prm" - > "$work/elastica.prm" <<'END'
