@@ -174,18 +174,22 @@ namespace rodnet
     info.load_factor = target;
     info.iterations  = result.iterations;
     info.residual    = result.residual;
-    if (parameters.track_lowest_eigenvalue ||
-        parameters.branch_switch_amplitude > 0)
+    if (parameters.track_lowest_eigenvalue)
       info.lowest_eigenvalue = lowest_eigenvalue(u, target);
     if (search && negative_eigenvalues(u, target) > 0)
       search_critical_load(path.previous, *stable_state, path.lambda, target);
-    if (parameters.branch_switch_amplitude > 0 && info.lowest_eigenvalue < 0)
+    check_state(u, result, info);
+    // The stability check (its inertia, symmetry modes left out) decides:
+    // a stable step costs no eigen-solve.
+    if (parameters.branch_switch_amplitude > 0 && !info.check.stable)
       {
+        if (std::isnan(info.lowest_eigenvalue))
+          info.lowest_eigenvalue = lowest_eigenvalue(u, target);
         switch_branch(u, target, info);
         // The switch jumps between branches: no increment to follow.
         path.last_step = 0;
+        check_state(u, result, info);
       }
-    check_state(u, result, info);
     return info;
   }
 

@@ -77,12 +77,13 @@ namespace rodnet
       bool                     find_critical_load      = false;
       /// Bisection stops when the bracket is below this (in load factor).
       double critical_load_tolerance = 1e-6;
-      /// Where a converged state is unstable (negative lowest eigenvalue),
-      /// push it along the buckling mode with a dead force of this fraction
-      /// of the applied load, both ways, then remove that force in steps,
-      /// and keep the stable equilibrium of lower energy (0 = off). Without
-      /// it Newton may follow the unstable branch past a bifurcation.
-      double branch_switch_amplitude = 0;
+      /// Where a converged state is unstable (the stability check counts a
+      /// negative eigenvalue) or a step fails past one, move the state along
+      /// the lowest mode by this fraction of the model size, both ways, and
+      /// keep the stable equilibrium of lower energy found from there by
+      /// Newton (0 = off). Without it Newton may follow the unstable branch
+      /// past a bifurcation (a straight column under a load above Euler's).
+      double branch_switch_amplitude = 0.1;
 
       /// Declares the entries of these parameters (those of newton, then
       /// "Relative tolerance", "Predictor", "Minimum step fraction" and the

@@ -42,7 +42,7 @@ namespace rodnet
                       "Bracket width of the bisection, in load factor. [-]");
     prm.declare_entry(
       "Branch switching amplitude",
-      "0",
+      "0.1",
       Double(0, 1),
       "Where an equilibrium is unstable (negative lowest eigenvalue) or a "
       "step fails past one, move the state along the lowest mode, both "
