@@ -141,6 +141,25 @@ namespace
       }
   }
 
+  TEST(ElasticaDefaults, PerfectIsotropicColumnEndsBuckled)
+  {
+    // No imperfection, EI1 = EI2, P = 5 in the default 10 load steps and
+    // the default branch switching: the first unstable step (P = 2.5) is
+    // moved along its buckling mode onto the stable branch, and the last
+    // one is the exact elastica at P = 5 (errors at N = 100: -2.0e-4 L in
+    // x, -3.7e-5 L in the deflection; tolerance 5e-4 L), stable.
+    std::string       scene = elastica_scene(100, "simple", 5, 10, 0.0, false);
+    const std::string amplitude = "  set Branch switching amplitude = 0.1\n";
+    scene.erase(scene.find(amplitude), amplitude.size());
+    const RunSummary run = run_scene_text(scene, "elastica_defaults");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    const ElasticaTip found = tip_at(run, 5, 5);
+    const ElasticaTip exact = elastica_tip(5);
+    EXPECT_NEAR(found.x, exact.x, 5e-4);
+    EXPECT_NEAR(found.delta, exact.delta, 5e-4);
+    EXPECT_EQ(run.unstable_steps, 0u);
+  }
+
   INSTANTIATE_TEST_SUITE_P(HingeKernels,
                            Elastica,
                            ::testing::Values("simple", "classic"));
