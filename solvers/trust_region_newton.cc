@@ -31,7 +31,7 @@ namespace rodnet
     /// fixed DoFs hold their diagonal only, and the residual is zero there,
     /// so steps leave them alone).
     const dealii::AffineConstraints<double> &
-    unshifted_constraints()
+    no_constraints()
     {
       static const dealii::AffineConstraints<double> none = [] {
         dealii::AffineConstraints<double> c;
@@ -50,8 +50,9 @@ namespace rodnet
     };
 
     /// The scaled tangent D^-1 K D^-1 with D the running maximum of
-    /// sqrt|K_ii| over the iterations (@p metric, updated here; 1 where
-    /// the diagonal has been zero so far).
+    /// sqrt|K_ii| over the iterations (@p metric, updated here), and 1
+    /// from where a diagonal entry is zero on (a row of no stiffness has
+    /// no scale of its own).
     void
     scale_tangent(const MatrixType &tangent,
                   Eigen::VectorXd  &metric,
@@ -61,8 +62,12 @@ namespace rodnet
       if (metric.size() != n)
         metric = Eigen::VectorXd::Zero(n);
       for (unsigned int i = 0; i < n; ++i)
-        metric[i] =
-          std::max(metric[i], std::sqrt(std::abs(tangent.diag_element(i))));
+        {
+          metric[i] =
+            std::max(metric[i], std::sqrt(std::abs(tangent.diag_element(i))));
+          if (metric[i] == 0)
+            metric[i] = 1;
+        }
       scaled.reinit(tangent);
       scaled.copy_from(tangent);
       // Epetra's row views give the stored values in place.
@@ -73,16 +78,9 @@ namespace rodnet
           double *values;
           int    *columns;
           rows.ExtractMyRowView(rows.LRID(int(i)), length, values, columns);
-          const double row_scale = metric[i] > 0 ? metric[i] : 1.0;
           for (int e = 0; e < length; ++e)
-            {
-              const double column_scale = metric[rows.GCID(columns[e])];
-              values[e] /= row_scale * (column_scale > 0 ? column_scale : 1.0);
-            }
+            values[e] /= metric[i] * metric[rows.GCID(columns[e])];
         }
-      for (unsigned int i = 0; i < n; ++i)
-        if (metric[i] == 0)
-          metric[i] = 1;
     }
 
     /// q.A q for the matrix @p a.
@@ -165,7 +163,7 @@ namespace rodnet
                     const Curvature                &curvature,
                     const Parameters               &p)
     {
-      const dealii::AffineConstraints<double> &none = unshifted_constraints();
+      const dealii::AffineConstraints<double> &none = no_constraints();
       // A + mu I is positive definite for mu > low, and |q(high)| <= radius.
       double          low  = curvature.negative ? -curvature.value : 0.0;
       double          high = low + g.norm() / radius;
@@ -298,7 +296,7 @@ namespace rodnet
       Curvature curvature;
       if (unshifted.inertia(1e-12).negative == 0)
         return curvature;
-      const Eigenpairs pair = lowest_eigenpairs(a, unshifted_constraints(), 1);
+      const Eigenpairs pair = lowest_eigenpairs(a, no_constraints(), 1);
       if (pair.values[0] >= 0)
         return curvature;
       curvature.negative = true;
@@ -332,6 +330,7 @@ namespace rodnet
                                                                        0.0;
       return (current.energy - trial.energy) / predicted;
     }
+
     /// The quadratic model of one iteration: the scaled tangent, its
     /// factorization, its negative curvature and the metric D.
     struct Model
@@ -413,7 +412,6 @@ namespace rodnet
         current = best;
       return improved;
     }
-
   } // namespace
 
   TrustRegionNewton::TrustRegionNewton(const Parameters &parameters)
@@ -450,8 +448,7 @@ namespace rodnet
         const bool at_rest = balanced(current);
         problem.tangent(current.x, tangent);
         scale_tangent(tangent, metric, scaled);
-        const ConstrainedFactorization unshifted(scaled,
-                                                 unshifted_constraints());
+        const ConstrainedFactorization unshifted(scaled, no_constraints());
         const Curvature curvature = lowest_curvature(scaled, unshifted);
         if (at_rest && !curvature.negative)
           {
