@@ -45,6 +45,17 @@ namespace rodnet::testing
     }
   };
 
+  /// The double well w(z) = z^4/4 - z^2/2 in @p n variables: minima
+  /// w(+-1) = -1/4, a maximum at z = 0 where w'' = -1.
+  inline SeparablePotential
+  double_well(const unsigned int n)
+  {
+    return {[](double z) { return z * z * z * z / 4 - z * z / 2; },
+            [](double z) { return z * z * z - z; },
+            [](double z) { return 3 * z * z - 1; },
+            std::vector<double>(n, 0.0)};
+  }
+
   /// Newton from @p start with @p line_search; x holds the last iterate.
   inline NewtonSolver::Result
   solve(const SeparablePotential  &potential,

@@ -1,6 +1,7 @@
-// TrustRegionNewton (NewtonSolver's "trust region") on small potential
-// problems with known minimizers: where full Newton steps diverge, from a
-// saddle, and in the hard case of the subproblem.
+// TrustRegionNewton (NewtonSolver's "trust region") where a line search has
+// nothing to offer: from a saddle, and in the hard case of the subproblem
+// (tests/solvers/potential_globalizations.cc has the cases it shares with
+// the energy line search).
 #include <common/separable_potential.h>
 
 #include <cmath>
@@ -10,53 +11,9 @@
 namespace
 {
   using namespace rodnet;
+  using rodnet::testing::double_well;
   using rodnet::testing::SeparablePotential;
   using rodnet::testing::solve;
-
-  /// The double well w(z) = z^4/4 - z^2/2: minima w(+-1) = -1/4, a
-  /// maximum at z = 0 where w'' = -1.
-  SeparablePotential
-  double_well(const unsigned int n)
-  {
-    return {[](double z) { return z * z * z * z / 4 - z * z / 2; },
-            [](double z) { return z * z * z - z; },
-            [](double z) { return 3 * z * z - 1; },
-            std::vector<double>(n, 0.0)};
-  }
-
-  TEST(TrustRegion, ConvergesWhereFullNewtonStepsDiverge)
-  {
-    // p(z) = sqrt(1 + z^2): a full Newton step maps z to -z^3, which
-    // diverges from |z| > 1; the minimizer is x = c.
-    const SeparablePotential potential{
-      [](double z) { return std::sqrt(1 + z * z); },
-      [](double z) { return z / std::sqrt(1 + z * z); },
-      [](double z) { return std::pow(1 + z * z, -1.5); },
-      {1.0, -2.0, 0.5}};
-    std::vector<double> x;
-    EXPECT_FALSE(solve(potential, {4.0, 1.0, 3.5}, "full step", x).converged);
-    const NewtonSolver::Result result =
-      solve(potential, {4.0, 1.0, 3.5}, "trust region", x);
-    ASSERT_TRUE(result.converged) << result.failure;
-    EXPECT_LE(result.iterations, 30u);
-    for (unsigned int i = 0; i < x.size(); ++i)
-      EXPECT_NEAR(x[i], potential.centre[i], 1e-11);
-  }
-
-  TEST(TrustRegion, TakesTheNewtonStepOnAQuadratic)
-  {
-    const SeparablePotential   potential{[](double z) { return 2 * z * z; },
-                                       [](double z) { return 4 * z; },
-                                       [](double) { return 4.0; },
-                                       {3.0, -1.0}};
-    std::vector<double>        x;
-    const NewtonSolver::Result result =
-      solve(potential, {0.0, 0.0}, "trust region", x);
-    ASSERT_TRUE(result.converged) << result.failure;
-    EXPECT_EQ(result.iterations, 1u);
-    EXPECT_NEAR(x[0], 3.0, 1e-12);
-    EXPECT_NEAR(x[1], -1.0, 1e-12);
-  }
 
   TEST(TrustRegion, LeavesASaddleForAMinimum)
   {
@@ -89,34 +46,4 @@ namespace
     EXPECT_NEAR(x[1], 1.0, 1e-10);
   }
 
-  TEST(TrustRegion, ConvergesToTheMinimumNotTheMaximum)
-  {
-    // From z = 0.3 in the double well (negative curvature), full steps
-    // converge to the maximum z = 0, the trust region to the minimum.
-    const SeparablePotential potential = double_well(1);
-    std::vector<double>      x;
-    ASSERT_TRUE(solve(potential, {0.3}, "full step", x).converged);
-    EXPECT_NEAR(x[0], 0.0, 1e-10);
-    ASSERT_TRUE(solve(potential, {0.3}, "trust region", x).converged);
-    EXPECT_NEAR(x[0], 1.0, 1e-10);
-  }
-
-  TEST(TrustRegion, RefusesAProblemWithoutPotential)
-  {
-    const SeparablePotential potential = double_well(1);
-    NewtonSolver::Problem    problem   = potential.problem();
-    problem.energy                     = nullptr;
-    NewtonSolver::MatrixType tangent;
-    rodnet::testing::diagonal_tangent(1, tangent);
-    NewtonSolver::VectorType u(tangent.locally_owned_domain_indices(),
-                               MPI_COMM_WORLD);
-    NewtonSolver::Parameters parameters;
-    parameters.line_search = "trust region";
-    const NewtonSolver::Result result =
-      NewtonSolver(parameters).solve(problem, u, tangent);
-    EXPECT_FALSE(result.converged);
-    EXPECT_NE(result.failure.find("trust region needs the potential"),
-              std::string::npos)
-      << result.failure;
-  }
 } // namespace
