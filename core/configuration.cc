@@ -161,6 +161,14 @@ namespace rodnet
     return local;
   }
 
+  double
+  Configuration::segment_length(const DofValues   &u,
+                                const unsigned int cell) const
+  {
+    const SegmentStencil &s = layout->segments()[segment_index[cell]];
+    return (position(u, s.vertices[1]) - position(u, s.vertices[0])).norm();
+  }
+
   Quaternion
   Configuration::director_frame(const dealii::TrilinosWrappers::MPI::Vector &u,
                                 const unsigned int cell) const

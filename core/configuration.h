@@ -126,6 +126,10 @@ namespace rodnet
     director_frame(const dealii::TrilinosWrappers::MPI::Vector &u,
                    unsigned int                                 cell) const;
 
+    /// Current length of the segment on active cell @p cell.
+    double
+    segment_length(const DofValues &u, unsigned int cell) const;
+
     double
     rest_length(unsigned int cell) const
     {

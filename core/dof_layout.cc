@@ -64,6 +64,7 @@ namespace rodnet
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (network.junctions()[j].has_rotation())
         rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
+    number_multipliers(network);
 
     // x_end = x_junction for every other rod end at a junction; the
     // stencils then take the junction vertex's DoFs for the end.
@@ -84,6 +85,19 @@ namespace rodnet
           vertex_dofs[v] = vertex_dofs[junction.vertex];
         }
     junction_identities.close();
+  }
+
+
+  void
+  DofLayout::number_multipliers(const RodNetwork &network)
+  {
+    multiplier_dofs.assign(network.triangulation().n_active_cells(),
+                           dealii::numbers::invalid_dof_index);
+    const global_dof_index first = handler.n_dofs() + 4 * n_rotations;
+    for (const Rod &rod : network.rods())
+      if (rod.inextensible)
+        for (const unsigned int cell : rod.segments)
+          multiplier_dofs[cell] = first + n_multiplier_dofs++;
   }
 
 

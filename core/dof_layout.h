@@ -78,6 +78,11 @@ namespace rodnet
    *
    * Quaternion DoFs store q - (1, 0, 0, 0), so that the zero vector is the
    * reference configuration.
+   *
+   * After the quaternions come the Lagrange multipliers of inextensible rods
+   * (Rod::inextensible), one per segment of such a rod, in the order of the
+   * rods and of their segments (families/inextensibility_family.h); a
+   * network without inextensible rods has none.
    */
   class DofLayout
   {
@@ -90,11 +95,32 @@ namespace rodnet
       return handler;
     }
 
-    /// All DoFs: the DoFHandler's, then the quaternion block.
+    /// All DoFs: the DoFHandler's, the quaternion block, the multipliers.
     global_dof_index
     n_dofs() const
     {
-      return handler.n_dofs() + 4 * n_rotations;
+      return handler.n_dofs() + 4 * n_rotations + n_multiplier_dofs;
+    }
+
+    /// Number of Lagrange multipliers (segments of inextensible rods).
+    global_dof_index
+    n_multipliers() const
+    {
+      return n_multiplier_dofs;
+    }
+
+    /// Whether the segment on active cell @p cell has a multiplier.
+    bool
+    has_multiplier(unsigned int cell) const
+    {
+      return multiplier_dofs[cell] != dealii::numbers::invalid_dof_index;
+    }
+
+    /// The multiplier DoF of the segment on @p cell (has_multiplier()).
+    global_dof_index
+    multiplier_dof(unsigned int cell) const
+    {
+      return multiplier_dofs[cell];
     }
 
     /// DoFs of the DoFHandler (positions and twists) alone.
@@ -175,6 +201,11 @@ namespace rodnet
     void
     share_junction_vertices(const RodNetwork &network);
 
+    /// One multiplier DoF per segment of every inextensible rod, after the
+    /// quaternions.
+    void
+    number_multipliers(const RodNetwork &network);
+
     /// The segment stencils of rod @p r.
     void
     add_segment_stencils(unsigned int r, const Rod &rod);
@@ -208,8 +239,11 @@ namespace rodnet
     std::vector<SegmentStencil>                  segment_list;
     std::vector<JunctionStencil>                 junction_list;
     /// First quaternion DoF per junction, invalid where it has none.
-    std::vector<global_dof_index>                              rotation_dofs;
-    unsigned int                      n_rotations = 0;
+    std::vector<global_dof_index> rotation_dofs;
+    unsigned int                  n_rotations = 0;
+    /// Multiplier DoF per cell, invalid where the segment has none.
+    std::vector<global_dof_index>     multiplier_dofs;
+    global_dof_index                  n_multiplier_dofs = 0;
     dealii::AffineConstraints<double> junction_identities;
   };
 } // namespace rodnet

@@ -1,13 +1,14 @@
 #include <deal.II/base/mpi.h>
+
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <core/rod_model.h>
 #include <core/stencil_coloring.h>
+
 #include <families/axis_moment_family.h>
 #include <families/hinge_family.h>
 #include <families/junction_family.h>
 #include <families/stretch_family.h>
-
 #include <stdexcept>
 
 namespace rodnet
@@ -41,7 +42,7 @@ namespace rodnet
     layout_ = std::make_unique<DofLayout>(*network_);
     // Every DoF until finalize() is told which this process owns: vectors
     // made before it (the reference frame of a clamp) must hold them all.
-    owned_dofs = dealii::complete_index_set(layout_->n_dofs());
+    owned_dofs     = dealii::complete_index_set(layout_->n_dofs());
     configuration_ = std::make_unique<Configuration>(*network_,
                                                      *layout_,
                                                      rod_kernels,
@@ -120,8 +121,8 @@ namespace rodnet
   void
   RodModel::add_element_family(std::unique_ptr<ElementFamily> family)
   {
-    require_not_finalized("RodModel::add_element_family \"" +
-                          family->name() + "\"");
+    require_not_finalized("RodModel::add_element_family \"" + family->name() +
+                          "\"");
     families.push_back(std::move(family));
     history = InternalVariables(families);
   }
@@ -152,8 +153,7 @@ namespace rodnet
   RodModel::make_sparsity_pattern()
   {
     dealii::DynamicSparsityPattern pattern(layout_->n_dofs());
-    add_sparsity_pattern(pattern,
-                         SystemBlock::at_offset(layout_->n_dofs(), 0));
+    add_sparsity_pattern(pattern, SystemBlock::at_offset(layout_->n_dofs(), 0));
     sparsity.reinit(owned_dofs, mpi_communicator);
     sparsity.copy_from(pattern);
     sparsity.compress();
@@ -201,6 +201,7 @@ namespace rodnet
     for (unsigned int cell = 0; cell < twist_seen.size(); ++cell)
       if (!twist_seen[cell])
         fixed_dofs.emplace(layout_->twist_dof(cell), 0.0);
+    add_inextensibility();
     make_constraints();
 
     std::vector<AxisMoment> axis_moments;
@@ -212,7 +213,7 @@ namespace rodnet
     make_sparsity_pattern();
 
     // Dead loads, distributed ones lumped by Voronoi lengths.
-    f_ext                              = create_vector();
+    f_ext                             = create_vector();
     const std::vector<Vector3> forces = loads.vertex_forces(*network_);
     for (unsigned int v = 0; v < forces.size(); ++v)
       for (unsigned int c = 0; c < 3; ++c)
@@ -224,6 +225,53 @@ namespace rodnet
                              layout_->n_dofs(),
                              default_block_size(family->n_stencils())));
     finalized = true;
+  }
+
+
+  void
+  RodModel::add_inextensibility()
+  {
+    if (layout_->n_multipliers() == 0)
+      return;
+    // A segment between two held vertices keeps its length by the
+    // supports; a multiplier there would see no free DoF.
+    const auto held = [&](const unsigned int v) {
+      for (unsigned int c = 0; c < 3; ++c)
+        if (fixed_dofs.count(layout_->vertex_dof(v, c)) == 0)
+          return false;
+      return true;
+    };
+    std::vector<bool> skipped(network_->triangulation().n_active_cells(),
+                              false);
+    for (const SegmentStencil &segment : layout_->segments())
+      if (layout_->has_multiplier(segment.cell))
+        {
+          const global_dof_index dof = layout_->multiplier_dof(segment.cell);
+          if (held(segment.vertices[0]) && held(segment.vertices[1]))
+            {
+              skipped[segment.cell] = true;
+              fixed_dofs[dof]       = 0.0;
+            }
+          else
+            free_multipliers.push_back(dof);
+        }
+    auto family     = std::make_unique<InextensibilityFamily>(*layout_,
+                                                          *configuration_,
+                                                          materials,
+                                                          skipped);
+    inextensibility = family.get();
+    families.push_back(std::move(family));
+  }
+
+
+  double
+  RodModel::constraint_force(const unsigned int cell, const VectorType &u) const
+  {
+    if (inextensibility == nullptr || !layout_->has_multiplier(cell))
+      return 0.0;
+    return inextensibility->scale(cell) * u[layout_->multiplier_dof(cell)] *
+           configuration_->segment_length(DofValues(u), cell) /
+           configuration_->rest_length(cell);
   }
 
 
@@ -247,8 +295,10 @@ namespace rodnet
     if (locally_owned_dofs.n_elements() != n_dofs)
       throw std::invalid_argument(
         "RodModel::finalize: the locally owned DoFs must be all " +
-        std::to_string(n_dofs) + " DoFs on a communicator of one process, "
-        "not " + std::to_string(locally_owned_dofs.n_elements()));
+        std::to_string(n_dofs) +
+        " DoFs on a communicator of one process, "
+        "not " +
+        std::to_string(locally_owned_dofs.n_elements()));
   }
 
 

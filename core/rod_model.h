@@ -2,20 +2,21 @@
 #define RODNET_CORE_ROD_MODEL_H
 
 #include <deal.II/base/index_set.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <core/configuration.h>
 #include <core/dead_loads.h>
 #include <core/dof_layout.h>
 #include <core/element_family.h>
 #include <core/internal_variables.h>
-#include <core/model_state.h>
 #include <core/model.h>
+#include <core/model_state.h>
 #include <core/rod_network.h>
 #include <core/scatter_positions.h>
 #include <core/stencil_coloring.h>
@@ -25,6 +26,7 @@
 
 #include <array>
 #include <cmath>
+#include <families/inextensibility_family.h>
 #include <functional>
 #include <map>
 #include <memory>
@@ -317,8 +319,7 @@ namespace rodnet
 
     /// Rotation of junction @p junction at @p u from the undeformed state.
     Quaternion
-    junction_rotation(const VectorType &u,
-                      unsigned int      junction) const override
+    junction_rotation(const VectorType &u, unsigned int junction) const override
     {
       return configuration_->junction_rotation(u, junction);
     }
@@ -388,6 +389,32 @@ namespace rodnet
     reaction_moment(unsigned int      junction,
                     const VectorType &u,
                     double            load_factor) const override;
+
+    /// @name Inextensible rods (Rod::inextensible)
+    /// @{
+    /**
+     * The free Lagrange multiplier DoFs of the inextensible rods' segments
+     * (after finalize()): the constraint rows of the tangent, which is then
+     * the KKT matrix of the constrained minimization
+     * (families/inextensibility_family.h). The stability counts and the
+     * eigen-solvers work on the constraint manifold with them
+     * (ConstrainedFactorization). Empty for a model without.
+     */
+    const std::vector<global_dof_index> &
+    multiplier_dofs() const
+    {
+      return free_multipliers;
+    }
+
+    /**
+     * Axial force (N, tension positive) of the segment on cell @p cell of
+     * an inextensible rod at @p u: its multiplier times the constraint's
+     * scale (InextensibilityFamily); 0 where the segment has no free
+     * multiplier (both ends held).
+     */
+    double
+    constraint_force(unsigned int cell, const VectorType &u) const;
+    /// @}
 
     /// @name History-dependent materials
     /// @{
@@ -588,8 +615,9 @@ namespace rodnet
       bool concurrent_copier = false) const;
 
     /// Adds the dead load terms at @p load_factor (their factor
-    /// applied_load_factor(); and @p extra_force, if not null) to @p energy and, at the rows @p block (null: the model's
-    /// own numbering), to @p residual (if not null).
+    /// applied_load_factor(); and @p extra_force, if not null) to @p energy
+    /// and, at the rows @p block (null: the model's own numbering), to @p
+    /// residual (if not null).
     void
     add_dead_loads(const VectorType  &u,
                    double             load_factor,
@@ -647,9 +675,9 @@ namespace rodnet
                        unsigned int v,
                        double       load_factor) const;
 
-    MPI_Comm                                        mpi_communicator;
-    dealii::IndexSet                                owned_dofs;
-    std::unique_ptr<RodNetwork>                     network_;
+    MPI_Comm                    mpi_communicator;
+    dealii::IndexSet            owned_dofs;
+    std::unique_ptr<RodNetwork> network_;
     /// Per rod; the entries of ramped rods are replaced at each load factor
     /// (follow_natural_shape()); the families hold a reference to it.
     mutable std::vector<std::shared_ptr<const RodMaterial>> materials;
@@ -660,12 +688,12 @@ namespace rodnet
     /// The load factor the ramped materials are at (NaN: not yet set).
     mutable double ramped_at = std::nan("");
     /// Whether the loads stay at their full value (fix_loads()).
-    bool loads_fixed = false;
-    std::vector<std::unique_ptr<HingeKernel>>       kernels;
-    std::vector<std::unique_ptr<JunctionKernel>>    junction_kernels;
-    std::unique_ptr<DofLayout>                      layout_;
-    std::unique_ptr<Configuration>                  configuration_;
-    std::vector<std::unique_ptr<ElementFamily>>     families;
+    bool                                         loads_fixed = false;
+    std::vector<std::unique_ptr<HingeKernel>>    kernels;
+    std::vector<std::unique_ptr<JunctionKernel>> junction_kernels;
+    std::unique_ptr<DofLayout>                   layout_;
+    std::unique_ptr<Configuration>               configuration_;
+    std::vector<std::unique_ptr<ElementFamily>>  families;
     /// Per family, its stencils in blocks, in colors of blocks that share no
     /// DoF (color_stencil_blocks(), finalize()): the scatter of several
     /// threads.
@@ -674,9 +702,9 @@ namespace rodnet
     /// assembled (the direct scatter's; found again for a new pattern).
     std::unique_ptr<ScatterPositionsCache> scatter_positions =
       std::make_unique<ScatterPositionsCache>();
-    std::vector<Support>                                support_list;
-    std::multimap<global_dof_index, Hold>           holds;
-    std::vector<Clamp>                              clamps;
+    std::vector<Support>                  support_list;
+    std::multimap<global_dof_index, Hold> holds;
+    std::vector<Clamp>                    clamps;
     /// Per junction: whether its rotation is held (clamped, prescribed).
     std::vector<bool> rotation_held;
     /// Fixed DoF -> prescribed value at load factor 1 (finalize()).
@@ -700,6 +728,18 @@ namespace rodnet
     dealii::TrilinosWrappers::SparsityPattern sparsity;
     /// DoFs that no stencil of any family sees (make_sparsity_pattern()).
     std::vector<global_dof_index> unseen_dofs;
+    /// The inextensibility family, if any rod is inextensible (finalize()).
+    const InextensibilityFamily  *inextensibility = nullptr;
+    std::vector<global_dof_index> free_multipliers;
+
+    /// The axial force of every segment at @p u (output_fields()).
+    OutputFields::Field
+    axial_forces(const VectorType &u) const;
+
+    /// Fixes the multipliers of inextensible segments whose ends are both
+    /// held and adds the inextensibility family for the others.
+    void
+    add_inextensibility();
   };
 } // namespace rodnet
 

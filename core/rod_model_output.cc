@@ -44,6 +44,43 @@ namespace rodnet
   }
 
 
+  OutputFields::Field
+  RodModel::axial_forces(const VectorType &u) const
+  {
+    // Inextensible segments: the multipliers; the others: the material's
+    // stress at its committed internal variables, over no time step.
+    using Owner = InternalVariables::Owner;
+    OutputFields::Field force{"axial_force",
+                              1,
+                              std::vector<double>(
+                                network_->triangulation().n_active_cells())};
+    StretchStrain       stretch;
+    unsigned int        stencil = 0;
+    for (const SegmentStencil &segment : layout_->segments())
+      {
+        if (layout_->has_multiplier(segment.cell))
+          {
+            force.values[segment.cell] = constraint_force(segment.cell, u);
+            continue;
+          }
+        const double l0 = configuration_->rest_length(segment.cell);
+        evaluate_stretch(configuration_->segment_dofs(u, segment),
+                         l0,
+                         stretch,
+                         false);
+        const double *committed =
+          history.empty() ? nullptr : history.block(Owner::segment, stencil);
+        force.values[segment.cell] =
+          materials[segment.rod]
+            ->segment_increment(stretch.strain, l0, committed, 0.0, nullptr)
+            .stress[0] /
+          l0;
+        ++stencil;
+      }
+    return force;
+  }
+
+
   OutputFields
   RodModel::output_fields(const VectorType &u) const
   {
@@ -84,6 +121,8 @@ namespace rodnet
           }
       }
     output.segment_fields = {strain, d1, d2};
+    if (inextensibility != nullptr)
+      output.segment_fields.push_back(axial_forces(u));
 
     // Integrated strains divided by the Voronoi length are the curvatures
     // and twist rate of the smooth rod (Korner et al. eq. 4.2). Vertices
@@ -124,15 +163,20 @@ namespace rodnet
             .first->second[hinges[h].vertices[1]] =
             history.block(Owner::hinge, h)[m];
       }
-    const auto &segments = layout_->segments();
+    // The segment stencils skip the segments of inextensible rods.
+    const auto  &segments = layout_->segments();
+    unsigned int stencil  = 0;
     for (unsigned int c = 0; !history.empty() && c < segments.size(); ++c)
       {
+        if (layout_->has_multiplier(segments[c].cell))
+          continue;
         const auto names =
           materials[segments[c].rod]->segment_internal_variable_names();
         for (unsigned int m = 0; m < names.size(); ++m)
           cell_history.try_emplace(field_name(names[m]), n_cells)
             .first->second[segments[c].cell] =
-            history.block(Owner::segment, c)[m];
+            history.block(Owner::segment, stencil)[m];
+        ++stencil;
       }
     append_scalar_fields(vertex_history, output.vertex_fields);
     append_scalar_fields(cell_history, output.segment_fields);

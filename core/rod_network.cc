@@ -23,6 +23,17 @@ namespace rodnet
   } // namespace
 
   void
+  RodNetwork::set_inextensible(const unsigned int rod, const bool inextensible)
+  {
+    if (rod >= rod_list.size())
+      throw std::invalid_argument("set_inextensible: no rod " +
+                                  std::to_string(rod) + " in a network of " +
+                                  std::to_string(rod_list.size()) + " rods");
+    rod_list[rod].inextensible = inextensible;
+  }
+
+
+  void
   RodNetwork::add_rod(const std::vector<Vector3> &rod_points,
                       const bool                  closed,
                       const Vector3              &director_hint,
@@ -341,7 +352,7 @@ namespace rodnet
         for (unsigned int j = 0; j < n_segments; ++j)
           {
             dealii::CellData<1> cell;
-            cell.vertices    = {rod.vertices[j], rod.vertices[(j + 1) % n]};
+            cell.vertices = {rod.vertices[j], rod.vertices[(j + 1) % n]};
             // The rod is the cell's material: deal.II's loops over cells
             // (FEValues, DataOut) find each segment's rod and material there.
             cell.material_id = r;

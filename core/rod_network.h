@@ -57,6 +57,10 @@ namespace rodnet
     std::string hinge_kernel = "simple";
     /// Where the natural strains of the rod's hinges come from.
     NaturalShape natural_shape = NaturalShape::initial_geometry;
+    /// Whether every segment keeps its length exactly (Korner et al.
+    /// eq. 4.4): a Lagrange multiplier per segment instead of the stretching
+    /// energy (families/inextensibility_family.h).
+    bool inextensible = false;
   };
 
   /**
@@ -221,6 +225,13 @@ namespace rodnet
       const Rod &rod = rod_list.at(end.rod);
       return end.at_start ? rod.vertices.front() : rod.vertices.back();
     }
+
+    /**
+     * Makes rod @p rod inextensible (Rod::inextensible) or extensible again;
+     * before a model is built on the network, whose DoFs it changes.
+     */
+    void
+    set_inextensible(unsigned int rod, bool inextensible = true);
 
     /// Builds the triangulation from the rods added so far: one cell per
     /// segment, whose material_id is the index of its rod. Call once.

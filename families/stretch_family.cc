@@ -1,4 +1,5 @@
 #include <elements/stretch_kernel.h>
+
 #include <families/stretch_family.h>
 
 namespace rodnet
@@ -9,13 +10,16 @@ namespace rodnet
       : layout(layout)
       , materials(materials)
   {
+    for (unsigned int s = 0; s < layout.segments().size(); ++s)
+      if (!layout.has_multiplier(layout.segments()[s].cell))
+        segments.push_back(s);
   }
 
 
   unsigned int
   StretchFamily::n_stencils() const
   {
-    return layout.segments().size();
+    return segments.size();
   }
 
 
@@ -23,7 +27,7 @@ namespace rodnet
   StretchFamily::get_dofs(const unsigned int             s,
                           std::vector<global_dof_index> &dofs) const
   {
-    const auto &stencil = layout.segments()[s].dofs;
+    const auto &stencil = segment(s).dofs;
     dofs.assign(stencil.begin(), stencil.end());
   }
 
@@ -34,8 +38,8 @@ namespace rodnet
                           const Derivatives   derivatives,
                           LocalContribution  &local) const
   {
-    const SegmentStencil &stencil      = layout.segments()[s];
-    const double          l0           = state.configuration.rest_length(stencil.cell);
+    const SegmentStencil &stencil = segment(s);
+    const double          l0 = state.configuration.rest_length(stencil.cell);
     const bool            with_hessian = derivatives == Derivatives::hessian;
     StretchStrain         stretch;
     evaluate_stretch(state.configuration.segment_dofs(state.u, stencil),
@@ -68,7 +72,7 @@ namespace rodnet
   unsigned int
   StretchFamily::n_internal_variables(const unsigned int s) const
   {
-    return materials[layout.segments()[s].rod]->n_segment_internal_variables();
+    return materials[segment(s).rod]->n_segment_internal_variables();
   }
 
 
@@ -77,7 +81,7 @@ namespace rodnet
                                            const StencilState &state,
                                            double             *updated) const
   {
-    const SegmentStencil &stencil = layout.segments()[s];
+    const SegmentStencil &stencil = segment(s);
     const double          l0 = state.configuration.rest_length(stencil.cell);
     StretchStrain         stretch;
     evaluate_stretch(state.configuration.segment_dofs(state.u, stencil),

@@ -10,9 +10,11 @@
 namespace rodnet
 {
   /**
-   * The segments of every rod: axial strain l/l0 - 1 of each segment
-   * (elements/stretch_kernel.h) priced by its rod's material. Internal
-   * variables: the material's segment variables, per segment.
+   * The segments of every extensible rod: axial strain l/l0 - 1 of each
+   * segment (elements/stretch_kernel.h) priced by its rod's material. The
+   * segments of inextensible rods, which keep their length by a multiplier
+   * (DofLayout::has_multiplier()), store no energy and are left out.
+   * Internal variables: the material's segment variables, per segment.
    */
   class StretchFamily : public ElementFamily
   {
@@ -32,7 +34,8 @@ namespace rodnet
     n_stencils() const override;
 
     void
-    get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const override;
+    get_dofs(unsigned int                   s,
+             std::vector<global_dof_index> &dofs) const override;
 
     void
     evaluate(unsigned int        s,
@@ -49,7 +52,16 @@ namespace rodnet
                               double             *updated) const override;
 
   private:
-    const DofLayout                                       &layout;
+    /// The segment of stencil @p s.
+    const SegmentStencil &
+    segment(unsigned int s) const
+    {
+      return layout.segments()[segments[s]];
+    }
+
+    const DofLayout &layout;
+    /// Indices into layout.segments() of the extensible segments.
+    std::vector<unsigned int>                              segments;
     const std::vector<std::shared_ptr<const RodMaterial>> &materials;
   };
 } // namespace rodnet

@@ -34,8 +34,10 @@ namespace rodnet
     MatrixType tangent;
     model.initialize_matrix(tangent);
     model.assemble(u, load_factor, nullptr, &tangent);
-    const Eigenpairs pairs =
-      lowest_eigenpairs(tangent, model.constraints(), count);
+    const Eigenpairs pairs = lowest_eigenpairs(tangent,
+                                               model.constraints(),
+                                               count,
+                                               model.multiplier_dofs());
     write_eigenvalues(pairs, directory + "/modes.csv");
     if (!write_vtu)
       return {"modes.csv"};

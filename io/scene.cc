@@ -533,8 +533,12 @@ namespace rodnet
         network->create_triangulation();
       }
     std::vector<std::shared_ptr<const RodMaterial>> materials;
-    for (const unsigned int g : rod_groups())
-      materials.push_back(material_groups[g].material);
+    const std::vector<unsigned int> groups = rod_groups();
+    for (unsigned int r = 0; r < groups.size(); ++r)
+      {
+        materials.push_back(material_groups[groups[r]].material);
+        network->set_inextensible(r, material_groups[groups[r]].inextensible);
+      }
     return {std::move(network), materials};
   }
 
@@ -654,6 +658,12 @@ namespace rodnet
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "
         "only; use Solver/Method = newton or continuation");
+    for (const MaterialGroup &group : material_groups)
+      if (group.inextensible)
+        throw std::invalid_argument(
+          "entry \"" + group.subsection + "/Inextensible\": the "
+          "bending-active element of dynamic relaxation has no constraints; "
+          "use Solver/Method = newton or continuation");
     auto [network, materials] = build_network();
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)

@@ -153,6 +153,8 @@ namespace rodnet
       std::string model;
       /// kg/m^3; 0 when not given.
       double density = 0;
+      /// Whether the rods keep their segments' lengths (Rod::inextensible).
+      bool inextensible = false;
       /// Empty where the rigidities are given directly.
       std::optional<CrossSection> section;
     };
@@ -301,8 +303,8 @@ namespace rodnet
     std::string clamped_ends, pinned_vertices, fixed_components,
       prescribed_displacements, prescribed_rotations, point_forces, moments,
       probe_text;
-    Vector3     distributed_force, gravity;
-    double      mass_per_length;
+    Vector3 distributed_force, gravity;
+    double  mass_per_length;
     /// Loads/Ramped natural shape, if set.
     std::optional<NaturalShapeRamp> natural_shape_ramp;
     /// Loads/Fixed loads.

@@ -43,6 +43,14 @@ namespace rodnet
         "Mass density rho for time stepping: rho A per length, rho (I1 + "
         "I2) of twist inertia, from \"Stiffness input = section\"; 0: not "
         "given (static and quasi-static runs). [kg/m^3]");
+      prm.declare_entry(
+        "Inextensible",
+        "false",
+        dealii::Patterns::Bool(),
+        "Keep every segment's length exactly, by a Lagrange multiplier per "
+        "segment (Korner et al. eq. 4.4), instead of the stretching energy. "
+        "For Newton steps (full step or backtracking) and continuation; the "
+        "multipliers are written as axial_force. [-]");
       const MaterialRegistry        &registry = MaterialRegistry::instance();
       const std::vector<std::string> names    = registry.names();
       std::string                    help     = "Constitutive law of the rods:";
@@ -87,9 +95,10 @@ namespace rodnet
                         const unsigned int        group)
   {
     MaterialGroup g;
-    g.subsection = material_section(group);
-    g.model      = prm.get("Model");
-    g.density    = prm.get_double("Density");
+    g.subsection   = material_section(group);
+    g.model        = prm.get("Model");
+    g.density      = prm.get_double("Density");
+    g.inextensible = prm.get_bool("Inextensible");
     if (!sets_an_entry(*entries.find(g.subsection)->find(g.model)))
       throw std::invalid_argument(
         "subsection \"" + g.subsection + "/" + g.model +

@@ -246,7 +246,11 @@ namespace rodnet
       if (tangent.m() == 0)
         model.initialize_matrix(tangent);
       model.assemble(u, load_factor, nullptr, &tangent);
-      return lowest_eigenpairs(tangent, model.constraints(), 1).values[0];
+      return lowest_eigenpairs(tangent,
+                               model.constraints(),
+                               1,
+                               model.multiplier_dofs())
+        .values[0];
     }
 
     /**

@@ -97,7 +97,10 @@ namespace rodnet
   ArclengthContinuation::turn_to_null_vector(PathPoint &p)
   {
     model.assemble(p.u, p.lambda, nullptr, &tangent);
-    const ConstrainedFactorization factorization(tangent, model.constraints());
+    const ConstrainedFactorization factorization(tangent,
+                                                 model.constraints(),
+                                                 0.0,
+                                                 model.multiplier_dofs());
     // Inverse iteration from a fixed pseudo-random start: near a
     // bifurcation the tangent's smallest eigenvalue is far below the next.
     std::mt19937                           random(1);

@@ -63,7 +63,9 @@ namespace rodnet
             // A quaternion increment v turns by 2 |v|.
             weights[i] = 4;
             break;
+          case DofRoles::Kind::multiplier:
           case DofRoles::Kind::inert:
+            // Multipliers follow the path: forces, not a distance along it.
             weights[i] = 0;
             break;
         }

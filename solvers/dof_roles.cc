@@ -34,6 +34,12 @@ namespace rodnet
         if (seen[cell])
           kinds[layout.twist_dof(cell)] = Kind::twist;
       }
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
+      if (layout.has_multiplier(cell))
+        {
+          kinds[layout.multiplier_dof(cell)]  = Kind::multiplier;
+          owners[layout.multiplier_dof(cell)] = cell;
+        }
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (layout.has_rotation_dofs(j))
         for (unsigned int c = 1; c < 4; ++c)
@@ -98,7 +104,9 @@ namespace rodnet
           {
             const auto [r, s] = cell_places[owners[dof]];
             return "rod " + std::to_string(r) + " segment " +
-                   std::to_string(s) + " (its twist)";
+                   std::to_string(s) +
+                   (kinds[dof] == Kind::multiplier ? " (its length)" :
+                                                     " (its twist)");
           }
       }
   }

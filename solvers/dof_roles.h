@@ -15,8 +15,9 @@ namespace rodnet
    * component of a junction's quaternion (moment rows), or inert: a DoF the
    * model fixes because it carries nothing (the copies of shared junction
    * positions, a twist that no hinge sees, the real part of a quaternion,
-   * which is its gauge). Also names DoFs, vertices and segments the way
-   * messages and scenes do.
+   * which is its gauge), or the Lagrange multiplier of an inextensible
+   * segment (a constraint row, scaled to a force). Also names DoFs, vertices
+   * and segments the way messages and scenes do.
    */
   class DofRoles
   {
@@ -26,6 +27,7 @@ namespace rodnet
       position,
       twist,
       quaternion,
+      multiplier,
       inert
     };
 
@@ -38,8 +40,8 @@ namespace rodnet
       return kinds[dof];
     }
 
-    /// The vertex (position DoFs), cell (twists) or junction (quaternion
-    /// components) DoF @p dof belongs to.
+    /// The vertex (position DoFs), cell (twists, multipliers) or junction
+    /// (quaternion components) DoF @p dof belongs to.
     unsigned int
     owner(const global_dof_index dof) const
     {
@@ -79,8 +81,8 @@ namespace rodnet
     vertex_name(unsigned int v) const;
 
     /// "rod 1 segment 3 (vertex 4)", "rod 0 segment 2 (its twist)",
-    /// "junction \"tip\"": where DoF @p dof sits. A vertex is named by the
-    /// shorter (stiffer) of its segments.
+    /// "rod 0 segment 2 (its length)", "junction \"tip\"": where DoF @p dof
+    /// sits. A vertex is named by the shorter (stiffer) of its segments.
     std::string
     describe(global_dof_index dof) const;
 

@@ -42,8 +42,8 @@ namespace rodnet
       for (const VectorType &m : modes)
         {
           const double *values = m.trilinos_vector()[0];
-          solved.push_back(
-            factorization.solve(std::vector<double>(values, values + m.size())));
+          solved.push_back(factorization.solve(
+            std::vector<double>(values, values + m.size())));
         }
       Eigen::MatrixXd s(k, k);
       for (unsigned int a = 0; a < k; ++a)
@@ -70,9 +70,15 @@ namespace rodnet
                        MatrixType       &tangent)
   {
     model.assemble(u, load_factor, nullptr, &tangent, true);
-    const ConstrainedFactorization factorization(tangent, model.constraints());
-    return negative_beside_symmetries(
-      model, u, load_factor, factorization, factorization.inertia());
+    const ConstrainedFactorization factorization(tangent,
+                                                 model.constraints(),
+                                                 0.0,
+                                                 model.multiplier_dofs());
+    return negative_beside_symmetries(model,
+                                      u,
+                                      load_factor,
+                                      factorization,
+                                      factorization.inertia());
   }
 
   EquilibriumCheck
@@ -86,11 +92,18 @@ namespace rodnet
   {
     VectorType r = model.create_vector();
     model.assemble(u, load_factor, &r, &tangent, true);
-    const ConstrainedFactorization factorization(tangent, model.constraints());
+    const ConstrainedFactorization factorization(tangent,
+                                                 model.constraints(),
+                                                 0.0,
+                                                 model.multiplier_dofs());
     EquilibriumCheck               check;
-    check.negative_eigenvalues = negative_beside_symmetries(
-      model, u, load_factor, factorization, factorization.inertia());
-    check.stable               = check.negative_eigenvalues == 0;
+    check.negative_eigenvalues =
+      negative_beside_symmetries(model,
+                                 u,
+                                 load_factor,
+                                 factorization,
+                                 factorization.inertia());
+    check.stable = check.negative_eigenvalues == 0;
     if (!result.rounding_limited)
       return check;
     // Where the residual sits on its round-off floor it cannot show
@@ -123,8 +136,8 @@ namespace rodnet
             << " is not determined: its residual is at the round-off floor, "
                "and the Newton correction of that residual is "
             << check.rounding_uncertainty << " of the model size (at most "
-            << failure_limit << " for a converged step): "
-            << check.rounding_warning;
+            << failure_limit
+            << " for a converged step): " << check.rounding_warning;
     throw SolverFailure(message.str());
   }
 } // namespace rodnet

@@ -64,8 +64,9 @@ namespace rodnet
     {
     public:
       explicit StackedRows(const int width)
-        : r(Eigen::MatrixXd::Zero(width, width))
-      {}
+          : r(Eigen::MatrixXd::Zero(width, width))
+      {
+      }
 
       void
       add(const Row &row)
@@ -288,6 +289,15 @@ namespace rodnet
       return parts;
     }
 
+    /// Whether DoFs of @p kind change under a rigid motion: not the inert
+    /// ones, nor the multipliers of inextensible segments (their lengths do
+    /// not change).
+    bool
+    moves_rigidly(const Kind kind)
+    {
+      return kind != Kind::inert && kind != Kind::multiplier;
+    }
+
     /// The rod of a DoF that is not inert: that of its vertex, its segment
     /// or (quaternions) the first rod end at its junction.
     unsigned int
@@ -356,8 +366,8 @@ namespace rodnet
             {
               const Vector3 x =
                 model.configuration().position(u, roles.owner(d));
-              const Vector3 e = Vector3::Unit(roles.component(d));
-              row.head<3>()   = e.transpose();
+              const Vector3 e   = Vector3::Unit(roles.component(d));
+              row.head<3>()     = e.transpose();
               row.segment<3>(3) = (x - center).cross(e).transpose() / length;
               break;
             }
@@ -401,7 +411,7 @@ namespace rodnet
         rigid_change(model, roles, u, d, part.center, part.length);
       if (!part.turns)
         return rigid;
-      Row row = Row::Zero(turn_columns);
+      Row row                 = Row::Zero(turn_columns);
       row.head(rigid_columns) = rigid;
       if (roles.kind(d) == Kind::twist)
         row[rigid_columns] = 1;
@@ -423,7 +433,7 @@ namespace rodnet
       StackedRows rows(width);
       for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
         {
-          if (roles.kind(d) == Kind::inert ||
+          if (!moves_rigidly(roles.kind(d)) ||
               !model.constraints().is_constrained(d) ||
               part_of_rod[rod_of(model.network(), roles, d)] != p)
             continue;
@@ -518,7 +528,7 @@ namespace rodnet
       part_of_dof.assign(roles.n_dofs(), parts.size());
       for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
         {
-          if (roles.kind(d) == Kind::inert)
+          if (!moves_rigidly(roles.kind(d)))
             continue;
           const unsigned int p = part_of_rod[rod_of(model.network(), roles, d)];
           const Part        &part = parts[p];
@@ -615,7 +625,7 @@ namespace rodnet
       std::vector<unsigned int> part_of_dof;
       const Eigen::MatrixXd     values =
         motion_vectors(model, roles, u, part_of_rod, parts, part_of_dof);
-      const StencilState state{u,
+      const StencilState           state{u,
                                model.configuration(),
                                model.internal_variables(),
                                model.time_step(),
@@ -696,8 +706,13 @@ namespace rodnet
                                    weight = zero_grams(parts);
       std::vector<double> stored(parts.size(), 0.0);
       for (const auto &family : model.element_families())
-        add_family_grams(
-          *family, state, values, part_of_dof, energy, weight, &stored);
+        add_family_grams(*family,
+                         state,
+                         values,
+                         part_of_dof,
+                         energy,
+                         weight,
+                         &stored);
 
       std::vector<VectorType> modes;
       for (unsigned int p = 0; p < parts.size(); ++p)

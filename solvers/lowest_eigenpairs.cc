@@ -12,6 +12,8 @@
 
 namespace rodnet
 {
+  using dealii::types::global_dof_index;
+
   namespace
   {
     /// Ritz pairs of the shift-inverted operator (K_ff - sigma I)^-1, over
@@ -183,6 +185,38 @@ namespace rodnet
       return dense;
     }
 
+    /// A dense free block [H, G^T; G, 0] split at its multipliers: H over
+    /// the other free DoFs (@p space, global indices) and an orthonormal
+    /// basis of the null space of G.
+    struct ManifoldSplit
+    {
+      ManifoldSplit(const Eigen::MatrixXd               &dense,
+                    const std::vector<unsigned int>     &global,
+                    const std::vector<global_dof_index> &multipliers)
+      {
+        std::vector<Eigen::Index> rows, constraint_rows;
+        for (std::size_t k = 0; k < global.size(); ++k)
+          if (std::find(multipliers.begin(), multipliers.end(), global[k]) ==
+              multipliers.end())
+            {
+              rows.push_back(k);
+              space.push_back(global[k]);
+            }
+          else
+            constraint_rows.push_back(k);
+        hessian                 = dense(rows, rows);
+        const Eigen::MatrixXd g = dense(constraint_rows, rows);
+        // Z: the last columns of Q in G^T P = Q R, beyond the rank of G.
+        const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(g.transpose());
+        const Eigen::MatrixXd                             q = qr.householderQ();
+        null_space = q.rightCols(rows.size() - qr.rank());
+      }
+
+      std::vector<unsigned int> space;
+      Eigen::MatrixXd           hessian;
+      Eigen::MatrixXd           null_space;
+    };
+
     /// Appends the eigenpairs (@p values[i], column i of @p vectors over
     /// the free DoFs @p global) to @p pairs, the vectors over all
     /// @p n_dofs DoFs.
@@ -208,13 +242,15 @@ namespace rodnet
     std::unique_ptr<ConstrainedFactorization>
     factorize(const dealii::TrilinosWrappers::SparseMatrix &tangent,
               const dealii::AffineConstraints<double>      &constraints,
+              const std::vector<global_dof_index>          &multipliers,
               const double                                  sigma,
               Eigenpairs                                   &pairs)
     {
       ++pairs.factorizations;
       return std::make_unique<ConstrainedFactorization>(tangent,
                                                         constraints,
-                                                        sigma);
+                                                        sigma,
+                                                        multipliers);
     }
 
     /// Whether a factorization is regular with no eigenvalue below its
@@ -234,20 +270,23 @@ namespace rodnet
     positive_definite_shift(
       const dealii::TrilinosWrappers::SparseMatrix &tangent,
       const dealii::AffineConstraints<double>      &constraints,
+      const std::vector<global_dof_index>          &multipliers,
       const double                                  tolerance,
       double                                       &sigma,
       Eigenpairs                                   &pairs)
     {
-      sigma              = 0;
-      auto factorization = factorize(tangent, constraints, sigma, pairs);
+      sigma = 0;
+      auto factorization =
+        factorize(tangent, constraints, multipliers, sigma, pairs);
       if (positive_definite(*factorization))
         return factorization;
       // A singular K_ff (a zero pivot) is shifted off its null space by an
       // amount at the rounding of its entries.
       if (factorization->inertia().zero > 0)
         {
-          sigma         = -1e-10 * factorization->diagonal_scale();
-          factorization = factorize(tangent, constraints, sigma, pairs);
+          sigma = -1e-10 * factorization->diagonal_scale();
+          factorization =
+            factorize(tangent, constraints, multipliers, sigma, pairs);
           if (factorization->inertia().zero > 0)
             throw std::runtime_error(
               "the sparse eigen-solver cannot factorize the tangent");
@@ -265,8 +304,9 @@ namespace rodnet
       double       distance = 2 / std::abs(nearest);
       for (unsigned int trial = 0; trial < 40; ++trial, distance *= 4)
         {
-          sigma         = start - distance;
-          factorization = factorize(tangent, constraints, sigma, pairs);
+          sigma = start - distance;
+          factorization =
+            factorize(tangent, constraints, multipliers, sigma, pairs);
           if (positive_definite(*factorization))
             return factorization;
         }
@@ -278,18 +318,31 @@ namespace rodnet
   Eigenpairs
   dense_eigenpairs(const dealii::TrilinosWrappers::SparseMatrix &tangent,
                    const dealii::AffineConstraints<double>      &constraints,
-                   const unsigned int                            k)
+                   const unsigned int                            k,
+                   const std::vector<global_dof_index>          &multipliers)
   {
-    std::vector<unsigned int>                            global;
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      dense_free_block(tangent, constraints, global));
+    std::vector<unsigned int> global;
+    Eigen::MatrixXd dense = dense_free_block(tangent, constraints, global);
+    // On the constraint manifold: H reduced to an orthonormal basis Z of
+    // the null space of the multipliers' rows G (Nocedal & Wright 16.2).
+    Eigen::MatrixXd basis;
+    if (!multipliers.empty())
+      {
+        const ManifoldSplit split(dense, global, multipliers);
+        basis  = split.null_space;
+        dense  = basis.transpose() * split.hessian * basis;
+        global = split.space;
+      }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(dense);
     if (solver.info() != Eigen::Success)
       throw std::runtime_error("the dense eigenvalue solver did not converge");
-    const Eigen::Index count = std::min<Eigen::Index>(k, global.size());
+    const Eigen::Index count = std::min<Eigen::Index>(k, dense.rows());
     Eigenpairs         pairs; // Eigen's eigenvalues increase
     append(pairs,
            solver.eigenvalues().head(count),
-           solver.eigenvectors().leftCols(count),
+           multipliers.empty() ?
+             Eigen::MatrixXd(solver.eigenvectors().leftCols(count)) :
+             Eigen::MatrixXd(basis * solver.eigenvectors().leftCols(count)),
            global,
            tangent.m());
     return pairs;
@@ -299,24 +352,32 @@ namespace rodnet
   lowest_eigenpairs(const dealii::TrilinosWrappers::SparseMatrix &tangent,
                     const dealii::AffineConstraints<double>      &constraints,
                     const unsigned int                            k,
+                    const std::vector<global_dof_index>          &multipliers,
                     const double                                  tolerance)
   {
+    // The eigen-space: the free DoFs but the multipliers.
     unsigned int n_free = 0;
     for (unsigned int i = 0; i < tangent.m(); ++i)
       n_free += !constraints.is_constrained(i);
+    for (const global_dof_index d : multipliers)
+      n_free -= !constraints.is_constrained(d);
     if (n_free == 0)
       throw std::invalid_argument("every DoF is constrained: no eigenpair");
     // The dense solver also where k is a fair part of the spectrum: the
     // Lanczos basis would be as large as the space.
     if (n_free <= max_dense_eigenpair_dofs || 4 * k >= n_free || k == 0)
-      return dense_eigenpairs(tangent, constraints, k);
+      return dense_eigenpairs(tangent, constraints, k, multipliers);
 
-    Eigenpairs pairs;
-    double     sigma = 0;
-    const auto factorization =
-      positive_definite_shift(tangent, constraints, tolerance, sigma, pairs);
-    unsigned int wanted = std::min(k, n_free);
-    unsigned int block  = std::clamp(wanted, 3u, 6u);
+    Eigenpairs   pairs;
+    double       sigma         = 0;
+    const auto   factorization = positive_definite_shift(tangent,
+                                                       constraints,
+                                                       multipliers,
+                                                       tolerance,
+                                                       sigma,
+                                                       pairs);
+    unsigned int wanted        = std::min(k, n_free);
+    unsigned int block         = std::clamp(wanted, 3u, 6u);
     for (unsigned int attempt = 0;; ++attempt, block *= 2)
       {
         const RitzPairs ritz = block_lanczos(*factorization,
@@ -332,7 +393,9 @@ namespace rodnet
         const double tau =
           lambda[wanted - 1] + 1e-6 * (lambda[wanted - 1] - sigma);
         const unsigned int below =
-          factorize(tangent, constraints, tau, pairs)->inertia(0.0).negative;
+          factorize(tangent, constraints, multipliers, tau, pairs)
+            ->inertia(0.0)
+            .negative;
         if (below <= wanted || wanted == n_free)
           {
             const unsigned int count = std::min(k, wanted);

@@ -75,7 +75,10 @@ namespace rodnet
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
       if (!constraints.is_constrained(i))
         {
-          if (dof_roles.kind(i) == Kind::position)
+          // A multiplier's row is its constraint scaled to a force
+          // (InextensibilityFamily).
+          if (dof_roles.kind(i) == Kind::position ||
+              dof_roles.kind(i) == Kind::multiplier)
             force2 += values[i] * values[i];
           else if (dof_roles.kind(i) == Kind::twist)
             moment2 += values[i] * values[i];
@@ -204,8 +207,8 @@ namespace rodnet
                                      reached.moment / step.tolerance.moment);
       // Quadratic convergence more than halves the excess at every
       // iteration; an excess kept over two iterations is a stall.
-      const bool stalled = step.excess_before_last > 0 &&
-                           excess > 0.5 * step.excess_before_last;
+      const bool stalled =
+        step.excess_before_last > 0 && excess > 0.5 * step.excess_before_last;
       step.excess_before_last = step.excess_last;
       step.excess_last        = excess;
       if (!stalled || step.measured_again || excess > 1e3)
@@ -292,6 +295,7 @@ namespace rodnet
             // q = (1, v) turns by 2 |v| for small v.
             largest = std::max(largest, 2 * std::abs(change[i]));
             break;
+          case Kind::multiplier:
           case Kind::inert:
             break;
         }

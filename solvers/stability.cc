@@ -8,6 +8,8 @@
 
 namespace rodnet
 {
+  using dealii::types::global_dof_index;
+
   namespace internal
   {
     /// The tangent restricted to the free DoFs as an Eigen sparse matrix
@@ -19,6 +21,12 @@ namespace rodnet
       Eigen::SparseMatrix<double> matrix;
       std::vector<unsigned int>   global;
       Eigen::VectorXd             diagonal;
+      /// Per free DoF: whether it is a multiplier.
+      std::vector<bool> multiplier;
+      /// The free DoFs that are not multipliers (the eigen-space): their
+      /// places in global, and their global indices.
+      std::vector<unsigned int> space;
+      std::vector<unsigned int> space_global;
     };
   } // namespace internal
 
@@ -26,17 +34,42 @@ namespace rodnet
   {
     using internal::FreeBlock;
 
+    /**
+     * Size of the regularization of a multiplier row against its largest
+     * entry a (see ConstrainedFactorization): -c a on its diagonal and the
+     * penalty (1 / (c a)) g g^T of its row g on the other DoFs. As a
+     * penalty it is a stretching rigidity EI / (c l^2) at the scale of
+     * InextensibilityFamily, which moves the lowest eigenvalues by a
+     * fraction c (l / L)^2 (L the wavelength); the pivots grow by 1 / c.
+     */
+    constexpr double multiplier_regularization = 1e-4;
+
+    /**
+     * The free block of @p tangent (sparse_free_block()), its diagonal
+     * shifted by -@p shift, with the multiplier rows regularized.
+     */
     FreeBlock
     sparse_free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                      const dealii::AffineConstraints<double>      &constraints)
+                      const dealii::AffineConstraints<double>      &constraints,
+                      const std::vector<global_dof_index>          &multipliers,
+                      const double                                  shift)
     {
       const unsigned int n_dofs = tangent.m();
-      std::vector<int>   free_index(n_dofs, -1);
-      FreeBlock          block;
+      std::vector<bool>  is_multiplier(n_dofs, false);
+      for (const global_dof_index d : multipliers)
+        is_multiplier[d] = true;
+      std::vector<int> free_index(n_dofs, -1);
+      FreeBlock        block;
       for (unsigned int i = 0; i < n_dofs; ++i)
         if (!constraints.is_constrained(i))
           {
             free_index[i] = block.global.size();
+            block.multiplier.push_back(is_multiplier[i]);
+            if (!is_multiplier[i])
+              {
+                block.space.push_back(block.global.size());
+                block.space_global.push_back(i);
+              }
             block.global.push_back(i);
           }
       const unsigned int                  n = block.global.size();
@@ -44,7 +77,8 @@ namespace rodnet
       block.diagonal = Eigen::VectorXd::Zero(n);
       // Epetra's row views: deal.II's entry iterators cost more than the
       // factorization on large tangents.
-      const Epetra_CrsMatrix &matrix = tangent.trilinos_matrix();
+      const Epetra_CrsMatrix             &matrix = tangent.trilinos_matrix();
+      std::vector<std::pair<int, double>> row;
       for (unsigned int k = 0; k < n; ++k)
         {
           int     length;
@@ -54,6 +88,7 @@ namespace rodnet
                                   length,
                                   values,
                                   columns);
+          row.clear();
           for (int e = 0; e < length; ++e)
             {
               const int column = free_index[matrix.GCID(columns[e])];
@@ -61,7 +96,27 @@ namespace rodnet
                 block.diagonal[k] = std::abs(values[e]);
               if (column >= 0 && column <= int(k))
                 entries.emplace_back(k, column, values[e]);
+              if (column >= 0 && column != int(k) && values[e] != 0)
+                row.emplace_back(column, values[e]);
             }
+          if (!block.multiplier[k])
+            {
+              entries.emplace_back(k, k, -shift);
+              continue;
+            }
+          // K_reg = [H + rho G^T G, G^T; G, -I / rho] has the inertia of
+          // H + 2 rho G^T G plus one negative pivot per multiplier, in any
+          // elimination order.
+          double largest = 0;
+          for (const auto &[column, value] : row)
+            largest = std::max(largest, std::abs(value));
+          const double c = multiplier_regularization;
+          entries.emplace_back(k, k, largest > 0 ? -c * largest : -1.0);
+          block.diagonal[k] = largest > 0 ? c * largest : 1.0;
+          for (const auto &[i, gi] : row)
+            for (const auto &[j, gj] : row)
+              if (j <= i)
+                entries.emplace_back(i, j, gi * gj / (c * largest));
         }
       block.matrix.resize(n, n);
       block.matrix.setFromTriplets(entries.begin(), entries.end());
@@ -73,17 +128,18 @@ namespace rodnet
   {
     FreeBlock                                          block;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+    unsigned int                                       n_multipliers = 0;
   };
 
   ConstrainedFactorization::ConstrainedFactorization(
     const dealii::TrilinosWrappers::SparseMatrix &tangent,
     const dealii::AffineConstraints<double>      &constraints,
-    const double                                  shift)
+    const double                                  shift,
+    const std::vector<global_dof_index>          &multipliers)
       : data(std::make_unique<Data>())
   {
-    data->block = sparse_free_block(tangent, constraints);
-    // Eigen factorizes scale A + offset I.
-    data->ldlt.setShift(-shift);
+    data->block = sparse_free_block(tangent, constraints, multipliers, shift);
+    data->n_multipliers = data->block.global.size() - data->block.space.size();
     if (!data->block.global.empty())
       data->ldlt.compute(data->block.matrix);
   }
@@ -126,6 +182,9 @@ namespace rodnet
         else
           ++result.positive;
       }
+    // One negative pivot per multiplier (sparse_free_block()): the rest
+    // counts the eigenvalues on the constraint manifold.
+    result.negative -= std::min(result.negative, data->n_multipliers);
     return result;
   }
 
@@ -134,32 +193,46 @@ namespace rodnet
   {
     const FreeBlock    &block = data->block;
     std::vector<double> solution(rhs.size(), 0.0);
-    if (block.global.empty())
+    if (block.space.empty())
       return solution;
-    Eigen::VectorXd b(block.global.size());
-    for (unsigned int k = 0; k < block.global.size(); ++k)
-      b[k] = rhs[block.global[k]];
-    const Eigen::VectorXd x = data->ldlt.solve(b);
-    if (data->ldlt.info() != Eigen::Success || !x.allFinite())
-      throw std::runtime_error("the tangent is singular");
-    for (unsigned int k = 0; k < block.global.size(); ++k)
-      solution[block.global[k]] = x[k];
+    Eigen::MatrixXd b(block.space.size(), 1);
+    for (unsigned int k = 0; k < block.space.size(); ++k)
+      b(k, 0) = rhs[block.space_global[k]];
+    solve_free(b);
+    for (unsigned int k = 0; k < block.space.size(); ++k)
+      solution[block.space_global[k]] = b(k, 0);
     return solution;
   }
 
   const std::vector<unsigned int> &
   ConstrainedFactorization::free_dofs() const
   {
-    return data->block.global;
+    return data->block.space_global;
   }
 
   void
   ConstrainedFactorization::solve_free(Eigen::MatrixXd &block) const
   {
-    if (data->block.global.empty())
+    const FreeBlock &free = data->block;
+    if (free.space.empty())
       return;
-    if (data->ldlt.info() == Eigen::Success)
-      block = data->ldlt.solve(block).eval();
+    if (data->n_multipliers == 0)
+      {
+        if (data->ldlt.info() == Eigen::Success)
+          block = data->ldlt.solve(block).eval();
+      }
+    else if (data->ldlt.info() == Eigen::Success)
+      {
+        // Zero right-hand sides at the multipliers, and only the other
+        // rows of the solution: the inverse of the condensed operator.
+        Eigen::MatrixXd full =
+          Eigen::MatrixXd::Zero(free.global.size(), block.cols());
+        for (unsigned int k = 0; k < free.space.size(); ++k)
+          full.row(free.space[k]) = block.row(k);
+        full = data->ldlt.solve(full).eval();
+        for (unsigned int k = 0; k < free.space.size(); ++k)
+          block.row(k) = full.row(free.space[k]);
+      }
     if (data->ldlt.info() != Eigen::Success || !block.allFinite())
       throw std::runtime_error("the tangent is singular");
   }
@@ -167,16 +240,21 @@ namespace rodnet
   double
   ConstrainedFactorization::diagonal_scale() const
   {
-    const Eigen::VectorXd &diagonal = data->block.diagonal;
-    return diagonal.size() == 0 ? 0.0 : diagonal.mean();
+    const FreeBlock &block = data->block;
+    double           sum   = 0;
+    for (const unsigned int k : block.space)
+      sum += block.diagonal[k];
+    return block.space.empty() ? 0.0 : sum / block.space.size();
   }
 
   Inertia
   tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,
                   const dealii::AffineConstraints<double>      &constraints,
+                  const std::vector<global_dof_index>          &multipliers,
                   const double                                  zero_ratio)
   {
-    return ConstrainedFactorization(tangent, constraints).inertia(zero_ratio);
+    return ConstrainedFactorization(tangent, constraints, 0.0, multipliers)
+      .inertia(zero_ratio);
   }
 
 } // namespace rodnet

@@ -34,14 +34,36 @@ namespace rodnet
    * eigen-decomposition. With a @p shift sigma it factorizes K_ff - sigma I
    * instead (shift-invert eigen-solvers, lowest_eigenpairs()), whose
    * inertia counts the eigenvalues of K_ff below sigma.
+   *
+   * <h3>Constraints by multipliers</h3>
+   * Where the model has Lagrange multipliers (@p multipliers, e.g.
+   * RodModel::multiplier_dofs()), the tangent is the KKT matrix
+   * [H, G^T; G, 0] and what counts is the Hessian H on the constraint
+   * manifold, Z^T H Z with G Z = 0 (Nocedal & Wright 16.2): the KKT matrix
+   * has one negative eigenvalue per constraint besides (Gould 1985), and its
+   * zero diagonal stops an LDL^T without pivoting. So the multiplier rows
+   * are regularized, [H + rho G^T G, G^T; G, -I/rho] with rho = 1 / (c a)
+   * per row (a its largest entry, c = 1e-4): its LDL^T exists in any
+   * order where H is positive on the manifold (a quasi-definite matrix,
+   * Vanderbei 1995); eliminating the multipliers leaves H + 2 rho G^T G,
+   * whose negative eigenvalues are those of Z^T H Z once the penalty
+   * dominates (Debreu's lemma). inertia() subtracts the one negative pivot
+   * per multiplier; the shift acts on the other DoFs only (the eigenproblem
+   * H v = lambda v on the manifold), and the solves, free_dofs() and
+   * solve_free() leave the multipliers out: they apply the inverse of the
+   * condensed operator H + 2 rho G^T G - sigma I, whose lowest eigenvalues
+   * are those on the manifold to a fraction c (l / L)^2 (l the segment's
+   * length, L the mode's wavelength; the penalty acts like a stretching
+   * rigidity EI / (c l^2)).
    */
   class ConstrainedFactorization
   {
   public:
     ConstrainedFactorization(
-      const dealii::TrilinosWrappers::SparseMatrix &tangent,
-      const dealii::AffineConstraints<double>      &constraints,
-      double                                        shift = 0);
+      const dealii::TrilinosWrappers::SparseMatrix       &tangent,
+      const dealii::AffineConstraints<double>            &constraints,
+      double                                              shift       = 0,
+      const std::vector<dealii::types::global_dof_index> &multipliers = {});
     ~ConstrainedFactorization();
 
     /**
@@ -58,11 +80,13 @@ namespace rodnet
     inertia(double zero_ratio = 1e-12) const;
 
     /// K_ff^-1 b_f for @p rhs (one entry per DoF); zero at constrained
-    /// DoFs. Throws std::runtime_error where the factorization failed.
+    /// DoFs (and at multipliers, see the class documentation). Throws
+    /// std::runtime_error where the factorization failed.
     std::vector<double>
     solve(const std::vector<double> &rhs) const;
 
-    /// The free DoFs, in the order of the rows of solve_free()'s blocks.
+    /// The free DoFs but the multipliers, in the order of the rows of
+    /// solve_free()'s blocks.
     const std::vector<unsigned int> &
     free_dofs() const;
 
@@ -82,11 +106,14 @@ namespace rodnet
     std::unique_ptr<Data> data;
   };
 
-  /// ConstrainedFactorization(tangent, constraints).inertia(zero_ratio).
+  /// ConstrainedFactorization(tangent, constraints, 0, multipliers)
+  /// .inertia(zero_ratio).
   Inertia
-  tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                  const dealii::AffineConstraints<double>      &constraints,
-                  double zero_ratio = 1e-12);
+  tangent_inertia(
+    const dealii::TrilinosWrappers::SparseMatrix       &tangent,
+    const dealii::AffineConstraints<double>            &constraints,
+    const std::vector<dealii::types::global_dof_index> &multipliers = {},
+    double                                              zero_ratio  = 1e-12);
 } // namespace rodnet
 
 #endif

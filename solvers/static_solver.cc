@@ -36,6 +36,12 @@ namespace rodnet
         "static load stepping cannot solve a material with internal "
         "variables (a viscoelastic law): its response depends on time; "
         "use time stepping (quasi-static or dynamic, doc/dynamics.md)");
+    if (!model.multiplier_dofs().empty() && parameters.newton.needs_potential())
+      throw std::invalid_argument(
+        "the " + parameters.newton.line_search +
+        " globalization minimizes a potential, but inextensible rods are "
+        "solved at a stationary point of their Lagrangian (a saddle of the "
+        "energy and the constraints); use the full step or backtracking");
     model.initialize_matrix(tangent);
   }
 
@@ -49,9 +55,17 @@ namespace rodnet
     model.apply_boundary_values(u, load_factor);
     ResidualParts         tolerance, reached;
     NewtonSolver::Problem problem;
-    problem.set_potential([&](const VectorType &x, VectorType *r) {
+    const auto potential = [&](const VectorType &x, VectorType *r) {
       return model.assemble(x, load_factor, r, nullptr, true, extra_force);
-    });
+    };
+    // With multipliers the assembled "energy" is the Lagrangian, whose
+    // stationary point is a saddle: no potential for a line search.
+    if (model.multiplier_dofs().empty())
+      problem.set_potential(potential);
+    else
+      problem.residual = [potential](const VectorType &x, VectorType &r) {
+        potential(x, &r);
+      };
     problem.tangent = [&](const VectorType &x, MatrixType &k) {
       model.assemble(x, load_factor, nullptr, &k, true, extra_force);
     };
@@ -251,7 +265,7 @@ namespace rodnet
     try
       {
         model.assemble(u, load_factor, nullptr, &tangent, true);
-        inertia = tangent_inertia(tangent, model.constraints());
+        inertia = tangent_inertia(tangent, model.constraints(), model.multiplier_dofs());
       }
     catch (const std::exception &)
       {
@@ -277,7 +291,7 @@ namespace rodnet
   {
     model.assemble(u, load_factor, nullptr, &tangent);
     const std::vector<double> values =
-      lowest_eigenpairs(tangent, model.constraints(), 1).values;
+      lowest_eigenpairs(tangent, model.constraints(), 1, model.multiplier_dofs()).values;
     return values.empty() ? std::nan("") : values[0];
   }
 
@@ -290,7 +304,7 @@ namespace rodnet
   {
     model.assemble(u, mode_load_factor, nullptr, &tangent);
     const std::vector<double> mode =
-      lowest_eigenpairs(tangent, model.constraints(), 1).vectors[0];
+      lowest_eigenpairs(tangent, model.constraints(), 1, model.multiplier_dofs()).vectors[0];
     // Displace the state along the mode so that its largest component
     // moves by the given fraction of the model size, and let Newton find
     // the equilibrium nearby, on both sides.

@@ -54,6 +54,13 @@ namespace rodnet
     if (!(p.min_step_fraction > 0 && p.min_step_fraction <= 1))
       throw std::invalid_argument(
         "time stepping: the minimum step fraction must lie in (0, 1]");
+    if (!model.multiplier_dofs().empty())
+      // The multipliers carry no mass: the equations of motion would be
+      // differential-algebraic, which the schemes here do not integrate.
+      throw std::invalid_argument(
+        "time stepping: inextensible rods are not supported (their "
+        "multipliers make the equations of motion differential-algebraic); "
+        "use Newton load steps or continuation, or extensible rods");
     scheme = integration_scheme_registry().create(p.integrator, system);
     preload_scheme =
       integration_scheme_registry().create("quasi-static", system);

@@ -333,7 +333,7 @@ namespace rodnet
 
     /// The quadratic model of one iteration: the scaled tangent, its
     /// factorization, its negative curvature and the metric D.
-    struct Model
+    struct QuadraticModel
     {
       const MatrixType               &scaled;
       const ConstrainedFactorization &unshifted;
@@ -353,7 +353,7 @@ namespace rodnet
      */
     bool
     trust_region_iteration(const NewtonSolver::Problem &problem,
-                           const Model                 &model,
+                           const QuadraticModel        &model,
                            Iterate                     &current,
                            double                      &radius,
                            const Parameters            &parameters)
@@ -474,7 +474,7 @@ namespace rodnet
                      curvature.negative ?
                        curvature_length(current.energy, curvature) :
                        0.0);
-        const Model model{scaled, unshifted, curvature, metric};
+        const QuadraticModel model{scaled, unshifted, curvature, metric};
         if (!trust_region_iteration(problem,
                                     model,
                                     current,

@@ -2,8 +2,10 @@
 // energy and the assembled tangent is the gradient of the residual (central
 // finite differences), for both kernels, with and without an elastic
 // foundation (in every direction, or along one), with and without a moment
-// about a fixed axis at a rotation handle on the free end, on a rod in a
-// random state whose reference was reset away from the undeformed one: this
+// about a fixed axis at a rotation handle on the free end, extensible or
+// inextensible (the Lagrangian with its multipliers, at random multiplier
+// values), on a rod in a random state whose reference was reset away from
+// the undeformed one: this
 // checks the DoF maps, the chain rule, the constraint handling and the loop
 // over element families together.
 #include <core/rod_generators.h>
@@ -29,7 +31,8 @@ namespace
   std::unique_ptr<RodModel>
   make_model(const std::string &kernel,
              const Foundation   foundation,
-             const bool         end_moment)
+             const bool         end_moment,
+             const bool         inextensible)
   {
     auto network = std::make_unique<RodNetwork>();
     network->add_rod(generators::helix(0.5, 0.1, 0.5, 12),
@@ -42,6 +45,7 @@ namespace
                                      network->rods()[0].vertices.back()) :
         0;
     network->create_triangulation();
+    network->set_inextensible(0, inextensible);
     auto model = std::make_unique<RodModel>(
       std::move(network),
       std::vector<std::shared_ptr<const RodMaterial>>{
@@ -71,16 +75,16 @@ namespace
   }
 
   class GlobalDerivatives : public ::testing::TestWithParam<
-                              std::tuple<std::string, Foundation, bool>>
+                              std::tuple<std::string, Foundation, bool, bool>>
   {
   };
 
   TEST_P(GlobalDerivatives, ResidualAndTangentMatchFiniteDifferences)
   {
-    const auto [kernel, foundation, end_moment] = GetParam();
-    const auto   model = make_model(kernel, foundation, end_moment);
-    VectorType   u     = model->create_vector();
-    std::mt19937 random(7);
+    const auto [kernel, foundation, end_moment, inextensible] = GetParam();
+    const auto model = make_model(kernel, foundation, end_moment, inextensible);
+    VectorType u     = model->create_vector();
+    std::mt19937                           random(7);
     std::uniform_real_distribution<double> small(-0.05, 0.05);
     for (unsigned int i = 0; i < u.size(); ++i)
       u[i] = small(random);
@@ -120,7 +124,8 @@ namespace
           }
       }
     std::cout << kernel << ", foundation " << static_cast<int>(foundation)
-              << (end_moment ? ", end moment" : "") << ": residual error "
+              << (end_moment ? ", end moment" : "")
+              << (inextensible ? ", inextensible" : "") << ": residual error "
               << err_r / max_r << ", tangent error " << err_k / max_k
               << std::endl;
     EXPECT_LT(err_r / max_r, 1e-6);
@@ -134,5 +139,6 @@ namespace
                        ::testing::Values(Foundation::none,
                                          Foundation::isotropic,
                                          Foundation::directional),
+                       ::testing::Bool(),
                        ::testing::Bool()));
 } // namespace

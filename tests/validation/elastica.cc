@@ -15,14 +15,16 @@ namespace
   using namespace rodnet::testing;
 
   /// The elastica scene: load P_max reached in @p steps equal steps, a
-  /// transverse imperfection force imperfection * P_max at the tip.
+  /// transverse imperfection force imperfection * P_max at the tip; the
+  /// rod's EA, or inextensible where @p EA is 0.
   std::string
   elastica_scene(unsigned int       n_segments,
                  const std::string &kernel,
                  double             P_max,
                  unsigned int       steps,
                  double             imperfection,
-                 bool               critical_search)
+                 bool               critical_search,
+                 double             EA = 1e7)
   {
     return "subsection Geometry\n"
            "  set Generator = straight\n"
@@ -36,9 +38,14 @@ namespace
            "\n"
            "end\n"
            "subsection Material\n"
+           "  set Inextensible = " +
+           (EA == 0 ? "true" : "false") +
+           "\n"
            "  subsection linear elastic\n"
            "    set Stiffness input = direct\n"
-           "    set EA = 1e7\n"
+           "    set EA = " +
+           std::to_string(EA == 0 ? 1e7 : EA) +
+           "\n"
            "    set EI1 = 1\n"
            "    set EI2 = 1\n"
            "    set GJ = 1\n"
@@ -158,6 +165,22 @@ namespace
     EXPECT_NEAR(found.x, exact.x, 5e-4);
     EXPECT_NEAR(found.delta, exact.delta, 5e-4);
     EXPECT_EQ(run.unstable_steps, 0u);
+  }
+
+  TEST(InextensibleElastica, CriticalLoadOnTheConstraintManifold)
+  {
+    // The inertia of the KKT tangent less one per multiplier: the lowest
+    // eigenvalue crosses zero at pi^2/4 (0.5 %, N = 100), not at the
+    // first step (which counting every constraint would report).
+    const double     P_max = 3;
+    const RunSummary run =
+      run_scene_text(elastica_scene(100, "simple", P_max, 15, 0.0, true, 0),
+                     "elastica_inextensible_critical");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    const double exact = M_PI * M_PI / 4;
+    std::cout << "inextensible P_cr = " << run.critical_load_factor * P_max
+              << ", exact " << exact << std::endl;
+    EXPECT_NEAR(run.critical_load_factor * P_max, exact, 0.005 * exact);
   }
 
   INSTANTIATE_TEST_SUITE_P(HingeKernels,
