@@ -50,9 +50,9 @@ namespace rodnet
    *
    * The strains the material sees are those in excess of the rod's natural
    * shape (Geometry/Natural shape): a ribbon built curved and stress free
-   * uses eq. 5.5 on the change of its strains, which the model does not
-   * cover beyond small changes; "Natural shape = straight" is the ribbon
-   * of Sano & Wada. The ribbon has no natural curvature or twist of its own
+   * applies eq. 5.5 to the change of its strains, an extension that Sano &
+   * Wada do not discuss; "Natural shape = straight" is their ribbon. The
+   * ribbon has no natural curvature or twist of its own
    * (with_natural_shape_scaled() refuses).
    *
    * A segment of rest length l0 and axial strain eps stores
