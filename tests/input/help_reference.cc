@@ -66,8 +66,8 @@ namespace
                              "rotation <junction> <ax>,<ay>,<az> [rad]",
                              "moment <junction> <x|y|z> [N m]"})
       EXPECT_NE(text.find(kind), std::string::npos) << kind;
-    // 450 until the continuation method and its eight entries came.
-    // 480 until the ribbon models came.
+    // 450 until the continuation method and its eight entries came; 480
+    // until the ribbon models came.
     EXPECT_LT(count(help, "\n"), 540u);
     unsigned int       longest = 0;
     std::istringstream lines(help);
