@@ -253,11 +253,15 @@ namespace rodnet
             // Per coordinate: an exact zero (a rod along an axis) rounds
             // to nothing, and a floor from the vertex's distance would
             // accept a real transverse residual as noise.
+            // A multiplier is a force over a large scale (its value is
+            // small, and known relative to itself).
             const double magnitude =
               dof_roles.kind(i) == Kind::position ?
                 std::abs(model.network().vertex(
                            dof_roles.owner(i))[dof_roles.component(i)] +
                          values[i]) :
+              dof_roles.kind(i) == Kind::multiplier ?
+                std::abs(values[i]) :
                 1 + std::abs(values[i]);
             if (dof_roles.kind(i) != Kind::inert)
               moved[i] += std::numeric_limits<double>::epsilon() * magnitude *

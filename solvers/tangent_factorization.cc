@@ -8,6 +8,7 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <vector>
 
@@ -106,16 +107,81 @@ namespace rodnet
     }
 
 
-    /// The lower and upper half-widths of the band of @p m's pattern.
+    /// The lower and upper half-widths of the band of @p m's pattern, its
+    /// rows and columns renumbered by @p new_index (none: as they are).
     std::pair<int, int>
-    band_widths(const Epetra_CrsMatrix &m)
+    band_widths(const Epetra_CrsMatrix &m, const std::vector<int> &new_index)
     {
       int lower = 0, upper = 0;
-      for_each_entry(m, [&](const int row, const int column, double) {
+      for_each_entry(m, [&](int row, int column, double) {
+        if (!new_index.empty())
+          {
+            row    = new_index[row];
+            column = new_index[column];
+          }
         lower = std::max(lower, row - column);
         upper = std::max(upper, column - row);
       });
       return {lower, upper};
+    }
+
+    /**
+     * The reverse Cuthill-McKee numbering of @p m's (symmetrized) pattern
+     * (George & Liu 1981, ch. 4): each connected part breadth first from a
+     * row of least degree, the neighbours of a row by increasing degree, the
+     * whole order reversed; new_index[old row]. It brings the multipliers
+     * of inextensible rods, numbered after all other DoFs, next to their
+     * segments, so that a rod's tangent is a narrow band again.
+     */
+    std::vector<int>
+    reverse_cuthill_mckee(const Epetra_CrsMatrix &m)
+    {
+      const int                     n = m.NumMyRows();
+      std::vector<std::vector<int>> adjacent(n);
+      for_each_entry(m, [&](const int row, const int column, double) {
+        if (row != column)
+          {
+            adjacent[row].push_back(column);
+            adjacent[column].push_back(row);
+          }
+      });
+      for (std::vector<int> &a : adjacent)
+        {
+          std::sort(a.begin(), a.end());
+          a.erase(std::unique(a.begin(), a.end()), a.end());
+        }
+      const auto by_degree = [&](const int a, const int b) {
+        return adjacent[a].size() < adjacent[b].size();
+      };
+      std::vector<int> starts(n);
+      std::iota(starts.begin(), starts.end(), 0);
+      std::stable_sort(starts.begin(), starts.end(), by_degree);
+      std::vector<int>  order;
+      std::vector<bool> placed(n, false);
+      std::vector<int>  next;
+      for (const int start : starts)
+        {
+          if (placed[start])
+            continue;
+          placed[start] = true;
+          order.push_back(start);
+          for (std::size_t head = order.size() - 1; head < order.size(); ++head)
+            {
+              next.clear();
+              for (const int j : adjacent[order[head]])
+                if (!placed[j])
+                  {
+                    placed[j] = true;
+                    next.push_back(j);
+                  }
+              std::stable_sort(next.begin(), next.end(), by_degree);
+              order.insert(order.end(), next.begin(), next.end());
+            }
+        }
+      std::vector<int> new_index(n);
+      for (int k = 0; k < n; ++k)
+        new_index[order[n - 1 - k]] = k;
+      return new_index;
     }
 
 
@@ -127,14 +193,18 @@ namespace rodnet
     class BandFactorization : public TangentFactorization
     {
     public:
+      /// The band of @p matrix with its rows and columns renumbered by
+      /// @p new_index (empty: as they are), of half-widths @p kl_ku there.
       BandFactorization(const MatrixType         &matrix,
-                        const std::pair<int, int> kl_ku)
+                        const std::pair<int, int> kl_ku,
+                        std::vector<int>          new_index = {})
           : matrix(matrix.trilinos_matrix())
           , n(this->matrix.NumMyRows())
           , kl(kl_ku.first)
           , ku(kl_ku.second)
           , ldab(2 * kl + ku + 1)
           , pivots(n)
+          , new_index(std::move(new_index))
       {
         // Each stored entry's place in the band, in the order of the
         // compressed rows: a factorization then copies the values without
@@ -174,6 +244,14 @@ namespace rodnet
       solve(const VectorType &b, VectorType &x) override
       {
         x              = b;
+        double   *data = x.trilinos_vector()[0];
+        if (!new_index.empty())
+          {
+            renumbered.resize(n);
+            for (int i = 0; i < n; ++i)
+              renumbered[new_index[i]] = data[i];
+            data = renumbered.data();
+          }
         const int one  = 1;
         int       info = 0;
         dgbtrs_("N",
@@ -184,11 +262,14 @@ namespace rodnet
                 band.data(),
                 &ldab,
                 pivots.data(),
-                x.trilinos_vector()[0],
+                data,
                 &n,
                 &info);
         if (info != 0)
           throw std::runtime_error("the band LU solve failed");
+        if (!new_index.empty())
+          for (int i = 0; i < n; ++i)
+            x.trilinos_vector()[0][i] = renumbered[new_index[i]];
       }
 
       std::string
@@ -200,8 +281,13 @@ namespace rodnet
     private:
       /// Where entry (@p row, @p column) is in LAPACK's band storage.
       std::size_t
-      place(const int row, const int column) const
+      place(int row, int column) const
       {
+        if (!new_index.empty())
+          {
+            row    = new_index[row];
+            column = new_index[column];
+          }
         return std::size_t(kl + ku + row - column) + std::size_t(column) * ldab;
       }
 
@@ -210,6 +296,9 @@ namespace rodnet
       std::vector<int>         pivots;
       std::vector<std::size_t> places;
       std::vector<double>      band;
+      /// The band's numbering of the rows, empty where it is the matrix's.
+      std::vector<int>    new_index;
+      std::vector<double> renumbered;
     };
   } // namespace
 
@@ -228,9 +317,22 @@ namespace rodnet
         "the band LU (Linear solver = band) runs on one process only");
     if (kind == "klu" || !one_process)
       return std::make_unique<KluFactorization>(matrix);
-    const std::pair<int, int> widths = band_widths(matrix.trilinos_matrix());
-    if (kind == "band" || (widths.first <= max_auto_band_width &&
-                           widths.second <= max_auto_band_width))
+    const Epetra_CrsMatrix &m      = matrix.trilinos_matrix();
+    const auto              narrow = [](const std::pair<int, int> &widths) {
+      return widths.first <= max_auto_band_width &&
+             widths.second <= max_auto_band_width;
+    };
+    const std::pair<int, int> widths = band_widths(m, {});
+    if (narrow(widths))
+      return std::make_unique<BandFactorization>(matrix, widths);
+    // Renumbered, the band may be narrow (a rod with multipliers).
+    std::vector<int>          new_index = reverse_cuthill_mckee(m);
+    const std::pair<int, int> renumbered_widths = band_widths(m, new_index);
+    if (narrow(renumbered_widths))
+      return std::make_unique<BandFactorization>(matrix,
+                                                 renumbered_widths,
+                                                 std::move(new_index));
+    if (kind == "band")
       return std::make_unique<BandFactorization>(matrix, widths);
     return std::make_unique<KluFactorization>(matrix);
   }

@@ -22,7 +22,11 @@ namespace rodnet
    *    band LU factorizes 4-5 times faster than KLU (doc/performance.md);
    *    a network's junction DoFs come last and widen the band.
    * "auto" takes the band where its half-widths are at most
-   * max_auto_band_width, KLU otherwise (doc/performance.md).
+   * max_auto_band_width, as numbered or renumbered by reverse Cuthill-McKee
+   * (the multipliers of inextensible rods come after all other DoFs: a
+   * rod's KKT tangent is a narrow band once they sit next to their
+   * segments, and KLU's fill on its zero diagonal grows fast), KLU otherwise
+   * (doc/performance.md). "band" renumbers where that narrows the band.
    */
   class TangentFactorization
   {
