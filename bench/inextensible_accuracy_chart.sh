@@ -97,7 +97,7 @@ set format y "10^{%T}"
 set xlabel "seconds per path to P = 5 B/L^2 (continuation, whole run)"
 set ylabel "largest tip error / L at P = 3, 4, 5"
 set title "Elastica: exact inextensibility against extensible rods (N = 25 ... 800)"
-set key bottom left
+set key top right
 set grid
 plot "$work/inextensible.dat" using 1:2 with linespoints lw 2 pt 7 title "inextensible (multipliers)", \
      "$work/EA=1e7.dat" using 1:2 with linespoints lw 2 pt 5 title "extensible, EA = 1e7 EI/L^2", \

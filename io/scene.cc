@@ -494,18 +494,21 @@ namespace rodnet
     return result;
   }
 
-  std::vector<double>
+  std::vector<std::array<double, 2>>
   Scene::fiber_distances() const
   {
-    std::vector<double> result;
+    // Twice the radius of gyration about each axis: the radius of a
+    // circle, 1.15 times the half depth of a rectangle (on the safe side).
+    std::vector<std::array<double, 2>> result;
     for (const unsigned int g : rod_groups())
       {
         const std::optional<CrossSection> &section =
           material_groups[g].section;
-        result.push_back(
-          section ?
-            2 * std::sqrt(std::max(section->I1, section->I2) / section->area) :
-            std::nan(""));
+        if (section)
+          result.push_back({{2 * std::sqrt(section->I1 / section->area),
+                             2 * std::sqrt(section->I2 / section->area)}});
+        else
+          result.push_back({{std::nan(""), std::nan("")}});
       }
     return result;
   }

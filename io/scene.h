@@ -20,6 +20,7 @@
 #include <solvers/static_solver.h>
 #include <solvers/time_integrator.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -101,13 +102,14 @@ namespace rodnet
     inertia() const;
 
     /**
-     * Per rod of build_model(): the distance from the centerline to the
-     * farthest fiber of its section, 2 sqrt(max(I1, I2) / A) (the radius
-     * of a circle; 1.15 times the half depth of a rectangle, on the safe
-     * side), for the bending strain check (StrainLimits); NaN where the
-     * rigidities are given directly and there is no section.
+     * Per rod of build_model(): the fiber distances (c1, c2) of its section
+     * for the bending about d1 and about d2, 2 sqrt(I1 / A) and
+     * 2 sqrt(I2 / A) (the radius of a circle; 1.15 times the half depth of
+     * a rectangle in that direction, on the safe side), for the bending
+     * strain check (StrainLimits); NaN where the rigidities are given
+     * directly and there is no section.
      */
-    std::vector<double>
+    std::vector<std::array<double, 2>>
     fiber_distances() const;
 
     /**

@@ -76,7 +76,7 @@ namespace rodnet
    *
    * With @p multipliers: on the constraint manifold, as dense_eigenpairs();
    * the sparse path on the condensed operator of ConstrainedFactorization,
-   * exact to a fraction 1e-4 (l / L)^2 of each eigenvalue.
+   * exact to a fraction 1e-2 (l / L)^2 of each eigenvalue.
    */
   Eigenpairs
   lowest_eigenpairs(

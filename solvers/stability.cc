@@ -41,8 +41,12 @@ namespace rodnet
      * penalty it is a stretching rigidity EI / (c l^2) at the scale of
      * InextensibilityFamily, which moves the lowest eigenvalues by a
      * fraction c (l / L)^2 (L the wavelength); the pivots grow by 1 / c.
+     * At 1e4 segments the count is rounding either way (c = 1e-4 and 1e-2
+     * alike report a false bifurcation of the elastica at 0.28 P_cr, the
+     * extensible rod of EA = 1e7 one at 0.69 P_cr: a tangent of condition
+     * ~N^4, doc/inextensible_rods.md); 1e-2 keeps the growth small.
      */
-    constexpr double multiplier_regularization = 1e-4;
+    constexpr double multiplier_regularization = 1e-2;
 
     /**
      * The free block of @p tangent (sparse_free_block()), its diagonal

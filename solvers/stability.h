@@ -43,7 +43,7 @@ namespace rodnet
    * has one negative eigenvalue per constraint besides (Gould 1985), and its
    * zero diagonal stops an LDL^T without pivoting. So the multiplier rows
    * are regularized, [H + rho G^T G, G^T; G, -I/rho] with rho = 1 / (c a)
-   * per row (a its largest entry, c = 1e-4): its LDL^T exists in any
+   * per row (a its largest entry, c = 1e-2): its LDL^T exists in any
    * order where H is positive on the manifold (a quasi-definite matrix,
    * Vanderbei 1995); eliminating the multipliers leaves H + 2 rho G^T G,
    * whose negative eigenvalues are those of Z^T H Z once the penalty

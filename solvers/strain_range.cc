@@ -57,15 +57,16 @@ namespace rodnet
       {
         const unsigned int rod = hinges[h].rod;
         if (rod >= limits.fiber_distance.size() ||
-            !std::isfinite(limits.fiber_distance[rod]))
+            !std::isfinite(limits.fiber_distance[rod][0]))
           continue;
         const Vector3 kappa =
           model.hinge_kernel(rod).strains(configuration.hinge_dofs(u,
                                                                    hinges[h]),
                                           configuration.hinge_reference(h));
-        const double strain =
-          limits.fiber_distance[rod] *
-          (kappa - undeformed_curvature[h]).head<2>().norm() /
+        const Vector3 change = kappa - undeformed_curvature[h];
+        const double  strain =
+          std::hypot(limits.fiber_distance[rod][0] * change[0],
+                     limits.fiber_distance[rod][1] * change[1]) /
           configuration.voronoi_length(h);
         if (std::isnan(range.bending) || !(strain <= range.bending))
           {

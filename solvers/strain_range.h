@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <array>
 #include <vector>
 
 namespace rodnet
@@ -19,12 +20,13 @@ namespace rodnet
     /// from the undeformed shape times the fiber distance c of the section.
     double bending = 0.1;
     /**
-     * Per rod: distance c from the centerline to the farthest fiber of its
-     * section (m), NaN where the section is unknown (rigidities given
-     * directly), which leaves that rod's bending strain unchecked. Empty:
-     * unknown for every rod.
+     * Per rod: the fiber distances (c1, c2) of its section (m), c1 for the
+     * bending about d1 (fibers along d2), c2 for the bending about d2; NaN
+     * where the section is unknown (rigidities given directly), which
+     * leaves that rod's bending strain unchecked. Empty: unknown for every
+     * rod. The bending strain is |(c1 dkappa_1, c2 dkappa_2)|.
      */
-    std::vector<double> fiber_distance;
+    std::vector<std::array<double, 2>> fiber_distance;
   };
 
   /// The largest strains of a state and where they are.

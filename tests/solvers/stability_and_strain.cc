@@ -181,7 +181,7 @@ namespace
                           Vector3::UnitZ(),
                           M);
         StaticSolver::Parameters parameters;
-        parameters.strain_limits.fiber_distance = {r};
+        parameters.strain_limits.fiber_distance = {{r, r}};
         std::ostringstream           log;
         const StaticSolver::StepInfo info = solve(*model, log, parameters);
         std::cout << "r = " << r << ": bending strain " << info.strain.bending
