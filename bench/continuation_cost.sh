@@ -21,34 +21,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 source "$root/bench/process_timing.sh"
+source "$root/bench/elastica_scene.sh"
 
-scene() { # N, method block
-  cat <<END
-subsection Geometry
-  set Generator = straight
-  set Segments = $1
-  set Clamp at first segment midpoint = true
-  set Director d1 = 0, 0, 1
-end
-subsection Material
-  subsection linear elastic
-    set Stiffness input = direct
-    set EA = 1e7
-    set EI1 = 1
-    set EI2 = 2
-    set GJ = 1
-  end
-end
-subsection Supports
-  set Clamped ends = start
-end
-$2
-subsection Output
-  set Write VTU = false
-  set Plot = false
-  set Probes = tip_x: position end x
-end
-END
+scene() { # N, loads and solver subsections
+  elastica_scene "$1" false 1e7 "$2" "tip_x: position end x"
 }
 
 echo "| N | DoFs | points | continuation s | s per point | load steps s | s per step | ratio per point |"

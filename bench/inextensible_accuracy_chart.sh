@@ -13,30 +13,11 @@
 set -euo pipefail
 source "$(dirname "$0")/chart_paths.sh"
 source "$root/bench/process_timing.sh"
+source "$root/bench/elastica_scene.sh"
 repeats=${3:-3}
 
 scene() { # N, Inextensible, EA
-  cat <<END
-subsection Geometry
-  set Generator = straight
-  set Segments = $1
-  set Clamp at first segment midpoint = true
-  set Director d1 = 0, 0, 1
-end
-subsection Material
-  set Inextensible = $2
-  subsection linear elastic
-    set Stiffness input = direct
-    set EA = $3
-    set EI1 = 1
-    set EI2 = 2
-    set GJ = 1
-  end
-end
-subsection Supports
-  set Clamped ends = start
-end
-subsection Loads
+  elastica_scene "$1" "$2" "$3" "subsection Loads
   set Point forces = end: -1, 0, 0
 end
 subsection Solver
@@ -46,13 +27,7 @@ subsection Solver
     set Output load factors = 3, 4, 5
     set Initial step = 0.1
   end
-end
-subsection Output
-  set Write VTU = false
-  set Plot = false
-  set Probes = x: position end x; y: position end y; z: position end z
-end
-END
+end" "x: position end x; y: position end y; z: position end z"
 }
 
 # Largest tip error at P = 3, 4, 5 in probes.csv $1 (exact values from

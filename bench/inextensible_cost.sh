@@ -29,35 +29,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 source "$root/bench/process_timing.sh"
+source "$root/bench/elastica_scene.sh"
 
 scene() { # N, Inextensible, loads and solver subsections
-  cat <<END
-subsection Geometry
-  set Generator = straight
-  set Segments = $1
-  set Clamp at first segment midpoint = true
-  set Director d1 = 0, 0, 1
-end
-subsection Material
-  set Inextensible = $2
-  subsection linear elastic
-    set Stiffness input = direct
-    set EA = 1e7
-    set EI1 = 1
-    set EI2 = 2
-    set GJ = 1
-  end
-end
-subsection Supports
-  set Clamped ends = start
-end
-$3
-subsection Output
-  set Write VTU = false
-  set Plot = false
-  set Probes = tip_x: position end x
-end
-END
+  elastica_scene "$1" "$2" 1e7 "$3" "tip_x: position end x"
 }
 
 elastica="subsection Loads
