@@ -3,6 +3,7 @@
 
 #include <Epetra_BlockMap.h>
 #include <Epetra_FEVector.h>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +46,10 @@ namespace rodnet
                 ": the director d1 hint is parallel to the segment; choose "
                 "another \"Director d1\"");
             d1.normalize();
+            // A turned frame turns evenly along a closed rod.
+            const double turn =
+              M_PI * rod.frame_half_turns * j / rod.segments.size();
+            d1 = std::cos(turn) * d1 + std::sin(turn) * t.cross(d1);
             Matrix3 R;
             R.col(0)     = d1;
             R.col(1)     = t.cross(d1);
@@ -58,10 +63,10 @@ namespace rodnet
         kernels.push_back(rod_kernels[h.rod]);
         voronoi_lengths.push_back(
           0.5 * (rest_lengths[h.segment_prev] + rest_lengths[h.segment_next]));
+        closure_flips.push_back(closes_with_a_flip(h));
         HingeReference ref;
-        ref.frame_prev = frames[h.segment_prev];
-        ref.frame_next = frames[h.segment_next];
         hinge_refs.push_back(ref);
+        set_hinge_frames(hinge_refs.size() - 1);
       }
 
     accumulated_rotations.assign(network->junctions().size(),
@@ -102,6 +107,28 @@ namespace rodnet
         junction_kernels[i]->strains(junction_dofs(zero,
                                                    layout->junctions()[i]),
                                      junction_refs[i])[2];
+  }
+
+  bool
+  Configuration::closes_with_a_flip(const HingeStencil &h) const
+  {
+    const Rod &rod = network->rods()[h.rod];
+    return rod.closed && rod.frame_half_turns % 2 == 1 &&
+           h.segment_next == rod.segments.front() &&
+           h.segment_prev == rod.segments.back();
+  }
+
+  void
+  Configuration::set_hinge_frames(const unsigned int i)
+  {
+    const HingeStencil &h    = layout->hinges()[i];
+    hinge_refs[i].frame_prev = frames[h.segment_prev];
+    hinge_refs[i].frame_next = frames[h.segment_next];
+    // Past the closure of a Möbius band the first segment is met with
+    // d1 -> -d1, d2 -> -d2: its frame turned by pi about its tangent.
+    if (closure_flips[i])
+      hinge_refs[i].frame_next =
+        hinge_refs[i].frame_next * Quaternion(0.0, 0.0, 0.0, 1.0);
   }
 
   Vector3
@@ -217,10 +244,8 @@ namespace rodnet
 
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
       {
-        const HingeStencil &h    = layout->hinges()[i];
-        hinge_refs[i].frame_prev = frames[h.segment_prev];
-        hinge_refs[i].frame_next = frames[h.segment_next];
-        hinge_refs[i].twist      = twists[i];
+        set_hinge_frames(i);
+        hinge_refs[i].twist = twists[i];
       }
     for (unsigned int i = 0; i < junction_refs.size(); ++i)
       {

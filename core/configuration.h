@@ -148,6 +148,15 @@ namespace rodnet
     reset_reference(const dealii::TrilinosWrappers::MPI::Vector &u);
 
   private:
+    /// Whether hinge @p h closes a closed rod whose frame makes an odd
+    /// number of half turns (Rod::frame_half_turns).
+    bool
+    closes_with_a_flip(const HingeStencil &h) const;
+
+    /// The reference frames of hinge @p i from the segments' frames.
+    void
+    set_hinge_frames(unsigned int i);
+
     const RodNetwork                   *network;
     const DofLayout                    *layout;
     std::vector<const HingeKernel *>    kernels; ///< per hinge
@@ -163,6 +172,8 @@ namespace rodnet
     std::vector<Quaternion>             accumulated_rotations; ///< per junction
     std::vector<Vector3>                undeformed;            ///< per vertex
     std::vector<unsigned int>           segment_index;         ///< per cell
+    /// Per hinge: whether it closes a Möbius band (closes_with_a_flip()).
+    std::vector<bool> closure_flips;
   };
 } // namespace rodnet
 

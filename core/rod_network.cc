@@ -23,6 +23,23 @@ namespace rodnet
   } // namespace
 
   void
+  RodNetwork::set_frame_half_turns(const unsigned int rod,
+                                   const unsigned int half_turns)
+  {
+    if (rod >= rod_list.size())
+      throw std::invalid_argument("set_frame_half_turns: no rod " +
+                                  std::to_string(rod) + " in a network of " +
+                                  std::to_string(rod_list.size()) + " rods");
+    if (half_turns != 0 && !rod_list[rod].closed)
+      throw std::invalid_argument(
+        "rod " + std::to_string(rod) +
+        " is open: only a closed rod (a ring) has its material frame turned "
+        "around it");
+    rod_list[rod].frame_half_turns = half_turns;
+  }
+
+
+  void
   RodNetwork::set_inextensible(const unsigned int rod, const bool inextensible)
   {
     if (rod >= rod_list.size())

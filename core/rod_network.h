@@ -61,6 +61,11 @@ namespace rodnet
     /// eq. 4.4): a Lagrange multiplier per segment instead of the stretching
     /// energy (families/inextensibility_family.h).
     bool inextensible = false;
+    /// Of a closed rod: half turns of the undeformed material frame about
+    /// the tangent once around the rod, spread evenly over its segments; an
+    /// odd number closes it as a Möbius band (the closing hinge joins d1 to
+    /// -d1 of the first segment).
+    unsigned int frame_half_turns = 0;
   };
 
   /**
@@ -232,6 +237,14 @@ namespace rodnet
      */
     void
     set_inextensible(unsigned int rod, bool inextensible = true);
+
+    /**
+     * Gives closed rod @p rod @p half_turns half turns of its material
+     * frame (Rod::frame_half_turns); before a model is built on the network.
+     * Throws naming the rod if it is open.
+     */
+    void
+    set_frame_half_turns(unsigned int rod, unsigned int half_turns);
 
     /// Builds the triangulation from the rods added so far: one cell per
     /// segment, whose material_id is the index of its rod. Call once.

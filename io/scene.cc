@@ -528,11 +528,15 @@ namespace rodnet
       {
         network = std::make_unique<RodNetwork>();
         for (unsigned int r = 0; r < rod_points.size(); ++r)
-          network->add_rod(rod_points[r],
-                           rod_closed[r],
-                           director_hint,
-                           hinge_kernel,
-                           natural_shape);
+          {
+            network->add_rod(rod_points[r],
+                             rod_closed[r],
+                             director_hint,
+                             hinge_kernel,
+                             natural_shape);
+            if (rod_closed[r])
+              network->set_frame_half_turns(r, frame_half_turns);
+          }
         network->create_triangulation();
       }
     std::vector<std::shared_ptr<const RodMaterial>> materials;

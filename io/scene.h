@@ -288,6 +288,8 @@ namespace rodnet
     std::vector<bool>                 rod_closed;
     Vector3                           director_hint;
     std::string                       hinge_kernel;
+    /// Geometry/Frame half turns, of the closed rods.
+    unsigned int frame_half_turns = 0;
     NaturalShape natural_shape = NaturalShape::initial_geometry;
     /// Every rod begins half a segment behind its start (midpoint clamp).
     bool midpoint_clamp = false;

@@ -5,6 +5,8 @@
 #include <io/scene.h>
 #include <io/scene_entries.h>
 
+#include <algorithm>
+
 namespace rodnet
 {
   namespace
@@ -85,6 +87,12 @@ namespace rodnet
                         "Orientation of the first material director: d1 of "
                         "each segment is this vector made orthogonal to the "
                         "segment. Bending stiffness EI1 acts about d1. [-]");
+      prm.declare_entry("Frame half turns",
+                        "0",
+                        dealii::Patterns::Integer(0),
+                        "Of closed rods (rings): half turns of the material "
+                        "frame about the tangent once around, spread evenly; "
+                        "odd numbers close a Moebius band. [-]");
       prm.declare_entry("Hinge kernel",
                         "simple",
                         Selection(join(hinge_kernel_names(), "|")),
@@ -137,6 +145,7 @@ namespace rodnet
     input.scene_directory = scene_directory;
     director_hint         = scene_entries::get_direction(prm, "Director d1");
     hinge_kernel          = prm.get("Hinge kernel");
+    frame_half_turns      = prm.get_integer("Frame half turns");
     natural_shape         = natural_shape_from_string(prm.get("Natural shape"));
     midpoint_clamp        = input.midpoint_clamp;
     if (midpoint_clamp && !generator->open_rods())
@@ -151,6 +160,13 @@ namespace rodnet
     GeneratedGeometry geometry = generator->generate(prm, input);
     rod_points                 = std::move(geometry.rod_points);
     rod_closed                 = std::move(geometry.rod_closed);
+    if (frame_half_turns > 0 &&
+        std::find(rod_closed.begin(), rod_closed.end(), true) ==
+          rod_closed.end())
+      throw std::invalid_argument(
+        "entry \"Geometry/Frame half turns\": the " + name +
+        " generator makes no closed rod to turn the frame around; use the "
+        "ring generator or set it to 0");
     graph                      = std::move(geometry.graph);
     segments_per_beam          = graph ? input.segments : 1;
     ghost_spin = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
