@@ -69,6 +69,10 @@ namespace
     {"gmsh network",
      "set Generator = gmsh network\nset Mesh file = " + data +
        "bent_network.msh\n",
+     true},
+    {"triple ring",
+     "set Generator = ring\nset Radius = 0.7\nset Segments = 16\n"
+     "set Turns = 3\n",
      true}};
 
   std::unique_ptr<RodModel>
