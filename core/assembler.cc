@@ -483,8 +483,22 @@ namespace rodnet
 
 
   double
-  RodModel::elastic_energy(const VectorType &u) const
+  RodModel::elastic_energy(const VectorType &u, const double load_factor) const
   {
-    return assemble(u, 0.0, nullptr, nullptr);
+    // The natural shape at the load factor, the loads off: the families'
+    // energy at a stencil load factor 0 (no applied-moment potential, even
+    // for fixed loads) and without add_dead_loads().
+    follow_natural_shape(load_factor);
+    const StencilState state{u, *configuration_, history, step_length, 0.0};
+    double             energy = 0;
+    for (unsigned int f = 0; f < families.size(); ++f)
+      assemble_family(
+        f,
+        state,
+        Derivatives::energy,
+        [](const LocalContribution &) {},
+        nullptr,
+        energy);
+    return energy;
   }
 } // namespace rodnet

@@ -478,7 +478,7 @@ namespace rodnet
 
 
   double
-  DrModel::elastic_energy(const DrVector &u) const
+  DrModel::elastic_energy(const DrVector &u, double) const
   {
     if (!finalized)
       throw std::logic_error("DrModel::energy before finalize()");
@@ -496,7 +496,7 @@ namespace rodnet
   double
   DrModel::energy(const DrVector &u, const double load_factor) const
   {
-    return elastic_energy(u) - load_factor * (f_ext * u);
+    return elastic_energy(u, load_factor) - load_factor * (f_ext * u);
   }
 
 

@@ -156,9 +156,10 @@ namespace rodnet
     double
     energy(const DrVector &u, double load_factor) const;
 
-    /// Elastic energy alone (no load potential) at @p u.
+    /// Elastic energy alone (no load potential) at @p u; the beams have no
+    /// natural shape that a load factor ramps, so @p load_factor is unused.
     double
-    elastic_energy(const DrVector &u) const override;
+    elastic_energy(const DrVector &u, double load_factor) const override;
 
     /// Sets the fixed DoFs of @p u to their values at @p load_factor.
     void

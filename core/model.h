@@ -222,9 +222,10 @@ namespace rodnet
     virtual Vector3
     position(const State &u, unsigned int vertex) const = 0;
 
-    /// Elastic energy (no load potential) at @p u.
+    /// Elastic energy (no load potential) at @p u, with the natural shape
+    /// a ramped one has at @p load_factor (Loads/Ramped natural shape).
     virtual double
-    elastic_energy(const State &u) const = 0;
+    elastic_energy(const State &u, double load_factor) const = 0;
 
     /// Reaction force of support @p s at the converged @p u.
     virtual Vector3

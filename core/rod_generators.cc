@@ -94,13 +94,17 @@ namespace rodnet
          const double       radius,
          const Vector3     &e1,
          const Vector3     &e2,
-         const unsigned int n_segments)
+         const unsigned int n_segments,
+         const unsigned int turns)
     {
       if (n_segments < 3)
         throw std::invalid_argument(
           "ring: the number of segments must be >= 3");
+      if (turns < 1)
+        throw std::invalid_argument(
+          "ring: the number of turns must be a whole number >= 1");
       std::vector<Vector3> points =
-        arc(center, radius, e1, e2, 0, 2 * M_PI, n_segments);
+        arc(center, radius, e1, e2, 0, 2 * M_PI * turns, n_segments);
       points.pop_back();
       return points;
     }

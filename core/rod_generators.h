@@ -50,13 +50,16 @@ namespace rodnet
         bool           clamp_at_start_midpoint = false);
 
     /// Closed ring of @p n_segments segments (the first vertex is not
-    /// repeated).
+    /// repeated), wound @p turns times around the circle: vertex k at the
+    /// angle 2 pi turns k / n_segments (a multiply covered ring; its
+    /// vertices are distinct where n_segments is not a multiple of turns).
     std::vector<Vector3>
     ring(const Vector3 &center,
          double         radius,
          const Vector3 &e1,
          const Vector3 &e2,
-         unsigned int   n_segments);
+         unsigned int   n_segments,
+         unsigned int   turns = 1);
 
     /// Helix x = r cos t, y = r sin t, z = c t about the z axis for t in
     /// [0, 2 pi turns] (midpoint clamp: see above).

@@ -302,9 +302,11 @@ namespace rodnet
     dealii::Vector<double>
     field_values(const VectorType &u) const;
 
-    /// Elastic energy alone (no load potential) at @p u.
+    /// Elastic energy alone at @p u: no potential of the dead loads and
+    /// applied moments (fixed or not), the ramped rods' natural shape at
+    /// @p load_factor.
     double
-    elastic_energy(const VectorType &u) const override;
+    elastic_energy(const VectorType &u, double load_factor) const override;
 
     /// Sets the fixed DoFs of @p u to their values at @p load_factor.
     void

@@ -80,7 +80,7 @@ namespace rodnet
     double
     elastic_energy() const override
     {
-      return state_model.elastic_energy(u);
+      return state_model.elastic_energy(u, load_factor);
     }
 
     Vector3

@@ -60,6 +60,17 @@ namespace rodnet
     }
 
     /// Declares "Center", "Radius" and the plane axes of a circle.
+    /// Declares "Turns" (of a helix or a ring).
+    void
+    declare_turns(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Turns",
+                        "1",
+                        Double(0),
+                        "Helix: number of turns; ring: how often it is "
+                        "wound around the circle (a whole number). [-]");
+    }
+
     void
     declare_circle(dealii::ParameterHandler &prm)
     {
@@ -163,6 +174,7 @@ namespace rodnet
       declare_parameters(dealii::ParameterHandler &prm) const override
       {
         declare_circle(prm);
+        declare_turns(prm);
       }
 
       std::optional<ProblemSize>
@@ -183,9 +195,19 @@ namespace rodnet
                const GeneratorInput           &input) const override
       {
         const Circle c(prm);
-        return one_rod(
-          generators::ring(c.center, c.radius, c.e1, c.e2, input.segments),
-          true);
+        const double turns = prm.get_double("Turns");
+        if (turns < 1 || turns != std::floor(turns))
+          throw std::invalid_argument(
+            "entry \"Geometry/Turns\": a ring is wound a whole number of "
+            "times, at least once, not " +
+            prm.get("Turns"));
+        return one_rod(generators::ring(c.center,
+                                        c.radius,
+                                        c.e1,
+                                        c.e2,
+                                        input.segments,
+                                        static_cast<unsigned int>(turns)),
+                       true);
       }
     };
 
@@ -201,10 +223,7 @@ namespace rodnet
                           Double(),
                           "Helix: axial rise per radian of turn (the pitch "
                           "divided by 2 pi). [m]");
-        prm.declare_entry("Turns",
-                          "1",
-                          Double(0),
-                          "Helix: number of turns. [-]");
+        declare_turns(prm);
       }
 
       GeneratedGeometry

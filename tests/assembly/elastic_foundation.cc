@@ -82,7 +82,8 @@ namespace
           displacement[c] = u[founded->layout().vertex_dof(v, c)];
         expected += 0.5 * k * length * std::pow(n.dot(displacement), 2);
       }
-    const double energy = founded->elastic_energy(u) - bare->elastic_energy(u);
+    const double energy =
+      founded->elastic_energy(u, 0.0) - bare->elastic_energy(u, 0.0);
     EXPECT_NEAR(energy, expected, 1e-12 * expected);
     EXPECT_GT(expected, 0);
   }

@@ -295,6 +295,15 @@ namespace
      "",
      1,
      "entry \"Geometry/Plane axis 1\": \"0, 0, 0\" has no direction"},
+    {"fractional_ring_turns",
+     with("Geometry",
+          "  set Generator = ring\n"
+          "  set Turns = 2.5\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Turns\": a ring is wound a whole number of times, at "
+     "least once, not 2.5"},
     {"unknown_probe_kind",
      with("Output", "  set Probes = a: angle end\n"),
      ".prm",

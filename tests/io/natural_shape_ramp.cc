@@ -4,7 +4,9 @@
 // that fraction of its natural shape; one whose eigenstrain is ramped grows
 // by that fraction of it; one whose natural curvature grows under an end
 // moment held fixed (Loads/Fixed loads) is the arc of that curvature plus
-// the moment's; the entries' errors name them.
+// the moment's, with the elastic energy of the moment alone (the energy
+// probe measures from the natural shape at the load factor); the entries'
+// errors name them.
 #include <common/run_scene_text.h>
 #include <common/scene_text.h>
 
@@ -49,7 +51,7 @@ namespace
       << "\nend\n"
          "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
          "  set Probes = x: position end x; y: position end y; z: "
-         "position end z\nend\n";
+         "position end z; energy: energy\nend\n";
     return s.str();
   }
 
@@ -145,6 +147,17 @@ namespace
             const double               chord =
               std::sqrt(row[1] * row[1] + row[2] * row[2] + row[3] * row[3]);
             EXPECT_NEAR(chord / arc_chord(k), 1.0, 0.8 / (n * n))
+              << (fixed ? "fixed" : "ramped") << " moment, load factor "
+              << lambda;
+            // The elastic energy is that of the moment alone, measured
+            // from the natural shape at lambda: every hinge (Voronoi
+            // length l = L / (n - 1/2), n - 1 hinges) carries M, so
+            // E = (n - 1) l M^2 / (2 EI1), with M the applied moment at
+            // lambda. Measured from the unramped shape (natural curvature
+            // 0), with the fixed moment's potential, it was another number.
+            const double moment = fixed ? 0.5 : 0.5 * lambda;
+            const double energy = (n - 1) / (n - 0.5) * moment * moment / 2;
+            EXPECT_NEAR(row[4], energy, 1e-8 * energy)
               << (fixed ? "fixed" : "ramped") << " moment, load factor "
               << lambda;
           }
