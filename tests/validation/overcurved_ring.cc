@@ -219,7 +219,7 @@ namespace
     EXPECT_NEAR(down[0], o_u, 3e-3 * o_u);
 
     // At O = 3 the natural curvature is the ring's: no energy (measured
-    // 1e-12 J against the energy scale B / L = 2.1 J; the polygon's
+    // 7e-27 J against the energy scale B / L = 2.1 J; the polygon's
     // curvature measure 2 sin(theta / 2) / l is exactly 1 / R).
     for (const std::vector<double> &row : run.rows)
       if (row[0] == 3)
