@@ -147,11 +147,14 @@ namespace rodnet
     void
     reset_reference(const dealii::TrilinosWrappers::MPI::Vector &u);
 
-  private:
     /// Whether hinge @p h closes a closed rod whose frame makes an odd
-    /// number of half turns (Rod::frame_half_turns).
+    /// number of half turns (Rod::frame_half_turns): its strains are
+    /// measured against the first segment's frame turned by pi about the
+    /// tangent.
     bool
     closes_with_a_flip(const HingeStencil &h) const;
+
+  private:
 
     /// The reference frames of hinge @p i from the segments' frames.
     void

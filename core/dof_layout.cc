@@ -26,6 +26,8 @@ namespace rodnet
         add_hinge_stencils(r, rods[r], handle_inside[r]);
       }
     add_junction_stencils(network);
+    Assert(n_numbered_ribbons == n_ribbon_hinges_,
+           dealii::ExcInternalError());
   }
 
 
@@ -98,6 +100,22 @@ namespace rodnet
       if (rod.inextensible)
         for (const unsigned int cell : rod.segments)
           multiplier_dofs[cell] = first + n_multiplier_dofs++;
+
+    // The hinges of developable rods, as add_hinge_stencils() makes them:
+    // every vertex of a closed rod, the inner ones of an open rod, but
+    // those of handles inside it.
+    std::vector<unsigned int> handles(network.rods().size(), 0);
+    for (const Junction &junction : network.junctions())
+      if (junction.interior)
+        ++handles[junction.interior->rod];
+    for (unsigned int r = 0; r < network.rods().size(); ++r)
+      {
+        const Rod &rod = network.rods()[r];
+        if (!rod.developable)
+          continue;
+        const unsigned int n = rod.vertices.size();
+        n_ribbon_hinges_ += (rod.closed ? n : (n > 2 ? n - 2 : 0)) - handles[r];
+      }
   }
 
 
@@ -153,6 +171,10 @@ namespace rodnet
         h.dofs[3] = twist_dofs[h.segment_prev];
         h.dofs[7] = twist_dofs[h.segment_next];
         hinge_list.push_back(h);
+        ribbon_dofs.push_back(dealii::numbers::invalid_dof_index);
+        if (rod.developable)
+          ribbon_dofs.back() = handler.n_dofs() + 4 * n_rotations +
+                               n_multiplier_dofs + 3 * n_numbered_ribbons++;
       }
   }
 

@@ -82,7 +82,9 @@ namespace rodnet
    * After the quaternions come the Lagrange multipliers of inextensible rods
    * (Rod::inextensible), one per segment of such a rod, in the order of the
    * rods and of their segments (families/inextensibility_family.h); a
-   * network without inextensible rods has none.
+   * network without inextensible rods has none. Last come three DoFs per
+   * hinge of each developable ribbon (ribbon_dof()): its generatrix slope
+   * and the multipliers of its two developability constraints.
    */
   class DofLayout
   {
@@ -99,7 +101,8 @@ namespace rodnet
     global_dof_index
     n_dofs() const
     {
-      return handler.n_dofs() + 4 * n_rotations + n_multiplier_dofs;
+      return handler.n_dofs() + 4 * n_rotations + n_multiplier_dofs +
+             3 * n_ribbon_hinges_;
     }
 
     /// Number of Lagrange multipliers (segments of inextensible rods).
@@ -121,6 +124,32 @@ namespace rodnet
     multiplier_dof(unsigned int cell) const
     {
       return multiplier_dofs[cell];
+    }
+
+    /// Whether hinge @p h (index into hinges()) is one of a developable
+    /// ribbon (Rod::developable), with ribbon DoFs.
+    bool
+    has_ribbon_dofs(unsigned int h) const
+    {
+      return ribbon_dofs[h] != dealii::numbers::invalid_dof_index;
+    }
+
+    /**
+     * Ribbon DoF @p c of hinge @p h (has_ribbon_dofs()): 0 the generatrix
+     * slope eta, 1 and 2 the multipliers of the developability constraints
+     * kappa_2 = 0 and kappa_3 = eta kappa_1 (Korner et al. eq. 4.6).
+     */
+    global_dof_index
+    ribbon_dof(unsigned int h, unsigned int c) const
+    {
+      return ribbon_dofs[h] + c;
+    }
+
+    /// Number of hinges with ribbon DoFs.
+    global_dof_index
+    n_ribbon_hinges() const
+    {
+      return n_ribbon_hinges_;
     }
 
     /// DoFs of the DoFHandler (positions and twists) alone.
@@ -202,7 +231,8 @@ namespace rodnet
     share_junction_vertices(const RodNetwork &network);
 
     /// One multiplier DoF per segment of every inextensible rod, after the
-    /// quaternions.
+    /// quaternions, and room for three ribbon DoFs per hinge of every
+    /// developable rod after them (numbered by add_hinge_stencils()).
     void
     number_multipliers(const RodNetwork &network);
 
@@ -244,6 +274,10 @@ namespace rodnet
     /// Multiplier DoF per cell, invalid where the segment has none.
     std::vector<global_dof_index>     multiplier_dofs;
     global_dof_index                  n_multiplier_dofs = 0;
+    /// First ribbon DoF per hinge, invalid where it has none.
+    std::vector<global_dof_index> ribbon_dofs;
+    global_dof_index              n_ribbon_hinges_ = 0;
+    global_dof_index              n_numbered_ribbons = 0;
     dealii::AffineConstraints<double> junction_identities;
   };
 } // namespace rodnet

@@ -6,6 +6,7 @@
 #include <core/stencil_coloring.h>
 
 #include <families/axis_moment_family.h>
+#include <families/developable_ribbon_family.h>
 #include <families/hinge_family.h>
 #include <families/junction_family.h>
 #include <families/stretch_family.h>
@@ -29,6 +30,10 @@ namespace rodnet
       throw std::invalid_argument(
         "RodModel: " + std::to_string(rods.size()) + " rods but " +
         std::to_string(materials.size()) + " materials");
+    // A rod whose material is a developable ribbon gets its DoFs.
+    for (unsigned int r = 0; r < rods.size(); ++r)
+      if (materials[r] != nullptr && materials[r]->developable_ribbon())
+        network_->set_developable(r);
     std::vector<const HingeKernel *>    rod_kernels;
     std::vector<const JunctionKernel *> rod_junction_kernels;
     for (const Rod &rod : rods)
@@ -202,6 +207,7 @@ namespace rodnet
       if (!twist_seen[cell])
         fixed_dofs.emplace(layout_->twist_dof(cell), 0.0);
     add_inextensibility();
+    add_developable_ribbons();
     make_constraints();
 
     std::vector<AxisMoment> axis_moments;
@@ -261,6 +267,31 @@ namespace rodnet
                                                           skipped);
     inextensibility = family.get();
     families.push_back(std::move(family));
+  }
+
+
+  void
+  RodModel::add_developable_ribbons()
+  {
+    if (layout_->n_ribbon_hinges() == 0)
+      return;
+    // A hinge whose DoFs are all held keeps its strains by the supports;
+    // its constraints would see no free DoF.
+    const auto &hinges = layout_->hinges();
+    for (unsigned int h = 0; h < hinges.size(); ++h)
+      if (layout_->has_ribbon_dofs(h))
+        {
+          bool held = true;
+          for (const global_dof_index d : hinges[h].dofs)
+            held = held && fixed_dofs.count(d) > 0;
+          for (unsigned int c = 1; c < 3; ++c)
+            if (held)
+              fixed_dofs[layout_->ribbon_dof(h, c)] = 0.0;
+            else
+              free_multipliers.push_back(layout_->ribbon_dof(h, c));
+        }
+    families.push_back(std::make_unique<DevelopableRibbonFamily>(
+      *layout_, *network_, *configuration_, kernels, materials));
   }
 
 

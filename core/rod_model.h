@@ -396,7 +396,8 @@ namespace rodnet
     /// @{
     /**
      * The free Lagrange multiplier DoFs of the inextensible rods' segments
-     * (after finalize()): the constraint rows of the tangent, which is then
+     * and of the developable ribbons' hinges (DofLayout::ribbon_dof(), after
+     * finalize()): the constraint rows of the tangent, which is then
      * the KKT matrix of the constrained minimization
      * (families/inextensibility_family.h). The stability counts and the
      * eigen-solvers work on the constraint manifold with them
@@ -742,6 +743,11 @@ namespace rodnet
     /// held and adds the inextensibility family for the others.
     void
     add_inextensibility();
+
+    /// Adds the developable ribbon family if a rod is a developable ribbon
+    /// and fixes the multipliers of its hinges whose DoFs are all held.
+    void
+    add_developable_ribbons();
   };
 } // namespace rodnet
 

@@ -51,6 +51,19 @@ namespace rodnet
 
 
   void
+  RodNetwork::set_developable(const unsigned int rod, const bool developable)
+  {
+    if (rod >= rod_list.size())
+      throw std::invalid_argument("set_developable: no rod " +
+                                  std::to_string(rod) + " in a network of " +
+                                  std::to_string(rod_list.size()) + " rods");
+    rod_list[rod].developable = developable;
+    if (developable)
+      rod_list[rod].inextensible = true;
+  }
+
+
+  void
   RodNetwork::add_rod(const std::vector<Vector3> &rod_points,
                       const bool                  closed,
                       const Vector3              &director_hint,

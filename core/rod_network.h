@@ -61,6 +61,10 @@ namespace rodnet
     /// eq. 4.4): a Lagrange multiplier per segment instead of the stretching
     /// energy (families/inextensibility_family.h).
     bool inextensible = false;
+    /// Whether the rod is an inextensible developable ribbon (its material
+    /// has a RodMaterial::developable_ribbon()): a generatrix slope DoF and
+    /// two constraint multipliers per hinge (DofLayout::ribbon_dof()).
+    bool developable = false;
     /// Of a closed rod: half turns of the undeformed material frame about
     /// the tangent once around the rod, spread evenly over its segments; an
     /// odd number closes it as a Möbius band (the closing hinge joins d1 to
@@ -237,6 +241,14 @@ namespace rodnet
      */
     void
     set_inextensible(unsigned int rod, bool inextensible = true);
+
+    /**
+     * Makes rod @p rod a developable ribbon (Rod::developable), which also
+     * makes it inextensible; RodModel does it for the rods whose material
+     * is one.
+     */
+    void
+    set_developable(unsigned int rod, bool developable = true);
 
     /**
      * Gives closed rod @p rod @p half_turns half turns of its material

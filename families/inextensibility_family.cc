@@ -1,5 +1,6 @@
 #include <core/configuration.h>
 #include <elements/stretch_kernel.h>
+#include <materials/developable_ribbon_law.h>
 
 #include <families/inextensibility_family.h>
 
@@ -8,6 +9,10 @@ namespace rodnet
   double
   inextensibility_scale(const RodMaterial &material, const double rest_length)
   {
+    // A developable ribbon's hinges are priced by its law.
+    if (const DevelopableRibbonLaw *law = material.developable_ribbon())
+      return law->bending_modulus() /
+             (rest_length * rest_length * rest_length);
     // The hinge's tangent at zero strain is the rigidity over the length.
     const MaterialResponse<3> response =
       material.hinge_energy(Eigen::Vector3d::Zero(), rest_length);

@@ -20,6 +20,8 @@
 
 namespace rodnet
 {
+  class DevelopableRibbonLaw;
+
   /// Energy of one stencil and its first and second derivatives with respect
   /// to the stencil's strain vector.
   template <int n_strains>
@@ -221,6 +223,18 @@ namespace rodnet
     straight_linear_elastic_stiffness() const
     {
       return std::nullopt;
+    }
+
+    /**
+     * The energy law of an inextensible developable ribbon if the material
+     * is one (materials/developable_ribbon_law.h): its rods are then
+     * inextensible and get the ribbon's DoFs and constraints
+     * (families/developable_ribbon_family.h); null (the default) for a rod.
+     */
+    virtual const DevelopableRibbonLaw *
+    developable_ribbon() const
+    {
+      return nullptr;
     }
 
     /**

@@ -57,6 +57,7 @@ namespace rodnet
             weights[i] = 1 / (length * length);
             break;
           case DofRoles::Kind::twist:
+          case DofRoles::Kind::shape:
             weights[i] = 1;
             break;
           case DofRoles::Kind::quaternion:

@@ -10,6 +10,7 @@ namespace rodnet
     kinds.assign(layout.n_dofs(), Kind::inert);
     owners.assign(layout.n_dofs(), 0);
     components.assign(layout.n_dofs(), 0);
+    at_vertex.assign(layout.n_dofs(), false);
     for (unsigned int v = 0; v < network.n_vertices(); ++v)
       for (unsigned int c = 0; c < 3; ++c)
         {
@@ -40,6 +41,18 @@ namespace rodnet
           kinds[layout.multiplier_dof(cell)]  = Kind::multiplier;
           owners[layout.multiplier_dof(cell)] = cell;
         }
+    // A ribbon hinge's generatrix slope, a shape DoF, and its constraints'
+    // multipliers belong to the hinge's vertex.
+    for (unsigned int h = 0; h < layout.hinges().size(); ++h)
+      if (layout.has_ribbon_dofs(h))
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            const global_dof_index d = layout.ribbon_dof(h, c);
+            kinds[d]                 = c == 0 ? Kind::shape : Kind::multiplier;
+            owners[d]                = layout.hinges()[h].vertices[1];
+            components[d]            = c;
+            at_vertex[d]             = true;
+          }
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (layout.has_rotation_dofs(j))
         for (unsigned int c = 1; c < 4; ++c)
@@ -102,6 +115,15 @@ namespace rodnet
           }
         default:
           {
+            if (at_vertex[dof])
+              {
+                const auto [r, k] = vertex_places[owners[dof]];
+                return "rod " + std::to_string(r) + " vertex " +
+                       std::to_string(k) +
+                       (kinds[dof] == Kind::shape ?
+                          " (its generatrix slope)" :
+                          " (its developability)");
+              }
             const auto [r, s] = cell_places[owners[dof]];
             return "rod " + std::to_string(r) + " segment " +
                    std::to_string(s) +

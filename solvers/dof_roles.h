@@ -28,6 +28,7 @@ namespace rodnet
       twist,
       quaternion,
       multiplier,
+      shape,
       inert
     };
 
@@ -40,8 +41,9 @@ namespace rodnet
       return kinds[dof];
     }
 
-    /// The vertex (position DoFs), cell (twists, multipliers) or junction
-    /// (quaternion components) DoF @p dof belongs to.
+    /// The vertex (position DoFs, a ribbon hinge's DoFs), cell (twists,
+    /// multipliers of segments) or junction (quaternion components) DoF
+    /// @p dof belongs to.
     unsigned int
     owner(const global_dof_index dof) const
     {
@@ -91,6 +93,9 @@ namespace rodnet
     std::vector<Kind>                                  kinds;
     std::vector<unsigned int>                          owners;
     std::vector<unsigned char>                         components;
+    /// Whether a DoF's owner is a vertex although it is no position (the
+    /// ribbon DoFs of a hinge).
+    std::vector<bool> at_vertex;
     std::vector<std::pair<unsigned int, unsigned int>> vertex_places;
     std::vector<std::pair<unsigned int, unsigned int>> cell_places;
   };

@@ -291,11 +291,12 @@ namespace rodnet
 
     /// Whether DoFs of @p kind change under a rigid motion: not the inert
     /// ones, nor the multipliers of inextensible segments (their lengths do
-    /// not change).
+    /// not change), nor a ribbon's generatrix slopes (shape DoFs).
     bool
     moves_rigidly(const Kind kind)
     {
-      return kind != Kind::inert && kind != Kind::multiplier;
+      return kind != Kind::inert && kind != Kind::multiplier &&
+             kind != Kind::shape;
     }
 
     /// The rod of a DoF that is not inert: that of its vertex, its segment

@@ -80,7 +80,9 @@ namespace rodnet
           if (dof_roles.kind(i) == Kind::position ||
               dof_roles.kind(i) == Kind::multiplier)
             force2 += values[i] * values[i];
-          else if (dof_roles.kind(i) == Kind::twist)
+          else if (dof_roles.kind(i) == Kind::twist ||
+                   dof_roles.kind(i) == Kind::shape)
+            // A shape DoF's row, like a twist's, is an energy per radian.
             moment2 += values[i] * values[i];
         }
     const DofLayout &layout = model.layout();
@@ -293,6 +295,7 @@ namespace rodnet
               std::max(largest, std::abs(change[i]) / model.length_scale());
             break;
           case Kind::twist:
+          case Kind::shape:
             largest = std::max(largest, std::abs(change[i]));
             break;
           case Kind::quaternion:
@@ -323,6 +326,7 @@ namespace rodnet
       {
         const bool in_part = force ? dof_roles.kind(i) == Kind::position :
                                      (dof_roles.kind(i) == Kind::twist ||
+                                      dof_roles.kind(i) == Kind::shape ||
                                       dof_roles.kind(i) == Kind::quaternion);
         if (in_part && std::abs(noise.rows[i]) > std::abs(noise.rows[worst]))
           worst = i;

@@ -1,0 +1,264 @@
+#include <core/configuration.h>
+
+#include <families/developable_ribbon_family.h>
+
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// Local DoFs of a ribbon stencil: the hinge's, up to three etas and
+    /// the two multipliers.
+    constexpr int max_ribbon_dofs = n_hinge_dofs + 3 + 2;
+    using RibbonVector =
+      Eigen::Matrix<double, Eigen::Dynamic, 1, 0, max_ribbon_dofs, 1>;
+    using RibbonMatrix = Eigen::Matrix<double,
+                                       Eigen::Dynamic,
+                                       Eigen::Dynamic,
+                                       0,
+                                       max_ribbon_dofs,
+                                       max_ribbon_dofs>;
+    /// The Lagrangian's variables z = (c_1, c_2, c_3, eta, eta', mu_2,
+    /// mu_3).
+    using ZVector = Eigen::Matrix<double, 7, 1>;
+    using ZMatrix = Eigen::Matrix<double, 7, 7>;
+
+    /// The ribbon's Lagrangian at a hinge as a function of the strains
+    /// (DevelopableRibbonFamily): at() evaluates the law at kappa and
+    /// returns dL/dc, the weights of the kernel's strain Hessians.
+    struct RibbonLagrangian : StrainWeights
+    {
+      RibbonLagrangian(const DevelopableRibbonLaw &law,
+                       const Vector3              &natural,
+                       const Eigen::Vector4d      &variables,
+                       const double                voronoi_length)
+          : law(law)
+          , natural(natural)
+          , eta(variables[0])
+          , eta_prime(variables[1])
+          , mu_2(variables[2])
+          , mu_3(variables[3])
+          , length(voronoi_length)
+          , scale(law.bending_modulus() / (voronoi_length * voronoi_length))
+      {
+      }
+
+      Vector3
+      at(const Vector3 &kappa) const override
+      {
+        c        = kappa - natural;
+        response = law.energy(c[0], eta, eta_prime, length);
+        return {response.gradient[0] - scale * mu_3 * eta,
+                scale * mu_2,
+                scale * mu_3};
+      }
+
+      /// The Lagrangian at the strains at() was last asked at.
+      double
+      value() const
+      {
+        return response.energy +
+               scale * (mu_2 * c[1] + mu_3 * (c[2] - eta * c[0]));
+      }
+
+      /// dL/dz at the same strains.
+      ZVector
+      gradient() const
+      {
+        ZVector g;
+        g.head<3>() = at(c + natural);
+        g[3]        = response.gradient[1] - scale * mu_3 * c[0];
+        g[4]        = response.gradient[2];
+        g[5]        = scale * c[1];
+        g[6]        = scale * (c[2] - eta * c[0]);
+        return g;
+      }
+
+      /// d^2L/dz^2 at the same strains.
+      ZMatrix
+      hessian() const
+      {
+        ZMatrix           h   = ZMatrix::Zero();
+        const std::array<int, 3> map = {{0, 3, 4}};
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b)
+            h(map[a], map[b]) = response.hessian(a, b);
+        const auto add = [&h](const int i, const int j, const double v) {
+          h(i, j) += v;
+          h(j, i) += v;
+        };
+        add(0, 3, -scale * mu_3);
+        add(0, 6, -scale * eta);
+        add(3, 6, -scale * c[0]);
+        add(1, 5, scale);
+        add(2, 6, scale);
+        return h;
+      }
+
+      const DevelopableRibbonLaw &law;
+      const Vector3              &natural;
+      const double                eta, eta_prime, mu_2, mu_3, length, scale;
+      mutable Vector3                        c;
+      mutable DevelopableRibbonLaw::Response response;
+    };
+  } // namespace
+
+
+  DevelopableRibbonFamily::DevelopableRibbonFamily(
+    const DofLayout                                       &layout,
+    const RodNetwork                                      &network,
+    const Configuration                                   &configuration,
+    const std::vector<std::unique_ptr<HingeKernel>>       &kernels,
+    const std::vector<std::shared_ptr<const RodMaterial>> &materials)
+      : layout(layout)
+      , kernels(kernels)
+  {
+    const auto               &hinges = layout.hinges();
+    constexpr unsigned int    none   = static_cast<unsigned int>(-1);
+    std::vector<unsigned int> hinge_at(network.n_vertices(), none);
+    for (unsigned int h = 0; h < hinges.size(); ++h)
+      if (layout.has_ribbon_dofs(h))
+        hinge_at[hinges[h].vertices[1]] = h;
+
+    for (unsigned int h = 0; h < hinges.size(); ++h)
+      {
+        if (!layout.has_ribbon_dofs(h))
+          continue;
+        const HingeStencil &hinge = hinges[h];
+        Stencil             stencil;
+        stencil.hinge = h;
+        stencil.law   = materials[hinge.rod]->developable_ribbon();
+        if (stencil.law == nullptr)
+          throw std::logic_error("rod " + std::to_string(hinge.rod) +
+                                 " is developable, its material is not");
+        unsigned int prev = hinge_at[hinge.vertices[0]];
+        unsigned int next = hinge_at[hinge.vertices[2]];
+        if (prev == next) // a closed rod of two segments
+          next = none;
+        // Across the closure of a Moebius band eta changes sign.
+        const double prev_sign =
+          prev != none && configuration.closes_with_a_flip(hinges[prev]) ? -1 :
+                                                                          1;
+        const double next_sign =
+          configuration.closes_with_a_flip(hinge) ? -1 : 1;
+        const double l_prev = configuration.rest_length(hinge.segment_prev);
+        const double l_next = configuration.rest_length(hinge.segment_next);
+        stencil.etas       = {layout.ribbon_dof(h, 0)};
+        stencil.difference = {0.0};
+        const double span  = (prev != none ? l_prev : 0.0) +
+                            (next != none ? l_next : 0.0);
+        if (prev != none)
+          {
+            stencil.etas.push_back(layout.ribbon_dof(prev, 0));
+            stencil.difference.push_back(-prev_sign / span);
+          }
+        if (next != none)
+          {
+            stencil.etas.push_back(layout.ribbon_dof(next, 0));
+            stencil.difference.push_back(next_sign / span);
+          }
+        // One-sided at an end: the hinge's own eta takes the missing
+        // neighbour's place.
+        if (prev == none && next != none)
+          stencil.difference[0] = -1 / span;
+        if (next == none && prev != none)
+          stencil.difference[0] = 1 / span;
+        stencil.drag = drag_factor * stencil.law->bending_modulus() /
+                       configuration.voronoi_length(h);
+        stencils.push_back(std::move(stencil));
+      }
+  }
+
+
+  void
+  DevelopableRibbonFamily::get_dofs(const unsigned int             s,
+                                    std::vector<global_dof_index> &dofs) const
+  {
+    const Stencil &stencil = stencils[s];
+    const auto    &hinge   = layout.hinges()[stencil.hinge].dofs;
+    dofs.assign(hinge.begin(), hinge.end());
+    dofs.insert(dofs.end(), stencil.etas.begin(), stencil.etas.end());
+    dofs.push_back(layout.ribbon_dof(stencil.hinge, 1));
+    dofs.push_back(layout.ribbon_dof(stencil.hinge, 2));
+  }
+
+
+  Eigen::Vector4d
+  DevelopableRibbonFamily::ribbon_variables(const Stencil      &stencil,
+                                            const StencilState &state) const
+  {
+    double eta_prime = 0;
+    for (unsigned int j = 0; j < stencil.etas.size(); ++j)
+      eta_prime += stencil.difference[j] * state.u[stencil.etas[j]];
+    return {state.u[stencil.etas[0]],
+            eta_prime,
+            state.u[layout.ribbon_dof(stencil.hinge, 1)],
+            state.u[layout.ribbon_dof(stencil.hinge, 2)]};
+  }
+
+
+  double
+  DevelopableRibbonFamily::drag(const unsigned int s) const
+  {
+    return stencils[s].drag;
+  }
+
+
+  void
+  DevelopableRibbonFamily::evaluate(const unsigned int  s,
+                                    const StencilState &state,
+                                    const Derivatives   derivatives,
+                                    LocalContribution  &local) const
+  {
+    const Stencil        &stencil = stencils[s];
+    const HingeStencil   &hinge   = layout.hinges()[stencil.hinge];
+    const Configuration  &config  = state.configuration;
+    const HingeKernel    &kernel  = *kernels[hinge.rod];
+    const HingeVector     x       = config.hinge_dofs(state.u, hinge);
+    const HingeReference &reference = config.hinge_reference(stencil.hinge);
+    const RibbonLagrangian lagrangian(*stencil.law,
+                                      config.natural_strains(stencil.hinge),
+                                      ribbon_variables(stencil, state),
+                                      config.voronoi_length(stencil.hinge));
+    if (derivatives == Derivatives::energy)
+      {
+        lagrangian.at(kernel.strains(x, reference));
+        local.energy = lagrangian.value();
+        return;
+      }
+
+    // z = (c, eta, eta', mu) as a function of the local DoFs: J = dz/dy.
+    const int m = stencil.etas.size();
+    const int n = n_hinge_dofs + m + 2;
+    thread_local HingeStrains strains;
+    HingeMatrix               weighted;
+    if (derivatives == Derivatives::gradient)
+      kernel.evaluate(x, reference, strains, false);
+    else
+      kernel.evaluate_weighted(x, reference, lagrangian, strains, weighted);
+    lagrangian.at(strains.kappa);
+    local.energy = lagrangian.value();
+
+    Eigen::Matrix<double, 7, Eigen::Dynamic, 0, 7, max_ribbon_dofs> J =
+      Eigen::Matrix<double, 7, Eigen::Dynamic, 0, 7, max_ribbon_dofs>::Zero(
+        7, n);
+    J.block<3, n_hinge_dofs>(0, 0) = strains.gradient;
+    J(3, n_hinge_dofs)             = 1;
+    for (int j = 0; j < m; ++j)
+      J(4, n_hinge_dofs + j) = stencil.difference[j];
+    J(5, n_hinge_dofs + m)     = 1;
+    J(6, n_hinge_dofs + m + 1) = 1;
+
+    const RibbonVector gradient = J.transpose() * lagrangian.gradient();
+    if (derivatives == Derivatives::gradient)
+      {
+        local.store(gradient, static_cast<const RibbonMatrix *>(nullptr));
+        return;
+      }
+    RibbonMatrix hessian = J.transpose() * lagrangian.hessian() * J;
+    hessian.topLeftCorner<n_hinge_dofs, n_hinge_dofs>() += weighted;
+    hessian(n_hinge_dofs, n_hinge_dofs) += drag(s);
+    local.store(gradient, &hessian);
+  }
+} // namespace rodnet

@@ -1,0 +1,212 @@
+// The Wunderlich ribbon (Korner et al. eq. 4.7) and its assembly: the
+// law's gradient and Hessian in (kappa_1, eta, eta') against central
+// finite differences, including eta' w near 0 (where the factor g switches
+// from its series to atanh(x)/x) and kappa_1 near 0; the factor g against
+// its closed form; and the assembled Lagrangian of developable rods (open,
+// closed, closed with a half turn) against finite differences of the
+// assembled energy and residual, at random states with random eta and
+// multipliers, after a reference reset. The Hessian of the assembly carries
+// the drag on eta (DevelopableRibbonFamily::drag()), which the test adds to
+// the finite differences.
+#include <core/rod_generators.h>
+#include <core/rod_model.h>
+#include <families/developable_ribbon_family.h>
+#include <materials/wunderlich_ribbon.h>
+
+#include <gtest/gtest.h>
+#include <random>
+
+namespace
+{
+  using namespace rodnet;
+
+  const RibbonConstants constants{2e9, 0.35, 0.1, 1e-3};
+
+  TEST(WunderlichWidthFactor, MatchesItsClosedFormAndTheSeriesAtTheSwitch)
+  {
+    // g(x) = ln((1 + x) / (1 - x)) / (2 x), Korner eq. 4.7 with x = eta' w/2.
+    for (const double x : {0.5, -0.7, 0.9, 0.26})
+      EXPECT_NEAR(wunderlich_width_factor(x)[0],
+                  std::log((1 + x) / (1 - x)) / (2 * x),
+                  1e-15);
+    // Series 1 + x^2/3 + x^4/5 at small x; g' = 2x/3, g'' = 2/3 at 0.
+    EXPECT_NEAR(wunderlich_width_factor(1e-3)[0], 1 + 1e-6 / 3 + 1e-12 / 5,
+                1e-16);
+    EXPECT_NEAR(wunderlich_width_factor(0)[1], 0, 1e-16);
+    EXPECT_NEAR(wunderlich_width_factor(0)[2], 2. / 3, 1e-15);
+    // Both sides of the switch at |x| = 0.25 agree.
+    const Eigen::Vector3d below = wunderlich_width_factor(0.25 - 1e-12);
+    const Eigen::Vector3d above = wunderlich_width_factor(0.25 + 1e-12);
+    EXPECT_LT((below - above).norm(), 1e-10);
+    EXPECT_THROW(wunderlich_width_factor(1.0), std::runtime_error);
+  }
+
+  TEST(WunderlichRibbonLaw, GradientAndHessianMatchFiniteDifferences)
+  {
+    const WunderlichRibbon ribbon(constants);
+    const double           l = 0.02;
+    // (kappa_1, eta, eta'): eta' w / 2 from 1e-9 to 0.9, kappa_1 down to
+    // 1e-9.
+    const std::vector<Eigen::Vector3d> points = {{0.05, 0.3, 1e-8},
+                                                 {0.05, -0.4, 2.0},
+                                                 {-0.03, 1.2, -4.9},
+                                                 {1e-9, 0.7, 9.0},
+                                                 {0.08, 0.0, 18.0},
+                                                 {0.02, 2.0, 5.0}};
+    for (const Eigen::Vector3d &z : points)
+      {
+        const auto   r     = ribbon.energy(z[0], z[1], z[2], l);
+        double       err_g = 0, err_h = 0;
+        const double scale = r.hessian.cwiseAbs().maxCoeff();
+        for (int j = 0; j < 3; ++j)
+          {
+            const double    h  = 1e-6 * std::max(1e-3, std::abs(z[j]));
+            Eigen::Vector3d zp = z, zm = z;
+            zp[j] += h;
+            zm[j] -= h;
+            const auto rp = ribbon.energy(zp[0], zp[1], zp[2], l);
+            const auto rm = ribbon.energy(zm[0], zm[1], zm[2], l);
+            err_g = std::max(err_g,
+                             std::abs((rp.energy - rm.energy) / (2 * h) -
+                                      r.gradient[j]) /
+                               (r.gradient.cwiseAbs().maxCoeff() + 1e-300));
+            err_h = std::max(err_h,
+                             ((rp.gradient - rm.gradient) / (2 * h) -
+                              r.hessian.col(j))
+                                 .cwiseAbs()
+                                 .maxCoeff() /
+                               scale);
+          }
+        EXPECT_LT(err_g, 1e-7) << z.transpose();
+        EXPECT_LT(err_h, 1e-7) << z.transpose();
+      }
+    // The eta' w -> 0 limit: D w / (2 l) kappa_1^2 (1 + eta^2)^2.
+    const double D = 2e9 * 1e-9 / (12 * (1 - 0.35 * 0.35));
+    EXPECT_NEAR(ribbon.energy(0.05, 0.3, 0, l).energy,
+                D * 0.1 / (2 * l) * 0.0025 * std::pow(1.09, 2),
+                1e-15);
+  }
+
+  enum class Shape
+  {
+    open,
+    closed,
+    moebius
+  };
+
+  std::unique_ptr<RodModel>
+  ribbon_model(const Shape shape)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    if (shape == Shape::open)
+      network->add_rod(generators::helix(0.5, 0.1, 0.5, 12),
+                       false,
+                       Vector3(0.3, 0.2, 1.0),
+                       "simple");
+    else
+      network->add_rod(generators::ring(Vector3::Zero(),
+                                        0.5,
+                                        Vector3::UnitX(),
+                                        Vector3::UnitY(),
+                                        10),
+                       true,
+                       Vector3::UnitZ(),
+                       "simple");
+    network->create_triangulation();
+    if (shape == Shape::moebius)
+      network->set_frame_half_turns(0, 1);
+    auto model = std::make_unique<RodModel>(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>{
+        std::make_shared<WunderlichRibbon>(constants)});
+    model->add_point_force(model->network().rods()[0].vertices.back(),
+                           Vector3(0.1, -0.2, 0.3));
+    model->finalize();
+    return model;
+  }
+
+  class RibbonAssembly : public ::testing::TestWithParam<Shape>
+  {
+  };
+
+  TEST_P(RibbonAssembly, ResidualAndTangentMatchFiniteDifferences)
+  {
+    const auto       model  = ribbon_model(GetParam());
+    const DofLayout &layout = model->layout();
+    ASSERT_GT(layout.n_ribbon_hinges(), 0u);
+    VectorType                             u = model->create_vector();
+    std::mt19937                           random(11);
+    std::uniform_real_distribution<double> small(-0.02, 0.02);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (unsigned int i = 0; i < u.size(); ++i)
+      u[i] = small(random);
+    model->reset_reference(u);
+    for (unsigned int i = 0; i < u.size(); ++i)
+      u[i] += small(random);
+    // eta' w / 2 = 0.1 (eta_{i+1} - eta_{i-1}) / l_v stays below 1.
+    for (unsigned int h = 0; h < layout.hinges().size(); ++h)
+      for (unsigned int c = 0; c < 3; ++c)
+        u[layout.ribbon_dof(h, c)] = 0.2 * unit(random);
+
+    VectorType r = model->create_vector();
+    MatrixType k;
+    model->initialize_matrix(k);
+    model->assemble(u, 1.0, &r, &k, false);
+
+    // The drag on each eta: factor D w / l_v.
+    const double D =
+      constants.young_modulus * std::pow(constants.thickness, 3) /
+      (12 * (1 - constants.poisson_ratio * constants.poisson_ratio));
+    std::vector<double> drag(u.size(), 0.0);
+    for (unsigned int h = 0; h < layout.hinges().size(); ++h)
+      drag[layout.ribbon_dof(h, 0)] = DevelopableRibbonFamily::drag_factor *
+                                      D * constants.width /
+                                      model->configuration().voronoi_length(h);
+
+    const double h     = 1e-7;
+    double       max_r = 0, max_k = 0, err_r = 0, err_k = 0;
+    VectorType   r_plus  = model->create_vector();
+    VectorType   r_minus = model->create_vector();
+    for (unsigned int j = 0; j < u.size(); ++j)
+      {
+        VectorType up = u, um = u;
+        up[j] += h;
+        um[j] -= h;
+        const double fd_r =
+          (model->assemble(up, 1.0, &r_plus, nullptr, false) -
+           model->assemble(um, 1.0, &r_minus, nullptr, false)) /
+          (2 * h);
+        max_r = std::max(max_r, std::abs(r[j]));
+        err_r = std::max(err_r, std::abs(fd_r - r[j]));
+        for (unsigned int i = 0; i < u.size(); ++i)
+          {
+            const double fd_k =
+              (r_plus[i] - r_minus[i]) / (2 * h) + (i == j ? drag[i] : 0.0);
+            max_k = std::max(max_k, std::abs(k.el(i, j)));
+            err_k = std::max(err_k, std::abs(fd_k - k.el(i, j)));
+          }
+      }
+    std::cout << "shape " << static_cast<int>(GetParam())
+              << ": residual error " << err_r / max_r << ", tangent error "
+              << err_k / max_k << std::endl;
+    EXPECT_LT(err_r / max_r, 1e-6);
+    EXPECT_LT(err_k / max_k, 1e-6);
+  }
+
+  INSTANTIATE_TEST_SUITE_P(DevelopableRods,
+                           RibbonAssembly,
+                           ::testing::Values(Shape::open,
+                                             Shape::closed,
+                                             Shape::moebius));
+
+  TEST(RibbonLayout, OneSlopeAndTwoMultipliersPerHinge)
+  {
+    // 12 segments, 13 vertices, 11 hinges; 12 segment multipliers.
+    const auto       model  = ribbon_model(Shape::open);
+    const DofLayout &layout = model->layout();
+    EXPECT_EQ(layout.n_ribbon_hinges(), 11u);
+    EXPECT_EQ(layout.n_multipliers(), 12u);
+    EXPECT_EQ(model->multiplier_dofs().size(), 12u + 22u);
+    EXPECT_EQ(layout.n_dofs(), layout.n_field_dofs() + 12 + 33);
+  }
+} // namespace
