@@ -109,6 +109,17 @@ namespace rodnet
     }();
     unsigned int axis = 0;
     spread.maxCoeff(&axis);
+    // An open rod whose last segment lies on its first one, (x_{n-2},
+    // x_{n-1}) = (x_0, x_1), is closed through them (the clamped closure
+    // of Korner et al. section 5(d)): those two pairs may coincide.
+    const bool end_segments_overlap =
+      !closed && n >= 5 &&
+      (rod_points[0] - rod_points[n - 2]).norm() <= tolerance &&
+      (rod_points[1] - rod_points[n - 1]).norm() <= tolerance;
+    const auto overlap_pair = [&](const unsigned int i, const unsigned int k) {
+      return end_segments_overlap &&
+             ((i == 0 && k == n - 2) || (i == 1 && k == n - 1));
+    };
     std::vector<unsigned int> order(n);
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
@@ -123,6 +134,7 @@ namespace rodnet
           const unsigned int i = std::min(order[a], order[b]);
           const unsigned int k = std::max(order[a], order[b]);
           if (k > i + 1 && !(closed && i == 0 && k == n - 1) &&
+              !overlap_pair(i, k) &&
               (rod_points[i] - rod_points[k]).norm() <= tolerance)
             throw std::invalid_argument(
               "rod " + std::to_string(rod_index) + ": vertices " +

@@ -163,7 +163,10 @@ namespace rodnet
      * Adds a rod through @p points (open, or closed when @p closed). Points
      * are checked: consecutive points closer than a relative tolerance are a
      * zero-length segment, other coincident points are reported too; the
-     * error names the rod and the vertex indices. @p natural_shape: see
+     * error names the rod and the vertex indices. One exception: an open
+     * rod whose last segment lies exactly on its first one closes through
+     * them (clamp both, as Korner et al. close a Moebius band in section
+     * 5(d)). @p natural_shape: see
      * NaturalShape (for a straight rod both choices agree).
      */
     void

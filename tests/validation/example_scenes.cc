@@ -155,6 +155,7 @@ namespace
     "helical_spring",     // validation/helical_spring
     "hexagonal_truss",    // validation/hexagonal_truss
     "lee_frame",          // validation/continuation_snap
+    "moebius_band",       // validation/moebius_band
     "overcurved_ring",    // validation/overcurved_ring
     "ribbon_snapping",    // validation/ribbon_snapping
     "rollup_lateral",     // validation/rollup_lateral
