@@ -1,7 +1,6 @@
 #include <core/configuration.h>
 
 #include <families/developable_ribbon_family.h>
-
 #include <stdexcept>
 
 namespace rodnet
@@ -79,7 +78,7 @@ namespace rodnet
       ZMatrix
       hessian() const
       {
-        ZMatrix           h   = ZMatrix::Zero();
+        ZMatrix                  h   = ZMatrix::Zero();
         const std::array<int, 3> map = {{0, 3, 4}};
         for (int a = 0; a < 3; ++a)
           for (int b = 0; b < 3; ++b)
@@ -99,7 +98,7 @@ namespace rodnet
       const DevelopableRibbonLaw &law;
       const Vector3              &natural;
       const double                eta, eta_prime, mu_2, mu_3, length, scale;
-      mutable Vector3                        c;
+      mutable Vector3             c;
       mutable DevelopableRibbonLaw::Response response;
     };
   } // namespace
@@ -139,15 +138,15 @@ namespace rodnet
         // Across the closure of a Moebius band eta changes sign.
         const double prev_sign =
           prev != none && configuration.closes_with_a_flip(hinges[prev]) ? -1 :
-                                                                          1;
+                                                                           1;
         const double next_sign =
           configuration.closes_with_a_flip(hinge) ? -1 : 1;
         const double l_prev = configuration.rest_length(hinge.segment_prev);
         const double l_next = configuration.rest_length(hinge.segment_next);
-        stencil.etas       = {layout.ribbon_dof(h, 0)};
-        stencil.difference = {0.0};
-        const double span  = (prev != none ? l_prev : 0.0) +
-                            (next != none ? l_next : 0.0);
+        stencil.etas        = {layout.ribbon_dof(h, 0)};
+        stencil.difference  = {0.0};
+        const double span =
+          (prev != none ? l_prev : 0.0) + (next != none ? l_next : 0.0);
         if (prev != none)
           {
             stencil.etas.push_back(layout.ribbon_dof(prev, 0));
@@ -211,12 +210,12 @@ namespace rodnet
                                     const Derivatives   derivatives,
                                     LocalContribution  &local) const
   {
-    const Stencil        &stencil = stencils[s];
-    const HingeStencil   &hinge   = layout.hinges()[stencil.hinge];
-    const Configuration  &config  = state.configuration;
-    const HingeKernel    &kernel  = *kernels[hinge.rod];
-    const HingeVector     x       = config.hinge_dofs(state.u, hinge);
-    const HingeReference &reference = config.hinge_reference(stencil.hinge);
+    const Stencil         &stencil   = stencils[s];
+    const HingeStencil    &hinge     = layout.hinges()[stencil.hinge];
+    const Configuration   &config    = state.configuration;
+    const HingeKernel     &kernel    = *kernels[hinge.rod];
+    const HingeVector      x         = config.hinge_dofs(state.u, hinge);
+    const HingeReference  &reference = config.hinge_reference(stencil.hinge);
     const RibbonLagrangian lagrangian(*stencil.law,
                                       config.natural_strains(stencil.hinge),
                                       ribbon_variables(stencil, state),
@@ -229,8 +228,8 @@ namespace rodnet
       }
 
     // z = (c, eta, eta', mu) as a function of the local DoFs: J = dz/dy.
-    const int m = stencil.etas.size();
-    const int n = n_hinge_dofs + m + 2;
+    const int                 m = stencil.etas.size();
+    const int                 n = n_hinge_dofs + m + 2;
     thread_local HingeStrains strains;
     HingeMatrix               weighted;
     if (derivatives == Derivatives::gradient)
@@ -241,8 +240,8 @@ namespace rodnet
     local.energy = lagrangian.value();
 
     Eigen::Matrix<double, 7, Eigen::Dynamic, 0, 7, max_ribbon_dofs> J =
-      Eigen::Matrix<double, 7, Eigen::Dynamic, 0, 7, max_ribbon_dofs>::Zero(
-        7, n);
+      Eigen::Matrix<double, 7, Eigen::Dynamic, 0, 7, max_ribbon_dofs>::Zero(7,
+                                                                            n);
     J.block<3, n_hinge_dofs>(0, 0) = strains.gradient;
     J(3, n_hinge_dofs)             = 1;
     for (int j = 0; j < m; ++j)

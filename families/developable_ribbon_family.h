@@ -66,7 +66,8 @@ namespace rodnet
     }
 
     void
-    get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const override;
+    get_dofs(unsigned int                   s,
+             std::vector<global_dof_index> &dofs) const override;
 
     void
     evaluate(unsigned int        s,
@@ -89,7 +90,7 @@ namespace rodnet
       /// The distinct eta DoFs: the hinge's, then its neighbours'.
       std::vector<global_dof_index> etas;
       /// eta' = sum_j difference[j] eta_DoF[j] (signs and lengths in).
-      std::vector<double>        difference;
+      std::vector<double>         difference;
       const DevelopableRibbonLaw *law;
       double                      drag; ///< drag()
     };

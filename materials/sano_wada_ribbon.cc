@@ -73,24 +73,7 @@ namespace rodnet
   SanoWadaRibbon::SanoWadaRibbon(const RibbonConstants &constants)
       : given(constants)
   {
-    internal::check_positive_entry(sano_wada_context,
-                                   "Young's modulus",
-                                   constants.young_modulus);
-    internal::check_positive_entry(sano_wada_context, "Width", constants.width);
-    internal::check_positive_entry(sano_wada_context,
-                                   "Thickness",
-                                   constants.thickness);
-    // Eq. 5.5 is the energy of a thin strip; a section thicker than wide
-    // would also make the "soft" bending the stiff one.
-    std::ostringstream requirement;
-    requirement << "must be less than \"Width\" = " << constants.width
-                << " (the model is that of a thin ribbon)";
-    AssertThrow(constants.thickness < constants.width,
-                dealii::ExcMessage(
-                  internal::entry_message(sano_wada_context,
-                                          "Thickness",
-                                          requirement.str(),
-                                          constants.thickness)));
+    check_ribbon_constants(sano_wada_context, constants);
     derived = ribbon_moduli(constants);
     check_ribbon_modulus("the soft bending modulus Y h^3 w / 12",
                          derived.soft_bending);
@@ -169,29 +152,12 @@ namespace rodnet
   void
   SanoWadaRibbon::declare_parameters(dealii::ParameterHandler &prm) const
   {
-    using dealii::Patterns::Double;
-    prm.declare_entry("Young's modulus",
-                      "0",
-                      Double(0),
-                      "Young's modulus Y (Pa); 0 means unset and is "
-                      "rejected.");
-    prm.declare_entry("Poisson's ratio",
-                      "0.5",
-                      Double(-1, 0.5),
-                      "Poisson's ratio nu (-), in (-1, 0.5]: twisting "
-                      "modulus Y h^3 w / (6 (1 + nu)), xi^2 = (1 - nu^2) "
-                      "w^4 / (60 h^2).");
-    prm.declare_entry("Width",
-                      "0",
-                      Double(0),
-                      "Width w along d1 (m): soft bending Y h^3 w / 12 about "
-                      "d1, stiff Y h w^3 / 12 about d2, EA = Y w h. "
-                      "Required.");
-    prm.declare_entry("Thickness",
-                      "0",
-                      Double(0),
-                      "Thickness h along d2 (m), less than the width. "
-                      "Required.");
+    declare_ribbon_constants(prm,
+                             "twisting modulus Y h^3 w / (6 (1 + nu)), xi^2 = "
+                             "(1 - nu^2) w^4 / (60 h^2).",
+                             "Width w along d1 (m): soft bending Y h^3 w / 12 "
+                             "about d1, stiff Y h w^3 / 12 about d2, EA = Y w "
+                             "h.");
   }
 
 
@@ -200,10 +166,7 @@ namespace rodnet
   {
     // The constructor validates; assigning only afterwards leaves *this
     // untouched when an entry is rejected.
-    *this = SanoWadaRibbon(RibbonConstants{prm.get_double("Young's modulus"),
-                                           prm.get_double("Poisson's ratio"),
-                                           prm.get_double("Width"),
-                                           prm.get_double("Thickness")});
+    *this = SanoWadaRibbon(parse_ribbon_constants(prm));
   }
 
 

@@ -1,20 +1,11 @@
 #ifndef RODNET_MATERIALS_SANO_WADA_RIBBON_H
 #define RODNET_MATERIALS_SANO_WADA_RIBBON_H
 
+#include <materials/ribbon_constants.h>
 #include <materials/rod_material.h>
 
 namespace rodnet
 {
-  /// Constants of a Sano-Wada ribbon: an isotropic plate material and the
-  /// rectangular section of a thin strip (thickness well below width).
-  struct RibbonConstants
-  {
-    double young_modulus; ///< Y (Pa)
-    double poisson_ratio; ///< nu (-), in (-1, 0.5]
-    double width;         ///< w (m), along the director d1
-    double thickness;     ///< h (m), along the director d2, below w
-  };
-
   /// Moduli of a Sano-Wada ribbon derived from its RibbonConstants.
   struct RibbonModuli
   {

@@ -74,34 +74,11 @@ namespace rodnet
   WunderlichRibbon::WunderlichRibbon(const RibbonConstants &constants)
       : given(constants)
   {
-    internal::check_positive_entry(wunderlich_context,
-                                   "Young's modulus",
-                                   constants.young_modulus);
-    internal::check_positive_entry(wunderlich_context,
-                                   "Width",
-                                   constants.width);
-    internal::check_positive_entry(wunderlich_context,
-                                   "Thickness",
-                                   constants.thickness);
-    std::ostringstream requirement;
-    requirement << "must be less than \"Width\" = " << constants.width
-                << " (the model is that of a thin ribbon)";
-    AssertThrow(constants.thickness < constants.width,
-                dealii::ExcMessage(
-                  internal::entry_message(wunderlich_context,
-                                          "Thickness",
-                                          requirement.str(),
-                                          constants.thickness)));
+    check_ribbon_constants(wunderlich_context, constants);
     const double nu = constants.poisson_ratio;
-    AssertThrow(nu > -1 && nu <= 0.5,
-                dealii::ExcMessage(
-                  internal::entry_message(wunderlich_context,
-                                          "Poisson's ratio",
-                                          "must lie in (-1, 0.5]",
-                                          nu)));
-    const double h = constants.thickness;
-    plate_modulus  = constants.young_modulus * h * h * h / (12. * (1 - nu * nu));
-    const double B = bending_modulus();
+    const double h  = constants.thickness;
+    plate_modulus = constants.young_modulus * h * h * h / (12. * (1 - nu * nu));
+    const double       B = bending_modulus();
     std::ostringstream text;
     text << wunderlich_context << ": D w = " << B
          << " from \"Young's modulus\", \"Width\" and \"Thickness\" must be "
@@ -112,8 +89,7 @@ namespace rodnet
 
 
   MaterialResponse<3>
-  WunderlichRibbon::hinge_energy(const Eigen::Vector3d &,
-                                 const double) const
+  WunderlichRibbon::hinge_energy(const Eigen::Vector3d &, const double) const
   {
     MaterialResponse<3> response;
     response.stress.setZero();
@@ -151,10 +127,10 @@ namespace rodnet
 
     const double k2 = kappa_1 * kappa_1;
     Response     r;
-    r.energy      = c / 2 * k2 * p * p * g[0];
-    r.gradient[0] = c * kappa_1 * p * p * g[0];
-    r.gradient[1] = 2 * c * k2 * p * eta * g[0];
-    r.gradient[2] = c / 2 * k2 * p * p * g[1];
+    r.energy        = c / 2 * k2 * p * p * g[0];
+    r.gradient[0]   = c * kappa_1 * p * p * g[0];
+    r.gradient[1]   = 2 * c * k2 * p * eta * g[0];
+    r.gradient[2]   = c / 2 * k2 * p * p * g[1];
     r.hessian(0, 0) = c * p * p * g[0];
     r.hessian(0, 1) = 4 * c * kappa_1 * p * eta * g[0];
     r.hessian(0, 2) = c * kappa_1 * p * p * g[1];
@@ -178,36 +154,16 @@ namespace rodnet
   void
   WunderlichRibbon::declare_parameters(dealii::ParameterHandler &prm) const
   {
-    using dealii::Patterns::Double;
-    prm.declare_entry("Young's modulus",
-                      "0",
-                      Double(0),
-                      "Young's modulus Y (Pa); 0 means unset and is "
-                      "rejected.");
-    prm.declare_entry("Poisson's ratio",
-                      "0.5",
-                      Double(-1, 0.5),
-                      "Poisson's ratio nu (-), in (-1, 0.5]: plate modulus "
-                      "D = Y h^3 / (12 (1 - nu^2)).");
-    prm.declare_entry("Width",
-                      "0",
-                      Double(0),
-                      "Full width w along d1 (m); bending modulus D w. "
-                      "Required.");
-    prm.declare_entry("Thickness",
-                      "0",
-                      Double(0),
-                      "Thickness h (m), less than the width. Required.");
+    declare_ribbon_constants(prm,
+                             "plate modulus D = Y h^3 / (12 (1 - nu^2)).",
+                             "Full width w along d1 (m); bending modulus D w.");
   }
 
 
   void
   WunderlichRibbon::parse_parameters(dealii::ParameterHandler &prm)
   {
-    *this = WunderlichRibbon(RibbonConstants{prm.get_double("Young's modulus"),
-                                             prm.get_double("Poisson's ratio"),
-                                             prm.get_double("Width"),
-                                             prm.get_double("Thickness")});
+    *this = WunderlichRibbon(parse_ribbon_constants(prm));
   }
 
 

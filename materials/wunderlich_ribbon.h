@@ -2,8 +2,8 @@
 #define RODNET_MATERIALS_WUNDERLICH_RIBBON_H
 
 #include <materials/developable_ribbon_law.h>
+#include <materials/ribbon_constants.h>
 #include <materials/rod_material.h>
-#include <materials/sano_wada_ribbon.h>
 
 namespace rodnet
 {

@@ -8,11 +8,12 @@
 // multipliers, after a reference reset. The Hessian of the assembly carries
 // the drag on eta (DevelopableRibbonFamily::drag()), which the test adds to
 // the finite differences.
+#include <common/assembled_derivatives.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
-#include <families/developable_ribbon_family.h>
 #include <materials/wunderlich_ribbon.h>
 
+#include <families/developable_ribbon_family.h>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -30,7 +31,8 @@ namespace
                   std::log((1 + x) / (1 - x)) / (2 * x),
                   1e-15);
     // Series 1 + x^2/3 + x^4/5 at small x; g' = 2x/3, g'' = 2/3 at 0.
-    EXPECT_NEAR(wunderlich_width_factor(1e-3)[0], 1 + 1e-6 / 3 + 1e-12 / 5,
+    EXPECT_NEAR(wunderlich_width_factor(1e-3)[0],
+                1 + 1e-6 / 3 + 1e-12 / 5,
                 1e-16);
     EXPECT_NEAR(wunderlich_width_factor(0)[1], 0, 1e-16);
     EXPECT_NEAR(wunderlich_width_factor(0)[2], 2. / 3, 1e-15);
@@ -66,11 +68,11 @@ namespace
             zm[j] -= h;
             const auto rp = ribbon.energy(zp[0], zp[1], zp[2], l);
             const auto rm = ribbon.energy(zm[0], zm[1], zm[2], l);
-            err_g = std::max(err_g,
+            err_g         = std::max(err_g,
                              std::abs((rp.energy - rm.energy) / (2 * h) -
                                       r.gradient[j]) /
                                (r.gradient.cwiseAbs().maxCoeff() + 1e-300));
-            err_h = std::max(err_h,
+            err_h         = std::max(err_h,
                              ((rp.gradient - rm.gradient) / (2 * h) -
                               r.hessian.col(j))
                                  .cwiseAbs()
@@ -148,49 +150,23 @@ namespace
       for (unsigned int c = 0; c < 3; ++c)
         u[layout.ribbon_dof(h, c)] = 0.2 * unit(random);
 
-    VectorType r = model->create_vector();
-    MatrixType k;
-    model->initialize_matrix(k);
-    model->assemble(u, 1.0, &r, &k, false);
-
     // The drag on each eta: factor D w / l_v.
     const double D =
       constants.young_modulus * std::pow(constants.thickness, 3) /
       (12 * (1 - constants.poisson_ratio * constants.poisson_ratio));
     std::vector<double> drag(u.size(), 0.0);
     for (unsigned int h = 0; h < layout.hinges().size(); ++h)
-      drag[layout.ribbon_dof(h, 0)] = DevelopableRibbonFamily::drag_factor *
-                                      D * constants.width /
+      drag[layout.ribbon_dof(h, 0)] = DevelopableRibbonFamily::drag_factor * D *
+                                      constants.width /
                                       model->configuration().voronoi_length(h);
 
-    const double h     = 1e-7;
-    double       max_r = 0, max_k = 0, err_r = 0, err_k = 0;
-    VectorType   r_plus  = model->create_vector();
-    VectorType   r_minus = model->create_vector();
-    for (unsigned int j = 0; j < u.size(); ++j)
-      {
-        VectorType up = u, um = u;
-        up[j] += h;
-        um[j] -= h;
-        const double fd_r =
-          (model->assemble(up, 1.0, &r_plus, nullptr, false) -
-           model->assemble(um, 1.0, &r_minus, nullptr, false)) /
-          (2 * h);
-        max_r = std::max(max_r, std::abs(r[j]));
-        err_r = std::max(err_r, std::abs(fd_r - r[j]));
-        for (unsigned int i = 0; i < u.size(); ++i)
-          {
-            const double fd_k =
-              (r_plus[i] - r_minus[i]) / (2 * h) + (i == j ? drag[i] : 0.0);
-            max_k = std::max(max_k, std::abs(k.el(i, j)));
-            err_k = std::max(err_k, std::abs(fd_k - k.el(i, j)));
-          }
-      }
-    std::cout << "shape " << static_cast<int>(GetParam())
-              << ": residual error " << err_r / max_r << ", tangent error "
-              << err_k / max_k << std::endl;
-    EXPECT_LT(err_r / max_r, 1e-6);
-    EXPECT_LT(err_k / max_k, 1e-6);
+    const auto errors =
+      rodnet::testing::assembled_derivative_errors(*model, u, 1.0, 1e-7, drag);
+    std::cout << "shape " << static_cast<int>(GetParam()) << ": residual error "
+              << errors.residual << ", tangent error " << errors.tangent
+              << std::endl;
+    EXPECT_LT(errors.residual, 1e-6);
+    EXPECT_LT(errors.tangent, 1e-6);
   }
 
   INSTANTIATE_TEST_SUITE_P(DevelopableRods,

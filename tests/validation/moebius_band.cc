@@ -21,14 +21,14 @@
 #include <core/rod_model.h>
 #include <io/scene.h>
 #include <materials/wunderlich_ribbon.h>
+#include <solvers/arclength_continuation.h>
 #include <solvers/stability.h>
 #include <solvers/tangent_factorization.h>
-#include <solvers/arclength_continuation.h>
 
 #include <cmath>
-#include <limits>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -122,9 +122,8 @@ namespace
       }
     for (unsigned int j = 0; j + 1 < rod.segments.size(); ++j)
       {
-        band.d1.push_back(
-          config.director_frame(last, rod.segments[j])._transformVector(
-            Vector3::UnitX()));
+        band.d1.push_back(config.director_frame(last, rod.segments[j])
+                            ._transformVector(Vector3::UnitX()));
         band.segment_multipliers.push_back(
           last[layout.multiplier_dof(rod.segments[j])]);
       }
@@ -136,7 +135,7 @@ namespace
   double
   writhe(const std::vector<Vector3> &x)
   {
-    const unsigned int n = x.size();
+    const unsigned int n   = x.size();
     double             sum = 0;
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
@@ -145,7 +144,8 @@ namespace
             continue;
           const Vector3 ti = x[(i + 1) % n] - x[i];
           const Vector3 tj = x[(j + 1) % n] - x[j];
-          const Vector3 r  = 0.5 * (x[i] + x[(i + 1) % n] - x[j] - x[(j + 1) % n]);
+          const Vector3 r =
+            0.5 * (x[i] + x[(i + 1) % n] - x[j] - x[(j + 1) % n]);
           sum += ti.cross(tj).dot(r) / std::pow(r.norm(), 3);
         }
     return sum / (4 * pi);
@@ -160,19 +160,24 @@ namespace
   {
     const unsigned int m       = points.size();
     auto               network = std::make_unique<RodNetwork>();
-    network->add_rod(points, true, Vector3::UnitZ(), "simple",
+    network->add_rod(points,
+                     true,
+                     Vector3::UnitZ(),
+                     "simple",
                      NaturalShape::straight);
     network->create_triangulation();
     network->set_frame_half_turns(0, 1);
     auto model = std::make_unique<RodModel>(
       std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>{
-        std::make_shared<WunderlichRibbon>(
-          RibbonConstants{12 / std::pow(width / 2, 3), 0.0, width, width / 2})});
+      std::vector<
+        std::shared_ptr<const RodMaterial>>{std::make_shared<WunderlichRibbon>(
+        RibbonConstants{12 / std::pow(width / 2, 3), 0.0, width, width / 2})});
     const Rod &rod = model->network().rods()[0];
     model->fix_components("origin", rod.vertices[0], {{true, true, true}});
     model->fix_components("axis", rod.vertices[m / 3], {{false, true, true}});
-    model->fix_components("turn", rod.vertices[2 * m / 3], {{false, false, true}});
+    model->fix_components("turn",
+                          rod.vertices[2 * m / 3],
+                          {{false, false, true}});
     model->finalize();
     return model;
   }
@@ -190,9 +195,9 @@ namespace
     VectorType r = model.create_vector(), du = model.create_vector();
     MatrixType k;
     model.initialize_matrix(k);
-    auto solver = TangentFactorization::create(k, "auto");
-    double norm = std::numeric_limits<double>::infinity();
-    double first = 0;
+    auto   solver = TangentFactorization::create(k, "auto");
+    double norm   = std::numeric_limits<double>::infinity();
+    double first  = 0;
     for (unsigned int iteration = 0; iteration < 100; ++iteration)
       {
         model.assemble(u, 1.0, &r, &k, true);
@@ -200,8 +205,8 @@ namespace
           first = r.l2_norm();
         if (r.l2_norm() < 1e-11 * first || r.l2_norm() < 1e-13)
           {
-            const ConstrainedFactorization factorization(
-              k, model.constraints(), 0, model.multiplier_dofs());
+            const ConstrainedFactorization
+              factorization(k, model.constraints(), 0, model.multiplier_dofs());
             std::cout << "free band: " << iteration
                       << " Newton iterations, |r| = " << r.l2_norm()
                       << std::endl;
@@ -240,7 +245,7 @@ namespace
   MoebiusBand
   relax_freely(const MoebiusBand &clamped)
   {
-    const unsigned int m = clamped.centreline.size();
+    const unsigned int        m     = clamped.centreline.size();
     std::unique_ptr<RodModel> model = free_band(clamped.centreline, 1e-5);
     VectorType                u     = model->create_vector();
     {
@@ -261,11 +266,11 @@ namespace
       for (unsigned int h = 0; h < m; ++h)
         u[layout.ribbon_dof(h, 0)] = clamped.etas[(h + m - 1) % m];
     }
-    negative_eigenvalues = newton(*model, u);
+    negative_eigenvalues        = newton(*model, u);
     const Configuration &config = model->configuration();
     const DofLayout     &layout = model->layout();
     const Rod           &rod    = model->network().rods()[0];
-    MoebiusBand band;
+    MoebiusBand          band;
     band.energy  = model->elastic_energy(u, 1.0);
     band.segment = config.rest_length(rod.segments[0]);
     for (unsigned int k = 0; k < m; ++k)
@@ -302,15 +307,13 @@ namespace
           {
             const Vector3 &k = band.strains[h];
             twist += k[2];
-            developability =
-              std::max({developability,
-                        std::abs(k[1]),
-                        std::abs(k[2] - band.etas[h] * k[0])});
+            developability = std::max({developability,
+                                       std::abs(k[1]),
+                                       std::abs(k[2] - band.etas[h] * k[0])});
           }
         const double linking = twist / (2 * pi) + writhe(band.centreline);
         std::cout << band.centreline.size() << " segments: V = " << band.energy
-                  << ", Tw = " << twist / (2 * pi)
-                  << ", Tw + Wr = " << linking
+                  << ", Tw = " << twist / (2 * pi) << ", Tw + Wr = " << linking
                   << ", constraints " << developability << ", lengths "
                   << band.length_error << std::endl;
         // Tw and Wr are O(l^2) sums.
@@ -348,13 +351,12 @@ namespace
   {
     for (const MoebiusBand &band : bands)
       {
-        const unsigned int n = band.strains.size();
+        const unsigned int n         = band.strains.size();
         double             asymmetry = 0;
         for (unsigned int h = 0; h < n; ++h)
-          asymmetry = std::max(asymmetry,
-                               (band.strains[h] - band.strains[n - 1 - h])
-                                 .cwiseAbs()
-                                 .maxCoeff());
+          asymmetry = std::max(
+            asymmetry,
+            (band.strains[h] - band.strains[n - 1 - h]).cwiseAbs().maxCoeff());
         EXPECT_LT(asymmetry / band.segment, 1e-6);
       }
   }
@@ -381,7 +383,8 @@ namespace
           const Vector3 fine =
             (bands[b + 1].strains[2 * j] + bands[b + 1].strains[2 * j + 1]) /
             (2 * bands[b + 1].segment);
-          errors[b] = std::max(errors[b], (coarse - fine).cwiseAbs().maxCoeff());
+          errors[b] =
+            std::max(errors[b], (coarse - fine).cwiseAbs().maxCoeff());
         }
     std::cout << "strain differences " << errors[0] << ", " << errors[1]
               << std::endl;
