@@ -13,30 +13,19 @@
 set -eu
 source "$(dirname "$0")/chart_paths.sh"
 
-# The scene at N segments and half-width w, D = 1 (h = w, Y = 12 / h^3).
+source "$root/bench/moebius_scene.sh"
+
+# The scene at N segments and half-width w, D = 1 (h = w, Y = 12 / h^3);
+# VTU output at N = 250 only.
 scene() {
-  python3 - "$1" "$2" "$root/scenes/moebius_band.prm" <<'PY'
-import sys
-n, w, path = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
-d = 360 / (n - 1)
-print(open(path).read())
-print(f"""subsection Geometry
-  set Segments = {n}
-  set Start angle = {-d / 2!r}
-  set End angle = {360 + d / 2!r}
-end
-subsection Material
-  subsection wunderlich ribbon
-    set Width = {2 * w!r}
-    set Thickness = {w!r}
-    set Young's modulus = {12 / w**3!r}
-  end
-end
-subsection Output
-  set Plot = false
-  set Write VTU = {"true" if n == 250 else "false"}
-end""")
-PY
+  local vtu=false
+  [ "$1" = 250 ] && vtu=true
+  moebius_scene "$1" "$(awk -v w="$2" -v vtu=$vtu 'BEGIN {
+    printf "subsection Material\n  subsection wunderlich ribbon\n"
+    printf "    set Width = %.17g\n    set Thickness = %.17g\n", 2 * w, w
+    printf "    set Young'"'"'s modulus = %.17g\n  end\nend\n", 12 / w ^ 3
+    printf "subsection Output\n  set Plot = false\n  set Write VTU = %s\nend\n", vtu
+  }')"
 }
 
 widths="0.02 0.05 0.1047197551 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0 1.1 1.2 1.3 1.4 1.5 1.6 1.7 1.75 1.8"

@@ -22,29 +22,12 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 source "$root/bench/process_timing.sh"
 
-scene() { # N, "ribbon" or "rod"
-  python3 - "$1" "$2" "$root/scenes/moebius_band.prm" <<'PY'
-import sys
-n, model, path = int(sys.argv[1]), sys.argv[2], sys.argv[3]
-d = 360 / (n - 1)
-print(open(path).read())
-print(f"""subsection Geometry
-  set Segments = {n}
-  set Start angle = {-d / 2!r}
-  set End angle = {360 + d / 2!r}
-end
-subsection Solver
-  subsection Continuation
-    set Max points = 5000
-    set Load factor range = -0.01, {0.9 if model != "alone" else 0.05}
-  end
-end
-subsection Output
-  set Plot = false
-  set Write VTU = false
-end""")
-if model == "rod":
-    print("""subsection Material
+source "$root/bench/moebius_scene.sh"
+
+scene() { # N, "ribbon" or "rod" (both to 0.9 of the turn), or "alone" (5 %)
+  local range=0.9 material=""
+  [ "$2" = alone ] && range=0.05
+  [ "$2" = rod ] && material="subsection Material
   set Model = linear elastic
   set Inextensible = true
   subsection linear elastic
@@ -54,8 +37,18 @@ if model == "rod":
     set EI2 = 209.43951023931953
     set GJ = 0.20943951023931953
   end
-end""")
-PY
+end"
+  moebius_scene "$1" "subsection Solver
+  subsection Continuation
+    set Max points = 5000
+    set Load factor range = -0.01, $range
+  end
+end
+subsection Output
+  set Plot = false
+  set Write VTU = false
+end
+$material"
 }
 
 points() { echo $(($(wc -l < "$1/probes.csv") - 2)); }
