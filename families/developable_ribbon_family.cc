@@ -29,11 +29,9 @@ namespace rodnet
     struct RibbonLagrangian : StrainWeights
     {
       RibbonLagrangian(const DevelopableRibbonLaw &law,
-                       const Vector3              &natural,
                        const Eigen::Vector4d      &variables,
                        const double                voronoi_length)
           : law(law)
-          , natural(natural)
           , eta(variables[0])
           , eta_prime(variables[1])
           , mu_2(variables[2])
@@ -46,11 +44,12 @@ namespace rodnet
       Vector3
       at(const Vector3 &kappa) const override
       {
-        c        = kappa - natural;
+        c        = kappa;
         response = law.energy(c[0], eta, eta_prime, length);
-        return {response.gradient[0] - scale * mu_3 * eta,
-                scale * mu_2,
-                scale * mu_3};
+        weights  = {response.gradient[0] - scale * mu_3 * eta,
+                    scale * mu_2,
+                    scale * mu_3};
+        return weights;
       }
 
       /// The Lagrangian at the strains at() was last asked at.
@@ -66,7 +65,7 @@ namespace rodnet
       gradient() const
       {
         ZVector g;
-        g.head<3>() = at(c + natural);
+        g.head<3>() = weights;
         g[3]        = response.gradient[1] - scale * mu_3 * c[0];
         g[4]        = response.gradient[2];
         g[5]        = scale * c[1];
@@ -96,9 +95,9 @@ namespace rodnet
       }
 
       const DevelopableRibbonLaw &law;
-      const Vector3              &natural;
       const double                eta, eta_prime, mu_2, mu_3, length, scale;
       mutable Vector3             c;
+      mutable Vector3             weights; ///< dL/dc, at()
       mutable DevelopableRibbonLaw::Response response;
     };
   } // namespace
@@ -163,6 +162,16 @@ namespace rodnet
           stencil.difference[0] = -1 / span;
         if (next == none && prev != none)
           stencil.difference[0] = 1 / span;
+        // The developability constraints hold for a strip that is flat
+        // and straight when unstressed; a natural curvature or twist would
+        // silently turn them into constraints on the strains' change.
+        if (configuration.natural_strains(h).norm() > 1e-12)
+          throw std::invalid_argument(
+            "rod " + std::to_string(hinge.rod) +
+            ": a developable ribbon is straight and flat when unstressed, "
+            "but its hinge at vertex " + std::to_string(hinge.vertices[1]) +
+            " has natural strains; set \"Geometry/Natural shape = "
+            "straight\"");
         stencil.drag = drag_factor * stencil.law->bending_modulus() /
                        configuration.voronoi_length(h);
         stencils.push_back(std::move(stencil));
@@ -217,7 +226,6 @@ namespace rodnet
     const HingeVector      x         = config.hinge_dofs(state.u, hinge);
     const HingeReference  &reference = config.hinge_reference(stencil.hinge);
     const RibbonLagrangian lagrangian(*stencil.law,
-                                      config.natural_strains(stencil.hinge),
                                       ribbon_variables(stencil, state),
                                       config.voronoi_length(stencil.hinge));
     if (derivatives == Derivatives::energy)
@@ -232,11 +240,14 @@ namespace rodnet
     const int                 n = n_hinge_dofs + m + 2;
     thread_local HingeStrains strains;
     HingeMatrix               weighted;
+    // The weighted evaluation asks the Lagrangian at the strains itself.
     if (derivatives == Derivatives::gradient)
-      kernel.evaluate(x, reference, strains, false);
+      {
+        kernel.evaluate(x, reference, strains, false);
+        lagrangian.at(strains.kappa);
+      }
     else
       kernel.evaluate_weighted(x, reference, lagrangian, strains, weighted);
-    lagrangian.at(strains.kappa);
     local.energy = lagrangian.value();
 
     Eigen::Matrix<double, 7, Eigen::Dynamic, 0, 7, max_ribbon_dofs> J =

@@ -17,7 +17,8 @@ namespace rodnet
    * 4(b), the Wunderlich model): per hinge i of a rod whose material has a
    * DevelopableRibbonLaw, the term of the Lagrangian
    *   L_i = E(c_1, eta_i, eta'_i) + k (mu_2 c_2 + mu_3 (c_3 - eta_i c_1)),
-   * where c = kappa_i - (natural strains) are the hinge kernel's strains,
+   * where c = kappa_i are the hinge kernel's strains (the strip is
+   * straight and flat when unstressed: natural strains are refused),
    * eta_i the generatrix slope DoF of the hinge, mu_2 and mu_3 the
    * multipliers of the developability constraints kappa_2 = 0,
    * kappa_3 = eta kappa_1 (eq. 4.6; DofLayout::ribbon_dof()), E the

@@ -104,7 +104,8 @@ namespace
       network->add_rod(generators::helix(0.5, 0.1, 0.5, 12),
                        false,
                        Vector3(0.3, 0.2, 1.0),
-                       "simple");
+                       "simple",
+                       NaturalShape::straight);
     else
       network->add_rod(generators::ring(Vector3::Zero(),
                                         0.5,
@@ -113,7 +114,8 @@ namespace
                                         10),
                        true,
                        Vector3::UnitZ(),
-                       "simple");
+                       "simple",
+                       NaturalShape::straight);
     network->create_triangulation();
     if (shape == Shape::moebius)
       network->set_frame_half_turns(0, 1);

@@ -84,6 +84,20 @@ namespace
      1,
      "entry \"Loads/Point forces\": in \"end: 1e308, 0, 0\", 1e308 exceeds "
      "1e100"},
+    // A developable ribbon built curved and stress free.
+    {"curved_wunderlich_ribbon",
+     valid_cantilever +
+       section("Geometry",
+               "  set Generator = arc\n  set Natural shape = initial geometry\n") +
+       section("Material",
+               "  set Model = wunderlich ribbon\n"
+               "  subsection wunderlich ribbon\n"
+               "    set Young's modulus = 1e9\n    set Width = 0.01\n"
+               "    set Thickness = 0.001\n  end\n"),
+     ".prm",
+     "",
+     1,
+     "a developable ribbon is straight and flat when unstressed"},
     {"huge_stiffness",
      with("Material",
           "  subsection linear elastic\n    set EA = 1e308\n  end\n"),
