@@ -51,6 +51,14 @@ namespace rodnet
               }};
     }
 
+    /// "--name x" for a real number x, stored in @p value.
+    inline Option
+    real(const std::string &name, double &value)
+    {
+      return {name,
+              [&value](const std::string &text) { value = std::stod(text); }};
+    }
+
     /// "--name text", stored in @p value as given.
     inline Option
     text(const std::string &name, std::string &value)
