@@ -40,6 +40,26 @@ namespace rodnet
 
 
   void
+  RodNetwork::set_closure_coupling(const unsigned int rod,
+                                   const double       coupling)
+  {
+    if (rod >= rod_list.size())
+      throw std::invalid_argument("set_closure_coupling: no rod " +
+                                  std::to_string(rod) + " in a network of " +
+                                  std::to_string(rod_list.size()) + " rods");
+    if (!rod_list[rod].closed)
+      throw std::invalid_argument("rod " + std::to_string(rod) +
+                                  " is open: only a closed rod has a closure "
+                                  "to couple eta' across");
+    if (!(coupling >= 0 && coupling <= 1))
+      throw std::invalid_argument(
+        "rod " + std::to_string(rod) + ": the closure coupling " +
+        std::to_string(coupling) + " is outside [0, 1]");
+    rod_list[rod].closure_coupling = coupling;
+  }
+
+
+  void
   RodNetwork::set_inextensible(const unsigned int rod, const bool inextensible)
   {
     if (rod >= rod_list.size())

@@ -70,6 +70,12 @@ namespace rodnet
     /// odd number closes it as a Möbius band (the closing hinge joins d1 to
     /// -d1 of the first segment).
     unsigned int frame_half_turns = 0;
+    /// Of a closed developable ribbon: the weight of the central difference
+    /// of eta' across the closure, at the two hinges beside it. 1 is the
+    /// model; 0 takes one-sided differences there, as beside a clamp, and
+    /// lets eta jump across the closure (the paper's clamped Möbius band).
+    /// A homotopy from the one to the other (doc/ribbons.md).
+    double closure_coupling = 1;
   };
 
   /**
@@ -260,6 +266,15 @@ namespace rodnet
      */
     void
     set_frame_half_turns(unsigned int rod, unsigned int half_turns);
+
+    /**
+     * Sets the coupling of eta' across the closure of closed rod @p rod
+     * (Rod::closure_coupling), in [0, 1]; before a model is built on the
+     * network. Throws naming the rod if it is open or @p coupling is
+     * outside [0, 1].
+     */
+    void
+    set_closure_coupling(unsigned int rod, double coupling);
 
     /// Builds the triangulation from the rods added so far: one cell per
     /// segment, whose material_id is the index of its rod. Call once.

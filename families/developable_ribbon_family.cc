@@ -7,6 +7,16 @@ namespace rodnet
 {
   namespace
   {
+    /// Whether @p hinge closes its rod: it joins the last segment to the
+    /// first.
+    bool
+    closes(const RodNetwork &network, const HingeStencil &hinge)
+    {
+      const Rod &rod = network.rods()[hinge.rod];
+      return rod.closed && hinge.segment_prev == rod.segments.back() &&
+             hinge.segment_next == rod.segments.front();
+    }
+
     /// Local DoFs of a ribbon stencil: the hinge's, up to three etas and
     /// the two multipliers.
     constexpr int max_ribbon_dofs = n_hinge_dofs + 3 + 2;
@@ -162,6 +172,24 @@ namespace rodnet
           stencil.difference[0] = -1 / span;
         if (next == none && prev != none)
           stencil.difference[0] = 1 / span;
+        // A closure coupling t < 1 blends the central difference across
+        // the closure with the one-sided one that leaves the neighbour
+        // beyond it out: t of each, linear in the etas.
+        const double t     = network.rods()[hinge.rod].closure_coupling;
+        const bool   first = closes(network, hinge);
+        const bool   after = prev != none && closes(network, hinges[prev]);
+        if (t < 1 && first && next != none)
+          {
+            stencil.difference[0] = (1 - t) / l_prev;
+            stencil.difference[1] = -t / span - (1 - t) / l_prev;
+            stencil.difference[2] *= t;
+          }
+        if (t < 1 && after && next != none)
+          {
+            stencil.difference[0] = -(1 - t) / l_next;
+            stencil.difference[1] *= t;
+            stencil.difference[2] = t / span + (1 - t) / l_next;
+          }
         // The developability constraints hold for a strip that is flat
         // and straight when unstressed; a natural curvature or twist would
         // silently turn them into constraints on the strains' change.

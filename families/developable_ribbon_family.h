@@ -33,7 +33,11 @@ namespace rodnet
    * of a Moebius band (an odd Rod::frame_half_turns) the neighbour's eta
    * enters with the opposite sign: the closing hinge measures its strains
    * against the first segment's frame turned by pi about the tangent,
-   * which turns d1 into -d1 and the generatrix slope into -eta.
+   * which turns d1 into -d1 and the generatrix slope into -eta. At the
+   * two hinges beside the closure, Rod::closure_coupling t blends the
+   * central difference (weight t) with the one-sided one that leaves the
+   * hinge beyond the closure out (1 - t): at t = 0 eta may jump across
+   * the closure at no cost, as beside a clamp.
    *
    * Where kappa_1 vanishes, eta is free (the energy and the constraint do
    * not depend on it). As the paper's drag on eta between iterations, the

@@ -149,10 +149,13 @@ namespace rodnet::moebius
   /// through the centreline @p points, with a half turn of its frame, held
   /// against rigid motions by a statically determinate support (vertex 0
   /// whole, a third of the way in y and z, two thirds in z): the free band.
+  /// eta' is coupled across the closure by @p coupling
+  /// (Rod::closure_coupling).
   inline std::unique_ptr<RodModel>
   free_band(const std::vector<Vector3> &points,
             const double                width,
-            const double                modulus = 1)
+            const double                modulus  = 1,
+            const double                coupling = 1)
   {
     const unsigned int m       = points.size();
     auto               network = std::make_unique<RodNetwork>();
@@ -163,6 +166,7 @@ namespace rodnet::moebius
                      NaturalShape::straight);
     network->create_triangulation();
     network->set_frame_half_turns(0, 1);
+    network->set_closure_coupling(0, coupling);
     // D = Y h^3 / 12 with nu = 0 and h = w / 2.
     const double thickness = width / 2;
     auto         model     = std::make_unique<RodModel>(
