@@ -143,7 +143,7 @@ namespace
     double                      width    = narrow / 2;
     Path                        path;
     path.model  = band_model(points, width, coupling);
-    path.u      = moebius::free_state(*path.model, clamped, true);
+    path.u      = moebius::free_state(*path.model, clamped);
     path.newton = moebius::newton(*path.model, path.u, 1e-11, 1e-12);
     if (!path.newton.converged)
       throw std::runtime_error("the narrow free band did not converge");

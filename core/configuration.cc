@@ -110,12 +110,18 @@ namespace rodnet
   }
 
   bool
-  Configuration::closes_with_a_flip(const HingeStencil &h) const
+  Configuration::closes(const HingeStencil &h) const
   {
     const Rod &rod = network->rods()[h.rod];
-    return rod.closed && rod.frame_half_turns % 2 == 1 &&
-           h.segment_next == rod.segments.front() &&
+    return rod.closed && h.segment_next == rod.segments.front() &&
            h.segment_prev == rod.segments.back();
+  }
+
+
+  bool
+  Configuration::closes_with_a_flip(const HingeStencil &h) const
+  {
+    return closes(h) && network->rods()[h.rod].frame_half_turns % 2 == 1;
   }
 
   void

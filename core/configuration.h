@@ -147,6 +147,11 @@ namespace rodnet
     void
     reset_reference(const dealii::TrilinosWrappers::MPI::Vector &u);
 
+    /// Whether hinge @p h closes its rod: a closed rod's hinge that joins
+    /// its last segment to its first.
+    bool
+    closes(const HingeStencil &h) const;
+
     /// Whether hinge @p h closes a closed rod whose frame makes an odd
     /// number of half turns (Rod::frame_half_turns): its strains are
     /// measured against the first segment's frame turned by pi about the
@@ -155,7 +160,6 @@ namespace rodnet
     closes_with_a_flip(const HingeStencil &h) const;
 
   private:
-
     /// The reference frames of hinge @p i from the segments' frames.
     void
     set_hinge_frames(unsigned int i);

@@ -1,20 +1,39 @@
 #include <core/configuration.h>
 
 #include <families/developable_ribbon_family.h>
+
 #include <stdexcept>
 
 namespace rodnet
 {
   namespace
   {
-    /// Whether @p hinge closes its rod: it joins the last segment to the
-    /// first.
-    bool
-    closes(const RodNetwork &network, const HingeStencil &hinge)
+    /**
+     * The coefficients @p difference of eta' = (own, prev, next) . eta at
+     * a hinge beside a ring's closure (@p before it: the closing hinge;
+     * else the next one) with the closure coupling @p t: t of the central
+     * difference in @p difference plus 1 - t of the one-sided one over the
+     * segment @p l on this side, which leaves out the hinge beyond the
+     * closure.
+     */
+    void
+    couple_across_closure(std::vector<double> &difference,
+                          const double         t,
+                          const bool           before,
+                          const double         l)
     {
-      const Rod &rod = network.rods()[hinge.rod];
-      return rod.closed && hinge.segment_prev == rod.segments.back() &&
-             hinge.segment_next == rod.segments.front();
+      if (before) // (eta_own - eta_prev) / l
+        {
+          difference[0] = (1 - t) / l;
+          difference[1] = t * difference[1] - (1 - t) / l;
+          difference[2] *= t;
+        }
+      else // (eta_next - eta_own) / l
+        {
+          difference[0] = -(1 - t) / l;
+          difference[1] *= t;
+          difference[2] = t * difference[2] + (1 - t) / l;
+        }
     }
 
     /// Local DoFs of a ribbon stencil: the hinge's, up to three etas and
@@ -172,23 +191,13 @@ namespace rodnet
           stencil.difference[0] = -1 / span;
         if (next == none && prev != none)
           stencil.difference[0] = 1 / span;
-        // A closure coupling t < 1 blends the central difference across
-        // the closure with the one-sided one that leaves the neighbour
-        // beyond it out: t of each, linear in the etas.
-        const double t     = network.rods()[hinge.rod].closure_coupling;
-        const bool   first = closes(network, hinge);
-        const bool   after = prev != none && closes(network, hinges[prev]);
-        if (t < 1 && first && next != none)
+        const double t = network.rods()[hinge.rod].closure_coupling;
+        if (t < 1 && prev != none && next != none)
           {
-            stencil.difference[0] = (1 - t) / l_prev;
-            stencil.difference[1] = -t / span - (1 - t) / l_prev;
-            stencil.difference[2] *= t;
-          }
-        if (t < 1 && after && next != none)
-          {
-            stencil.difference[0] = -(1 - t) / l_next;
-            stencil.difference[1] *= t;
-            stencil.difference[2] = t / span + (1 - t) / l_next;
+            if (configuration.closes(hinge))
+              couple_across_closure(stencil.difference, t, true, l_prev);
+            if (configuration.closes(hinges[prev]))
+              couple_across_closure(stencil.difference, t, false, l_next);
           }
         // The developability constraints hold for a strip that is flat
         // and straight when unstressed; a natural curvature or twist would
@@ -197,7 +206,8 @@ namespace rodnet
           throw std::invalid_argument(
             "rod " + std::to_string(hinge.rod) +
             ": a developable ribbon is straight and flat when unstressed, "
-            "but its hinge at vertex " + std::to_string(hinge.vertices[1]) +
+            "but its hinge at vertex " +
+            std::to_string(hinge.vertices[1]) +
             " has natural strains; set \"Geometry/Natural shape = "
             "straight\"");
         stencil.drag = drag_factor * stencil.law->bending_modulus() /

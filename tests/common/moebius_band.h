@@ -41,9 +41,6 @@ namespace rodnet::moebius
     double               segment      = 0; ///< l
     /// Per segment: the material frame's d1.
     std::vector<Vector3> d1;
-    /// Per segment and hinge: the multipliers (segment, kappa_2, kappa_3).
-    std::vector<double>                segment_multipliers;
-    std::vector<std::array<double, 2>> hinge_multipliers;
     /// The hinge that closes a band with a half turn (eta changes sign
     /// between it and the next hinge), or none.
     unsigned int flipped_hinge = static_cast<unsigned int>(-1);
@@ -99,15 +96,10 @@ namespace rodnet::moebius
         band.etas.push_back(u[layout.ribbon_dof(h, 0)]);
         if (config.closes_with_a_flip(layout.hinges()[h]))
           band.flipped_hinge = h;
-        band.hinge_multipliers.push_back(
-          {{u[layout.ribbon_dof(h, 1)], u[layout.ribbon_dof(h, 2)]}});
       }
     for (const unsigned int cell : rod.segments)
-      {
-        band.d1.push_back(
-          config.director_frame(u, cell)._transformVector(Vector3::UnitX()));
-        band.segment_multipliers.push_back(u[layout.multiplier_dof(cell)]);
-      }
+      band.d1.push_back(
+        config.director_frame(u, cell)._transformVector(Vector3::UnitX()));
     return band;
   }
 
@@ -141,7 +133,6 @@ namespace rodnet::moebius
     const Rod &rod  = model->network().rods()[0];
     Band       band = band_state(*model, last, rod.vertices.size() - 2);
     band.d1.pop_back();
-    band.segment_multipliers.pop_back();
     return band;
   }
 
@@ -188,13 +179,11 @@ namespace rodnet::moebius
   }
 
   /// The free band's DoF vector for @p model (built by free_band() through
-  /// @p band's centreline) in @p band's state: its frames by the twists,
-  /// its etas. @p band is a clamped band (hinge k - 1 at its vertex k, its
-  /// last hinge at vertex 0) when @p clamped_numbering, else a free band.
+  /// the clamped band @p band's centreline) in @p band's state: its frames
+  /// by the twists, its etas (the ring's hinge k sits at vertex k, the
+  /// clamped band's hinge k - 1 at its vertex k, its last at vertex 0).
   inline VectorType
-  free_state(const RodModel &model,
-             const Band     &band,
-             const bool      clamped_numbering)
+  free_state(const RodModel &model, const Band &band)
   {
     VectorType           u      = model.create_vector();
     const unsigned int   m      = band.centreline.size();
@@ -210,9 +199,8 @@ namespace rodnet::moebius
         u[layout.twist_dof(cell)] =
           std::atan2(d1.cross(band.d1[j]).dot(t), d1.dot(band.d1[j]));
       }
-    const unsigned int shift = clamped_numbering ? m - 1 : 0;
     for (unsigned int h = 0; h < m; ++h)
-      u[layout.ribbon_dof(h, 0)] = band.etas[(h + shift) % m];
+      u[layout.ribbon_dof(h, 0)] = band.etas[(h + m - 1) % m];
     return u;
   }
 

@@ -59,7 +59,7 @@ namespace
   relax_freely(const Band &clamped)
   {
     const auto model  = moebius::free_band(clamped.centreline, 1e-5);
-    VectorType u      = moebius::free_state(*model, clamped, true);
+    VectorType u      = moebius::free_state(*model, clamped);
     const auto result = moebius::newton(*model, u, 1e-11, 1e-13);
     EXPECT_TRUE(result.converged) << "the free band's Newton";
     std::cout << "free band: " << result.iterations
