@@ -1,11 +1,14 @@
 # K1 chart: hinges per second of rodnet's kernels against fabsim
 # (/work/shared/BENCHMARKS.md) and the goals of issue 13, for the energy,
 # gradient and Hessian assembled into a sparse matrix and for the gradient
-# alone, at N = 1e3 and 1e5, one thread. Reads the CSV written by
-# kernel_throughput; run from the directory that holds it:
+# alone, at N = 1e3 and 1e5, one thread. Reads the two CSV files
+# kernel_throughput writes: its rates, and fabsim's it read from
+# BENCHMARKS.md (kernel_throughput_peers.csv), each bar labelled with the
+# date of its figure. Run from the directory that holds them:
 #   gnuplot -e "csv='kernel_throughput.csv'; out='doc/k1_vs_fabsim.png'" \
 #     bench/k1_vs_fabsim.gp
 if (!exists("csv")) csv = 'kernel_throughput.csv'
+if (!exists("peers")) peers = 'kernel_throughput_peers.csv'
 if (!exists("out")) out = 'k1_vs_fabsim.png'
 
 set terminal pngcairo size 900,560 font ",11"
@@ -25,13 +28,6 @@ set bmargin 4
 set xtics ("E+g+H assembled\nN = 1e3" 0, "E+g+H assembled\nN = 1e5" 1, \
            "gradient assembled\nN = 1e3" 2, "gradient assembled\nN = 1e5" 3)
 
-# fabsim (-O3 -march=native) of BENCHMARKS.md: slot, hinges/s.
-$fabsim << EOD
-0,3.55e5
-1,2.96e5
-2,4.86e6
-3,4.55e6
-EOD
 # Goals of issue 13: 3x fabsim for E+g+H (>= 1e6), 2x for the gradient
 # (>= 9e6).
 $goal << EOD
@@ -46,7 +42,12 @@ slot(n, figure) = (figure eq "assembled_egh" ? 0 : \
 row(kernel) = (strcol(2) eq kernel && strcol(3) eq "1") ? \
               slot(column(1), strcol(4)) : NaN
 
-plot $fabsim using ($1 - 0.22):2 with boxes lc rgb "#888888" title "fabsim", \
+# kernel_throughput_peers.csv: N, code, figure, hinges_per_s, date.
+peer(code) = (strcol(2) eq code ? slot(column(1), strcol(3)) - 0.22 : NaN)
+plot peers using (peer("fabsim")):4 every ::1 with boxes lc rgb "#888888" \
+         title "fabsim (BENCHMARKS.md, date above each bar)", \
+     peers using (peer("fabsim")):4:(strcol(5)) every ::1 with labels \
+         offset 0,0.8 font ",8" notitle, \
      csv using (row("simple")):5 every ::1 with boxes lc rgb "#1f77b4" \
          title "rodnet, simple kernel", \
      csv using (row("classic") + 0.22):5 every ::1 with boxes lc rgb "#ff7f0e" \

@@ -20,11 +20,15 @@
 //      scattering through deal.II and Trilinos.
 // Every figure is the median of the repeats with its range (min-max); the
 // rates also go to kernel_throughput.csv in the current directory, from
-// which bench/k1_vs_fabsim.gp draws doc/k1_vs_fabsim.png.
+// which bench/k1_vs_fabsim.gp draws doc/k1_vs_fabsim.png. (a) and (b) are
+// set beside the peer's rates at the same N, read from BENCHMARKS.md when
+// the program runs (--peers, bench/peer_figures.h) and printed with the date
+// of the figure; the rates read go to kernel_throughput_peers.csv.
 //
 // Usage: kernel_throughput [--threads n] [--repeats n] [--kernel NAME]
 // [--vertices N] (defaults 1, 7, both kernels, N = 1e3 and 1e5: the peer
-// figures are single-threaded; one kernel and one N for a profile).
+// figures are single-threaded; one kernel and one N for a profile)
+// [--peers file] (the peer figures; default /work/shared/BENCHMARKS.md).
 #include <core/rod_model.h>
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
@@ -32,6 +36,7 @@
 #include <materials/linear_elastic_rod.h>
 
 #include <bench/options.h>
+#include <bench/peer_figures.h>
 #include <bench/timing.h>
 #include <cmath>
 #include <cstdlib>
@@ -54,6 +59,7 @@ namespace
     std::string kernel;
     /// One N, or 0 for 1e3 and 1e5.
     unsigned int vertices = 0;
+    std::string  peers    = bench::default_peer_file;
 
     /// The options of the usage line above.
     std::vector<bench::Option>
@@ -62,7 +68,8 @@ namespace
       return {bench::number("--threads", threads),
               bench::number("--repeats", repeats, 5),
               bench::text("--kernel", kernel),
-              bench::number("--vertices", vertices)};
+              bench::number("--vertices", vertices),
+              bench::text("--peers", peers)};
     }
   };
 
@@ -216,11 +223,55 @@ namespace
     return timings;
   }
 
+  /// The line that sets (a) and (b) of @p t at N = @p n beside the peers'
+  /// rates at that N, if @p peers has them.
+  void
+  report_peers(const std::vector<bench::K1PeerFigure> &peers,
+               const unsigned int                      n,
+               const Timings                          &t)
+  {
+    const double n_hinges = n - 2;
+    for (const bench::K1PeerFigure &peer : peers)
+      if (peer.n == n)
+        {
+          char line[300];
+          std::snprintf(line,
+                        sizeof(line),
+                        "  against %s (one thread, %s): (a) %.2fx its %.3g, "
+                        "(b) %.2fx its %.3g\n",
+                        peer.code.c_str(),
+                        peer.source.c_str(),
+                        n_hinges / t.assemble_hessian.median /
+                          peer.hessian_rate,
+                        peer.hessian_rate,
+                        n_hinges / t.assemble_gradient.median /
+                          peer.gradient_rate,
+                        peer.gradient_rate);
+          std::cout << line;
+        }
+  }
+
+  /// The peers' rates read, for the chart bench/k1_vs_fabsim.gp.
+  void
+  write_peers(const std::vector<bench::K1PeerFigure> &peers)
+  {
+    std::ofstream csv("kernel_throughput_peers.csv");
+    csv << "N,code,figure,hinges_per_s,date\n";
+    for (const bench::K1PeerFigure &peer : peers)
+      csv << peer.n << ',' << peer.code << ",assembled_egh,"
+          << peer.hessian_rate << ',' << peer.date << '\n'
+          << peer.n << ',' << peer.code << ",assembled_gradient,"
+          << peer.gradient_rate << ',' << peer.date << '\n';
+  }
+
   /// The benchmark proper, run once the command line is read and MPI is
   /// up.
   void
   benchmark(const Options &options)
   {
+    const std::vector<bench::K1PeerFigure> peers =
+      bench::read_k1_peers(options.peers);
+    write_peers(peers);
     std::cout << "K1 hinge kernel throughput: " << options.threads
               << " thread(s), median (min-max) of " << options.repeats
               << " repeats, rates in hinges/s (N - 2 hinges; the assembled "
@@ -291,6 +342,7 @@ namespace
                             t.segments_gradient.median) /
                              t.assemble_gradient.median
                     << std::endl;
+          report_peers(peers, n, t);
         }
   }
 } // namespace

@@ -4,10 +4,13 @@
 //
 // The problem is bench/p1_problem.h's (shared with the Newton version,
 // p1_gravity_cantilever): r = 5e-3, E = 1e8, nu = 0.5, rho = 1000,
-// g = -9.81 e_z, clamped at x = 0 (one-node clamp), N = 50, 100, 200
-// vertices. The time is the wall time from the model's construction to
-// equilibrium, median (min-max) of the repeats after one untimed warm-up;
-// time per node per iteration = time / (N * DR iterations).
+// g = -9.81 e_z, clamped at x = 0 (one-node clamp), at the N of the peer's
+// runs (50 and 200 vertices). The time is the wall time from the model's
+// construction to equilibrium, median (min-max) of the repeats after one
+// untimed warm-up; time per node per iteration = time / (N * DR iterations).
+// The peer's runs are read from BENCHMARKS.md when the program runs
+// (--peers, bench/peer_figures.h) and every ratio is printed with the date of
+// the peer's figure.
 //
 // 1. Defaults: time step 1, mass scaling 1, 1 load step, residual
 //    tolerance 1e-6.
@@ -25,11 +28,13 @@
 // Results go to p1_dynamic_relaxation.csv in the current directory.
 //
 // Usage: p1_dynamic_relaxation [--repeats n] [--threads n] [--search 0|1]
-// [--max-n N] (largest N; default 200)
+// [--max-n N] (largest N; default 200) [--peers file] (the peer figures;
+// default /work/shared/BENCHMARKS.md)
 #include <solvers/dynamic_relaxation.h>
 
 #include <bench/options.h>
 #include <bench/p1_problem.h>
+#include <bench/peer_figures.h>
 #include <bench/timing.h>
 #include <cmath>
 #include <fstream>
@@ -47,6 +52,7 @@ namespace
     unsigned int repeats = 3;
     bool         search  = true;
     unsigned int max_n   = 200;
+    std::string  peers   = bench::default_peer_file;
 
     /// The options of the usage line above.
     std::vector<bench::Option>
@@ -55,26 +61,38 @@ namespace
       return {bench::number("--threads", threads),
               bench::number("--repeats", repeats, 1),
               bench::flag("--search", search),
-              bench::number("--max-n", max_n)};
+              bench::number("--max-n", max_n),
+              bench::text("--peers", peers)};
     }
   };
 
-  /// The peer DR code at N: wall time (s) and tip error in z; it spends
-  /// ~2.2 us per node per step, so its steps are time / (2.2e-6 N).
-  struct Peer
+  /// DRMSimulationModel's time per node and step, 2.2 us: quoted beside
+  /// its P1 figures when this program was written (2026-11-30) but not in
+  /// BENCHMARKS.md, so the peer's step counts derived from it are estimates
+  /// from an unsourced figure, and printed as such.
+  constexpr double peer_seconds_per_node_step = 2.2e-6;
+
+  /// The peer's steps at its run @p peer, estimated from its time.
+  double
+  peer_steps(const bench::P1PeerRun &peer)
   {
-    unsigned int n;
-    double       time, error;
+    return peer.time / (peer_seconds_per_node_step * peer.n);
+  }
 
-    double
-    steps() const
-    {
-      return time / (2.2e-6 * n);
-    }
-  };
-  const Peer peers[] = {{50, 7.25, 2.6e-4},
-                        {100, 45.8, 9e-5},
-                        {200, 327, 5e-5}};
+  /// The runs of DRMSimulationModel in the P1 table of @p file.
+  std::vector<bench::P1PeerRun>
+  read_peers(const std::string &file)
+  {
+    std::vector<bench::P1PeerRun> runs;
+    for (const bench::P1PeerRun &run : bench::read_p1_peers(file))
+      if (run.code == "DRMSimulationModel")
+        runs.push_back(run);
+    if (runs.empty())
+      throw std::runtime_error("no run of DRMSimulationModel in the P1 "
+                               "table of " +
+                               file);
+    return runs;
+  }
 
   struct Outcome
   {
@@ -99,8 +117,8 @@ namespace
   Outcome
   solve(const unsigned int n, const DynamicRelaxation::Parameters &p)
   {
-    const auto p1     = bench::p1::dr_model(n);
-    DrVector   u      = p1->create_vector();
+    const auto p1 = bench::p1::dr_model(n);
+    DrVector   u  = p1->create_vector();
     const auto result =
       DynamicRelaxation(*p1, p).run(u, [](const auto &, const auto &) {});
     Outcome outcome;
@@ -127,7 +145,7 @@ namespace
   /// Times @p p at @p n, prints a line and a CSV row beside the peer.
   void
   measure(const std::string                   &label,
-          const Peer                          &peer,
+          const bench::P1PeerRun              &peer,
           const DynamicRelaxation::Parameters &p,
           const Options                       &options,
           std::ofstream                       &csv)
@@ -139,26 +157,30 @@ namespace
       }));
     const double per_node = t.median / (peer.n * outcome.iterations);
     std::printf("  %-8s N %3u  %s\n"
-                "           iterations %7u (peer ~%.0f, ratio %.2f)  time "
-                "%s s (peer %.3g s, %.0fx)\n"
-                "           %.3g us per node per iteration (peer 2.2, %.1fx)"
-                "  tip (%.7f, %.7f)  z error %.2e (peer %.1e)  x error %.2e"
-                "  time-step cuts %u\n",
+                "           time %s s (peer %.3g s, %.0fx, against %s)\n"
+                "           iterations %7u (peer ~%.0f, ratio %.2f)  %.3g us "
+                "per node per iteration (peer ~%.2g, %.1fx; the peer's "
+                "figures here are estimates from its cost per node and "
+                "step, which BENCHMARKS.md does not give)\n"
+                "           tip (%.7f, %.7f)  z error %.2e (peer %.1e)  "
+                "x error %.2e  time-step cuts %u\n",
                 label.c_str(),
                 peer.n,
                 describe(p).c_str(),
-                outcome.iterations,
-                peer.steps(),
-                outcome.iterations / peer.steps(),
                 bench::format_time(t).c_str(),
                 peer.time,
                 peer.time / t.median,
+                peer.source.c_str(),
+                outcome.iterations,
+                peer_steps(peer),
+                outcome.iterations / peer_steps(peer),
                 1e6 * per_node,
-                2.2e-6 / per_node,
+                1e6 * peer_seconds_per_node_step,
+                peer_seconds_per_node_step / per_node,
                 outcome.tip[0],
                 outcome.tip[2],
                 outcome.z_error(),
-                peer.error,
+                peer.z_error,
                 outcome.x_error(),
                 outcome.cuts);
     std::fflush(stdout);
@@ -167,8 +189,8 @@ namespace
         << outcome.iterations << ',' << t.median << ',' << t.min << ',' << t.max
         << ',' << 1e6 * per_node << ',' << outcome.tip[0] << ','
         << outcome.tip[2] << ',' << outcome.z_error() << ','
-        << outcome.x_error() << ',' << peer.steps() << ',' << peer.time << ','
-        << peer.error << '\n';
+        << outcome.x_error() << ',' << peer_steps(peer) << ',' << peer.time
+        << ',' << peer.z_error << ',' << peer.date << '\n';
   }
 
   /// Largest difference between the tips of @p a and @p b in x or z.
@@ -182,7 +204,7 @@ namespace
   /**
    * The settings that reach the peer's accuracy at its N fastest (one timed
    * run each), or the defaults if none does. Our converged tip errors at
-   * N = 50, 100, 200 are the peer's (the same element), so "as accurate"
+   * the peer's N equal its own (the same element), so "as accurate"
    * means converged: the tip within a tenth of the peer's error, in x and
    * z, of the tip relaxed to a residual tolerance of 1e-8. A bound on the
    * z error alone would not do: an unconverged tip crosses z_exact on its
@@ -191,7 +213,7 @@ namespace
    * from 1e-4 until the tip is close enough.
    */
   DynamicRelaxation::Parameters
-  search(const Peer &peer)
+  search(const bench::P1PeerRun &peer)
   {
     DynamicRelaxation::Parameters tight;
     tight.residual_tolerance = 1e-8;
@@ -241,7 +263,7 @@ namespace
                       difference,
                       outcome.cuts > 0 ? "  (time step cut)" : "");
           std::fflush(stdout);
-          if (difference <= 0.1 * peer.error)
+          if (difference <= 0.1 * peer.z_error)
             {
               if (time < best_time)
                 {
@@ -263,13 +285,14 @@ namespace
     csv.precision(8);
     csv << "settings,N,time_step,mass_scaling,load_steps,tolerance,"
            "iterations,time_median_s,time_min_s,time_max_s,"
-           "us_per_node_iteration,x_tip,z_tip,z_error,x_error,peer_steps,"
-           "peer_time_s,peer_z_error\n";
+           "us_per_node_iteration,x_tip,z_tip,z_error,x_error,"
+           "peer_steps_estimated,peer_time_s,peer_z_error,peer_date\n";
+    const std::vector<bench::P1PeerRun> peers = read_peers(options.peers);
 
     std::cout << "P1 by dynamic relaxation, median (min-max) of "
               << options.repeats << " repeats, " << options.threads
               << " thread(s)\n\ndefault settings\n";
-    for (const Peer &peer : peers)
+    for (const bench::P1PeerRun &peer : peers)
       if (peer.n <= options.max_n)
         measure("default", peer, {}, options, csv);
 
@@ -282,14 +305,14 @@ namespace
         scaled.time_step    = 2;
         measure("scaled", peers[0], scaled, options, csv);
 
-        for (const Peer &peer : peers)
+        for (const bench::P1PeerRun &peer : peers)
           if (peer.n <= options.max_n)
             {
               std::cout << "\nN = " << peer.n
                         << ": fastest settings as accurate as the peer "
                            "(z error "
-                        << peer.error << "): converged to within "
-                        << 0.1 * peer.error << "\n";
+                        << peer.z_error << "): converged to within "
+                        << 0.1 * peer.z_error << "\n";
               measure("fastest", peer, search(peer), options, csv);
             }
       }
