@@ -16,7 +16,7 @@ set output out
 set datafile separator comma
 set logscale y
 set format y "10^{%L}"
-set yrange [1e4:3e7]
+set yrange [1e4:1e8]
 set ylabel "hinges per second (log scale)"
 set title "K1 hinge kernel throughput, one thread: rodnet against fabsim"
 set key top left box opaque
@@ -47,7 +47,7 @@ peer(code) = (strcol(2) eq code ? slot(column(1), strcol(3)) - 0.22 : NaN)
 plot peers using (peer("fabsim")):4 every ::1 with boxes lc rgb "#888888" \
          title "fabsim (BENCHMARKS.md, date above each bar)", \
      peers using (peer("fabsim")):4:(strcol(5)) every ::1 with labels \
-         offset 0,0.8 font ",8" notitle, \
+         rotate by 90 left offset 0,0.5 font ",8" notitle, \
      csv using (row("simple")):5 every ::1 with boxes lc rgb "#1f77b4" \
          title "rodnet, simple kernel", \
      csv using (row("classic") + 0.22):5 every ::1 with boxes lc rgb "#ff7f0e" \

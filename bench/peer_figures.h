@@ -248,12 +248,12 @@ namespace rodnet
         return std::isnan(x_error) ? z_error : std::hypot(x_error, z_error);
       }
 
-      /// "DisMech dt 2, N = 200".
+      /// "DisMech dt 2 at N = 200" (no comma: it goes into CSV files too).
       std::string
       name() const
       {
         return code + (method.empty() ? "" : " " + method) +
-               ", N = " + std::to_string(n);
+               " at N = " + std::to_string(n);
       }
     };
 
@@ -312,7 +312,7 @@ namespace rodnet
       return fastest;
     }
 
-    /// "DisMech dt 2, N = 200 (tip error 3.8e-05): 0.0338 s, 14.5x, against
+    /// "DisMech dt 2 at N = 200 (tip error 3.8e-05): 0.0338 s, 14.5x, against
     /// BENCHMARKS.md's figure of 2026-12-04", the ratio @p peer's time over
     /// @p our_time.
     inline std::string

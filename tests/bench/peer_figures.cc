@@ -133,7 +133,7 @@ TEST(PeerFigures, FastestDisMechRunAsAccurate)
   EXPECT_EQ(bench::fastest_as_accurate(runs, "DisMech", 2.72e-5), nullptr);
   // 0.0241 s against 0.00157 s: 15.35x, printed with the date.
   EXPECT_EQ(bench::ratio_text(*coarse, 0.00157),
-            "DisMech dt 2, N = 150 (tip error 6.8e-05): 0.0241 s, 15.4x, "
+            "DisMech dt 2 at N = 150 (tip error 6.8e-05): 0.0241 s, 15.4x, "
             "against BENCHMARKS.md's figure of 2026-12-04");
 }
 
