@@ -318,6 +318,41 @@ namespace
      1,
      "entry \"Geometry/Turns\": a ring is wound a whole number of times, at "
      "least once, not 2.5"},
+    // Gravity weighs rho A of the material, or Mass per length: without
+    // either it would weigh nothing.
+    {"gravity_without_mass",
+     with("Loads", "  set Gravity = 0, 0, -9.81\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Gravity\": the rods of \"Material\" have no mass to "
+     "weigh; give \"Material/Density\" (with a cross-section) or "
+     "\"Loads/Mass per length\""},
+    {"gravity_density_without_section",
+     with("Loads", "  set Gravity = 0, 0, -9.81\n") +
+       section("Material", "  set Density = 7850\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Gravity\": the weight of the rods of \"Material\" is "
+     "\"Material/Density\" times the section's area, but \"Material/linear "
+     "elastic\" gives its rigidities directly, without a section; give "
+     "\"Loads/Mass per length\" or \"Stiffness input = section\""},
+    {"mass_per_length_contradicts_density",
+     with("Loads", "  set Gravity = 0, 0, -9.81\n  set Mass per length = 1\n") +
+       section("Material",
+               "  set Density = 7850\n"
+               "  subsection linear elastic\n"
+               "    set Stiffness input = section\n"
+               "    set Young's modulus = 2.1e11\n"
+               "    set Cross section = circle\n"
+               "    set Radius = 0.01\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Mass per length\": 1 kg/m differs from the 2.46615 kg/m "
+     "of \"Material/Density\" times the section's area"},
     {"unknown_probe_kind",
      with("Output", "  set Probes = a: angle end\n"),
      ".prm",
