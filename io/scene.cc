@@ -9,6 +9,7 @@
 #include <io/scene_entries.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
+#include <io/unread_geometry_entries.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
 
@@ -315,6 +316,8 @@ namespace rodnet
       return size;
     };
 
+    refuse_unread_geometry_entries(*entries.find("Geometry"),
+                                   prm.get({"Geometry"}, "Generator"));
     parse_geometry(prm, scene_directory, check_size);
     parse_materials(prm, entries);
     parse_supports(prm);

@@ -68,6 +68,19 @@ namespace
 
   const std::string data_folder = RODNET_SOURCE_DIR "/tests/input/data/";
 
+  /// The cantilever's geometry replaced by the rods of the Gmsh mesh
+  /// @p mesh of data_folder (Segments back at its default: the mesh's
+  /// elements are the segments).
+  std::string
+  gmsh_rods(const std::string &mesh)
+  {
+    return valid_cantilever + section("Geometry",
+                                      "  set Generator = gmsh\n"
+                                      "  set Segments = 100\n"
+                                      "  set Mesh file = " +
+                                        data_folder + mesh + "\n");
+  }
+
   const std::vector<BadInput> bad_inputs = {
     // Non-finite and absurd numbers, in every kind of entry.
     {"nan_force",
@@ -246,20 +259,14 @@ namespace
     // A portal frame (several tags per entity) read as one kinked rod,
     // whose columns run along the default director.
     {"gmsh_frame_director_along_a_column",
-     valid_cantilever + section("Geometry",
-                                "  set Generator = gmsh\n"
-                                "  set Mesh file = " +
-                                  data_folder + "frame_v41.msh\n"),
+     gmsh_rods("frame_v41.msh"),
      ".prm",
      "",
      1,
      "rod 0, segment 2: the director d1 hint is parallel to the segment; "
      "choose another \"Director d1\""},
     {"lattice_as_gmsh_rods",
-     valid_cantilever + section("Geometry",
-                                "  set Generator = gmsh\n"
-                                "  set Mesh file = " +
-                                  data_folder + "square_lattice_2x2.msh\n"),
+     gmsh_rods("square_lattice_2x2.msh"),
      ".prm",
      "",
      1,
@@ -353,6 +360,35 @@ namespace
      1,
      "entry \"Loads/Mass per length\": 1 kg/m differs from the 2.46615 kg/m "
      "of \"Material/Density\" times the section's area"},
+    // An entry that the generator does not read would look as if it acted.
+    {"lattice_director",
+     with("Geometry",
+          "  set Generator = square lattice\n"
+          "  set Director d1 = 0, 1, 1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Director d1\": the square lattice generator does not "
+     "read it: a network orients each beam itself"},
+    {"frame_cells",
+     with("Geometry",
+          "  set Generator = frame\n"
+          "  set Cells = 3, 3\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Cells\": the frame generator does not read it, only "
+     "the square lattice and hexagonal lattice generators do; remove it"},
+    {"gmsh_rods_segments",
+     valid_cantilever + section("Geometry",
+                                "  set Generator = gmsh\n"
+                                "  set Mesh file = " +
+                                  data_folder + "straight_rod.msh\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Segments\": the gmsh generator does not read it: the "
+     "mesh's line elements are the segments; remove it"},
     {"unknown_probe_kind",
      with("Output", "  set Probes = a: angle end\n"),
      ".prm",
