@@ -389,6 +389,33 @@ namespace
      1,
      "entry \"Geometry/Segments\": the gmsh generator does not read it: the "
      "mesh's line elements are the segments; remove it"},
+    // In a network a vertex without its rod meant rod 0.
+    {"network_clamp_without_rod",
+     with("Geometry", "  set Generator = frame\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Clamped ends\": \"start\" names no rod, and the scene "
+     "has 2 rods; write \"<rod>:start\" (\"0:start\" for rod 0) or "
+     "\"@<name>\" of a free network end or junction"},
+    {"network_force_without_rod",
+     with("Geometry", "  set Generator = frame\n") +
+       section("Supports", "  set Clamped ends =\n") +
+       section("Loads", "  set Point forces = mid: 0, 0, -1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Point forces\": \"mid\" names no rod, and the scene has "
+     "2 rods; write \"<rod>:mid\" (\"0:mid\" for rod 0) or \"@<name>\" of "
+     "a named vertex"},
+    {"unknown_vertex_name",
+     with("Geometry", "  set Generator = frame\n") +
+       section("Supports", "  set Clamped ends = @tipp\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Clamped ends\": there is no vertex or junction called "
+     "\"tipp\"; the names are \"clamp\", \"corner\", \"tip\""},
     {"unknown_probe_kind",
      with("Output", "  set Probes = a: angle end\n"),
      ".prm",
