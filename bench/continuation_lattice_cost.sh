@@ -34,7 +34,6 @@ subsection Geometry
   set Cells = $n, $n
   set Beam length = $(awk -v n="$n" 'BEGIN { printf "%.17g", 1 / n }')
   set Segments = 8
-  set Director d1 = 0, 0, 1
 end
 subsection Material
   subsection linear elastic

@@ -26,7 +26,7 @@ namespace rodnet
       s << "subsection Geometry\n  set Generator = square lattice\n"
         << "  set Cells = " << cells << ", " << cells << "\n"
         << "  set Beam length = " << 1.0 / cells << "\n"
-        << "  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
+        << "  set Segments = 8\nend\n"
         << "subsection Material\n  subsection linear elastic\n"
         << "    set Stiffness input = direct\n    set EA = 1000\n"
         << "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"

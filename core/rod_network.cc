@@ -322,6 +322,15 @@ namespace rodnet
     return it->second;
   }
 
+  std::vector<std::string>
+  RodNetwork::vertex_name_list() const
+  {
+    std::vector<std::string> names;
+    for (const auto &[name, v] : vertex_names)
+      names.push_back(name);
+    return names;
+  }
+
   unsigned int
   RodNetwork::junction_index(const std::string &name) const
   {

@@ -236,6 +236,11 @@ namespace rodnet
     unsigned int
     named_vertex(const std::string &name) const;
 
+    /// The names of the named vertices (junctions, network nodes, rotation
+    /// handles), sorted.
+    std::vector<std::string>
+    vertex_name_list() const;
+
     /// Triangulation vertex of a rod end.
     unsigned int
     end_vertex(const RodEnd &end) const

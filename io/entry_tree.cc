@@ -1,7 +1,10 @@
+#include <deal.II/base/utilities.h>
+
 #include <io/entry_tree.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
+#include <cctype>
 #include <sstream>
 #include <stdexcept>
 
@@ -55,6 +58,45 @@ namespace rodnet
       if (child.name == child_name)
         return &child;
     return nullptr;
+  }
+
+  namespace
+  {
+    /// @p text without blanks.
+    std::string
+    without_blanks(const std::string &text)
+    {
+      std::string kept;
+      for (const char c : text)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          kept += c;
+      return kept;
+    }
+
+    /// The numbers of the list @p text ("1, 0, 0"), empty if it is not
+    /// one.
+    std::vector<double>
+    numbers(const std::string &text)
+    {
+      try
+        {
+          return dealii::Utilities::string_to_double(
+            dealii::Utilities::split_string_list(text, ','));
+        }
+      catch (const std::exception &)
+        {
+          return {};
+        }
+    }
+  } // namespace
+
+  bool
+  EntryNode::holds_default() const
+  {
+    if (without_blanks(value) == without_blanks(default_value))
+      return true;
+    const std::vector<double> given = numbers(value);
+    return !given.empty() && given == numbers(default_value);
   }
 
   namespace

@@ -31,6 +31,12 @@ namespace rodnet
     /// The child called @p child_name, nullptr if there is none.
     const EntryNode *
     find(const std::string &child_name) const;
+
+    /// Entries: true if the value is the default, written alike or not
+    /// (blanks aside, or as the same numbers: "0,1,0" for "0, 1, 0",
+    /// "1.0" for "1").
+    bool
+    holds_default() const;
   };
 
   /// The tree of every subsection and entry of @p prm, in declaration

@@ -23,6 +23,12 @@ namespace rodnet
     return false;
   }
 
+  std::vector<UnreadEntry>
+  GeometryGenerator::unread_shared_entries() const
+  {
+    return {};
+  }
+
   const GeneratorRegistry &
   GeneratorRegistry::instance()
   {

@@ -38,6 +38,14 @@ namespace rodnet
     std::string scene_directory = ".";
   };
 
+  /// An entry of subsection Geometry that a generator does not read, and
+  /// why (for the message that refuses a scene setting it).
+  struct UnreadEntry
+  {
+    std::string entry;
+    std::string reason;
+  };
+
   /**
    * A way to make the rods of a scene ("Geometry/Generator = <name>"): it
    * declares the entries of subsection Geometry it reads (an entry that
@@ -71,6 +79,14 @@ namespace rodnet
     /// midpoint" can begin half a segment behind their start.
     virtual bool
     open_rods() const;
+
+    /**
+     * The entries of subsection Geometry that every generator shares (as
+     * "Director d1") but this one does not read; a scene that sets one is
+     * refused (refuse_unread_geometry_entries()). None by default.
+     */
+    virtual std::vector<UnreadEntry>
+    unread_shared_entries() const;
 
     /// Makes the geometry; throws std::invalid_argument naming the entry
     /// where one is inadmissible.

@@ -26,6 +26,17 @@ namespace rodnet
         return geometry;
       }
 
+      std::vector<UnreadEntry>
+      unread_shared_entries() const override
+      {
+        return {{"Director d1",
+                 "a network orients each beam itself, with d1 = e_z (for a "
+                 "beam along z the coordinate axis least aligned with it) "
+                 "unless the beam gives its own (a network file's \"d1 <x> "
+                 "<y> <z>\", the frame's and the windmill's beams; "
+                 "doc/networks.md)"}};
+      }
+
     protected:
       /// The beams and junctions of the network.
       virtual RodGraph

@@ -311,6 +311,12 @@ namespace rodnet
         return true;
       }
 
+      std::vector<UnreadEntry>
+      unread_shared_entries() const override
+      {
+        return {{"Segments", "the mesh's line elements are the segments"}};
+      }
+
       GeneratedGeometry
       generate(const dealii::ParameterHandler &prm,
                const GeneratorInput           &input) const override

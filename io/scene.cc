@@ -9,6 +9,7 @@
 #include <io/scene_entries.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
+#include <io/unread_geometry_entries.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
 
@@ -199,13 +200,17 @@ namespace rodnet
     prm.declare_entry("Gravity",
                       "0, 0, 0",
                       vector_pattern(),
-                      "Gravitational acceleration; the weight per length is "
-                      "\"Mass per length\" times this. [m/s^2]");
+                      "Gravitational acceleration; the weight per length of "
+                      "a rod is its mass per length times this: rho A of its "
+                      "material (Density, cross-section) or \"Mass per "
+                      "length\"; refused where neither is given. [m/s^2]");
     prm.declare_entry("Mass per length",
                       "0",
                       Double(0),
-                      "Mass per unit undeformed length, for gravity. "
-                      "[kg/m]");
+                      "Mass per unit undeformed length, for gravity, of the "
+                      "rods whose material gives no Density and section "
+                      "(where it does, the two must agree); 0: not "
+                      "given. [kg/m]");
     prm.declare_entry("Ramped natural shape",
                       "",
                       Anything(),
@@ -311,10 +316,14 @@ namespace rodnet
       return size;
     };
 
+    refuse_unread_geometry_entries(*entries.find("Geometry"),
+                                   prm.get({"Geometry"}, "Generator"));
     parse_geometry(prm, scene_directory, check_size);
     parse_materials(prm, entries);
     parse_supports(prm);
     parse_loads(prm);
+    if (gravity.norm() > 0)
+      rod_masses = masses_per_length();
     parse_solver(prm);
     parse_output(prm);
     family_requests = parse_element_family_requests(prm);
@@ -829,10 +838,55 @@ namespace rodnet
            Vector3(f[0], f[1], f[2])});
       }
     // The weight is a distributed force, added with it.
-    const Vector3 q = distributed_force + mass_per_length * gravity;
-    if (q.norm() > 0)
-      for (unsigned int r = 0; r < net.rods().size(); ++r)
-        spec.distributed_forces.push_back({r, q});
+    for (unsigned int r = 0; r < net.rods().size(); ++r)
+      {
+        const Vector3 q = distributed_force +
+                          (rod_masses.empty() ? 0. : rod_masses[r]) * gravity;
+        if (q.norm() > 0)
+          spec.distributed_forces.push_back({r, q});
+      }
+  }
+
+  double
+  Scene::mass_per_length_of(const MaterialGroup &group) const
+  {
+    const std::string density_entry = "\"" + group.subsection + "/Density\"";
+    if (group.density > 0 && group.section)
+      {
+        const double rho_A = group.density * group.section->area;
+        if (mass_per_length > 0 &&
+            std::abs(mass_per_length - rho_A) > 1e-6 * rho_A)
+          throw std::invalid_argument(
+            "entry \"Loads/Mass per length\": " + number(mass_per_length) +
+            " kg/m differs from the " + number(rho_A) + " kg/m of " +
+            density_entry +
+            " times the section's area, which gravity would weigh as well; "
+            "give one of them (Mass per length = 0 takes rho A)");
+        return rho_A;
+      }
+    if (mass_per_length > 0)
+      return mass_per_length;
+    if (group.density > 0)
+      throw std::invalid_argument(
+        "entry \"Loads/Gravity\": the weight of the rods of \"" +
+        group.subsection + "\" is " + density_entry +
+        " times the section's area, but \"" + group.subsection + "/" +
+        group.model +
+        "\" gives its rigidities directly, without a section; give "
+        "\"Loads/Mass per length\" or \"Stiffness input = section\"");
+    throw std::invalid_argument(
+      "entry \"Loads/Gravity\": the rods of \"" + group.subsection +
+      "\" have no mass to weigh; give " + density_entry +
+      " (with a cross-section) or \"Loads/Mass per length\"");
+  }
+
+  std::vector<double>
+  Scene::masses_per_length() const
+  {
+    std::vector<double> masses;
+    for (const unsigned int g : rod_groups())
+      masses.push_back(mass_per_length_of(material_groups[g]));
+    return masses;
   }
 
   ProbeList

@@ -284,6 +284,21 @@ namespace rodnet
     void
     add_forces(const RodNetwork &network, SupportsAndLoads &spec) const;
 
+    /**
+     * The mass per length that gravity weighs of the rods of material
+     * group @p group: rho A where the group gives a Density and a
+     * cross-section, otherwise Loads/Mass per length. Throws
+     * std::invalid_argument naming the entries where both are given and
+     * differ (by more than 1e-6 relative) and where neither is.
+     */
+    double
+    mass_per_length_of(const MaterialGroup &group) const;
+
+    /// mass_per_length_of() the group of every rod of build_network(),
+    /// rod by rod.
+    std::vector<double>
+    masses_per_length() const;
+
     std::vector<std::vector<Vector3>> rod_points;
     std::vector<bool>                 rod_closed;
     Vector3                           director_hint;
@@ -308,7 +323,11 @@ namespace rodnet
       prescribed_displacements, prescribed_rotations, point_forces, moments,
       probe_text;
     Vector3 distributed_force, gravity;
-    double  mass_per_length;
+    /// Loads/Mass per length; 0 when not given.
+    double mass_per_length;
+    /// Under gravity: the mass per length of every rod (masses_per_length());
+    /// empty without gravity.
+    std::vector<double> rod_masses;
     /// Loads/Ramped natural shape, if set.
     std::optional<NaturalShapeRamp> natural_shape_ramp;
     /// Loads/Fixed loads.

@@ -86,7 +86,9 @@ namespace rodnet
                         vector_pattern(),
                         "Orientation of the first material director: d1 of "
                         "each segment is this vector made orthogonal to the "
-                        "segment. Bending stiffness EI1 acts about d1. [-]");
+                        "segment. Bending stiffness EI1 acts about d1. Not "
+                        "for networks, which orient their beams (see "
+                        "doc/networks.md). [-]");
       prm.declare_entry("Frame half turns",
                         "0",
                         dealii::Patterns::Integer(0),

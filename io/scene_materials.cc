@@ -40,9 +40,10 @@ namespace rodnet
         "Density",
         "0",
         dealii::Patterns::Double(0),
-        "Mass density rho for time stepping: rho A per length, rho (I1 + "
-        "I2) of twist inertia, from \"Stiffness input = section\"; 0: not "
-        "given (static and quasi-static runs). [kg/m^3]");
+        "Mass density rho, with the cross-section of \"Stiffness input = "
+        "section\": the weight rho A g per length under Loads/Gravity, and "
+        "for time stepping rho A per length and rho (I1 + I2) of twist "
+        "inertia; 0: not given. [kg/m^3]");
       prm.declare_entry(
         "Inextensible",
         "false",

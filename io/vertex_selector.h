@@ -11,11 +11,14 @@ namespace rodnet
 {
   /**
    * Resolves a vertex named in a scene to a triangulation vertex. Syntax:
-   * `[rod:]where`, where `rod` is a rod index (default 0) and `where` is
-   * `start`, `end`, `mid` (the middle vertex), or a vertex index along the
-   * rod, negative counting from the end (-1 = last); or `@name`, a vertex
-   * the network named (junctions, network nodes). Throws
-   * std::invalid_argument naming @p entry and the text for anything else.
+   * `[rod:]where`, where `rod` is a rod index and `where` is `start`,
+   * `end`, `mid` (the middle vertex), or a vertex index along the rod,
+   * negative counting from the end (-1 = last); or `@name`, a vertex the
+   * network named (junctions, network nodes). The rod may be left out only
+   * where there is one rod. Throws std::invalid_argument naming @p entry
+   * and the text for anything else: a `where` without its rod among
+   * several rods, an unknown `@name` (listing the names, or the nearest
+   * ones where there are many).
    */
   unsigned int
   select_vertex(const RodNetwork  &network,
@@ -23,7 +26,8 @@ namespace rodnet
                 const std::string &entry);
 
   /**
-   * Resolves a rod end named in a scene: `[rod:]start` or `[rod:]end`, or
+   * Resolves a rod end named in a scene: `[rod:]start` or `[rod:]end` (the
+   * rod may be left out only where there is one rod), or
    * `@name` of a vertex that is a free rod end (a network node where one
    * beam ends) or that belongs to a junction. Returns the rod end, or the
    * junction's index; throws std::invalid_argument naming @p entry and the

@@ -32,27 +32,38 @@ namespace
 
   const std::string data = RODNET_SOURCE_DIR "/tests/input/data/";
 
+  /// d1 = e_z keeps the hint off every in-plane tangent of the rods
+  /// (networks orient their beams so themselves, and refuse the entry).
+  const std::string rod_director = "set Director d1 = 0, 0, 1\n";
+
   /// One scene per generator, each with curved hinges where it can have
-  /// them; d1 = e_z keeps the hint off every in-plane tangent.
+  /// them.
   const std::vector<GeneratorCase> generator_cases = {
-    {"straight", "set Generator = straight\nset Segments = 8\n", false},
+    {"straight",
+     rod_director + "set Generator = straight\nset Segments = 8\n",
+     false},
     {"arc",
-     "set Generator = arc\nset Radius = 0.7\nset End angle = 120\n"
-     "set Segments = 12\n",
+     rod_director +
+       "set Generator = arc\nset Radius = 0.7\nset End angle = 120\n"
+       "set Segments = 12\n",
      true},
     {"ring",
-     "set Generator = ring\nset Radius = 0.7\nset Segments = 12\n",
+     rod_director +
+       "set Generator = ring\nset Radius = 0.7\nset Segments = 12\n",
      true},
     {"helix",
-     "set Generator = helix\nset Radius = 0.5\nset Rise per radian = 0.1\n"
-     "set Turns = 1.5\nset Segments = 20\n",
+     rod_director +
+       "set Generator = helix\nset Radius = 0.5\nset Rise per radian = 0.1\n"
+       "set Turns = 1.5\nset Segments = 20\n",
      true},
     {"polyline",
-     "set Generator = polyline\nset Points = 0,0,0; 1,0,0; 1,1,0.5; 0,1,1\n"
-     "set Segments = 3\n",
+     rod_director +
+       "set Generator = polyline\nset Points = 0,0,0; 1,0,0; 1,1,0.5; 0,1,1\n"
+       "set Segments = 3\n",
      true},
     {"gmsh",
-     "set Generator = gmsh\nset Mesh file = " + data + "kinked_rod.msh\n",
+     rod_director + "set Generator = gmsh\nset Mesh file = " + data +
+       "kinked_rod.msh\n",
      true},
     {"frame", "set Generator = frame\nset Segments = 4\n", false},
     {"windmill", "set Generator = windmill\nset Segments = 4\n", false},
@@ -71,8 +82,9 @@ namespace
        "bent_network.msh\n",
      true},
     {"triple ring",
-     "set Generator = ring\nset Radius = 0.7\nset Segments = 16\n"
-     "set Turns = 3\n",
+     rod_director +
+       "set Generator = ring\nset Radius = 0.7\nset Segments = 16\n"
+       "set Turns = 3\n",
      true}};
 
   std::unique_ptr<RodModel>
@@ -83,10 +95,8 @@ namespace
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
     std::string geometry = "subsection Geometry\n" + c.geometry +
-                           "set Director d1 = 0, 0, 1\n"
-                           "set Hinge kernel = " +
-                           kernel + "\nset Natural shape = " + natural_shape +
-                           "\nend\n";
+                           "set Hinge kernel = " + kernel +
+                           "\nset Natural shape = " + natural_shape + "\nend\n";
     // Anisotropic, so that swapped bending axes would show.
     prm.parse_input_from_string(geometry + "subsection Material\n"
                                            "  subsection linear elastic\n"

@@ -68,6 +68,19 @@ namespace
 
   const std::string data_folder = RODNET_SOURCE_DIR "/tests/input/data/";
 
+  /// The cantilever's geometry replaced by the rods of the Gmsh mesh
+  /// @p mesh of data_folder (Segments back at its default: the mesh's
+  /// elements are the segments).
+  std::string
+  gmsh_rods(const std::string &mesh)
+  {
+    return valid_cantilever + section("Geometry",
+                                      "  set Generator = gmsh\n"
+                                      "  set Segments = 100\n"
+                                      "  set Mesh file = " +
+                                        data_folder + mesh + "\n");
+  }
+
   const std::vector<BadInput> bad_inputs = {
     // Non-finite and absurd numbers, in every kind of entry.
     {"nan_force",
@@ -246,20 +259,14 @@ namespace
     // A portal frame (several tags per entity) read as one kinked rod,
     // whose columns run along the default director.
     {"gmsh_frame_director_along_a_column",
-     valid_cantilever + section("Geometry",
-                                "  set Generator = gmsh\n"
-                                "  set Mesh file = " +
-                                  data_folder + "frame_v41.msh\n"),
+     gmsh_rods("frame_v41.msh"),
      ".prm",
      "",
      1,
      "rod 0, segment 2: the director d1 hint is parallel to the segment; "
      "choose another \"Director d1\""},
     {"lattice_as_gmsh_rods",
-     valid_cantilever + section("Geometry",
-                                "  set Generator = gmsh\n"
-                                "  set Mesh file = " +
-                                  data_folder + "square_lattice_2x2.msh\n"),
+     gmsh_rods("square_lattice_2x2.msh"),
      ".prm",
      "",
      1,
@@ -318,6 +325,97 @@ namespace
      1,
      "entry \"Geometry/Turns\": a ring is wound a whole number of times, at "
      "least once, not 2.5"},
+    // Gravity weighs rho A of the material, or Mass per length: without
+    // either it would weigh nothing.
+    {"gravity_without_mass",
+     with("Loads", "  set Gravity = 0, 0, -9.81\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Gravity\": the rods of \"Material\" have no mass to "
+     "weigh; give \"Material/Density\" (with a cross-section) or "
+     "\"Loads/Mass per length\""},
+    {"gravity_density_without_section",
+     with("Loads", "  set Gravity = 0, 0, -9.81\n") +
+       section("Material", "  set Density = 7850\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Gravity\": the weight of the rods of \"Material\" is "
+     "\"Material/Density\" times the section's area, but \"Material/linear "
+     "elastic\" gives its rigidities directly, without a section; give "
+     "\"Loads/Mass per length\" or \"Stiffness input = section\""},
+    {"mass_per_length_contradicts_density",
+     with("Loads", "  set Gravity = 0, 0, -9.81\n  set Mass per length = 1\n") +
+       section("Material",
+               "  set Density = 7850\n"
+               "  subsection linear elastic\n"
+               "    set Stiffness input = section\n"
+               "    set Young's modulus = 2.1e11\n"
+               "    set Cross section = circle\n"
+               "    set Radius = 0.01\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Mass per length\": 1 kg/m differs from the 2.46615 kg/m "
+     "of \"Material/Density\" times the section's area"},
+    // An entry that the generator does not read would look as if it acted.
+    {"lattice_director",
+     with("Geometry",
+          "  set Generator = square lattice\n"
+          "  set Director d1 = 0, 1, 1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Director d1\": the square lattice generator does not "
+     "read it: a network orients each beam itself"},
+    {"frame_cells",
+     with("Geometry",
+          "  set Generator = frame\n"
+          "  set Cells = 3, 3\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Cells\": the frame generator does not read it, only "
+     "the square lattice and hexagonal lattice generators do; remove it"},
+    {"gmsh_rods_segments",
+     valid_cantilever + section("Geometry",
+                                "  set Generator = gmsh\n"
+                                "  set Mesh file = " +
+                                  data_folder + "straight_rod.msh\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Segments\": the gmsh generator does not read it: the "
+     "mesh's line elements are the segments; remove it"},
+    // In a network a vertex without its rod meant rod 0.
+    {"network_clamp_without_rod",
+     with("Geometry", "  set Generator = frame\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Clamped ends\": \"start\" names no rod, and the scene "
+     "has 2 rods; write \"<rod>:start\" (\"0:start\" for rod 0) or "
+     "\"@<name>\" of a free network end or junction"},
+    {"network_force_without_rod",
+     with("Geometry", "  set Generator = frame\n") +
+       section("Supports", "  set Clamped ends =\n") +
+       section("Loads", "  set Point forces = mid: 0, 0, -1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Point forces\": \"mid\" names no rod, and the scene has "
+     "2 rods; write \"<rod>:mid\" (\"0:mid\" for rod 0) or \"@<name>\" of "
+     "a named vertex"},
+    {"unknown_vertex_name",
+     with("Geometry", "  set Generator = frame\n") +
+       section("Supports", "  set Clamped ends = @tipp\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Clamped ends\": there is no vertex or junction called "
+     "\"tipp\"; the names are \"clamp\", \"corner\", \"tip\""},
     {"unknown_probe_kind",
      with("Output", "  set Probes = a: angle end\n"),
      ".prm",

@@ -22,7 +22,6 @@ namespace
     "subsection Geometry\n"
     "  set Generator = frame\n"
     "  set Segments = 4\n"
-    "  set Director d1 = 0, 0, 1\n"
     "end\n" +
     direct_material("100") +
     "subsection Supports\n"

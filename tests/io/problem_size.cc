@@ -19,9 +19,7 @@ namespace
   {
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Geometry\n"
-                                "  set Director d1 = 0, 0, 1\n" +
-                                geometry + "end\n" +
+    prm.parse_input_from_string("subsection Geometry\n" + geometry + "end\n" +
                                 rodnet::testing::direct_material() + more);
     return std::make_unique<Scene>(prm);
   }
@@ -43,14 +41,16 @@ namespace
 
   TEST(ProblemSize, Ring)
   {
-    expect_size_of_model("  set Generator = ring\n  set Segments = 12\n");
+    expect_size_of_model("  set Generator = ring\n  set Segments = 12\n"
+                         "  set Director d1 = 0, 0, 1\n");
   }
 
   TEST(ProblemSize, Polyline)
   {
     expect_size_of_model("  set Generator = polyline\n"
                          "  set Points = 0,0,0; 1,0,0; 1,1,0\n"
-                         "  set Segments = 5\n");
+                         "  set Segments = 5\n"
+                         "  set Director d1 = 0, 0, 1\n");
   }
 
   TEST(ProblemSize, Frame)

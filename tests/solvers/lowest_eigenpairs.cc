@@ -153,7 +153,7 @@ namespace
     prm.parse_input_from_string(
       "subsection Geometry\n  set Generator = square lattice\n"
       "  set Cells = 3, 3\n  set Beam length = 0.3\n  set Segments = 4\n"
-      "  set Director d1 = 0, 0, 1\nend\n"
+      "end\n"
       "subsection Material\n  subsection linear elastic\n"
       "    set Stiffness input = direct\n    set EA = 1000\n"
       "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n");

@@ -193,7 +193,7 @@ namespace
            "  set Cells = " +
            std::to_string(n) + ", " + std::to_string(n) +
            "\n  set Beam length = " + length.str() +
-           "\n  set Segments = 8\n  set Director d1 = 0, 0, 1\nend\n"
+           "\n  set Segments = 8\nend\n"
            "subsection Material\n  subsection linear elastic\n"
            "    set Stiffness input = direct\n    set EA = 1000\n"
            "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"

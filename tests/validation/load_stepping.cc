@@ -24,7 +24,6 @@ namespace
            "  set Segments = " +
            std::to_string(n) +
            "\n"
-           "  set Director d1 = 0, 0, 1\n"
            "end\n"
            "subsection Material\n"
            "  subsection linear elastic\n"
