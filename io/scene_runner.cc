@@ -97,8 +97,9 @@ namespace rodnet
                std::nullopt) const
       {
         // Titled by the folder, which names the run ("elastica").
+        std::error_code       error;
         std::filesystem::path folder =
-          std::filesystem::absolute(output_directory).lexically_normal();
+          std::filesystem::absolute(output_directory, error).lexically_normal();
         if (!folder.has_filename())
           folder = folder.parent_path();
         ProbePlotOptions options;
