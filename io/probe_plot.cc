@@ -22,8 +22,8 @@ namespace rodnet
                       orange = "'#ff7f0e'", grey = "'#7f7f7f'";
 
     /// Characters of a line of notes under the title, per panel column
-    /// (615 pixels, some 7 per character of the title's font).
-    constexpr std::size_t note_width = 75;
+    /// (615 pixels, some 8 per character of the title's font).
+    constexpr std::size_t note_width = 70;
 
     /// @p value for a data block: 12 digits, NaN where undefined.
     std::string

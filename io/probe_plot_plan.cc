@@ -127,7 +127,7 @@ namespace rodnet
             plan.notes.push_back(name + ": no value");
           else if (n_values == 1)
             plan.notes.push_back(constant_note(name, unit, low, rounding) +
-                                 " at one " + view.options.row_name + " only");
+                                 " (one " + view.options.row_name + " only)");
           else if (high - low <= rounding)
             plan.notes.push_back(
               constant_note(name, unit, (low + high) / 2, rounding));
