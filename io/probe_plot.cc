@@ -1,187 +1,327 @@
+#include <io/gnuplot.h>
 #include <io/probe_plot.h>
 
 #include <algorithm>
-#include <array>
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
-#include <spawn.h>
+#include <iterator>
+#include <ostream>
+#include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
-
-extern char **environ;
 
 namespace rodnet
 {
   namespace
   {
-    /// Fields of one CSV line; a field may be double-quoted with "" for a
-    /// quote (RFC 4180).
+    /// Colours of the plot (those of matplotlib's default cycle: readable
+    /// on a projector and by the colour-blind).
+    const std::string blue = "'#1f77b4'", red = "'#d62728'",
+                      orange = "'#ff7f0e'", grey = "'#7f7f7f'";
+
+    /// Characters of a line of notes under the title, per panel column
+    /// (615 pixels, some 8 per character of the title's font).
+    constexpr std::size_t note_width = 70;
+
+    /// @p value for a data block: 12 digits, NaN where undefined.
+    std::string
+    datum(const double value)
+    {
+      if (!std::isfinite(value))
+        return "NaN";
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.12g", value);
+      return text;
+    }
+
+    /// Row @p r as a line of a data block: the abscissa, then every
+    /// panel's value.
+    std::string
+    data_line(const CsvTable         &table,
+              const ProbePlotOptions &options,
+              const ProbePlotPlan    &plan,
+              const std::size_t       r)
+    {
+      std::string line = datum(table.number(r, options.abscissa));
+      for (const ProbePlotPlan::Panel &panel : plan.panels)
+        line += " " + datum(table.number(r, panel.column));
+      return line;
+    }
+
+    /// Writes the data block @p name of @p pieces, a blank line between
+    /// two (gnuplot draws no line across it).
+    void
+    write_block(std::ostream                           &script,
+                const std::string                      &name,
+                const std::vector<ProbePlotPlan::Rows> &pieces,
+                const CsvTable                         &table,
+                const ProbePlotOptions                 &options,
+                const ProbePlotPlan                    &plan)
+    {
+      script << name << " << EOD\n";
+      for (std::size_t k = 0; k < pieces.size(); ++k)
+        {
+          if (k > 0)
+            script << "\n";
+          for (const std::size_t r : pieces[k])
+            script << data_line(table, options, plan, r) << "\n";
+        }
+      script << "EOD\n";
+    }
+
+    /// The data blocks of @p plan: the pieces of line, the points of each
+    /// kind, and the jumps (a row: where from, then where to).
+    void
+    write_data(std::ostream           &script,
+               const CsvTable         &table,
+               const ProbePlotOptions &options,
+               const ProbePlotPlan    &plan)
+    {
+      script << "# The data drawn, columns: the abscissa, then each panel's "
+                "probe.\n"
+             << "# Lines break at blank lines: between branches, at jumps.\n";
+      write_block(script,
+                  "$stable_lines",
+                  plan.stable_lines,
+                  table,
+                  options,
+                  plan);
+      write_block(script,
+                  "$unstable_lines",
+                  plan.unstable_lines,
+                  table,
+                  options,
+                  plan);
+      for (const auto &[name, rows] :
+           {std::make_pair("$stable_points", &plan.stable_points),
+            std::make_pair("$unstable_points", &plan.unstable_points),
+            std::make_pair("$out_of_range", &plan.out_of_range),
+            std::make_pair("$unfinished", &plan.unfinished)})
+        write_block(script, name, {*rows}, table, options, plan);
+      script << "$jumps << EOD\n";
+      for (const auto &[from, to] : plan.jumps)
+        script << data_line(table, options, plan, from) << " "
+               << data_line(table, options, plan, to) << "\n";
+      script << "EOD\n";
+    }
+
+    /// The title and the notes under it, wrapped to @p width characters.
     std::vector<std::string>
-    split_csv_line(const std::string &line)
+    title_lines(const std::string   &title,
+                const ProbePlotPlan &plan,
+                const std::size_t    width)
     {
-      std::vector<std::string> fields(1);
-      bool                     quoted = false;
-      for (std::size_t i = 0; i < line.size(); ++i)
+      std::vector<std::string> lines{title};
+      std::string              line;
+      for (std::size_t k = 0; k < plan.notes.size(); ++k)
         {
-          const char c = line[i];
-          if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+          const std::string item =
+            plan.notes[k] + (k + 1 < plan.notes.size() ? ";" : "");
+          if (!line.empty() && line.size() + 1 + item.size() > width)
             {
-              fields.back() += '"';
-              ++i;
+              lines.push_back(line);
+              line.clear();
             }
-          else if (c == '"')
-            quoted = !quoted;
-          else if (c == ',' && !quoted)
-            fields.emplace_back();
-          else
-            fields.back() += c;
+          line += (line.empty() ? "" : " ") + item;
         }
-      return fields;
+      if (!line.empty())
+        lines.push_back(line);
+      return lines;
     }
 
-    /// @p text as a gnuplot single-quoted string, in which nothing but a
-    /// doubled quote is special: names and paths cannot break the script.
-    std::string
-    quote(const std::string &text)
+    /// A series of a panel: its data block (none where empty), how it is
+    /// drawn and its title in the key.
+    struct Series
     {
-      std::string quoted = "'";
-      for (const char c : text)
-        quoted += (c == '\'') ? std::string("''") : std::string(1, c);
-      return quoted + "'";
+      bool        present;
+      std::string data, style, key;
+    };
+
+    /// The series of panel @p k (1-based) that have data. Where every
+    /// state is stable or every one unstable, the key does not say so:
+    /// the notes do.
+    std::vector<Series>
+    panel_series(const ProbePlotPlan &plan, const std::size_t k)
+    {
+      const std::string y    = std::to_string(k + 1);
+      const std::string to_x = std::to_string(plan.panels.size() + 2);
+      const std::string to_y = std::to_string(plan.panels.size() + 2 + k);
+      const bool        stable =
+        !plan.stable_lines.empty() || !plan.stable_points.empty();
+      const bool unstable =
+        !plan.unstable_lines.empty() || !plan.unstable_points.empty();
+      const bool both = stable && unstable;
+      // Points alone are drawn larger.
+      const bool lines =
+        !plan.stable_lines.empty() || !plan.unstable_lines.empty();
+      const std::string         size   = lines ? "0.6" : "1.2";
+      const std::vector<Series> series = {
+        {!plan.stable_lines.empty(),
+         "$stable_lines using 1:" + y,
+         "lines linewidth 2 linecolor rgb " + blue,
+         both ? "stable" : ""},
+        {!plan.unstable_lines.empty(),
+         "$unstable_lines using 1:" + y,
+         "lines linewidth 2 dashtype 2 linecolor rgb " + red,
+         both ? "unstable" : ""},
+        {!plan.stable_points.empty(),
+         "$stable_points using 1:" + y,
+         "points pointtype 7 pointsize " + size + " linecolor rgb " + blue,
+         both && plan.stable_lines.empty() ? "stable" : ""},
+        {!plan.unstable_points.empty(),
+         "$unstable_points using 1:" + y,
+         "points pointtype 6 pointsize 0.9 linecolor rgb " + red,
+         both && plan.unstable_lines.empty() ? "unstable" : ""},
+        // From (x, y) of the row before the jump to those of the row after
+        // (columns n + 2 and n + 2 + k).
+        {!plan.jumps.empty(),
+         "$jumps using 1:" + y + ":($" + to_x + "-$1):($" + to_y + "-$" + y +
+           ")",
+         "vectors filled head size screen 0.012,25 dashtype 3 linewidth 2 "
+         "linecolor rgb " +
+           grey,
+         "jump"},
+        {!plan.out_of_range.empty(),
+         "$out_of_range using 1:" + y,
+         "points pointtype 2 pointsize 1.4 linecolor rgb 'black'",
+         "strain out of range"},
+        {!plan.unfinished.empty(),
+         "$unfinished using 1:" + y,
+         "points pointtype 8 pointsize 1.4 linewidth 1.5 linecolor rgb " +
+           orange,
+         "stopped early"}};
+      std::vector<Series> present;
+      std::copy_if(series.begin(),
+                   series.end(),
+                   std::back_inserter(present),
+                   [](const Series &s) { return s.present; });
+      return present;
     }
 
-    /**
-     * Runs `gnuplot script`; returns an empty string on success, otherwise
-     * why it failed (the last line gnuplot printed to stderr, if any).
-     * posix_spawnp rather than std::system: no shell sees the path.
-     */
-    std::string
-    run_gnuplot(const std::string &script)
+    /// Whether any of @p series has a title in the key.
+    bool
+    has_key(const std::vector<Series> &series)
     {
-      std::array<int, 2> pipe_ends;
-      // Close-on-exec: no other program started meanwhile by another
-      // thread inherits the pipe (dup2 clears the flag on the child's
-      // stderr).
-      if (pipe2(pipe_ends.data(), O_CLOEXEC) != 0)
-        return std::string("cannot create a pipe: ") + std::strerror(errno);
+      return std::any_of(series.begin(), series.end(), [](const Series &s) {
+        return !s.key.empty();
+      });
+    }
 
-      posix_spawn_file_actions_t actions;
-      posix_spawn_file_actions_init(&actions);
-      posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDERR_FILENO);
-      posix_spawn_file_actions_addopen(&actions,
-                                       STDOUT_FILENO,
-                                       "/dev/null",
-                                       O_WRONLY,
-                                       0);
+    /// The command that plots @p series, titled in the key where @p key.
+    std::string
+    plot_command(const std::vector<Series> &series, const bool key)
+    {
+      std::string command;
+      for (const Series &s : series)
+        command +=
+          (command.empty() ? "plot " : ", \\\n     ") + s.data + " with " +
+          s.style +
+          (key && !s.key.empty() ? " title '" + s.key + "'" : " notitle");
+      return command + "\n";
+    }
 
-      std::string program  = "gnuplot";
-      std::string argument = script;
-      char *const argv[]   = {program.data(), argument.data(), nullptr};
-      pid_t       pid;
-      const int   spawn_error =
-        posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-      posix_spawn_file_actions_destroy(&actions);
-      close(pipe_ends[1]);
-      if (spawn_error != 0)
-        {
-          close(pipe_ends[0]);
-          return std::string("cannot run gnuplot: ") +
-                 std::strerror(spawn_error);
-        }
-
-      // Drain stderr before waiting, so that a chatty gnuplot cannot block
-      // on a full pipe.
-      std::string            messages;
-      std::array<char, 4096> buffer;
-      ssize_t                n;
-      while ((n = read(pipe_ends[0], buffer.data(), buffer.size())) > 0 ||
-             (n < 0 && errno == EINTR))
-        if (n > 0)
-          messages.append(buffer.data(), n);
-      close(pipe_ends[0]);
-
-      int status = 0;
-      while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR)
-          return std::string("waiting for gnuplot failed: ") +
-                 std::strerror(errno);
-
-      if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+    /// The abscissa's tics "set xtics ('a' 1, 'b' 2)", if @p plan has any.
+    std::string
+    tics_command(const ProbePlotPlan &plan)
+    {
+      if (plan.x_tics.empty())
         return "";
-      // gnuplot ends its report of a script error with the message itself,
-      // after the offending line and a caret.
-      std::string       last_line;
-      const std::size_t end = messages.find_last_not_of(" \t\r\n");
-      if (end != std::string::npos)
-        {
-          const std::size_t newline = messages.rfind('\n', end);
-          const std::size_t begin =
-            (newline == std::string::npos) ? 0 : newline + 1;
-          last_line = messages.substr(begin, end + 1 - begin);
-        }
-      const std::string exit_text =
-        WIFEXITED(status) ?
-          "gnuplot exited with code " + std::to_string(WEXITSTATUS(status)) :
-          "gnuplot was killed";
-      return last_line.empty() ? exit_text : exit_text + ": " + last_line;
-    }
-
-    /// "tip_y [m]": the label of column @p c (counted after "step"), named
-    /// @p name, with its unit in @p units if that has one.
-    std::string
-    axis_label(const std::string              &name,
-               const std::vector<std::string> &units,
-               const std::size_t               c)
-    {
-      return c < units.size() && !units[c].empty() ?
-               name + " [" + units[c] + "]" :
-               name;
+      std::string command = "set xtics (";
+      for (std::size_t k = 0; k < plan.x_tics.size(); ++k)
+        command += (k > 0 ? ", " : "") + gnuplot_quote(plan.x_tics[k].second) +
+                   " " + datum(plan.x_tics[k].first);
+      // Room for the labels of the first and last tics.
+      return command + ")\nset offsets graph 0.1, graph 0.1, graph 0.05, " +
+             "graph 0.05\n";
     }
 
     /**
-     * The gnuplot command of the panel of column @p column (1-based) of
-     * @p csv_path against column 2. Where the table says which rows are
-     * stable equilibria (column @p stable_column, 0 if none), those are
-     * drawn solid and the unstable ones dashed red, as charts of load
-     * paths through buckling and snap-through are read; the key only
-     * where @p key. Where it has an arclength (column @p arclength_column,
-     * 0 if none), a row whose arclength falls below the one before starts
-     * the other side of a bifurcation (Switch branches = both): it is left
-     * undefined, so that no line joins the end of one side to the start of
-     * the next.
+     * Where the panels go, in pixels: a panel's axes 500 x 190, one
+     * column of panels, two where there are more than four; room at the
+     * left for the tics and label of the ordinate, below each panel for
+     * those of the abscissa, above for the title and its notes, and below
+     * everything for a one-line key. The axes of every panel line up.
      */
-    std::string
-    plot_command(const std::string &csv_path,
-                 const int          column,
-                 const int          stable_column,
-                 const int          arclength_column,
-                 const bool         key)
+    struct Layout
     {
-      const std::string style  = " with linespoints pointtype 7 pointsize 0.5";
-      const auto        series = [&](const std::string &y) {
-        if (arclength_column == 0)
-          return quote(csv_path) + " skip 1 using 2:(" + y + ")";
-        const std::string s =
-          "column(" + std::to_string(arclength_column) + ")";
-        return "s0 = -1e300, " + quote(csv_path) + " skip 1 using 2:(r = " + s +
-               " < s0, s0 = " + s + ", r ? 1/0 : " + y + ")";
-      };
-      const std::string y = "column(" + std::to_string(column) + ")";
-      if (stable_column == 0)
-        return "plot " + series(y) + style + " notitle\n";
-      const std::string unstable =
-        "column(" + std::to_string(stable_column) + ") == 0";
-      return "plot " + series(unstable + " ? 1/0 : " + y) + style +
-             (key ? " title 'stable', " : " notitle, ") +
-             series(unstable + " ? " + y + " : 1/0") + style +
-             " dashtype 2 linecolor rgb '#d62728'" +
-             (key ? " title 'unstable'" : " notitle") + "\n";
+      std::size_t n_cols, n_rows;
+      std::size_t width, height;
+      /// "margins <left>,<right>,<bottom>,<top> spacing <x>,<y>" of
+      /// `set multiplot layout`, in fractions of the image.
+      std::string margins;
+
+      Layout(const std::size_t n_panels,
+             const std::size_t n_title_lines,
+             const bool        key)
+          : n_cols(n_panels > 4 ? 2 : 1)
+          , n_rows((n_panels + n_cols - 1) / n_cols)
+      {
+        const double axes_x = 500, axes_y = 190, left = 90, right = 25,
+                     gap_x = 115, gap_y = 70, top = 18 + 20 * n_title_lines,
+                     bottom = 55 + (key ? 25 : 0);
+        width  = left + right + n_cols * axes_x + (n_cols - 1) * gap_x;
+        height = top + bottom + n_rows * axes_y + (n_rows - 1) * gap_y;
+        std::ostringstream text;
+        text << "margins " << left / width << "," << 1 - right / width << ","
+             << bottom / height << "," << 1 - top / height << " spacing "
+             << gap_x / width << "," << gap_y / height;
+        margins = text.str();
+      }
+    };
+
+    /// Writes the gnuplot script of @p plan that draws @p png_path.
+    void
+    write_script(std::ostream           &script,
+                 const std::string      &png_path,
+                 const CsvTable         &table,
+                 const ProbePlotOptions &options,
+                 const ProbePlotPlan    &plan)
+    {
+      // Probes have different units: one panel each.
+      const std::size_t              n_panels = plan.panels.size();
+      const bool                     key      = has_key(panel_series(plan, 1));
+      const std::vector<std::string> lines =
+        title_lines(options.title, plan, note_width * (n_panels > 4 ? 2 : 1));
+      const Layout layout(n_panels, lines.size(), key);
+      std::string  title;
+      for (const std::string &line : lines)
+        title += (title.empty() ? "" : ".\"\\n\".") + gnuplot_quote(line);
+      const std::string size =
+        std::to_string(layout.width) + "," + std::to_string(layout.height);
+      // pngcairo draws smoother lines, but not every gnuplot build has it;
+      // the libgd png terminal is the fallback.
+      script << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+             << "  set terminal pngcairo noenhanced size " << size
+             << " font ',11'\n"
+             << "} else {\n"
+             << "  set terminal png noenhanced size " << size << "\n"
+             << "}\n"
+             << "set output " << gnuplot_quote(png_path) << "\n";
+      write_data(script, table, options, plan);
+      script << "set xlabel " << gnuplot_quote(plan.x_label) << "\n"
+             << "set grid\n"
+             // A margin around the data, so that no point sits on the
+             // border: the abscissa's range is that of the data.
+             << "set autoscale xfix\n"
+             << "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n"
+             << tics_command(plan)
+             // The key in one line at the bottom: it hides no data.
+             << (key ? "set key horizontal at screen 0.5, screen 0.005 "
+                       "center bottom\n" :
+                       "unset key\n");
+      if (options.x_range && options.x_range->first < options.x_range->second)
+        script << "set xrange [" << datum(options.x_range->first) << ":"
+               << datum(options.x_range->second) << "]\n";
+      script << "set multiplot layout " << layout.n_rows << "," << layout.n_cols
+             << " " << layout.margins << " title " << title << " font ',12'\n";
+      // The key, where there is one, drawn with the first panel only.
+      for (std::size_t k = 0; k < n_panels; ++k)
+        script << (k == 1 ? "unset key\n" : "") << "set ylabel "
+               << gnuplot_quote(plan.panels[k].label) << "\n"
+               << plot_command(panel_series(plan, k + 1), k == 0);
+      script << "unset multiplot\n";
     }
 
     bool
@@ -194,89 +334,35 @@ namespace rodnet
   } // namespace
 
   bool
-  plot_probes(const std::string                              &csv_path,
-              const std::string                              &png_path,
-              const std::string                              &title,
-              const std::optional<std::pair<double, double>> &x_range,
-              const std::vector<std::string>                 &units,
-              const unsigned int                              unplotted)
+  plot_probes(const std::string      &csv_path,
+              const std::string      &png_path,
+              const ProbePlotOptions &options)
   {
     // A failed plot must never cost the user a finished computation.
     try
       {
-        std::ifstream csv(csv_path);
-        std::string   header;
-        if (!csv || !std::getline(csv, header))
-          return warn(png_path, "cannot read \"" + csv_path + "\"");
-        if (!header.empty() && header.back() == '\r')
-          header.pop_back();
-        const std::vector<std::string> columns = split_csv_line(header);
-        if (columns.size() < 3 + unplotted)
-          return warn(png_path, "\"" + csv_path + "\" has no probe column");
-        std::string line;
-        bool        has_rows = false;
-        while (!has_rows && std::getline(csv, line))
-          has_rows = line.find_first_not_of(" \t\r") != std::string::npos;
-        if (!has_rows)
+        const CsvTable table = read_csv_table(csv_path);
+        if (table.rows.empty())
           return warn(png_path, "\"" + csv_path + "\" has no rows yet");
-
-        // Probes have different units: one panel each, in two columns when
-        // there are many.
-        const unsigned int n_probes = columns.size() - 2 - unplotted;
-        const unsigned int n_cols   = n_probes > 4 ? 2 : 1;
-        const unsigned int n_rows   = (n_probes + n_cols - 1) / n_cols;
-        const std::string  size     = std::to_string(640 * n_cols) + "," +
-                                 std::to_string(80 + 240 * n_rows);
-
-        // "load factor" for the column "load_factor".
-        std::string abscissa = columns[1];
-        std::replace(abscissa.begin(), abscissa.end(), '_', ' ');
-
+        const ProbePlotPlan plan = plan_probe_plot(table, options);
+        if (plan.panels.empty() && !options.warn_if_flat)
+          return false;
+        if (plan.panels.empty())
+          {
+            std::string notes;
+            for (const std::string &note : plan.notes)
+              notes += (notes.empty() ? " (" : "; ") + note;
+            return warn(png_path,
+                        "no probe varies" + notes + (notes.empty() ? "" : ")"));
+          }
         const std::string script_path = png_path + ".gp";
         {
           std::ofstream script(script_path);
-          if (!script)
-            return warn(png_path,
-                        "cannot write the script \"" + script_path + "\"");
-          // pngcairo draws smoother lines, but not every gnuplot build has
-          // it; the libgd png terminal is the fallback.
-          script << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
-                 << "  set terminal pngcairo noenhanced size " << size << "\n"
-                 << "} else {\n"
-                 << "  set terminal png noenhanced size " << size << "\n"
-                 << "}\n"
-                 << "set output " << quote(png_path) << "\n"
-                 << "set datafile separator ','\n"
-                 << "set xlabel " << quote(axis_label(abscissa, units, 0))
-                 << "\n"
-                 << "set grid\n";
-          if (x_range && x_range->first < x_range->second)
-            script << std::setprecision(17) << "set xrange [" << x_range->first
-                   << ":" << x_range->second << "]\n";
-          script << "set multiplot layout " << n_rows << "," << n_cols
-                 << " title " << quote(title) << "\n";
-          const auto stable =
-            std::find(columns.begin(), columns.end(), "stable");
-          const int stable_column =
-            stable == columns.end() ? 0 : stable - columns.begin() + 1;
-          const auto arclength =
-            std::find(columns.begin(), columns.end(), "arclength");
-          const int arclength_column =
-            arclength == columns.end() ? 0 : arclength - columns.begin() + 1;
-          for (unsigned int p = 0; p < n_probes; ++p)
-            script << "set ylabel "
-                   << quote(axis_label(columns[p + 2], units, p + 1)) << "\n"
-                   << plot_command(csv_path,
-                                   p + 3,
-                                   stable_column,
-                                   arclength_column,
-                                   p == 0);
-          script << "unset multiplot\n";
+          write_script(script, png_path, table, options, plan);
           if (!script)
             return warn(png_path,
                         "cannot write the script \"" + script_path + "\"");
         }
-
         const std::string failure = run_gnuplot(script_path);
         if (!failure.empty())
           return warn(png_path, failure);

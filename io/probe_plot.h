@@ -1,41 +1,32 @@
 #ifndef RODNET_IO_PROBE_PLOT_H
 #define RODNET_IO_PROBE_PLOT_H
 
-#include <optional>
+#include <io/probe_plot_plan.h>
+
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace rodnet
 {
   /**
-   * Plots a probe table (see ProbeTable: a header
-   * `step,<abscissa>,<probe names>` and one row per converged step) as a
-   * PNG with one panel per probe against the abscissa (the load factor or
-   * the time, labelled by its column name). The gnuplot
-   * script is kept next to the image as `<png_path>.gp`, so that a user can
-   * restyle the plot and run it again. With @p x_range, the panels show
-   * that range of the abscissa only (a time history after its preload).
-   * @p units, if given, are the units of the columns after "step" (the
-   * abscissa first), shown in brackets in the axis labels: "tip_y [m]".
-   * The last @p unplotted columns get no panel (text, such as the status
-   * of a study's runs). Where the table has a column "stable" (Newton and
-   * continuation runs), the rows where it is 0 are drawn dashed and red:
-   * unstable equilibria.
+   * Plots a probe table (probes.csv: a header `step,<abscissa>,<probe
+   * names>,<checks>` and one row per recorded step; or a study's
+   * summary.csv) as a PNG, planned by plan_probe_plot(): one panel per
+   * probe that varies against the abscissa (labelled with its unit), the
+   * probes that do not and the checks that hold throughout stated under
+   * the title, unstable states dashed and in open red points, lines
+   * broken between branches and at jumps. The gnuplot script, with the
+   * data it draws as data blocks, is kept next to the image as
+   * `<png_path>.gp`, so that a user can restyle the plot and run it again.
    *
-   * Plotting is a convenience: if the table cannot be read, has no probe or
-   * no row, or gnuplot is missing or fails, one warning line goes to
-   * std::cerr and the function returns false. It never throws; it returns
-   * true when the PNG was written.
+   * Plotting is a convenience: if the table cannot be read, has no row or
+   * no probe that varies, or gnuplot is missing or fails, one warning
+   * line goes to std::cerr and the function returns false. It never
+   * throws; it returns true when the PNG was written.
    */
   bool
-  plot_probes(
-    const std::string                              &csv_path,
-    const std::string                              &png_path,
-    const std::string                              &title,
-    const std::optional<std::pair<double, double>> &x_range = std::nullopt,
-    const std::vector<std::string>                 &units   = {},
-    unsigned int                                    unplotted = 0);
+  plot_probes(const std::string      &csv_path,
+              const std::string      &png_path,
+              const ProbePlotOptions &options = {});
 } // namespace rodnet
 
 #endif

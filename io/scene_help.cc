@@ -178,6 +178,31 @@ namespace rodnet
     return pattern;
   }
 
+  std::string
+  entry_unit(const std::string &path)
+  {
+    dealii::ParameterHandler prm;
+    Scene::declare_parameters(prm);
+    const EntryNode   tree = entry_tree(prm);
+    const EntryNode  *node = &tree;
+    std::stringstream names(path);
+    for (std::string name; node != nullptr && std::getline(names, name, '/');)
+      node = node->find(name);
+    if (node == nullptr || !node->is_entry)
+      return "";
+    // "... radius. [m]" or "Young's modulus E (Pa). ...": the symbols of
+    // the SI units the entries use, with powers, products and quotients.
+    static const std::regex bracketed(R"(\[([^\]]*)\]\s*$)");
+    static const std::regex parenthesized(
+      R"(\(((?:-|(?:1|m|N|Pa|rad|s|kg|J|K|deg)(?:\^-?\d+)?)"
+      R"((?:[ /](?:m|N|Pa|rad|s|kg|J|K|deg)(?:\^-?\d+)?)*))\))");
+    std::smatch match;
+    if (std::regex_search(node->documentation, match, bracketed) ||
+        std::regex_search(node->documentation, match, parenthesized))
+      return match[1];
+    return "";
+  }
+
   void
   print_scene_entries(std::ostream &out)
   {

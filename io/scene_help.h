@@ -27,6 +27,16 @@ namespace rodnet
    */
   std::string
   describe_pattern(const std::string &pattern);
+
+  /**
+   * The unit of the scene entry @p path ("Geometry/Radius", subsections
+   * separated by '/') as its help states it: "m" where the help ends in
+   * "[m]" (the convention of most entries), otherwise its first unit in
+   * parentheses, such as "(Pa)" or "(N m^2)" (material entries); "" where
+   * there is no such entry or its help names no unit.
+   */
+  std::string
+  entry_unit(const std::string &path);
 } // namespace rodnet
 
 #endif

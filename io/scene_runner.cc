@@ -8,6 +8,7 @@
 #include <io/vtu_output.h>
 #include <solvers/lowest_eigenpairs.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -44,9 +45,13 @@ namespace rodnet
           , table(csv, probes, abscissa, check_columns)
           , summary(summary)
           , units{abscissa == "time" ? "s" : "-"}
+          , stable_check(
+              std::find(check_columns.begin(), check_columns.end(), "stable") -
+              check_columns.begin())
       {
-        summary.abscissa = abscissa;
-        summary.outputs  = {"probes.csv"};
+        summary.abscissa     = abscissa;
+        summary.length_scale = model.length_scale();
+        summary.outputs      = {"probes.csv"};
         if (scene.write_vtu)
           vtu = std::make_unique<VtuOutput>(model.network(), output_directory);
         for (const auto &p : probes)
@@ -58,11 +63,12 @@ namespace rodnet
       }
 
       /// Records step @p step at load factor or time @p abscissa (also the
-      /// "time" of the PVD record); @p u is the state, @p values its
-      /// probes, @p checks the values of the check columns.
+      /// "time" of the PVD record) and @p load_factor; @p u is the state,
+      /// @p values its probes, @p checks the values of the check columns.
       void
       record(const unsigned int         step,
              const double               abscissa,
+             const double               load_factor,
              std::vector<double>        values,
              const State               &u,
              const std::vector<double> &checks = {})
@@ -73,8 +79,11 @@ namespace rodnet
         std::vector<double> row{abscissa};
         row.insert(row.end(), values.begin(), values.end());
         summary.rows.push_back(row);
-        summary.converged_steps = step;
-        last                    = {abscissa, u};
+        summary.converged_steps   = step;
+        summary.final_load_factor = load_factor;
+        summary.final_stable =
+          stable_check < checks.size() ? checks[stable_check] : std::nan("");
+        last = {abscissa, u};
         if (vtu && step % scene.vtu_interval == 0)
           write_vtu(step, abscissa, u);
         throw_if_stop_requested();
@@ -87,13 +96,23 @@ namespace rodnet
              const std::optional<std::pair<double, double>> &x_range =
                std::nullopt) const
       {
+        // Titled by the folder, which names the run ("elastica").
+        std::error_code       error;
+        std::filesystem::path folder =
+          std::filesystem::absolute(output_directory, error).lexically_normal();
+        if (!folder.has_filename())
+          folder = folder.parent_path();
+        ProbePlotOptions options;
+        options.title        = "rodnet probes: " + folder.filename().string();
+        options.units        = units;
+        options.n_probes     = probes.size();
+        options.x_range      = x_range;
+        options.length_scale = model.length_scale();
+        // A single state (a run that stopped at its first step) has no
+        // plot.
         if (scene.plot && !summary.probe_names.empty() &&
-            !summary.rows.empty() &&
-            plot_probes(csv,
-                        output_directory + "/probes.png",
-                        "rodnet probes",
-                        x_range,
-                        units))
+            summary.rows.size() > 1 &&
+            plot_probes(csv, output_directory + "/probes.png", options))
           summary.outputs.push_back("probes.png");
         if (vtu_files > 0)
           summary.outputs.push_back("solution.pvd");
@@ -147,6 +166,8 @@ namespace rodnet
       bool                       vtu_capped = false;
       /// The abscissa's unit, then each probe's.
       std::vector<std::string> units;
+      /// The index of the check "stable" among the checks, if there.
+      std::size_t stable_check;
       /// The probe values of the step before, for continue_probes().
       std::vector<double>                     previous_values;
       std::optional<std::pair<double, State>> last;
@@ -310,6 +331,7 @@ namespace rodnet
         // checked (NaN in the check columns).
         recorder.record(0,
                         0.0,
+                        0.0,
                         evaluate_probes(probes,
                                         *model,
                                         u,
@@ -325,6 +347,7 @@ namespace rodnet
                      summary.unstable_steps += !info.check.stable;
                      summary.out_of_range_steps += !info.strain.in_range;
                      recorder.record(info.step,
+                                     info.load_factor,
                                      info.load_factor,
                                      evaluate_probes(probes,
                                                      *model,
@@ -381,6 +404,7 @@ namespace rodnet
                      summary.out_of_range_steps += !info.strain.in_range;
                      recorder.record(info.step,
                                      info.load_factor,
+                                     info.load_factor,
                                      evaluate_probes(probes,
                                                      *model,
                                                      solution,
@@ -435,11 +459,16 @@ namespace rodnet
       DynamicRelaxation solver(*model, scene.relaxation, log);
       run_guarded(summary, [&] {
         // Step 0: the unloaded state.
-        recorder.record(0, 0.0, evaluate_probes(probes, *model, u, 0.0), u);
+        recorder.record(0,
+                        0.0,
+                        0.0,
+                        evaluate_probes(probes, *model, u, 0.0),
+                        u);
         solver.run(u,
                    [&](const DynamicRelaxation::StepInfo &info,
                        const DrVector                    &solution) {
                      recorder.record(info.step,
+                                     info.load_factor,
                                      info.load_factor,
                                      evaluate_probes(probes,
                                                      *model,
@@ -509,6 +538,7 @@ namespace rodnet
           }
         recorder.record(step,
                         time,
+                        load_factor,
                         evaluate_probes(probes, *model, u, load_factor),
                         u,
                         values);
@@ -516,14 +546,12 @@ namespace rodnet
       VectorType u, v;
       scene.initial_state(*model, u, v);
       run_guarded(summary, [&] {
-        // Without a preload the history begins with the initial state.
-        if (parameters.preload_time == 0)
-          {
-            const double load_factor =
-              parameters.load_factor(parameters.start_time);
-            model->apply_boundary_values(u, load_factor);
-            record(0, parameters.start_time, load_factor, u, nullptr);
-          }
+        // The history begins with the initial state, where the integrator
+        // starts: at the start time, or before the preload.
+        const double time        = parameters.initial_time();
+        const double load_factor = parameters.load_factor(time);
+        model->apply_boundary_values(u, load_factor);
+        record(0, time, load_factor, u, nullptr);
         integrator.run(
           u,
           v,

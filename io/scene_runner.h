@@ -3,6 +3,7 @@
 
 #include <io/scene.h>
 
+#include <cmath>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -24,6 +25,14 @@ namespace rodnet
     /// Per recorded step (step 0, the unloaded or initial state, and every
     /// converged step): the abscissa, then the probe values.
     std::vector<std::vector<double>> rows;
+    /// The load factor of the last recorded step (NaN if none).
+    double final_load_factor = std::nan("");
+    /// Whether the last recorded step is a stable equilibrium: 1, 0, or
+    /// NaN where it was not checked (dynamic relaxation and dynamic time
+    /// stepping, step 0).
+    double final_stable = std::nan("");
+    /// The model's length scale (Model::length_scale(), m).
+    double length_scale = 0;
     /// Converged steps whose equilibrium is unstable (probes.csv column
     /// "stable" 0; Newton and quasi-static runs).
     unsigned int unstable_steps = 0;
@@ -44,12 +53,14 @@ namespace rodnet
    * Runs a scene: prints its size to @p log, builds the model, steps the
    * load (or the time), and after every step writes the VTU/PVD files and
    * a row of probes.csv into @p output_directory (created if needed), and
-   * finally probes.png. Step 0 is the unloaded state of load stepping and
-   * the initial state of time stepping without preload; time stepping
-   * also records every preload step (at times up to the start time).
-   * The rows of rod models end with the solver's checks of the state:
-   * "stable" (Newton and quasi-static runs) and "in_range" (1 or 0; the
-   * warnings on @p log say where).
+   * finally probes.png (plot_probes()). Step 0 is the unloaded state of
+   * load stepping and continuation and the initial state of time stepping
+   * (before its preload, if any); time stepping also records every
+   * preload step (at times up to the start time). The rows of rod models
+   * end with the solver's checks of the state: "stable" (Newton and
+   * quasi-static runs) and "in_range" (1 or 0; the warnings on @p log say
+   * where), after the continuation's "arclength", "branch" and
+   * "negative_eigenvalues".
    * Rotation probes are continuous over the steps (unwrap_rotations()). A
    * solver failure ends the run with RunSummary::failure set, a stop
    * signal with RunSummary::stopped_by set; everything written before

@@ -4,6 +4,7 @@
 #include <io/output_directory.h>
 #include <io/probe_plot.h>
 #include <io/scene_file.h>
+#include <io/scene_help.h>
 #include <io/scene_runner.h>
 #include <io/scene_study.h>
 
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -118,11 +120,15 @@ namespace rodnet
     /// What a finished run leaves in the summary.
     struct RunOutcome
     {
-      std::string         status = "not run";
+      std::string status = "not run";
+      /// rodnet-run's exit code for the run alone; none if not run.
+      std::optional<int>  exit_code;
       unsigned int        converged_steps = 0;
       double              wall_time       = 0;
       std::string         folder;
       std::vector<double> last_values; // per summary probe column, NaN if none
+      double              load_factor = std::nan("");
+      double              stable      = std::nan("");
     };
 
     /// The summary table over the runs done so far: CSV and PNG.
@@ -139,21 +145,27 @@ namespace rodnet
       {
       }
 
-      /// Records run @p k from its @p summary (nullptr: it was refused).
+      /// Records run @p k, which ended with @p exit_code, from its
+      /// @p summary (nullptr: it was refused).
       void
       record(const unsigned int k,
              const std::string &status,
+             const int          exit_code,
              const RunSummary  *summary,
              const double       wall_time,
              const std::string &folder)
       {
         RunOutcome &outcome = outcomes[k];
         outcome.status      = status;
+        outcome.exit_code   = exit_code;
         outcome.wall_time   = wall_time;
         outcome.folder      = folder;
         if (summary == nullptr)
           return;
         outcome.converged_steps = summary->converged_steps;
+        outcome.load_factor     = summary->final_load_factor;
+        outcome.stable          = summary->final_stable;
+        length_scale            = std::max(length_scale, summary->length_scale);
         for (std::size_t p = 0; p < summary->probe_names.size(); ++p)
           {
             const std::size_t column = probe_column(summary->probe_names[p],
@@ -175,35 +187,74 @@ namespace rodnet
           csv << "run," << csv_field(parameter_name);
           for (const std::string &name : probe_names)
             csv << ',' << csv_field(name);
-          csv << ",status,converged_steps,wall_time_s,folder\n";
+          csv << ",load_factor,stable,finished,exit_code,status,"
+                 "converged_steps,wall_time_s,folder\n";
           csv.precision(12);
           for (std::size_t k = 0; k < runs.size(); ++k)
-            {
-              const RunOutcome &o = outcomes[k];
-              csv << k + 1 << ',' << runs[k].parameter;
-              for (std::size_t c = 0; c < probe_names.size(); ++c)
-                {
-                  csv << ',';
-                  if (c < o.last_values.size() && !std::isnan(o.last_values[c]))
-                    csv << o.last_values[c];
-                }
-              csv << ',' << csv_field(o.status) << ',' << o.converged_steps
-                  << ',' << o.wall_time << ',' << csv_field(o.folder) << '\n';
-            }
+            write_row(csv, k);
         }
-        if (probe_names.empty())
-          return;
-        std::vector<std::string> units{"-"};
-        units.insert(units.end(), probe_units.begin(), probe_units.end());
-        plot_probes(csv_path,
-                    directory + "/summary.png",
-                    "rodnet study: probes at the last step",
-                    std::nullopt,
-                    units,
-                    4);
+        if (!probe_names.empty())
+          plot(csv_path);
       }
 
     private:
+      /// A number of the summary, blank if there is none.
+      static std::string
+      optional_number(const double value)
+      {
+        std::ostringstream text;
+        text.precision(12);
+        if (!std::isnan(value))
+          text << value;
+        return text.str();
+      }
+
+      /// Writes the row of run @p k into @p csv.
+      void
+      write_row(std::ostream &csv, const std::size_t k) const
+      {
+        const RunOutcome &o = outcomes[k];
+        csv << k + 1 << ',' << csv_field(runs[k].value);
+        for (std::size_t c = 0; c < probe_names.size(); ++c)
+          csv << ','
+              << optional_number(c < o.last_values.size() ? o.last_values[c] :
+                                                            std::nan(""));
+        csv << ',' << optional_number(o.load_factor) << ','
+            << optional_number(o.stable) << ','
+            << (o.exit_code && *o.exit_code == 0) << ','
+            << (o.exit_code ? std::to_string(*o.exit_code) : "") << ','
+            << csv_field(o.status) << ',' << o.converged_steps << ','
+            << o.wall_time << ',' << csv_field(o.folder) << '\n';
+      }
+
+      /// Plots the summary @p csv_path: against the swept value where
+      /// every value is a number (labelled with the entry's unit),
+      /// otherwise against the run's number, each tic labelled with the
+      /// value or the scene.
+      void
+      plot(const std::string &csv_path) const
+      {
+        const bool numbers =
+          std::all_of(runs.begin(), runs.end(), [](const StudyRun &run) {
+            return !std::isnan(run.parameter);
+          });
+        ProbePlotOptions options;
+        options.title    = "rodnet study: probes at each run's last step";
+        options.abscissa = numbers ? 1 : 0;
+        if (!numbers)
+          options.tic_labels = 1;
+        options.n_probes = probe_names.size() + 1; // and the load factor
+        options.units    = {numbers ? entry_unit(parameter_name) : ""};
+        options.units.insert(options.units.end(),
+                             probe_units.begin(),
+                             probe_units.end());
+        options.units.push_back("-");
+        options.length_scale = length_scale;
+        options.row_name     = "run's end";
+        options.warn_if_flat = false;
+        plot_probes(csv_path, directory + "/summary.png", options);
+      }
+
       /// The summary column of a probe, added when first seen.
       std::size_t
       probe_column(const std::string &name, const std::string &unit)
@@ -221,6 +272,8 @@ namespace rodnet
       const std::string            directory;
       std::vector<RunOutcome>      outcomes;
       std::vector<std::string>     probe_names, probe_units;
+      /// The largest length scale of the models run.
+      double length_scale = 0;
     };
 
     /// "007" for run 7 of a study of 100 to 999 runs: folders sort in order.
@@ -305,9 +358,10 @@ namespace rodnet
     for (const std::string &value : sweep.values)
       {
         StudyRun run;
-        run.scene_file = scene_file;
-        run.settings   = {{sweep.entry, value}};
-        run.label      = entry_name + "=" + value;
+        run.scene_file   = scene_file;
+        run.settings     = {{sweep.entry, value}};
+        run.label        = entry_name + "=" + value;
+        run.value        = value;
         std::size_t used = 0;
         try
           {
@@ -319,8 +373,6 @@ namespace rodnet
           {
             // Not a number (a vector, a name): the summary numbers the runs.
           }
-        if (std::isnan(run.parameter))
-          run.parameter = runs.size() + 1;
         runs.push_back(run);
       }
     return runs;
@@ -335,7 +387,7 @@ namespace rodnet
         StudyRun run;
         run.scene_file = file;
         run.label      = std::filesystem::path(file).stem().string();
-        run.parameter  = runs.size() + 1;
+        run.value      = run.label;
         runs.push_back(run);
       }
     return runs;
@@ -376,29 +428,37 @@ namespace rodnet
         dealii::Timer timer;
         std::string   status;
         RunSummary    result;
-        bool          refused = false;
+        int           run_exit_code = 0;
         try
           {
             prepare_output_directory(directory);
-            result = run_scene(*scenes[k], directory, &log);
-            status = result.stopped_by != 0 ? "interrupted" :
-                     result.failure.empty() ? "done" :
-                                              "stopped early: " + result.failure;
+            result        = run_scene(*scenes[k], directory, &log);
+            run_exit_code = result.stopped_by != 0  ? 128 + result.stopped_by :
+                            !result.failure.empty() ? 2 :
+                                                      0;
+            status =
+              result.stopped_by != 0 ? "interrupted" :
+              result.failure.empty() ? "done" :
+                                       "stopped early: " + result.failure;
           }
         catch (const std::exception &e)
           {
-            refused = true;
-            status  = "refused: " + error_message(e);
+            run_exit_code = 1;
+            status        = "refused: " + error_message(e);
           }
-        summary.record(
-          k, status, refused ? nullptr : &result, timer.wall_time(), folder);
+        summary.record(k,
+                       status,
+                       run_exit_code,
+                       run_exit_code == 1 ? nullptr : &result,
+                       timer.wall_time(),
+                       folder);
         summary.write();
-        if (status != "done")
+        if (run_exit_code != 0)
           log << "run " << k + 1 << ": " << status << std::endl;
         if (result.stopped_by != 0)
-          return 128 + result.stopped_by;
-        if (exit_code == 0 && status != "done")
-          exit_code = refused ? 1 : 2;
+          return run_exit_code;
+        if (exit_code == 0)
+          exit_code = run_exit_code;
       }
     log << "summary of " << runs.size() << " runs in " << output_directory
         << "/: summary.csv, summary.png" << std::endl;

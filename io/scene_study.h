@@ -48,9 +48,14 @@ namespace rodnet
   {
     std::string               scene_file;
     std::vector<EntrySetting> settings;
-    /// Names the run's output folder "<k>_<label>" and its summary row.
+    /// Names the run's output folder "<k>_<label>".
     std::string label;
-    /// The abscissa of the summary: the swept value, or the run's number.
+    /// The summary's parameter column: the swept value as given, or the
+    /// scene's name.
+    std::string value;
+    /// That value as a number, the abscissa of the summary's plot; NaN
+    /// where it is not one (a vector, a scene), and the plot is against
+    /// the runs' numbers, each labelled with its value.
     double parameter = std::nan("");
   };
 
@@ -70,9 +75,13 @@ namespace rodnet
    * one after the other, each run writes its outputs into
    * @p output_directory/<k>_<label>/, and after every run the summary
    * `summary.csv` (run, @p parameter_name, the probes at the last recorded
-   * step, status, converged steps, wall time, folder) and its plot
-   * `summary.png` are written again into @p output_directory, so that a
-   * stopped study keeps what it did. Progress goes to @p log.
+   * step, load_factor and stable there, finished (1 where the run's exit
+   * code is 0), exit_code, status, converged_steps, wall_time_s, folder)
+   * and its plot `summary.png` are written again into @p output_directory,
+   * so that a stopped study keeps what it did. The plot's abscissa is
+   * labelled with the unit of the entry @p parameter_name (entry_unit());
+   * runs that did not finish get their own marker. Progress goes to
+   * @p log.
    *
    * A run whose solver stops early is recorded as such and the study goes
    * on; a stop signal (Ctrl-C) ends the study after the step in progress.

@@ -108,7 +108,7 @@ namespace rodnet
         // strictly before the start, so that a load released at the start
         // (load factor if(t < 0, 1, 0)) holds during the whole preload.
         const double h    = p.preload_time / p.preload_steps;
-        const double from = p.start_time - p.preload_time - h;
+        const double from = p.initial_time();
         model.apply_boundary_values(u, p.load_factor(from));
         advance(*preload_scheme, from, p.start_time - h, h, u, v, observer);
         v                = 0;

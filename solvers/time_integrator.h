@@ -146,6 +146,17 @@ namespace rodnet
       {
         return integrator != "quasi-static";
       }
+
+      /// The time of the state a run starts from: start_time, or with a
+      /// preload the start of its first step, start_time - preload_time -
+      /// h (see preload_time).
+      double
+      initial_time() const
+      {
+        return preload_time > 0 ?
+                 start_time - preload_time - preload_time / preload_steps :
+                 start_time;
+      }
     };
 
     struct StepInfo

@@ -4,6 +4,8 @@
 // refusals (every scene is checked before the first run).
 #include <common/run_driver.h>
 #include <common/scene_text.h>
+#include <io/csv_table.h>
+#include <io/scene_help.h>
 #include <io/scene_study.h>
 
 #include <filesystem>
@@ -52,21 +54,24 @@ namespace
     return path;
   }
 
-  /// The rows of a CSV file as fields (no quoting needed here).
-  std::vector<std::vector<std::string>>
-  read_csv(const std::string &path)
+  /// The field of summary row @p r (from 0) in the column @p name.
+  std::string
+  field(const rodnet::CsvTable &summary,
+        const std::size_t       r,
+        const std::string      &name)
   {
-    std::vector<std::vector<std::string>> rows;
-    std::istringstream                    lines(read_file(path));
-    for (std::string line; std::getline(lines, line);)
-      {
-        std::vector<std::string> fields;
-        std::istringstream       cells(line);
-        for (std::string cell; std::getline(cells, cell, ',');)
-          fields.push_back(cell);
-        rows.push_back(fields);
-      }
-    return rows;
+    const auto column = summary.column(name);
+    EXPECT_TRUE(column) << "no column " << name;
+    return column ? summary.text(r, *column) : "";
+  }
+
+  /// The same as a number.
+  double
+  number(const rodnet::CsvTable &summary,
+         const std::size_t       r,
+         const std::string      &name)
+  {
+    return std::stod(field(summary, r, name));
   }
 
   TEST(SweepSyntax, RangesAndLists)
@@ -108,27 +113,40 @@ namespace
       scene + " --sweep \"Loads/Point forces=end: 0, 0, 1e-4; end: 0, 0, "
               "2e-4\" --output out_sweep");
     ASSERT_EQ(o.exit_code, 0) << o.output;
-    const auto rows = read_csv("out_sweep/summary.csv");
-    ASSERT_EQ(rows.size(), 3u) << read_file("out_sweep/summary.csv");
-    EXPECT_EQ(rows[0],
+    const auto summary = rodnet::read_csv_table("out_sweep/summary.csv");
+    ASSERT_EQ(summary.rows.size(), 2u) << read_file("out_sweep/summary.csv");
+    EXPECT_EQ(summary.names,
               (std::vector<std::string>{"run",
                                         "Loads/Point forces",
                                         "tip_z",
+                                        "load_factor",
+                                        "stable",
+                                        "finished",
+                                        "exit_code",
                                         "status",
                                         "converged_steps",
                                         "wall_time_s",
                                         "folder"}));
-    for (unsigned int k = 1; k <= 2; ++k)
+    for (unsigned int k = 0; k < 2; ++k)
       {
-        ASSERT_EQ(rows[k].size(), 7u);
-        EXPECT_EQ(rows[k][3], "done");
-        const double P = k * 1e-4;
-        EXPECT_NEAR(std::stod(rows[k][2]), P / 3, 2e-3 * P / 3);
+        ASSERT_EQ(summary.rows[k].size(), summary.names.size());
+        // The value swept, as given: not a number.
+        EXPECT_EQ(field(summary, k, "Loads/Point forces"),
+                  k == 0 ? "end: 0, 0, 1e-4" : "end: 0, 0, 2e-4");
+        EXPECT_EQ(field(summary, k, "status"), "done");
+        const double P = (k + 1) * 1e-4;
+        EXPECT_NEAR(number(summary, k, "tip_z"), P / 3, 2e-3 * P / 3);
+        const std::string folder = field(summary, k, "folder");
         EXPECT_TRUE(
-          std::filesystem::exists("out_sweep/" + rows[k][6] + "/probes.csv"))
-          << rows[k][6];
+          std::filesystem::exists("out_sweep/" + folder + "/probes.csv"))
+          << folder;
       }
     EXPECT_TRUE(std::filesystem::exists("out_sweep/summary.png"));
+    // Against the run's number, each tic labelled with its value.
+    EXPECT_NE(read_file("out_sweep/summary.png.gp")
+                .find("set xtics ('end: 0, 0, 1e-4' 1, 'end: 0, 0, 2e-4' 2)"),
+              std::string::npos)
+      << read_file("out_sweep/summary.png.gp");
   }
 
   TEST(Study, NumericSweepIsTheAbscissa)
@@ -141,14 +159,14 @@ namespace
     const auto o =
       run_driver_with(scene + " --sweep Loads/Steps=1:3:3 --output out_steps");
     ASSERT_EQ(o.exit_code, 0) << o.output;
-    const auto rows = read_csv("out_steps/summary.csv");
-    ASSERT_EQ(rows.size(), 4u);
+    const auto summary = rodnet::read_csv_table("out_steps/summary.csv");
+    ASSERT_EQ(summary.rows.size(), 3u);
     for (unsigned int k = 1; k <= 3; ++k)
       {
-        EXPECT_EQ(std::stod(rows[k][1]), k);
-        EXPECT_EQ(rows[k][4], std::to_string(k));
-        EXPECT_NEAR(std::stod(rows[k][2]), 1e-4 / 3, 1e-7);
-        EXPECT_EQ(rows[k][6],
+        EXPECT_EQ(number(summary, k - 1, "Loads/Steps"), k);
+        EXPECT_EQ(number(summary, k - 1, "converged_steps"), k);
+        EXPECT_NEAR(number(summary, k - 1, "tip_z"), 1e-4 / 3, 1e-7);
+        EXPECT_EQ(field(summary, k - 1, "folder"),
                   std::to_string(k) + "_Steps=" + std::to_string(k));
       }
   }
@@ -162,12 +180,14 @@ namespace
     std::filesystem::remove_all("out_two");
     const auto o = run_driver_with(a + " " + b + " --output out_two");
     ASSERT_EQ(o.exit_code, 0) << o.output;
-    const auto rows = read_csv("out_two/summary.csv");
-    ASSERT_EQ(rows.size(), 3u);
-    EXPECT_EQ(rows[1][6], "1_study_a");
-    EXPECT_EQ(rows[2][6], "2_study_b");
-    EXPECT_NEAR(std::stod(rows[1][2]), 1e-4 / 3, 1e-7);
-    EXPECT_NEAR(std::stod(rows[2][2]), -2e-4 / 3, 2e-7);
+    const auto summary = rodnet::read_csv_table("out_two/summary.csv");
+    ASSERT_EQ(summary.rows.size(), 2u);
+    EXPECT_EQ(field(summary, 0, "scene"), "study_a");
+    EXPECT_EQ(field(summary, 1, "scene"), "study_b");
+    EXPECT_EQ(field(summary, 0, "folder"), "1_study_a");
+    EXPECT_EQ(field(summary, 1, "folder"), "2_study_b");
+    EXPECT_NEAR(number(summary, 0, "tip_z"), 1e-4 / 3, 1e-7);
+    EXPECT_NEAR(number(summary, 1, "tip_z"), -2e-4 / 3, 2e-7);
   }
 
   TEST(Study, EveryRunIsCheckedBeforeTheFirst)
@@ -204,8 +224,13 @@ namespace
   TEST(Study, AFailedRunDoesNotStopTheOthers)
   {
     // One Newton iteration cannot converge a step of P L^2 / EI = 0.3, nor
-    // of half of it: the first run stops early (exit code 2), the second,
-    // with 25, completes.
+    // of half of it: the first run stops early (exit code 2) in its first
+    // step, at load factor 0 (the unloaded state, which is not checked for
+    // stability); the second, with 25, completes at load factor 1 with a
+    // stable equilibrium whose tip deflects by 0.09899 L (the inextensible
+    // elastica EI theta'' = -P cos theta, theta(0) = theta'(L) = 0, solved
+    // by shooting with RK4; 0.1 L in linear theory). The summary says which
+    // run finished, and its plot draws the other as such.
     const std::string scene =
       write_scene_file("study_fail.prm",
                        cantilever_scene("0.3") +
@@ -216,12 +241,76 @@ namespace
     const auto o = run_driver_with(
       scene + " --sweep \"Solver/Max iterations=1,25\" --output out_fail");
     EXPECT_EQ(o.exit_code, 2) << o.output;
-    std::istringstream       lines(read_file("out_fail/summary.csv"));
-    std::vector<std::string> rows;
-    for (std::string line; std::getline(lines, line);)
-      rows.push_back(line);
-    ASSERT_EQ(rows.size(), 3u);
-    EXPECT_NE(rows[1].find("stopped early"), std::string::npos) << rows[1];
-    EXPECT_NE(rows[2].find(",done,"), std::string::npos) << rows[2];
+    const auto summary = rodnet::read_csv_table("out_fail/summary.csv");
+    ASSERT_EQ(summary.rows.size(), 2u);
+    EXPECT_EQ(field(summary, 0, "status").substr(0, 13), "stopped early");
+    EXPECT_EQ(field(summary, 0, "finished"), "0");
+    EXPECT_EQ(field(summary, 0, "exit_code"), "2");
+    EXPECT_EQ(number(summary, 0, "load_factor"), 0);
+    EXPECT_EQ(field(summary, 0, "stable"), "");
+    EXPECT_EQ(number(summary, 0, "tip_z"), 0);
+    EXPECT_EQ(field(summary, 1, "status"), "done");
+    EXPECT_EQ(field(summary, 1, "finished"), "1");
+    EXPECT_EQ(field(summary, 1, "exit_code"), "0");
+    EXPECT_EQ(number(summary, 1, "load_factor"), 1);
+    EXPECT_EQ(field(summary, 1, "stable"), "1");
+    EXPECT_NEAR(number(summary, 1, "tip_z"), 0.09899, 2e-3 * 0.09899);
+    // The run that stopped early has its own marker ("stopped early" in
+    // the key), at its number of iterations, 1.
+    const std::string script = read_file("out_fail/summary.png.gp");
+    EXPECT_NE(script.find("$unfinished << EOD\n1 0"), std::string::npos)
+      << script;
+    EXPECT_NE(script.find("title 'stopped early'"), std::string::npos);
+  }
+
+  TEST(Study, RadiusSweepIsLabelledInMetres)
+  {
+    // A steel cantilever (L = 1 m, E = 2e11 Pa, circular section of radius
+    // r) under a tip force of 1 N: w = P L^3 / (3 E pi r^4 / 4) against the
+    // radius, on an axis labelled with the entry's unit.
+    std::string       text   = cantilever_scene("-1");
+    const std::string direct = rodnet::testing::direct_material(1e7, 1, 1, 1);
+    text.replace(text.find(direct),
+                 direct.size(),
+                 "subsection Material\n  subsection linear elastic\n"
+                 "    set Young's modulus = 2e11\n"
+                 "    set Cross section = circle\n"
+                 "    set Radius = 0.01\n  end\nend\n");
+    const std::string scene = write_scene_file("study_radius.prm", text);
+    std::filesystem::remove_all("out_radius");
+    const auto o = run_driver_with(
+      scene + " --sweep \"Material/linear elastic/Radius=0.005:0.01:3\" "
+              "--output out_radius");
+    ASSERT_EQ(o.exit_code, 0) << o.output;
+    const auto summary = rodnet::read_csv_table("out_radius/summary.csv");
+    ASSERT_EQ(summary.rows.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k)
+      {
+        const double r = number(summary, k, "Material/linear elastic/Radius");
+        EXPECT_NEAR(r, 0.005 + 0.0025 * k, 1e-15);
+        const double w = 1 / (3 * 2e11 * M_PI * std::pow(r, 4) / 4);
+        EXPECT_NEAR(number(summary, k, "tip_z"), -w, 2e-3 * w);
+      }
+    EXPECT_NE(read_file("out_radius/summary.png.gp")
+                .find("set xlabel 'Material/linear elastic/Radius [m]'"),
+              std::string::npos)
+      << read_file("out_radius/summary.png.gp");
+  }
+
+  TEST(SweepAxis, EntryUnitsComeFromTheHelp)
+  {
+    EXPECT_EQ(rodnet::entry_unit("Geometry/Radius"), "m");
+    EXPECT_EQ(rodnet::entry_unit("Loads/Steps"), "-");
+    EXPECT_EQ(rodnet::entry_unit("Loads/Point forces"), "N");
+    EXPECT_EQ(rodnet::entry_unit("Material/linear elastic/Radius"), "m");
+    EXPECT_EQ(rodnet::entry_unit("Material/linear elastic/Young's modulus"),
+              "Pa");
+    EXPECT_EQ(rodnet::entry_unit("Material/linear elastic/EI1"), "N m^2");
+    EXPECT_EQ(rodnet::entry_unit("Material/linear elastic/Natural curvature 1"),
+              "1/m");
+    EXPECT_EQ(rodnet::entry_unit("Material/linear elastic/Poisson's ratio"),
+              "-");
+    EXPECT_EQ(rodnet::entry_unit("Geometry/Nonexistent"), "");
+    EXPECT_EQ(rodnet::entry_unit("Geometry"), "");
   }
 } // namespace

@@ -1,6 +1,7 @@
 // What probes.csv records over a run: a row for the unloaded state (step
-// 0) under Newton and dynamic relaxation, rotations continuous over the
-// steps beyond a half turn, and units on the plot's axes.
+// 0) under Newton, dynamic relaxation and time stepping with a preload,
+// rotations continuous over the steps beyond a half turn, and units on the
+// plot's axes.
 #include <common/run_scene_text.h>
 #include <common/scene_text.h>
 
@@ -66,12 +67,12 @@ namespace
     std::ifstream      script("probe_history_units/probes.png.gp");
     std::ostringstream text;
     text << script.rdbuf();
-    // Newton runs record which steps are stable: unstable ones dashed.
+    // Newton runs record which steps are stable: a frame turned rigidly
+    // is stable at every step, which the title says (no panel, no key).
     for (const char *label : {"set xlabel 'load factor [-]'",
                               "set ylabel 'clamp_turn [rad]'",
                               "set ylabel 'tip_x [m]'",
-                              "dashtype 2",
-                              "title 'unstable'"})
+                              "stable at every step"})
       EXPECT_NE(text.str().find(label), std::string::npos)
         << label << " missing in\n"
         << text.str();
@@ -126,6 +127,33 @@ namespace
     // Newton rows end with the checks of the state, not made at step 0.
     EXPECT_EQ(first,
               GetParam() == "newton" ? "0,0,1,0,0,0,nan,nan" : "0,0,1,0,0,0");
+  }
+
+  TEST(ProbeHistory, PreloadedTimeSteppingStartsWithTheInitialState)
+  {
+    // Quasi-static time stepping from t = 0 to 1 in steps of 0.5 after a
+    // preload of 1 s in 2 steps (h = 0.5): the preload's steps end at
+    // t = -1 and -0.5, so the run starts from the initial state, the
+    // straight unloaded rod (tip at (1, 0), no energy), at t = -1.5.
+    const RunSummary run = run_scene_text(
+      cantilever("time stepping") +
+        "subsection Solver\n  subsection Time stepping\n"
+        "    set Integrator = quasi-static\n    set Start time = 0\n"
+        "    set End time = 1\n    set Time step = 0.5\n"
+        "    set Preload time = 1\n    set Preload steps = 2\n  end\nend\n",
+      "probe_history_preload");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_EQ(run.rows.size(), 5u);
+    const std::vector<double> expected = {-1.5, 1, 0, 0, 0};
+    for (std::size_t c = 0; c < expected.size(); ++c)
+      EXPECT_NEAR(run.rows[0][c], expected[c], 1e-14) << "column " << c;
+    EXPECT_NEAR(run.rows[1][0], -1, 1e-14);
+    EXPECT_GT(run.rows[1][probe_column(run, "tip_y")], 1e-3);
+    std::ifstream csv("probe_history_preload/probes.csv");
+    std::string   header, first;
+    std::getline(csv, header);
+    std::getline(csv, first);
+    EXPECT_EQ(first.substr(0, 7), "0,-1.5,");
   }
 
   INSTANTIATE_TEST_SUITE_P(Methods,

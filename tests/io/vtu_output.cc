@@ -1,14 +1,12 @@
-// VtuOutput writes the deformed rod with its fields and a .pvd time series;
-// plot_probes turns a probe table into a PNG and never throws. The .vtu
-// files are decoded here (base64, zlib, 32-bit floats) and compared with the
-// state that was written.
+// VtuOutput writes the deformed rod with its fields and a .pvd time series.
+// The .vtu files are decoded here (base64, zlib, 32-bit floats) and compared
+// with the state that was written.
 
 #include <deal.II/base/utilities.h>
 
 #include <core/dr_model.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
-#include <io/probe_plot.h>
 #include <io/vtu_output.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
@@ -24,7 +22,6 @@
 #include <memory>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 #include <zlib.h>
 
@@ -122,20 +119,6 @@ namespace
     std::vector<float> values(raw.size() / sizeof(float));
     std::memcpy(values.data(), raw.data(), raw.size());
     return values;
-  }
-
-  bool
-  gnuplot_on_path()
-  {
-    const char *path = std::getenv("PATH");
-    if (path == nullptr)
-      return false;
-    std::istringstream dirs(path);
-    std::string        dir;
-    while (std::getline(dirs, dir, ':'))
-      if (!dir.empty() && access((dir + "/gnuplot").c_str(), X_OK) == 0)
-        return true;
-    return false;
   }
 } // namespace
 
@@ -391,94 +374,4 @@ TEST(VtuOutput, UnusableDirectoryThrowsNamingIt)
     {
       EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
     }
-}
-
-TEST(ProbePlot, MakesPng)
-{
-  if (!gnuplot_on_path())
-    GTEST_SKIP() << "gnuplot is not on PATH";
-  const fs::path dir = scratch("plot");
-  fs::create_directories(dir);
-  // Names with a blank, a quoted comma and gnuplot's quote character.
-  std::ofstream(dir / "probes.csv")
-    << "step,load_factor,tip x,\"a,b\",it's_y\n"
-    << "0,0,0,1,5\n1,0.5,0.1,2,4\n2,1,0.3,2.5,nan\n";
-  const fs::path png = dir / "probes.png";
-  ::testing::internal::CaptureStderr();
-  plot_probes((dir / "probes.csv").string(), png.string(), "it's a test");
-  const std::string messages = ::testing::internal::GetCapturedStderr();
-  EXPECT_EQ(messages, "");
-  ASSERT_TRUE(fs::exists(png));
-  EXPECT_GT(fs::file_size(png), 0u);
-  EXPECT_EQ(read_text(png).substr(1, 3), "PNG");
-}
-
-TEST(ProbePlot, SidesOfABifurcationAreNotJoined)
-{
-  if (!gnuplot_on_path())
-    GTEST_SKIP() << "gnuplot is not on PATH";
-  const fs::path dir = scratch("plot_sides");
-  fs::create_directories(dir);
-  // A continuation table whose second side restarts at the bifurcation
-  // (arclength 1 after 2): that row is undefined in every series, so no
-  // line runs from (2, 0.8) back to (1, 0).
-  std::ofstream(dir / "probes.csv")
-    << "step,load_factor,y,arclength,branch,negative_eigenvalues,stable,"
-       "in_range\n"
-    << "0,0,0,0,0,0,1,1\n1,1,0,1,0,0,1,1\n2,2,0.8,2,1,0,1,1\n"
-    << "3,1,0,1,2,0,1,1\n4,2,-0.8,2,2,0,1,1\n";
-  const fs::path png = dir / "probes.png";
-  ::testing::internal::CaptureStderr();
-  plot_probes((dir / "probes.csv").string(), png.string(), "sides", {}, {}, 5);
-  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
-  ASSERT_TRUE(fs::exists(png));
-  const std::string script = read_text(dir / "probes.png.gp");
-  EXPECT_NE(script.find("r = column(4) < s0, s0 = column(4), r ? 1/0 :"),
-            std::string::npos)
-    << script;
-}
-
-TEST(ProbePlot, WarnsOnceAndReturnsWhenItCannotPlot)
-{
-  const fs::path dir = scratch("no_plot");
-  fs::create_directories(dir);
-
-  ::testing::internal::CaptureStderr();
-  plot_probes((dir / "missing.csv").string(),
-              (dir / "missing.png").string(),
-              "missing");
-  std::string messages = ::testing::internal::GetCapturedStderr();
-  EXPECT_NE(messages.find("warning"), std::string::npos);
-  EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
-
-  // Without gnuplot on PATH.
-  std::ofstream(dir / "probes.csv") << "step,load_factor,x\n0,0,1\n1,1,2\n";
-  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
-  setenv("PATH", dir.c_str(), 1);
-  ::testing::internal::CaptureStderr();
-  plot_probes((dir / "probes.csv").string(),
-              (dir / "probes.png").string(),
-              "no gnuplot");
-  messages = ::testing::internal::GetCapturedStderr();
-  setenv("PATH", path.c_str(), 1);
-  EXPECT_NE(messages.find("gnuplot"), std::string::npos) << messages;
-  EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
-  EXPECT_FALSE(fs::exists(dir / "probes.png"));
-}
-
-TEST(ProbePlot, WarnsOnceWhenGnuplotFails)
-{
-  if (!gnuplot_on_path())
-    GTEST_SKIP() << "gnuplot is not on PATH";
-  const fs::path dir = scratch("failed_plot");
-  fs::create_directories(dir);
-  // gnuplot refuses a panel without a single defined value.
-  std::ofstream(dir / "probes.csv") << "step,load_factor,x\n0,0,nan\n";
-  ::testing::internal::CaptureStderr();
-  plot_probes((dir / "probes.csv").string(),
-              (dir / "probes.png").string(),
-              "undefined");
-  const std::string messages = ::testing::internal::GetCapturedStderr();
-  EXPECT_NE(messages.find("undefined"), std::string::npos) << messages;
-  EXPECT_EQ(std::count(messages.begin(), messages.end(), '\n'), 1);
 }
