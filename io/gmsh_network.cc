@@ -558,7 +558,7 @@ namespace rodnet
   GmshLineMesh
   read_gmsh_line_mesh(const std::string &path)
   {
-    const LineMesh mesh = read_line_mesh(path);
+    LineMesh mesh = read_line_mesh(path);
     for (const LineElement &line : mesh.lines)
       {
         const auto fail = [&](const std::string &message) {
@@ -575,13 +575,21 @@ namespace rodnet
     if (mesh.lines.empty())
       throw std::invalid_argument("mesh \"" + path +
                                   "\": the mesh has no line elements");
+    merge_coincident_nodes(mesh, path);
     return mesh;
   }
 
   RodGraph
-  read_gmsh_network(const std::string &path)
+  read_gmsh_network(const std::string &path, ReadNotes *notes)
   {
     const LineMesh mesh = read_gmsh_line_mesh(path);
-    return ChainBuilder(mesh, path).build();
+    ChainBuilder   builder(mesh, path);
+    RodGraph       graph = builder.build();
+    if (notes == nullptr)
+      return graph;
+    if (const std::string merged = merged_nodes_note(mesh, path);
+        !merged.empty())
+      notes->info.push_back(merged);
+    return graph;
   }
 } // namespace rodnet

@@ -9,7 +9,7 @@
 namespace rodnet
 {
   std::vector<RodChain>
-  read_gmsh_rods(const std::string &path)
+  read_gmsh_rods(const std::string &path, ReadNotes *notes)
   {
     // rodnet's own parser, not deal.II's GridIn: GridIn loops forever on a
     // file whose section lacks its $End line (a truncated file), and
@@ -85,6 +85,10 @@ namespace rodnet
                                               "one chain; use one tag per rod");
         rods.push_back(chain);
       }
+    if (notes != nullptr)
+      if (const std::string merged = merged_nodes_note(mesh, path);
+          !merged.empty())
+        notes->info.push_back(merged);
     return rods;
   }
 } // namespace rodnet

@@ -12,6 +12,7 @@
 #include <io/natural_shape_ramp.h>
 #include <io/probes.h>
 #include <io/problem_size.h>
+#include <io/read_notes.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
 #include <materials/cross_section.h>
@@ -143,6 +144,9 @@ namespace rodnet
     /// The element families the scene asks for beyond the rods' own
     /// (an elastic foundation, ...).
     std::vector<RequestedFamily> family_requests;
+    /// What the generator's reader said of its input: merged coincident
+    /// nodes, coarse mesh chains (run_scene() prints it).
+    ReadNotes geometry_notes;
 
   private:
     /// What a material subsection defines.

@@ -168,6 +168,7 @@ namespace rodnet
         " generator makes no closed rod to turn the frame around; use the "
         "ring generator or set it to 0");
     graph                      = std::move(geometry.graph);
+    geometry_notes             = std::move(geometry.notes);
     segments_per_beam          = graph ? input.segments : 1;
     ghost_spin = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
                                                     GhostSpin::small_rotation;
