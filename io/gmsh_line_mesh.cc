@@ -11,7 +11,7 @@ namespace rodnet
 {
   namespace
   {
-    /// How many sets of merged nodes a message names.
+    /// How many sets of merged nodes or chains a message names.
     constexpr std::size_t n_named = 5;
 
     /// The tags of the nodes that elements use, in increasing order.
@@ -231,6 +231,34 @@ namespace rodnet
       }
     if (mesh.merged_nodes.size() > n_named)
       text << "; and " << mesh.merged_nodes.size() - n_named << " more sets";
+    return text.str();
+  }
+
+  std::string
+  one_hinge_warning(const std::string              &path,
+                    const std::vector<std::string> &chains,
+                    const std::string              &advice)
+  {
+    if (chains.empty())
+      return "";
+    std::ostringstream text;
+    text << "mesh \"" << path << "\": ";
+    if (chains.size() == 1)
+      text << chains[0]
+           << " is a chain of two line elements, whose one hinge gives a "
+              "first-order answer; the mesh decides its segments: ";
+    else
+      {
+        text << chains.size()
+             << " rods are chains of two line elements, whose one hinge "
+                "gives a first-order answer: ";
+        for (std::size_t c = 0; c < std::min(n_named, chains.size()); ++c)
+          text << (c == 0 ? "" : ", ") << chains[c];
+        if (chains.size() > n_named)
+          text << " and " << chains.size() - n_named << " more";
+        text << "; the mesh decides their segments: ";
+      }
+    text << advice;
     return text.str();
   }
 } // namespace rodnet

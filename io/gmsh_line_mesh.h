@@ -72,6 +72,18 @@ namespace rodnet
    */
   std::string
   merged_nodes_note(const GmshLineMesh &mesh, const std::string &path);
+
+  /**
+   * The warning about the rods of mesh @p path that are chains of two line
+   * elements (@p chains: a description of each, e.g. "beam 0 (its hinge at
+   * node 2)"): the mesh decides their segments, and their one hinge gives a
+   * first-order answer. The first five are named, with the number of
+   * others and @p advice (what to do) at the end; empty if there are none.
+   */
+  std::string
+  one_hinge_warning(const std::string              &path,
+                    const std::vector<std::string> &chains,
+                    const std::string              &advice);
 } // namespace rodnet
 
 #endif

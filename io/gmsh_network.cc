@@ -423,9 +423,19 @@ namespace rodnet
                                        physical_lines.find(chain.physical));
             for (std::size_t k = 1; k + 1 < chain.nodes.size(); ++k)
               beam.interior.push_back(mesh.nodes.at(chain.nodes[k]));
+            if (chain.nodes.size() == 3)
+              one_hinge.push_back(describe_one_hinge(graph, chain));
             graph.beams.push_back(beam);
           }
         return graph;
+      }
+
+      /// The beams that build() made of two line elements, described for
+      /// one_hinge_warning().
+      const std::vector<std::string> &
+      one_hinge_chains() const
+      {
+        return one_hinge;
       }
 
     private:
@@ -441,6 +451,17 @@ namespace rodnet
       fail(const std::string &message) const
       {
         throw std::invalid_argument(where + ": " + message);
+      }
+
+      /// "beam 3 (node1 to node5, its hinge at node 4)": @p chain, of two
+      /// elements, which becomes the next beam of @p graph.
+      std::string
+      describe_one_hinge(const RodGraph &graph, const Chain &chain) const
+      {
+        return "beam " + std::to_string(graph.beams.size()) + " (" +
+               graph.nodes[node_index.at(chain.nodes.front())].name + " to " +
+               graph.nodes[node_index.at(chain.nodes.back())].name +
+               ", its hinge at node " + std::to_string(chain.nodes[1]) + ")";
       }
 
       bool
@@ -552,6 +573,7 @@ namespace rodnet
       std::map<long, std::vector<unsigned int>> incident;
       std::map<long, unsigned int>              node_index;
       std::vector<bool>                         visited;
+      std::vector<std::string>                  one_hinge;
     };
   } // namespace
 
@@ -590,6 +612,14 @@ namespace rodnet
     if (const std::string merged = merged_nodes_note(mesh, path);
         !merged.empty())
       notes->info.push_back(merged);
+    if (const std::string warning = one_hinge_warning(
+          path,
+          builder.one_hinge_chains(),
+          "refine the mesh, or mark the hinge's node with a physical point: "
+          "it becomes a welded junction, and Geometry/Segments splits the two "
+          "beams of one element each");
+        !warning.empty())
+      notes->warnings.push_back(warning);
     return graph;
   }
 } // namespace rodnet

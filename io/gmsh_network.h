@@ -41,7 +41,8 @@ namespace rodnet
    *   written as two node tags at one point is one node.
    *
    * Where @p notes is given, it receives the line naming the merged nodes
-   * (info).
+   * (info) and the warning about beams that are chains of two line
+   * elements (one_hinge_warning()).
    *
    * Throws std::invalid_argument naming the file and the line, node or
    * element for an unreadable or binary file, another format version, a

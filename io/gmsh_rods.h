@@ -27,7 +27,8 @@ namespace rodnet
    * with junctions), or naming the file and line where the file cannot be
    * read (see read_gmsh_line_mesh()). Coincident nodes are merged first
    * (read_gmsh_line_mesh()). Where @p notes is given, it receives the line
-   * naming the merged nodes (info).
+   * naming the merged nodes (info) and the warning about open rods of two
+   * line elements (one_hinge_warning()).
    */
   std::vector<RodChain>
   read_gmsh_rods(const std::string &path, ReadNotes *notes = nullptr);

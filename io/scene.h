@@ -244,6 +244,19 @@ namespace rodnet
     std::vector<unsigned int>
     rod_groups() const;
 
+    /// Segments of every rod of build_network(), rod by rod.
+    std::vector<double>
+    rod_segments() const;
+
+    /// The size of the rods and junctions that build_network() makes.
+    ProblemSize
+    geometry_size() const;
+
+    /// The DoFs of the constraints of the rods' materials
+    /// (ProblemSize::constraint_dofs).
+    double
+    constraint_dofs() const;
+
     /// The rods (or the network's rods) and the material of each.
     std::pair<std::unique_ptr<RodNetwork>,
               std::vector<std::shared_ptr<const RodMaterial>>>
@@ -318,6 +331,9 @@ namespace rodnet
     /// Loads/Fixed loads.
     bool        fixed_loads = false;
     ProblemSize model_size;
+    /// The entry a message about the model's size names
+    /// (GeometryGenerator::size_entry()).
+    std::string model_size_entry;
   };
 } // namespace rodnet
 
