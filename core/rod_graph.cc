@@ -2,6 +2,7 @@
 #include <core/rod_graph.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -40,6 +41,16 @@ namespace rodnet
     {
       std::ostringstream s;
       s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+      return s.str();
+    }
+
+    /// "1e-10 apart, within 1e-08 m" for the messages about coincidence.
+    std::string
+    describe_distance(const double distance, const double tolerance)
+    {
+      std::ostringstream s;
+      s << std::setprecision(3) << distance << " apart, within " << tolerance
+        << " m";
       return s.str();
     }
 
@@ -88,8 +99,9 @@ namespace rodnet
           const Vector3 chord =
             graph.nodes[beam.to].position - graph.nodes[beam.from].position;
           if (chord.norm() <= tolerance)
-            throw std::invalid_argument(describe(graph, b) +
-                                        " has zero length");
+            throw std::invalid_argument(
+              describe(graph, b) + " has zero length (its ends " +
+              describe_distance(chord.norm(), tolerance) + ")");
           if (beam.director_hint != Vector3::Zero() &&
               parallel(beam.director_hint, chord))
             throw std::invalid_argument(
@@ -112,12 +124,16 @@ namespace rodnet
              k < order.size() && x(order[k]) - x(order[i]) <= tolerance;
              ++k)
           {
-            const RodGraph::Node &a = graph.nodes[order[i]];
-            const RodGraph::Node &b = graph.nodes[order[k]];
-            if ((a.position - b.position).norm() <= tolerance)
-              throw std::invalid_argument("nodes " + quoted(a.name) + " and " +
-                                          quoted(b.name) + " coincide at " +
-                                          describe(a.position));
+            const RodGraph::Node &a        = graph.nodes[order[i]];
+            const RodGraph::Node &b        = graph.nodes[order[k]];
+            const double          distance = (a.position - b.position).norm();
+            if (distance <= tolerance)
+              throw std::invalid_argument(
+                "nodes " + quoted(a.name) + " and " + quoted(b.name) +
+                " coincide at " + describe(a.position) + " (" +
+                describe_distance(distance, tolerance) +
+                "): a joint is one node; let the beams that meet there name "
+                "the same node");
           }
     }
 
@@ -155,15 +171,17 @@ namespace rodnet
                                   describe(graph.default_director) +
                                   " is zero or not finite");
 
-    // The same relative tolerance as RodNetwork::add_rod, on the size of
-    // the whole graph.
+    // Nodes closer than the tolerance relative to the size of the whole
+    // graph are one point.
     Vector3 low = graph.nodes.front().position, high = low;
     for (const RodGraph::Node &node : graph.nodes)
       {
         low  = low.cwiseMin(node.position);
         high = high.cwiseMax(node.position);
       }
-    check_nodes_and_beams(graph, 1e-12 * std::max((high - low).norm(), 1e-300));
+    check_nodes_and_beams(graph,
+                          coincident_node_tolerance *
+                            std::max((high - low).norm(), 1e-300));
 
     BuiltNetwork built;
     built.network                            = std::make_unique<RodNetwork>();

@@ -51,6 +51,17 @@ namespace rodnet
     node_index(const std::string &name) const;
   };
 
+  /**
+   * Nodes closer than this fraction of the diagonal of the bounding box are
+   * one point: build_rod_network() refuses two such nodes of a graph, the
+   * Gmsh readers merge such mesh nodes (read_gmsh_line_mesh()). It is the
+   * tolerance Gmsh's "Coherence Mesh" merges nodes within (its default
+   * Geometry.Tolerance, 1e-8, times the diagonal of the model's bounding
+   * box): far above the round-off of coordinates computed twice, far below
+   * any element of a mesh one would solve.
+   */
+  constexpr double coincident_node_tolerance = 1e-8;
+
   /// What build_rod_network() made of a graph.
   struct BuiltNetwork
   {
@@ -71,8 +82,9 @@ namespace rodnet
    * as the nodes) of @p graph, and creates the triangulation. Throws
    * std::invalid_argument naming the node or beam for: a beam whose ends
    * are the same node or coincide (zero length), a node index out of
-   * range, two nodes at the same position (within 1e-12 of the graph's
-   * size), a node no beam touches, a duplicate or empty node name, a
+   * range, two nodes at the same position (closer than
+   * coincident_node_tolerance times the graph's size), a node no beam
+   * touches, a duplicate or empty node name, a
    * welded or pinned node with a single beam end, a beam director hint
    * parallel to the beam, @p segments_per_beam == 0.
    *

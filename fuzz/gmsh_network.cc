@@ -9,6 +9,8 @@ LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
   rodnet::fuzz::fuzz_graph_reader(data,
                                   size,
                                   ".msh",
-                                  rodnet::read_gmsh_network);
+                                  [](const std::string &path) {
+                                    return rodnet::read_gmsh_network(path);
+                                  });
   return 0;
 }

@@ -7,6 +7,7 @@
 #include <core/rod_graph.h>
 #include <elements/quaternion.h>
 #include <io/problem_size.h>
+#include <io/read_notes.h>
 
 #include <memory>
 #include <optional>
@@ -24,6 +25,8 @@ namespace rodnet
     std::vector<bool> rod_closed;
     /// Networks: the beams and junctions.
     std::optional<RodGraph> graph;
+    /// What a reader of an input file said of it.
+    ReadNotes notes;
   };
 
   /// The entries of subsection Geometry that every generator may use

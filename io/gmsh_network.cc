@@ -423,9 +423,19 @@ namespace rodnet
                                        physical_lines.find(chain.physical));
             for (std::size_t k = 1; k + 1 < chain.nodes.size(); ++k)
               beam.interior.push_back(mesh.nodes.at(chain.nodes[k]));
+            if (chain.nodes.size() == 3)
+              one_hinge.push_back(describe_one_hinge(graph, chain));
             graph.beams.push_back(beam);
           }
         return graph;
+      }
+
+      /// The beams that build() made of two line elements, described for
+      /// one_hinge_warning().
+      const std::vector<std::string> &
+      one_hinge_chains() const
+      {
+        return one_hinge;
       }
 
     private:
@@ -441,6 +451,17 @@ namespace rodnet
       fail(const std::string &message) const
       {
         throw std::invalid_argument(where + ": " + message);
+      }
+
+      /// "beam 3 (node1 to node5, its hinge at node 4)": @p chain, of two
+      /// elements, which becomes the next beam of @p graph.
+      std::string
+      describe_one_hinge(const RodGraph &graph, const Chain &chain) const
+      {
+        return "beam " + std::to_string(graph.beams.size()) + " (" +
+               graph.nodes[node_index.at(chain.nodes.front())].name + " to " +
+               graph.nodes[node_index.at(chain.nodes.back())].name +
+               ", its hinge at node " + std::to_string(chain.nodes[1]) + ")";
       }
 
       bool
@@ -552,13 +573,14 @@ namespace rodnet
       std::map<long, std::vector<unsigned int>> incident;
       std::map<long, unsigned int>              node_index;
       std::vector<bool>                         visited;
+      std::vector<std::string>                  one_hinge;
     };
   } // namespace
 
   GmshLineMesh
   read_gmsh_line_mesh(const std::string &path)
   {
-    const LineMesh mesh = read_line_mesh(path);
+    LineMesh mesh = read_line_mesh(path);
     for (const LineElement &line : mesh.lines)
       {
         const auto fail = [&](const std::string &message) {
@@ -575,13 +597,29 @@ namespace rodnet
     if (mesh.lines.empty())
       throw std::invalid_argument("mesh \"" + path +
                                   "\": the mesh has no line elements");
+    merge_coincident_nodes(mesh, path);
     return mesh;
   }
 
   RodGraph
-  read_gmsh_network(const std::string &path)
+  read_gmsh_network(const std::string &path, ReadNotes *notes)
   {
     const LineMesh mesh = read_gmsh_line_mesh(path);
-    return ChainBuilder(mesh, path).build();
+    ChainBuilder   builder(mesh, path);
+    RodGraph       graph = builder.build();
+    if (notes == nullptr)
+      return graph;
+    if (const std::string merged = merged_nodes_note(mesh, path);
+        !merged.empty())
+      notes->info.push_back(merged);
+    if (const std::string warning = one_hinge_warning(
+          path,
+          builder.one_hinge_chains(),
+          "refine the mesh, or mark the hinge's node with a physical point: "
+          "it becomes a welded junction, and Geometry/Segments splits the two "
+          "beams of one element each");
+        !warning.empty())
+      notes->warnings.push_back(warning);
+    return graph;
   }
 } // namespace rodnet

@@ -2,6 +2,7 @@
 #define RODNET_IO_GMSH_NETWORK_H
 
 #include <core/rod_graph.h>
+#include <io/read_notes.h>
 
 #include <string>
 
@@ -36,14 +37,21 @@ namespace rodnet
    *   name names its node (it must hold a single node), so that scenes can
    *   refer to it. Other branch nodes are called "node<tag>".
    *
+   * - Coincident nodes are merged first (read_gmsh_line_mesh()): a joint
+   *   written as two node tags at one point is one node.
+   *
+   * Where @p notes is given, it receives the line naming the merged nodes
+   * (info) and the warning about beams that are chains of two line
+   * elements (one_hinge_warning()).
+   *
    * Throws std::invalid_argument naming the file and the line, node or
    * element for an unreadable or binary file, another format version, a
-   * malformed line, an unknown node, another element type, and for a chain
-   * of elements that closes on itself ("closed beam loops are not
-   * supported in networks").
+   * malformed line, an unknown node, another element type, a line element
+   * between two coincident nodes, and for a chain of elements that closes
+   * on itself ("closed beam loops are not supported in networks").
    */
   RodGraph
-  read_gmsh_network(const std::string &path);
+  read_gmsh_network(const std::string &path, ReadNotes *notes = nullptr);
 } // namespace rodnet
 
 #endif

@@ -8,8 +8,33 @@
 
 namespace rodnet
 {
+  namespace
+  {
+    /// The nodes along the chain of @p graph (each node's neighbours) from
+    /// @p start, until it ends or returns to @p start.
+    std::vector<long>
+    walk(const std::map<long, std::vector<long>> &graph, const long start)
+    {
+      std::vector<long>   nodes;
+      std::optional<long> previous;
+      long                current = start;
+      while (true)
+        {
+          nodes.push_back(current);
+          std::optional<long> step;
+          for (const long candidate : graph.at(current))
+            if (candidate != previous)
+              step = candidate;
+          if (!step || *step == start)
+            return nodes;
+          previous = current;
+          current  = *step;
+        }
+    }
+  } // namespace
+
   std::vector<RodChain>
-  read_gmsh_rods(const std::string &path)
+  read_gmsh_rods(const std::string &path, ReadNotes *notes)
   {
     // rodnet's own parser, not deal.II's GridIn: GridIn loops forever on a
     // file whose section lacks its $End line (a truncated file), and
@@ -27,7 +52,8 @@ namespace rodnet
         graph[line.nodes[1]].push_back(line.nodes[0]);
       }
 
-    std::vector<RodChain> rods;
+    std::vector<RodChain>    rods;
+    std::vector<std::string> one_hinge;
     for (const auto &[tag, graph] : neighbours)
       {
         const std::string where =
@@ -63,27 +89,34 @@ namespace rodnet
         if (n_ends == 0)
           start = graph.begin()->first;
 
-        RodChain chain;
+        const std::vector<long> nodes = walk(graph, *start);
+        RodChain                chain;
         chain.tag    = tag;
         chain.closed = n_ends == 0;
-        std::optional<long> previous;
-        long                current = *start;
-        while (true)
-          {
-            chain.points.push_back(mesh.nodes.at(current));
-            std::optional<long> step;
-            for (const long candidate : graph.at(current))
-              if (candidate != previous)
-                step = candidate;
-            if (!step || *step == *start)
-              break;
-            previous = current;
-            current  = *step;
-          }
-        if (chain.points.size() != graph.size())
+        if (nodes.size() != graph.size())
           throw std::invalid_argument(where + ": the segments form more than "
                                               "one chain; use one tag per rod");
+        for (const long node : nodes)
+          chain.points.push_back(mesh.nodes.at(node));
+        if (!chain.closed && nodes.size() == 3)
+          one_hinge.push_back("rod " + std::to_string(rods.size()) +
+                              " (physical tag " + std::to_string(tag) +
+                              ", its hinge at node " +
+                              std::to_string(nodes[1]) + ")");
         rods.push_back(chain);
+      }
+    if (notes != nullptr)
+      {
+        if (const std::string merged = merged_nodes_note(mesh, path);
+            !merged.empty())
+          notes->info.push_back(merged);
+        if (const std::string warning = one_hinge_warning(
+              path,
+              one_hinge,
+              "refine the mesh (the gmsh generator takes the mesh's segments "
+              "as they are)");
+            !warning.empty())
+          notes->warnings.push_back(warning);
       }
     return rods;
   }

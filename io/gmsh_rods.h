@@ -2,6 +2,7 @@
 #define RODNET_IO_GMSH_RODS_H
 
 #include <elements/quaternion.h>
+#include <io/read_notes.h>
 
 #include <string>
 #include <vector>
@@ -24,10 +25,13 @@ namespace rodnet
    * elements begin (their node order). Throws std::invalid_argument naming
    * the file and tag where they do not (branches belong to rod networks
    * with junctions), or naming the file and line where the file cannot be
-   * read (see read_gmsh_line_mesh()).
+   * read (see read_gmsh_line_mesh()). Coincident nodes are merged first
+   * (read_gmsh_line_mesh()). Where @p notes is given, it receives the line
+   * naming the merged nodes (info) and the warning about open rods of two
+   * line elements (one_hinge_warning()).
    */
   std::vector<RodChain>
-  read_gmsh_rods(const std::string &path);
+  read_gmsh_rods(const std::string &path, ReadNotes *notes = nullptr);
 } // namespace rodnet
 
 #endif

@@ -185,7 +185,9 @@ namespace rodnet
       }
     };
 
-    class GmshNetworkGenerator : public NetworkGenerator
+    /// A network of the mesh's line elements; what the reader says of the
+    /// mesh goes with it.
+    class GmshNetworkGenerator : public GeometryGenerator
     {
     public:
       void
@@ -194,12 +196,15 @@ namespace rodnet
         scene_entries::declare_mesh_file(prm);
       }
 
-      RodGraph
-      graph(const dealii::ParameterHandler &prm,
-            const GeneratorInput           &input) const override
+      GeneratedGeometry
+      generate(const dealii::ParameterHandler &prm,
+               const GeneratorInput           &input) const override
       {
-        return read_gmsh_network(
-          scene_entries::get_file(prm, "Mesh file", input.scene_directory));
+        GeneratedGeometry geometry;
+        geometry.graph = read_gmsh_network(
+          scene_entries::get_file(prm, "Mesh file", input.scene_directory),
+          &geometry.notes);
+        return geometry;
       }
     };
   } // namespace

@@ -11,7 +11,7 @@ namespace rodnet
   double
   ProblemSize::dofs() const
   {
-    return 3 * vertices + segments + 4 * junctions;
+    return 3 * vertices + segments + 4 * junctions + constraint_dofs;
   }
 
   double

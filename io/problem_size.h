@@ -20,12 +20,17 @@ namespace rodnet
     double vertices = 0;
     /// Junctions with a rotation (pinned ones have none).
     double junctions = 0;
+    /// DoFs of constraints (DofLayout): a Lagrange multiplier per segment
+    /// of an inextensible rod, three more per hinge of a developable
+    /// ribbon.
+    double constraint_dofs = 0;
     /// Peak memory per DoF of the solution method, bytes (see
     /// memory_per_dof()).
     double bytes_per_dof = 0;
 
     /// DoFs of the RodModel (DofLayout): 3 per vertex, a twist per
-    /// segment, 4 quaternion components per junction with a rotation.
+    /// segment, 4 quaternion components per junction with a rotation, and
+    /// the constraint DoFs.
     double
     dofs() const;
 

@@ -322,10 +322,9 @@ namespace rodnet
                const GeneratorInput           &input) const override
       {
         GeneratedGeometry geometry;
-        for (const RodChain &chain :
-             read_gmsh_rods(scene_entries::get_file(prm,
-                                                    "Mesh file",
-                                                    input.scene_directory)))
+        for (const RodChain &chain : read_gmsh_rods(
+               scene_entries::get_file(prm, "Mesh file", input.scene_directory),
+               &geometry.notes))
           {
             if (input.midpoint_clamp && chain.closed)
               throw std::invalid_argument(

@@ -320,6 +320,10 @@ namespace rodnet
                                    prm.get({"Geometry"}, "Generator"));
     parse_geometry(prm, scene_directory, check_size);
     parse_materials(prm, entries);
+    // The materials say which rods carry constraints with DoFs of their
+    // own.
+    model_size.constraint_dofs = constraint_dofs();
+    model_size                 = check_size(model_size, model_size_entry);
     parse_supports(prm);
     parse_loads(prm);
     if (gravity.norm() > 0)

@@ -12,6 +12,7 @@
 #include <io/natural_shape_ramp.h>
 #include <io/probes.h>
 #include <io/problem_size.h>
+#include <io/read_notes.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
 #include <materials/cross_section.h>
@@ -143,6 +144,9 @@ namespace rodnet
     /// The element families the scene asks for beyond the rods' own
     /// (an elastic foundation, ...).
     std::vector<RequestedFamily> family_requests;
+    /// What the generator's reader said of its input: merged coincident
+    /// nodes, coarse mesh chains (run_scene() prints it).
+    ReadNotes geometry_notes;
 
   private:
     /// What a material subsection defines.
@@ -240,6 +244,19 @@ namespace rodnet
     std::vector<unsigned int>
     rod_groups() const;
 
+    /// Segments of every rod of build_network(), rod by rod.
+    std::vector<double>
+    rod_segments() const;
+
+    /// The size of the rods and junctions that build_network() makes.
+    ProblemSize
+    geometry_size() const;
+
+    /// The DoFs of the constraints of the rods' materials
+    /// (ProblemSize::constraint_dofs).
+    double
+    constraint_dofs() const;
+
     /// The rods (or the network's rods) and the material of each.
     std::pair<std::unique_ptr<RodNetwork>,
               std::vector<std::shared_ptr<const RodMaterial>>>
@@ -333,6 +350,9 @@ namespace rodnet
     /// Loads/Fixed loads.
     bool        fixed_loads = false;
     ProblemSize model_size;
+    /// The entry a message about the model's size names
+    /// (GeometryGenerator::size_entry()).
+    std::string model_size_entry;
   };
 } // namespace rodnet
 

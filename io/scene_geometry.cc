@@ -6,6 +6,7 @@
 #include <io/scene_entries.h>
 
 #include <algorithm>
+#include <numeric>
 
 namespace rodnet
 {
@@ -17,11 +18,11 @@ namespace rodnet
     using scene_entries::join;
     using scene_entries::vector_pattern;
 
-    /// The size of the rods that build_rod_network() makes of @p graph,
-    /// @p n segments per beam: its junctions with a rotation (four DoFs)
-    /// are the nodes of two or more beam ends or of a kind, but pinned.
-    ProblemSize
-    graph_size(const RodGraph &graph, const double n)
+    /// The junctions of @p graph that build_rod_network() gives a
+    /// rotation (four DoFs): the nodes of two or more beam ends or of a
+    /// kind, but pinned.
+    double
+    rotating_junctions(const RodGraph &graph)
     {
       std::vector<unsigned int> ends(graph.nodes.size(), 0);
       for (const RodGraph::Beam &beam : graph.beams)
@@ -35,21 +36,7 @@ namespace rodnet
           const auto &kind = graph.nodes[i].kind;
           junctions += (ends[i] > 1 || kind) && kind != JunctionKind::pinned;
         }
-      return network_size(graph.beams.size(), junctions, n);
-    }
-
-    /// The size of the rods @p rods, closed where @p closed says.
-    ProblemSize
-    generated_size(const std::vector<std::vector<Vector3>> &rods,
-                   const std::vector<bool>                 &closed)
-    {
-      double segments = 0, n_closed = 0;
-      for (std::size_t r = 0; r < rods.size(); ++r)
-        {
-          segments += closed[r] ? rods[r].size() : rods[r].size() - 1.0;
-          n_closed += closed[r];
-        }
-      return rods_size(rods.size(), segments, n_closed);
+      return junctions;
     }
 
     /// Declares the entries of subsection Geometry that every generator
@@ -173,9 +160,63 @@ namespace rodnet
     segments_per_beam          = graph ? input.segments : 1;
     ghost_spin = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
                                                     GhostSpin::small_rotation;
-    model_size = check_size(graph ? graph_size(*graph, input.segments) :
-                                    generated_size(rod_points, rod_closed),
-                            size_entry);
+
+    geometry_notes   = std::move(geometry.notes);
+    model_size_entry = size_entry;
+    model_size       = check_size(geometry_size(), size_entry);
     prm.leave_subsection();
+  }
+
+  std::vector<double>
+  Scene::rod_segments() const
+  {
+    // A mesh's chain (a beam with interior vertices) keeps its segments;
+    // build_rod_network() splits a straight beam into segments_per_beam.
+    std::vector<double> segments;
+    if (graph)
+      for (const RodGraph::Beam &beam : graph->beams)
+        segments.push_back(beam.interior.empty() ? segments_per_beam :
+                                                   beam.interior.size() + 1.0);
+    else
+      for (std::size_t r = 0; r < rod_points.size(); ++r)
+        segments.push_back(rod_closed[r] ? rod_points[r].size() :
+                                           rod_points[r].size() - 1.0);
+    return segments;
+  }
+
+  ProblemSize
+  Scene::geometry_size() const
+  {
+    const std::vector<double> segments = rod_segments();
+    ProblemSize               size =
+      rods_size(segments.size(),
+                std::accumulate(segments.begin(), segments.end(), 0.0),
+                std::count(rod_closed.begin(), rod_closed.end(), true));
+    if (graph)
+      size.junctions = rotating_junctions(*graph);
+    return size;
+  }
+
+  double
+  Scene::constraint_dofs() const
+  {
+    // As DofLayout numbers them: a multiplier per segment of an
+    // inextensible rod (a developable ribbon is one), and three DoFs per
+    // hinge of a ribbon (every vertex of a closed rod, the inner ones of an
+    // open one).
+    const std::vector<double>       segments = rod_segments();
+    const std::vector<unsigned int> groups   = rod_groups();
+    double                          dofs     = 0;
+    for (std::size_t r = 0; r < segments.size(); ++r)
+      {
+        const MaterialGroup &group = material_groups[groups[r]];
+        const bool ribbon = group.material->developable_ribbon() != nullptr;
+        const bool closed = !graph && rod_closed[r];
+        if (ribbon || group.inextensible)
+          dofs += segments[r];
+        if (ribbon)
+          dofs += 3 * (closed ? segments[r] : segments[r] - 1);
+      }
+    return dofs;
   }
 } // namespace rodnet

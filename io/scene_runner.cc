@@ -622,6 +622,11 @@ namespace rodnet
             std::ostream      *log)
   {
     if (log != nullptr)
+      for (const std::string &info : scene.geometry_notes.info)
+        *log << "rodnet: " << info << std::endl;
+    for (const std::string &warning : scene.geometry_notes.warnings)
+      std::cerr << "warning: " << warning << std::endl;
+    if (log != nullptr)
       *log << "rodnet: " << describe_size(scene.size()) << std::endl;
     check_output_space(scene, output_directory);
     switch (scene.method)

@@ -271,6 +271,41 @@ namespace
      "",
      1,
      "use \"Generator = gmsh network\""},
+    // Coincident nodes: a Gmsh mesh's nodes a little too far apart to be
+    // merged, a line element between two coincident nodes, two nodes of a
+    // .net file at one point.
+    {"gmsh_nodes_slightly_apart",
+     valid_cantilever + section("Geometry",
+                                "  set Generator = gmsh network\n"
+                                "  set Mesh file = " +
+                                  data_folder + "nodes_1e-5_apart.msh\n"),
+     ".prm",
+     "",
+     1,
+     "nodes_1e-5_apart.msh\": nodes 2 and 3 are 1e-05 m apart: too far to be "
+     "merged (within 2e-08 m) and too close to be distinct"},
+    {"gmsh_element_between_coincident_nodes",
+     valid_cantilever + section("Geometry",
+                                "  set Generator = gmsh network\n"
+                                "  set Mesh file = " +
+                                  data_folder + "zero_length_element.msh\n"),
+     ".prm",
+     "",
+     1,
+     "zero_length_element.msh\": element 2 joins nodes 2 and 3, which "
+     "coincide (0 apart, within 2e-08 m): a line element of zero length; "
+     "remove it"},
+    {"network_file_coincident_nodes",
+     valid_cantilever + section("Geometry",
+                                "  set Generator = network file\n"
+                                "  set Network file = " +
+                                  data_folder + "coincident_nodes.net\n"),
+     ".prm",
+     "",
+     1,
+     "nodes \"b\" and \"c\" coincide at (1, 0, 0) (1e-10 apart, within "
+     "1.41e-08 m): a joint is one node; let the beams that meet there name "
+     "the same node"},
     {"output_without_directory",
      valid_cantilever,
      ".prm",

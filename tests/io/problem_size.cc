@@ -1,5 +1,7 @@
 // The size a scene reports before its model is built is the size of the
-// model built: DoFs against the DoF layout, for rods and networks.
+// model built: rods, segments and DoFs against the DoF layout, for every
+// generator (networks of meshes too, whose chains keep their segments) and
+// the constraints' DoFs of inextensible rods and ribbons.
 #include <deal.II/base/parameter_handler.h>
 
 #include <common/scene_text.h>
@@ -14,43 +16,56 @@ namespace
 {
   using namespace rodnet;
 
+  /// Orients the rods of a scene (networks orient their beams themselves).
+  const std::string rod_director = "  set Director d1 = 0, 0, 1\n";
+
+  /// A scene of the lines @p geometry in subsection Geometry, @p material
+  /// and @p more.
   std::unique_ptr<Scene>
-  scene_of(const std::string &geometry, const std::string &more = "")
+  scene_of(const std::string &geometry,
+           const std::string &more     = "",
+           const std::string &material = rodnet::testing::direct_material())
   {
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
     prm.parse_input_from_string("subsection Geometry\n" + geometry + "end\n" +
-                                rodnet::testing::direct_material() + more);
+                                material + more);
     return std::make_unique<Scene>(prm);
   }
 
+  /// The size the scene of @p geometry and @p material reports before its
+  /// model is built is that of the model built.
   void
-  expect_size_of_model(const std::string &geometry)
+  expect_size_of_model(
+    const std::string &geometry,
+    const std::string &material = rodnet::testing::direct_material())
   {
-    const auto   scene = scene_of(geometry);
+    const auto   scene = scene_of(geometry, "", material);
     const auto   model = scene->build_model();
     const double rods  = model->network().rods().size();
     EXPECT_EQ(scene->size().rods, rods) << geometry;
+    EXPECT_EQ(scene->size().segments,
+              model->network().triangulation().n_active_cells())
+      << geometry;
     EXPECT_EQ(scene->size().dofs(), model->layout().n_dofs()) << geometry;
   }
 
   TEST(ProblemSize, StraightRod)
   {
-    expect_size_of_model("  set Segments = 17\n");
+    expect_size_of_model(rod_director + "  set Segments = 17\n");
   }
 
   TEST(ProblemSize, Ring)
   {
-    expect_size_of_model("  set Generator = ring\n  set Segments = 12\n"
-                         "  set Director d1 = 0, 0, 1\n");
+    expect_size_of_model(rod_director +
+                         "  set Generator = ring\n  set Segments = 12\n");
   }
 
   TEST(ProblemSize, Polyline)
   {
-    expect_size_of_model("  set Generator = polyline\n"
-                         "  set Points = 0,0,0; 1,0,0; 1,1,0\n"
-                         "  set Segments = 5\n"
-                         "  set Director d1 = 0, 0, 1\n");
+    expect_size_of_model(rod_director + "  set Generator = polyline\n"
+                                        "  set Points = 0,0,0; 1,0,0; 1,1,0\n"
+                                        "  set Segments = 5\n");
   }
 
   TEST(ProblemSize, Frame)
@@ -63,6 +78,97 @@ namespace
     expect_size_of_model("  set Generator = square lattice\n"
                          "  set Cells = 3, 2\n"
                          "  set Segments = 3\n");
+  }
+
+  TEST(ProblemSize, Arc)
+  {
+    expect_size_of_model(rod_director +
+                         "  set Generator = arc\n  set Segments = 9\n");
+  }
+
+  TEST(ProblemSize, Helix)
+  {
+    expect_size_of_model(rod_director +
+                         "  set Generator = helix\n  set Segments = 30\n");
+  }
+
+  TEST(ProblemSize, GmshRods)
+  {
+    expect_size_of_model(
+      rod_director + "  set Generator = gmsh\n  set Mesh file = " +
+      std::string(RODNET_SOURCE_DIR) + "/scenes/meshes/cantilever.msh\n");
+  }
+
+  TEST(ProblemSize, Windmill)
+  {
+    expect_size_of_model("  set Generator = windmill\n  set Segments = 4\n");
+  }
+
+  TEST(ProblemSize, HexagonalLattice)
+  {
+    expect_size_of_model("  set Generator = hexagonal lattice\n"
+                         "  set Cells = 2, 3\n  set Segments = 2\n");
+  }
+
+  TEST(ProblemSize, NetworkFile)
+  {
+    expect_size_of_model("  set Generator = network file\n"
+                         "  set Network file = " RODNET_SOURCE_DIR
+                         "/tests/input/data/frame.net\n"
+                         "  set Segments = 7\n");
+  }
+
+  TEST(ProblemSize, GmshNetworkOfMeshChains)
+  {
+    // The clamped beam of scenes/gmsh_network.prm: two chains of 40 line
+    // elements; Segments splits none of them.
+    expect_size_of_model("  set Generator = gmsh network\n"
+                         "  set Mesh file = " RODNET_SOURCE_DIR
+                         "/scenes/meshes/clamped_beam.msh\n"
+                         "  set Segments = 20\n");
+  }
+
+  TEST(ProblemSize, GmshNetworkOfTwoElements)
+  {
+    // An L of two line elements clamped at node 1 (issue 33: "20 segments,
+    // 87 DoFs" printed): one rod of 2 segments, 3 vertices, a clamped
+    // junction, 3 * 3 + 2 + 4 = 15 DoFs.
+    std::ofstream("two_elements.msh")
+      << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+         "$PhysicalNames\n1\n0 1 \"clamped\"\n$EndPhysicalNames\n"
+         "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 1 1 0\n$EndNodes\n"
+         "$Elements\n3\n1 15 2 1 1 1\n2 1 2 4 1 1 2\n3 1 2 4 1 2 3\n"
+         "$EndElements\n";
+    const auto scene = scene_of("  set Generator = gmsh network\n"
+                                "  set Mesh file = two_elements.msh\n"
+                                "  set Segments = 20\n");
+    EXPECT_EQ(scene->size().segments, 2);
+    EXPECT_EQ(scene->size().dofs(), 15);
+    EXPECT_EQ(scene->size().dofs(), scene->build_model()->layout().n_dofs());
+  }
+
+  TEST(ProblemSize, InextensibleRing)
+  {
+    // A multiplier per segment.
+    expect_size_of_model(rod_director +
+                           "  set Generator = ring\n  set Segments = 12\n",
+                         rodnet::testing::direct_material() +
+                           "subsection Material\n"
+                           "  set Inextensible = true\nend\n");
+  }
+
+  TEST(ProblemSize, DevelopableRibbon)
+  {
+    // A multiplier per segment and three DoFs per hinge.
+    expect_size_of_model(rod_director +
+                           "  set Generator = arc\n  set Segments = 10\n"
+                           "  set Natural shape = straight\n",
+                         "subsection Material\n"
+                         "  set Model = wunderlich ribbon\n"
+                         "  subsection wunderlich ribbon\n"
+                         "    set Young's modulus = 1e7\n"
+                         "    set Width = 0.1\n    set Thickness = 0.01\n"
+                         "  end\nend\n");
   }
 
   /// The peak resident memory of this process so far (VmHWM), bytes.
@@ -85,7 +191,7 @@ namespace
     // 4e5 and 2e6 DoFs, 1 kB of it the stability check's LDL^T; the
     // estimate is 1.65 kB).
     const auto scene =
-      scene_of("  set Segments = 30000\n  set End = 30, 0, 0\n",
+      scene_of(rod_director + "  set Segments = 30000\n  set End = 30, 0, 0\n",
                "subsection Supports\n  set Clamped ends = start\nend\n"
                "subsection Loads\n  set Steps = 1\n"
                "  set Point forces = end: 0, 1e-6, 0\nend\n"
