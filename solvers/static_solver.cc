@@ -140,7 +140,7 @@ namespace rodnet
           ResidualCriterion::tolerance(scale,
                                        noise.floor,
                                        parameters.relative_tolerance);
-        if (ResidualCriterion::within(reached, judged))
+        if (far_start || ResidualCriterion::within(reached, judged))
           {
             outcome.scale = scale;
             outcome.rounding_limited =

@@ -149,10 +149,8 @@ namespace rodnet
      * Newton from @p u at @p load_factor; @p u holds the result. The scales
      * of the tolerance are those of the loads and reactions at @p u, or at
      * @p scale_state instead if given: the unextrapolated start, so that
-     * the predictor does not change the tolerance. A @p far_start (a state
-     * displaced along a mode) also counts its own out-of-balance forces in
-     * the first round's scale. The reactions of the solution are what
-     * counts, for a far start too: if the solution's tolerance is tighter,
+     * the predictor does not change the tolerance. The reactions of the
+     * solution are what counts: if the solution's tolerance is tighter,
      * Newton continues from there. Throws SolverFailure if rounding limits
      * the residual to more than roundoff_limit of the loads.
      */

@@ -16,10 +16,8 @@
 // measured as if a coordinate were known to eps |X + u|, where the tip rolls
 // back towards the origin, while the DoF is the displacement u, known to
 // eps |u| (doc/nonlinear_solvers.md, "Accepted steps").
+#include <common/rod_models.h>
 #include <common/run_scene_text.h>
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
-#include <materials/linear_elastic_rod.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
 
@@ -180,26 +178,13 @@ namespace
     // every step is the one accepted, with its reference committed; the
     // reference reset changes how the state is stored, not the state, so
     // its residual differs from the accepted one by rounding (the floor).
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(L, 0, 0),
-                                          200),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_rod(generators::straight(Vector3(L, 0, 0),
-                                          Vector3(1.01 * L, 0, 0),
-                                          200),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
-    const unsigned int tip = network->add_junction("tip",
-                                                   JunctionKind::welded,
-                                                   {{0, false}, {1, true}});
-    const auto         material =
-      std::make_shared<LinearElasticRod>(RodStiffness{EA, EI, stiff, stiff});
-    RodModel model(std::move(network), {material, material});
+    CantileverWithHandle cantilever =
+      cantilever_with_handle(L, 200, 0.01 * L, 200);
+    const unsigned int              tip = cantilever.tip;
+    const std::unique_ptr<RodModel> owned =
+      elastic_model(std::move(cantilever.network),
+                    RodStiffness{EA, EI, stiff, stiff});
+    RodModel &model = *owned;
     model.add_moment(tip, Vector3::UnitZ(), M);
     model.finalize();
 
