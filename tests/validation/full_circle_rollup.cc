@@ -36,8 +36,9 @@ namespace
 
   /// Discretization error of the tip's angle at 200 segments per beam:
   /// 1.64e-4 of theta at lambda = 1 and (kappa l)^2 / 6 relative in
-  /// general (6.54e-4 at 100 segments: order 2.0); the states that rounding
-  /// leaves uncertain (the warning names the stub) scatter by 1.2e-4.
+  /// general (6.54e-4 at 100 segments: order 2.0); states that rounding
+  /// leaves uncertain (the warning names the stub) scatter by up to 1.2e-4
+  /// about it (in 32 steps).
   constexpr double angle_tolerance = 2.5e-4;
   /// The same for the tip's position, in units of L (1.65e-4 L at 1).
   constexpr double position_tolerance = 2.5e-4;
