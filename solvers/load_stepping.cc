@@ -34,14 +34,26 @@ namespace rodnet
         path.step            = target - path.lambda;
         VectorType   trial   = u;
         bool         followed_mode = false;
+        // The state of u, where a critical-load search may start from it:
+        // taken before the attempt, which may commit the trial's.
+        const std::optional<ModelState> stable_state =
+          parameters.find_critical_load && std::isnan(critical_load) &&
+              path.previous_stable ?
+            std::optional<ModelState>(model.state()) :
+            std::nullopt;
         JudgedResult result = attempt_step(path, u, target, trial, followed_mode);
         if (!result.converged)
           {
             cut_step(path, u, target, result);
             continue;
           }
-        StepInfo info =
-          accept_step(path, u, trial, target, result, followed_mode);
+        StepInfo info  = accept_step(path,
+                                    u,
+                                    trial,
+                                    target,
+                                    result,
+                                    followed_mode,
+                                    stable_state);
         info.wall_time = timer.wall_time();
         if (log != nullptr)
           report_step(info);
@@ -109,17 +121,24 @@ namespace rodnet
   {
     // Past a bifurcation the Newton step from the previous state (whose
     // tangent is nearly singular there) diverges; start instead from the
-    // previous state displaced along its buckling mode. The step is then
-    // accepted from the previous reference, which the guard reinstalls.
-    const StateGuard previous(model);
-    VectorType       start = u;
-    double           mu    = std::nan("");
-    if (!solve_along_mode(
-          start, lambda, target, std::numeric_limits<double>::max(), mu))
+    // previous state displaced along its buckling mode. solve_along_mode()
+    // commits the reference at the equilibrium it finds and zeroes the
+    // trial's quaternion increments: the step is accepted with that
+    // reference. The previous one would pair the trial with the frames and
+    // junction rotations of the step before (issue 33: a stale rotation,
+    // a junction kinked by the step's turn).
+    VectorType   start = u;
+    double       mu    = std::nan("");
+    JudgedResult solved;
+    if (!solve_along_mode(start,
+                          lambda,
+                          target,
+                          std::numeric_limits<double>::max(),
+                          mu,
+                          &solved))
       return false;
-    trial            = start;
-    result.converged = true;
-    result.residual  = solved_residual(trial, target);
+    trial  = start;
+    result = solved;
     if (log != nullptr)
       *log << "  step to load factor " << target
            << " converged from the buckling mode" << std::endl;
@@ -150,24 +169,23 @@ namespace rodnet
   }
 
   StaticSolver::StepInfo
-  StaticSolver::accept_step(LoadPath           &path,
-                            VectorType         &u,
-                            const VectorType   &trial,
-                            const double        target,
-                            const JudgedResult &result,
-                            const bool          followed_mode)
+  StaticSolver::accept_step(LoadPath                        &path,
+                            VectorType                      &u,
+                            const VectorType                &trial,
+                            const double                     target,
+                            const JudgedResult              &result,
+                            const bool                       followed_mode,
+                            const std::optional<ModelState> &stable_state)
   {
-    // The last stable state, should the critical-load search start here.
-    const bool search = parameters.find_critical_load &&
-                        std::isnan(critical_load) && path.previous_stable;
-    const std::optional<ModelState> stable_state =
-      search ? std::optional<ModelState>(model.state()) : std::nullopt;
     path.increment = trial;
     path.increment -= u;
     path.last_step = followed_mode ? 0 : path.step;
     path.previous  = u;
     u              = trial;
-    model.reset_reference(u);
+    // From the buckling mode the reference is committed at the trial
+    // already (step_from_mode()).
+    if (!followed_mode)
+      model.reset_reference(u);
 
     StepInfo info;
     info.step        = ++path.count;
@@ -176,7 +194,7 @@ namespace rodnet
     info.residual    = result.residual;
     if (parameters.track_lowest_eigenvalue)
       info.lowest_eigenvalue = lowest_eigenvalue(u, target);
-    if (search && negative_eigenvalues(u, target) > 0)
+    if (stable_state && negative_eigenvalues(u, target) > 0)
       search_critical_load(path.previous, *stable_state, path.lambda, target);
     check_state(u, result, info);
     // The stability check (its inertia, symmetry modes left out) decides:

@@ -233,8 +233,10 @@ namespace rodnet
                                     const double      load_factor,
                                     const VectorType *extra_force) const
   {
-    // Every DoF is known to eps |x_j| at best: positions are absolute
-    // coordinates X + u, angles and quaternions are of order one. Newton's
+    // Every DoF is known to eps |x_j| at best: a position's DoF is the
+    // displacement u from X, rounded to |u|, and X + u to |X + u| (a rod
+    // that rolls back to where it started knows its tip to eps |u|, not
+    // to eps |X + u|); angles and quaternions are of order one. Newton's
     // iterates carry that rounding, and the residual moves with it (through
     // the tangent, and through the rounding of the strains computed from
     // the positions, eps |x| / l per segment, which the tangent does not
@@ -259,12 +261,12 @@ namespace rodnet
             // small, and known relative to itself).
             const double magnitude =
               dof_roles.kind(i) == Kind::position ?
-                std::abs(model.network().vertex(
-                           dof_roles.owner(i))[dof_roles.component(i)] +
-                         values[i]) :
-              dof_roles.kind(i) == Kind::multiplier ?
-                std::abs(values[i]) :
-                1 + std::abs(values[i]);
+                std::max(std::abs(values[i]),
+                         std::abs(model.network().vertex(dof_roles.owner(
+                                    i))[dof_roles.component(i)] +
+                                  values[i])) :
+              dof_roles.kind(i) == Kind::multiplier ? std::abs(values[i]) :
+                                                      1 + std::abs(values[i]);
             if (dof_roles.kind(i) != Kind::inert)
               moved[i] += std::numeric_limits<double>::epsilon() * magnitude *
                           unit(random);

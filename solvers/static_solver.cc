@@ -202,14 +202,6 @@ namespace rodnet
       throw std::invalid_argument(free_motions);
   }
 
-  ResidualParts
-  StaticSolver::solved_residual(const VectorType &u, const double load_factor)
-  {
-    VectorType r = model.create_vector();
-    model.assemble(u, load_factor, &r, nullptr, true);
-    return criterion.norms(u, r);
-  }
-
   unsigned int
   StaticSolver::negative_eigenvalues(const VectorType &u,
                                      const double      load_factor)
@@ -296,11 +288,12 @@ namespace rodnet
   }
 
   bool
-  StaticSolver::solve_along_mode(VectorType  &u,
-                                 const double mode_load_factor,
-                                 const double load_factor,
-                                 double       energy_bound,
-                                 double      &eigenvalue)
+  StaticSolver::solve_along_mode(VectorType   &u,
+                                 const double  mode_load_factor,
+                                 const double  load_factor,
+                                 double        energy_bound,
+                                 double       &eigenvalue,
+                                 JudgedResult *solved)
   {
     model.assemble(u, mode_load_factor, nullptr, &tangent);
     const std::vector<double> mode =
@@ -315,11 +308,14 @@ namespace rodnet
     StateGuard                start(model);
     std::optional<ModelState> best_state;
     VectorType                best = u;
+    JudgedResult              best_result;
     for (const double sign : {1.0, -1.0})
       {
         model.set_state(start.saved_state());
-        VectorType trial = moved_along_mode(u, mode, sign * distance);
-        if (!solve_at(trial, load_factor, nullptr, nullptr, true).converged)
+        VectorType         trial = moved_along_mode(u, mode, sign * distance);
+        const JudgedResult result =
+          solve_at(trial, load_factor, nullptr, nullptr, true);
+        if (!result.converged)
           continue;
         model.reset_reference(trial);
         const double energy =
@@ -331,6 +327,7 @@ namespace rodnet
             eigenvalue   = mu;
             best         = trial;
             best_state   = model.state();
+            best_result  = result;
           }
       }
     if (!best_state)
@@ -338,6 +335,8 @@ namespace rodnet
     model.set_state(*best_state);
     start.keep();
     u = best;
+    if (solved != nullptr)
+      *solved = best_result;
     return true;
   }
 

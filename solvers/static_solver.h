@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -165,14 +166,17 @@ namespace rodnet
      * lowest eigenmode of the tangent at (@p u, @p mode_load_factor). If a
      * stable equilibrium of energy below @p energy_bound is found, @p u,
      * @p eigenvalue and the model's reference become the lowest-energy one
-     * and it returns true; otherwise they are left as they were.
+     * (the reference committed at @p u, whose quaternion increments are
+     * then zero), @p solved (if given) the result of its solve, and it
+     * returns true; otherwise they are left as they were.
      */
     bool
-    solve_along_mode(VectorType &u,
-                     double      mode_load_factor,
-                     double      load_factor,
-                     double      energy_bound,
-                     double     &eigenvalue);
+    solve_along_mode(VectorType   &u,
+                     double        mode_load_factor,
+                     double        load_factor,
+                     double        energy_bound,
+                     double       &eigenvalue,
+                     JudgedResult *solved = nullptr);
 
     /**
      * Start for a step to @p load_factor from the equilibrium @p u that has
@@ -190,10 +194,6 @@ namespace rodnet
     /// from @p u (see run()).
     void
     refuse_unsolvable(const VectorType &u);
-
-    /// Force and moment norms of the residual at (@p u, @p load_factor).
-    ResidualParts
-    solved_residual(const VectorType &u, double load_factor);
 
     /// Stability (the inertia of the tangent), the Newton correction where
     /// @p result was rounding-limited, and the strain range of the
@@ -261,8 +261,10 @@ namespace rodnet
                  VectorType       &trial,
                  bool             &followed_mode);
 
-    /// The branch-switch start of attempt_step(); the model's state stays
-    /// that of @p u.
+    /// The branch-switch start of attempt_step(). Where it converges,
+    /// @p result becomes that solve's and the model's reference is
+    /// committed at @p trial; otherwise the model's state stays that of
+    /// @p u.
     bool
     step_from_mode(const VectorType &u,
                    double            lambda,
@@ -280,16 +282,19 @@ namespace rodnet
 
     /**
      * Makes the converged @p trial at @p target the state @p u (the
-     * reference reset), then the eigenvalue, the critical-load search and
-     * the branch switch it asks for, and the checks of the state.
+     * reference reset, already done where the step @p followed_mode), then
+     * the eigenvalue, the critical-load search from @p stable_state (the
+     * state of @p u before the step, where a search is due) and the branch
+     * switch it asks for, and the checks of the state.
      */
     StepInfo
-    accept_step(LoadPath           &path,
-                VectorType         &u,
-                const VectorType   &trial,
-                double              target,
-                const JudgedResult &result,
-                bool                followed_mode);
+    accept_step(LoadPath                        &path,
+                VectorType                      &u,
+                const VectorType                &trial,
+                double                           target,
+                const JudgedResult              &result,
+                bool                             followed_mode,
+                const std::optional<ModelState> &stable_state);
 
     /// bisect_critical_load(), after which the model's state is the
     /// unstable step's again; a failed search is logged, not thrown.

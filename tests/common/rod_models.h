@@ -27,6 +27,39 @@ namespace rodnet::testing
     return network;
   }
 
+  /// The network of cantilever_with_handle() and its tip junction.
+  struct CantileverWithHandle
+  {
+    std::unique_ptr<RodNetwork> network;
+    unsigned int                tip;
+  };
+
+  /// A cantilever of length @p length along x in @p n segments, clamped at
+  /// the origin (junction "clamp"), with a stub of @p stub_length in
+  /// @p stub_segments welded at its tip (junction "tip") as a rotation
+  /// handle; d1 = e_z, the simple kernel.
+  inline CantileverWithHandle
+  cantilever_with_handle(const double       length,
+                         const unsigned int n,
+                         const double       stub_length,
+                         const unsigned int stub_segments)
+  {
+    const Vector3 tip(length, 0, 0);
+    auto          network = straight_network(n, Vector3(0, 0, 0), tip);
+    network->add_rod(generators::straight(tip,
+                                          tip + Vector3(stub_length, 0, 0),
+                                          stub_segments),
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
+    const unsigned int junction =
+      network->add_junction("tip",
+                            JunctionKind::welded,
+                            {{0, false}, {1, true}});
+    return {std::move(network), junction};
+  }
+
   /// A RodModel of @p network whose rods all have the linear elastic
   /// rigidities @p stiffness.
   inline std::unique_ptr<RodModel>

@@ -11,9 +11,7 @@
 // leaves the state less determined than 1e-6 of the model size. The motion
 // is held in the plane z = 0, where the roll-up is stable up to the half
 // circle M = pi EI / L: the tip at (0, 2 L / pi), turned by pi.
-#include <core/rod_generators.h>
-#include <core/rod_model.h>
-#include <materials/linear_elastic_rod.h>
+#include <common/rod_models.h>
 #include <solvers/static_solver.h>
 
 #include <cmath>
@@ -39,26 +37,13 @@ namespace
   RollUp
   roll_up(const unsigned int stub_segments)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(L, 0, 0),
-                                          200),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_rod(generators::straight(Vector3(L, 0, 0),
-                                          Vector3(1.01 * L, 0, 0),
-                                          stub_segments),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
-    const unsigned int tip = network->add_junction("tip",
-                                                   JunctionKind::welded,
-                                                   {{0, false}, {1, true}});
-    const auto         material =
-      std::make_shared<LinearElasticRod>(RodStiffness{EA, EI, EI, EI});
-    RodModel model(std::move(network), {material, material});
+    rodnet::testing::CantileverWithHandle cantilever =
+      rodnet::testing::cantilever_with_handle(L, 200, 0.01 * L, stub_segments);
+    const unsigned int              tip = cantilever.tip;
+    const std::unique_ptr<RodModel> owned =
+      rodnet::testing::elastic_model(std::move(cantilever.network),
+                                     RodStiffness{EA, EI, EI, EI});
+    RodModel &model = *owned;
     model.add_moment(tip, Vector3::UnitZ(), M);
     for (unsigned int v = 0; v < model.network().n_vertices(); ++v)
       model.fix_components("plane " + std::to_string(v),
