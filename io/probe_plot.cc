@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
@@ -144,44 +145,102 @@ namespace rodnet
                name;
     }
 
+    /// Columns of a probe table (1-based, 0 where it has none) that say
+    /// how its rows lie on a path.
+    struct PathColumns
+    {
+      int stable    = 0;
+      int arclength = 0;
+      int jump      = 0;
+      /// Whether some row has jump = 1.
+      bool has_jumps = false;
+    };
+
     /**
      * The gnuplot command of the panel of column @p column (1-based) of
      * @p csv_path against column 2. Where the table says which rows are
-     * stable equilibria (column @p stable_column, 0 if none), those are
-     * drawn solid and the unstable ones dashed red, as charts of load
-     * paths through buckling and snap-through are read; the key only
-     * where @p key. Where it has an arclength (column @p arclength_column,
-     * 0 if none), a row whose arclength falls below the one before starts
-     * the other side of a bifurcation (Switch branches = both): it is left
-     * undefined, so that no line joins the end of one side to the start of
-     * the next.
+     * stable equilibria (@p path.stable), those are drawn solid and the
+     * unstable ones dashed red, as charts of load paths through buckling
+     * and snap-through are read; the key only where @p key. A row starts
+     * a new stretch of the path where its arclength falls below the one
+     * before (the other side of a bifurcation, Switch branches = both) or
+     * where the path jumped to it past a limit point (jump = 1, Limit
+     * points = snap). The stretches alternate between two series, so that
+     * no line joins one to the next and every row keeps its point; a jump
+     * is drawn as a dashed black segment from the row before.
      */
     std::string
     plot_command(const std::string &csv_path,
                  const int          column,
-                 const int          stable_column,
-                 const int          arclength_column,
+                 const PathColumns &path,
                  const bool         key)
     {
-      const std::string style  = " with linespoints pointtype 7 pointsize 0.5";
-      const auto        series = [&](const std::string &y) {
-        if (arclength_column == 0)
-          return quote(csv_path) + " skip 1 using 2:(" + y + ")";
-        const std::string s =
-          "column(" + std::to_string(arclength_column) + ")";
-        return "s0 = -1e300, " + quote(csv_path) + " skip 1 using 2:(r = " + s +
-               " < s0, s0 = " + s + ", r ? 1/0 : " + y + ")";
+      const std::string style = " with linespoints pointtype 7 pointsize 0.5";
+      const auto        col   = [](const int c) {
+        return "column(" + std::to_string(c) + ")";
       };
-      const std::string y = "column(" + std::to_string(column) + ")";
-      if (stable_column == 0)
-        return "plot " + series(y) + style + " notitle\n";
-      const std::string unstable =
-        "column(" + std::to_string(stable_column) + ") == 0";
-      return "plot " + series(unstable + " ? 1/0 : " + y) + style +
-             (key ? " title 'stable', " : " notitle, ") +
-             series(unstable + " ? " + y + " : 1/0") + style +
-             " dashtype 2 linecolor rgb '#d62728'" +
-             (key ? " title 'unstable'" : " notitle") + "\n";
+      std::string restart;
+      if (path.arclength != 0)
+        restart = col(path.arclength) + " < s0";
+      if (path.has_jumps)
+        restart += (restart.empty() ? "" : " || ") + col(path.jump) + " == 1";
+      const std::string s0 = path.arclength != 0 ? col(path.arclength) : "0";
+      const auto series = [&](const std::string &y, const int stretch) {
+        if (restart.empty())
+          return quote(csv_path) + " skip 1 using 2:(" + y + ")";
+        return "s0 = -1e300, p = 0, " + quote(csv_path) +
+               " skip 1 using 2:(p = (" + restart + ") ? 1 - p : p, s0 = " +
+               s0 + ", p == " + std::to_string(stretch) + " ? " + y +
+               " : 1/0)";
+      };
+      const std::string y = col(column);
+      const int stretches = restart.empty() ? 1 : 2;
+      std::string       command;
+      for (int stretch = 0; stretch < stretches; ++stretch)
+        {
+          const bool titled = key && stretch == 0;
+          if (path.stable == 0)
+            command += series(y, stretch) + style + " linecolor 1 notitle, ";
+          else
+            {
+              const std::string unstable = col(path.stable) + " == 0";
+              command += series(unstable + " ? 1/0 : " + y, stretch) + style +
+                         " linecolor 1" +
+                         (titled ? " title 'stable', " : " notitle, ") +
+                         series(unstable + " ? " + y + " : 1/0", stretch) +
+                         style + " dashtype 2 linecolor rgb '#d62728'" +
+                         (titled ? " title 'unstable', " : " notitle, ");
+            }
+        }
+      if (path.has_jumps)
+        // From the row before to the jump's row (gnuplot evaluates the
+        // using columns in order).
+        command += "x0 = NaN, y0 = NaN, " + quote(csv_path) +
+                   " skip 1 using (xp = x0, x0 = column(2), xp):(yp = y0, "
+                   "y0 = " +
+                   y + ", yp):(" + col(path.jump) +
+                   " == 1 ? x0 - xp : 1/0):(y0 - yp) with vectors nohead "
+                   "dashtype 2 linewidth 2 linecolor rgb 'black'" +
+                   (key ? " title 'jump', " : " notitle, ");
+      return "plot " + command.substr(0, command.size() - 2) + "\n";
+    }
+
+    /// Whether column @p column (1-based) of some row of the CSV file
+    /// @p csv_path, after its header, holds the number 1.
+    bool
+    some_row_is_one(const std::string &csv_path, const int column)
+    {
+      std::ifstream csv(csv_path);
+      std::string   line;
+      std::getline(csv, line);
+      while (std::getline(csv, line))
+        {
+          const std::vector<std::string> fields = split_csv_line(line);
+          if (int(fields.size()) >= column &&
+              std::strtod(fields[column - 1].c_str(), nullptr) == 1)
+            return true;
+        }
+      return false;
     }
 
     bool
@@ -255,22 +314,19 @@ namespace rodnet
                    << ":" << x_range->second << "]\n";
           script << "set multiplot layout " << n_rows << "," << n_cols
                  << " title " << quote(title) << "\n";
-          const auto stable =
-            std::find(columns.begin(), columns.end(), "stable");
-          const int stable_column =
-            stable == columns.end() ? 0 : stable - columns.begin() + 1;
-          const auto arclength =
-            std::find(columns.begin(), columns.end(), "arclength");
-          const int arclength_column =
-            arclength == columns.end() ? 0 : arclength - columns.begin() + 1;
+          const auto column_of = [&](const std::string &name) {
+            const auto c = std::find(columns.begin(), columns.end(), name);
+            return c == columns.end() ? 0 : int(c - columns.begin()) + 1;
+          };
+          PathColumns path;
+          path.stable    = column_of("stable");
+          path.arclength = column_of("arclength");
+          path.jump      = column_of("jump");
+          path.has_jumps = path.jump != 0 && some_row_is_one(csv_path, path.jump);
           for (unsigned int p = 0; p < n_probes; ++p)
             script << "set ylabel "
                    << quote(axis_label(columns[p + 2], units, p + 1)) << "\n"
-                   << plot_command(csv_path,
-                                   p + 3,
-                                   stable_column,
-                                   arclength_column,
-                                   p == 0);
+                   << plot_command(csv_path, p + 3, path, p == 0);
           script << "unset multiplot\n";
           if (!script)
             return warn(png_path,

@@ -366,7 +366,12 @@ namespace rodnet
         *model,
         summary,
         "load_factor",
-        {"arclength", "branch", "negative_eigenvalues", "stable", "in_range"});
+        {"arclength",
+         "branch",
+         "negative_eigenvalues",
+         "stable",
+         "in_range",
+         "jump"});
       if (log != nullptr)
         *log << "rodnet (continuation): " << model->network().rods().size()
              << " rod(s), " << model->layout().n_dofs() << " DoFs" << std::endl;
@@ -396,7 +401,10 @@ namespace rodnet
                                       double(info.branch),
                                       double(info.check.negative_eigenvalues),
                                       double(info.check.stable),
-                                      double(info.strain.in_range)});
+                                      double(info.strain.in_range),
+                                      double(info.kind ==
+                                             ArclengthContinuation::
+                                               PointKind::jump)});
                    });
       });
       if (!solver.bifurcations().empty())

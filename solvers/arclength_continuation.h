@@ -79,7 +79,13 @@ namespace rodnet
       /// With switch_branches: once the path has left the range (or Max
       /// points), follow each switched branch's other side too, from its
       /// bifurcation ("Switch branches = both").
-      bool         follow_both_branches = false;
+      bool follow_both_branches = false;
+      /// At a limit point where the load factor would fall, jump as a
+      /// load-controlled structure snaps: to a stable equilibrium just past
+      /// the fold, found from the fold's state moved along its critical
+      /// mode, and follow the path on from there ("Limit points = snap").
+      /// Off, the path turns back through the fold.
+      bool         snap_at_limit_points = false;
       std::string  linear_solver        = "auto";
       StrainLimits strain_limits;
 
@@ -99,7 +105,9 @@ namespace rodnet
       regular,
       output_point, ///< landed on one of Parameters::output_points
       limit_point,  ///< the path turned back in lambda at this step
-      bifurcation   ///< the stable side of a located bifurcation
+      bifurcation,  ///< the stable side of a located bifurcation
+      fold,         ///< a located limit point that the path snaps from
+      jump ///< the stable state the path snapped to past a limit point
     };
 
     struct StepInfo
@@ -281,6 +289,43 @@ namespace rodnet
                        double           ds,
                        StepInfo        &q_info,
                        const Observer  &on_converged);
+
+    /**
+     * Locates the limit point between @p p, where the load factor rises,
+     * and the point at pseudo-arclength @p ds along p's tangent, where it
+     * falls, by bisection on the sign of dlambda/ds (and on the count of
+     * negative eigenvalues, one of which crosses zero there); returns the
+     * last point found before the turn (p itself if none is closer),
+     * accepted (@p info), its tangent along the critical mode.
+     */
+    PathPoint
+    locate_fold(const PathPoint &p, double ds, StepInfo &info);
+
+    /**
+     * Snapping at a limit point (Parameters::snap_at_limit_points): the
+     * step of pseudo-arclength @p ds from @p p passed a maximum of the
+     * load factor. Reports the fold, solves for a stable state just
+     * past it (jump_past_fold()), reports that as the start of a new branch
+     * and makes it @p p. Throws SolverFailure where no stable state is
+     * found.
+     */
+    void
+    snap(PathPoint &p, double ds, const Observer &on_converged);
+
+    /**
+     * A stable equilibrium at load factor @p lambda, past the fold @p fold:
+     * Newton (the trust region on the potential where the model has one,
+     * full steps otherwise) from the fold's state moved along its tangent,
+     * the critical mode, by growing amplitudes until one lands on a
+     * stable state. False (@p u undefined) if none does; @p tried says
+     * what failed.
+     */
+    bool
+    jump_past_fold(const PathPoint &fold,
+                   double           lambda,
+                   VectorType      &u,
+                   JudgedResult    &result,
+                   std::string     &tried);
 
     /**
      * Follows the path from @p p with first step length @p ds until it

@@ -142,6 +142,13 @@ namespace rodnet
         if (target)
           info.kind = PointKind::output_point;
         PathPoint q = accept(next, lambda, &p, result, info);
+        if (q.t_lambda * p.t_lambda < 0 &&
+            parameters.snap_at_limit_points && p.t_lambda > 0)
+          {
+            snap(p, ds_taken, on_converged);
+            ds = parameters.initial_step;
+            continue;
+          }
         if (q.t_lambda * p.t_lambda < 0)
           {
             info.kind = PointKind::limit_point;

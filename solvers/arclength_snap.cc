@@ -1,0 +1,179 @@
+#include <solvers/arclength_continuation.h>
+#include <solvers/equilibrium_check.h>
+#include <solvers/static_solver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// The fold is located to this fraction of the step that passed it.
+    constexpr double fold_bracket = 1e-4;
+
+    /// The jump lands this far past the fold's load factor (relative to
+    /// max(1, |lambda|)): far enough that the fold's state is out of
+    /// balance well above the tolerance, close enough to draw the jump as
+    /// the vertical line of a load-controlled experiment.
+    constexpr double snap_overshoot = 1e-3;
+
+    /// Moves of the fold's state along its critical mode (W norm: a
+    /// fraction of the model size, or rad) that the jump starts from, in
+    /// turn, until one lands on a stable state.
+    constexpr double seed_amplitudes[] = {0, 0.01, 0.1};
+  } // namespace
+
+  ArclengthContinuation::PathPoint
+  ArclengthContinuation::locate_fold(const PathPoint &p,
+                                     const double     ds,
+                                     StepInfo        &info)
+  {
+    double       s_lo = 0, s_hi = ds, lambda_lo = p.lambda;
+    VectorType   u_lo = p.u;
+    JudgedResult result_lo;
+    // A point between, for the sign of its dlambda/ds (its tangent
+    // oriented along the chord from p, as the path's).
+    PathPoint probe;
+    probe.symmetries = p.symmetries;
+    model.set_state(*p.state);
+    while (s_hi - s_lo > fold_bracket * ds)
+      {
+        const double s_mid  = 0.5 * (s_lo + s_hi);
+        VectorType   u      = u_lo;
+        double       lambda = lambda_lo + (s_mid - s_lo) * p.t_lambda;
+        u.add(s_mid - s_lo, p.t_u);
+        const JudgedResult result =
+          correct(p, Constraint{&p.t_u, p.t_lambda, s_mid}, u, lambda);
+        if (!result.converged)
+          // The bracket found so far: the fold lies within it.
+          break;
+        probe.u      = u;
+        probe.lambda = lambda;
+        compute_tangent(probe, &p);
+        // Before the turn: lambda still rising, and the critical
+        // eigenvalue, which crosses zero there, not yet across. It is
+        // counted as accept() will count it, from the state's own
+        // reference: so close to zero, the other reference's tangent may
+        // give it the other sign.
+        model.reset_reference(probe.u);
+        const bool before = probe.t_lambda > 0 &&
+                            negative_eigenvalues(model,
+                                                 probe.u,
+                                                 lambda,
+                                                 tangent) == p.negative;
+        model.set_state(*p.state);
+        if (before)
+          {
+            s_lo      = s_mid;
+            lambda_lo = lambda;
+            u_lo      = u;
+            result_lo = result;
+          }
+        else
+          s_hi = s_mid;
+      }
+    model.set_state(*p.state);
+    if (s_lo == 0)
+      return p;
+    return accept(u_lo, lambda_lo, &p, result_lo, info);
+  }
+
+  bool
+  ArclengthContinuation::jump_past_fold(const PathPoint &fold,
+                                        const double     lambda,
+                                        VectorType      &u,
+                                        JudgedResult    &result,
+                                        std::string     &tried)
+  {
+    StaticSolver::Parameters settings;
+    settings.relative_tolerance   = parameters.relative_tolerance;
+    settings.newton.linear_solver = parameters.linear_solver;
+    // The trust region descends to a minimum of the potential, as the
+    // snapping structure does. A model with multipliers (inextensible rods)
+    // has no potential, its equilibria being stationary points of a
+    // Lagrangian: full Newton steps there.
+    settings.newton.line_search =
+      model.multiplier_dofs().empty() ? "trust region" : "full step";
+    // The descent from a fold to the state it snaps to takes the trust
+    // region some 400 iterations for the bent ribbon (N = 100 and 200).
+    settings.newton.max_iterations   = 2000;
+    settings.branch_switch_amplitude = 0;
+    StaticSolver solver(model, settings);
+    for (const double amplitude : seed_amplitudes)
+      {
+        model.set_state(*fold.state);
+        u = fold.u;
+        u.add(amplitude, fold.t_u);
+        result = solver.solve_from_far_start(u, lambda);
+        std::string outcome;
+        if (!result.converged)
+          outcome = result.failure;
+        else if (const unsigned int negative =
+                   negative_eigenvalues(model, u, lambda, tangent);
+                 negative > 0)
+          outcome = "an unstable state, " + std::to_string(negative) +
+                    " negative eigenvalue(s)";
+        else
+          return true;
+        tried += (tried.empty() ? "" : "; ") + std::string("moved by ") +
+                 number(amplitude) + " along the critical mode: " + outcome;
+      }
+    model.set_state(*fold.state);
+    return false;
+  }
+
+  void
+  ArclengthContinuation::snap(PathPoint      &p,
+                              const double    ds,
+                              const Observer  &on_converged)
+  {
+    StepInfo fold_info;
+    fold_info.kind       = PointKind::fold;
+    const PathPoint fold = locate_fold(p, ds, fold_info);
+    passed_limit_points.push_back(fold.lambda);
+    if (log != nullptr)
+      *log << "limit point at load factor " << number(fold.lambda)
+           << ": the structure snaps (Limit points = snap)" << std::endl;
+    if (fold.s != p.s)
+      finish_point(fold_info, fold, on_converged);
+
+    // Just past the fold, or on an output point or the range's end before.
+    const double past =
+      fold.lambda + snap_overshoot * std::max(1.0, std::abs(fold.lambda));
+    const double target = crossed_target(fold.lambda, past).value_or(past);
+    VectorType   u      = fold.u;
+    JudgedResult result;
+    std::string  tried;
+    if (!jump_past_fold(fold, target, u, result, tried))
+      throw SolverFailure("the structure snaps at the limit point at load "
+                          "factor " +
+                          number(fold.lambda) +
+                          ", but no stable equilibrium was found past it at "
+                          "load factor " +
+                          number(target) + " (from the fold's state " + tried +
+                          ")");
+
+    VectorType jump = u;
+    jump -= fold.u;
+    const double length =
+      std::sqrt(dot_w(jump, jump) +
+                (target - fold.lambda) * (target - fold.lambda));
+    StepInfo info;
+    info.kind = PointKind::jump;
+    // The new branch starts with the load factor rising.
+    PathPoint landed = accept(u, target, nullptr, result, info);
+    landed.s         = fold.s + length;
+    info.arclength   = landed.s;
+    ++branch;
+    points_on_path = 0;
+    just_switched  = false;
+    if (log != nullptr)
+      *log << "jump at load factor " << number(target) << " to a stable state "
+           << number(length)
+           << " away (W norm: model sizes, rad), branch " << branch
+           << std::endl;
+    finish_point(info, landed, on_converged);
+    p = std::move(landed);
+  }
+} // namespace rodnet
