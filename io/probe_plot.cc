@@ -185,16 +185,16 @@ namespace rodnet
       if (path.has_jumps)
         restart += (restart.empty() ? "" : " || ") + col(path.jump) + " == 1";
       const std::string s0 = path.arclength != 0 ? col(path.arclength) : "0";
-      const auto series = [&](const std::string &y, const int stretch) {
+      const auto        series = [&](const std::string &y, const int stretch) {
         if (restart.empty())
           return quote(csv_path) + " skip 1 using 2:(" + y + ")";
         return "s0 = -1e300, p = 0, " + quote(csv_path) +
-               " skip 1 using 2:(p = (" + restart + ") ? 1 - p : p, s0 = " +
-               s0 + ", p == " + std::to_string(stretch) + " ? " + y +
-               " : 1/0)";
+               " skip 1 using 2:(p = (" + restart +
+               ") ? 1 - p : p, s0 = " + s0 +
+               ", p == " + std::to_string(stretch) + " ? " + y + " : 1/0)";
       };
-      const std::string y = col(column);
-      const int stretches = restart.empty() ? 1 : 2;
+      const std::string y         = col(column);
+      const int         stretches = restart.empty() ? 1 : 2;
       std::string       command;
       for (int stretch = 0; stretch < stretches; ++stretch)
         {
@@ -322,7 +322,8 @@ namespace rodnet
           path.stable    = column_of("stable");
           path.arclength = column_of("arclength");
           path.jump      = column_of("jump");
-          path.has_jumps = path.jump != 0 && some_row_is_one(csv_path, path.jump);
+          path.has_jumps =
+            path.jump != 0 && some_row_is_one(csv_path, path.jump);
           for (unsigned int p = 0; p < n_probes; ++p)
             script << "set ylabel "
                    << quote(axis_label(columns[p + 2], units, p + 1)) << "\n"

@@ -42,7 +42,10 @@ namespace rodnet
    * Parameters::bifurcation_tolerance in lambda, and, if asked, the path
    * switches there to the branch along the tangent's null vector (inverse
    * iteration on the tangent at the bracket). A change of direction of
-   * lambda is a limit point (fold), reported with lambda at the turn.
+   * lambda is a limit point (fold), reported with lambda at the turn; with
+   * Parameters::snap_at_limit_points, at a maximum of lambda the path
+   * jumps instead, as a structure under a growing load snaps, to a stable
+   * state just past it (snap(), solvers/arclength_snap.cc).
    *
    * The reference configuration is reset at every converged point, as in
    * load stepping (StaticSolver).
@@ -107,7 +110,7 @@ namespace rodnet
       limit_point,  ///< the path turned back in lambda at this step
       bifurcation,  ///< the stable side of a located bifurcation
       fold,         ///< a located limit point that the path snaps from
-      jump ///< the stable state the path snapped to past a limit point
+      jump          ///< the stable state the path snapped to past a limit point
     };
 
     struct StepInfo
@@ -156,7 +159,8 @@ namespace rodnet
     }
 
     /// Load factors of the limit points passed (lambda at the turn,
-    /// from a parabola through the three points around it).
+    /// from a parabola through the three points around it, or located by
+    /// bisection where the path snaps there).
     const std::vector<double> &
     limit_points() const
     {
@@ -257,6 +261,20 @@ namespace rodnet
                        const PathPoint &hi,
                        double           ds_hi,
                        StepInfo        &info);
+
+    /// The point at pseudo-arclength @p s along @p base's tangent (the
+    /// constraint of a step of that length from @p base), predicted from
+    /// the bracket's point (@p u_from, @p lambda_from) at @p s_from and
+    /// corrected: the bisections' midpoint. The model's reference must be
+    /// base's.
+    JudgedResult
+    point_along(const PathPoint  &base,
+                double            s_from,
+                const VectorType &u_from,
+                double            lambda_from,
+                double            s,
+                VectorType       &u,
+                double           &lambda);
 
     /// Throws SolverFailure where the states @p u_lo, @p u_hi that bracket
     /// a change of the negative eigenvalues are further apart than 1e-3 of

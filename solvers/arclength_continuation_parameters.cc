@@ -44,10 +44,9 @@ namespace rodnet
     prm.declare_entry("Limit points",
                       "follow",
                       dealii::Patterns::Selection("follow|snap"),
-                      "At a limit point where the load factor would fall: "
-                      "follow the path back through it, or snap as under "
-                      "load control, to a stable state just past it "
-                      "(probes.csv column jump). [-]");
+                      "At a maximum of the load factor: follow the path "
+                      "back, or snap to a stable state past it (column "
+                      "jump). [-]");
     prm.declare_entry("Bifurcation tolerance",
                       "1e-8",
                       Double(0, 1),

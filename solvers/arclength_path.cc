@@ -142,8 +142,8 @@ namespace rodnet
         if (target)
           info.kind = PointKind::output_point;
         PathPoint q = accept(next, lambda, &p, result, info);
-        if (q.t_lambda * p.t_lambda < 0 &&
-            parameters.snap_at_limit_points && p.t_lambda > 0)
+        if (q.t_lambda * p.t_lambda < 0 && parameters.snap_at_limit_points &&
+            p.t_lambda > 0)
           {
             snap(p, ds_taken, on_converged);
             ds = parameters.initial_step;

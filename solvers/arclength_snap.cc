@@ -39,17 +39,15 @@ namespace rodnet
     model.set_state(*p.state);
     while (s_hi - s_lo > fold_bracket * ds)
       {
-        const double s_mid  = 0.5 * (s_lo + s_hi);
-        VectorType   u      = u_lo;
-        double       lambda = lambda_lo + (s_mid - s_lo) * p.t_lambda;
-        u.add(s_mid - s_lo, p.t_u);
+        const double       s_mid = 0.5 * (s_lo + s_hi);
+        double             lambda;
         const JudgedResult result =
-          correct(p, Constraint{&p.t_u, p.t_lambda, s_mid}, u, lambda);
+          point_along(p, s_lo, u_lo, lambda_lo, s_mid, probe.u, lambda);
         if (!result.converged)
           // The bracket found so far: the fold lies within it.
           break;
-        probe.u      = u;
-        probe.lambda = lambda;
+        probe.lambda       = lambda;
+        const VectorType u = probe.u;
         compute_tangent(probe, &p);
         // Before the turn: lambda still rising, and the critical
         // eigenvalue, which crosses zero there, not yet across. It is
@@ -57,11 +55,9 @@ namespace rodnet
         // reference: so close to zero, the other reference's tangent may
         // give it the other sign.
         model.reset_reference(probe.u);
-        const bool before = probe.t_lambda > 0 &&
-                            negative_eigenvalues(model,
-                                                 probe.u,
-                                                 lambda,
-                                                 tangent) == p.negative;
+        const bool before =
+          probe.t_lambda > 0 &&
+          negative_eigenvalues(model, probe.u, lambda, tangent) == p.negative;
         model.set_state(*p.state);
         if (before)
           {
@@ -126,7 +122,7 @@ namespace rodnet
   void
   ArclengthContinuation::snap(PathPoint      &p,
                               const double    ds,
-                              const Observer  &on_converged)
+                              const Observer &on_converged)
   {
     StepInfo fold_info;
     fold_info.kind       = PointKind::fold;
@@ -156,9 +152,8 @@ namespace rodnet
 
     VectorType jump = u;
     jump -= fold.u;
-    const double length =
-      std::sqrt(dot_w(jump, jump) +
-                (target - fold.lambda) * (target - fold.lambda));
+    const double length = std::sqrt(
+      dot_w(jump, jump) + (target - fold.lambda) * (target - fold.lambda));
     StepInfo info;
     info.kind = PointKind::jump;
     // The new branch starts with the load factor rising.
@@ -170,9 +165,8 @@ namespace rodnet
     just_switched  = false;
     if (log != nullptr)
       *log << "jump at load factor " << number(target) << " to a stable state "
-           << number(length)
-           << " away (W norm: model sizes, rad), branch " << branch
-           << std::endl;
+           << number(length) << " away (W norm: model sizes, rad), branch "
+           << branch << std::endl;
     finish_point(info, landed, on_converged);
     p = std::move(landed);
   }

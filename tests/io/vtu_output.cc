@@ -420,7 +420,7 @@ TEST(ProbePlot, SidesOfABifurcationAreNotJoined)
   const fs::path dir = scratch("plot_sides");
   fs::create_directories(dir);
   // A continuation table whose second side restarts at the bifurcation
-  // (arclength 1 after 2): that row is undefined in every series, so no
+  // (arclength 1 after 2): the sides alternate between two series, so no
   // line runs from (2, 0.8) back to (1, 0).
   std::ofstream(dir / "probes.csv")
     << "step,load_factor,y,arclength,branch,negative_eigenvalues,stable,"
@@ -433,7 +433,37 @@ TEST(ProbePlot, SidesOfABifurcationAreNotJoined)
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
   ASSERT_TRUE(fs::exists(png));
   const std::string script = read_text(dir / "probes.png.gp");
-  EXPECT_NE(script.find("r = column(4) < s0, s0 = column(4), r ? 1/0 :"),
+  EXPECT_NE(script.find("p = (column(4) < s0) ? 1 - p : p, s0 = column(4), "
+                        "p == 1 ?"),
+            std::string::npos)
+    << script;
+}
+
+TEST(ProbePlot, JumpIsADashedSegmentBetweenTwoStretches)
+{
+  if (!gnuplot_on_path())
+    GTEST_SKIP() << "gnuplot is not on PATH";
+  const fs::path dir = scratch("plot_jump");
+  fs::create_directories(dir);
+  // A path that snaps (Limit points = snap) from (1, 0.5) to (1.001, -0.5):
+  // the row with jump = 1 starts the second series, and a dashed segment
+  // joins it to the row before.
+  std::ofstream(dir / "probes.csv")
+    << "step,load_factor,y,arclength,branch,negative_eigenvalues,stable,"
+       "in_range,jump\n"
+    << "0,0,0,0,0,0,1,1,0\n1,1,0.5,1,0,0,1,1,0\n2,1.001,-0.5,2,1,0,1,1,1\n"
+    << "3,2,-0.4,3,1,0,1,1,0\n";
+  const fs::path png = dir / "probes.png";
+  ::testing::internal::CaptureStderr();
+  plot_probes((dir / "probes.csv").string(), png.string(), "jump", {}, {}, 6);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  ASSERT_TRUE(fs::exists(png));
+  const std::string script = read_text(dir / "probes.png.gp");
+  EXPECT_NE(script.find("p = (column(4) < s0 || column(9) == 1) ? 1 - p : p"),
+            std::string::npos)
+    << script;
+  EXPECT_NE(script.find("(column(9) == 1 ? x0 - xp : 1/0):(y0 - yp) with "
+                        "vectors nohead dashtype 2"),
             std::string::npos)
     << script;
 }
