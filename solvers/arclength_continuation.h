@@ -331,12 +331,10 @@ namespace rodnet
     snap(PathPoint &p, double ds, const Observer &on_converged);
 
     /**
-     * A stable equilibrium at load factor @p lambda, past the fold @p fold:
-     * Newton (the trust region on the potential where the model has one,
-     * full steps otherwise) from the fold's state moved along its tangent,
-     * the critical mode, by growing amplitudes until one lands on a
-     * stable state. False (@p u undefined) if none does; @p tried says
-     * what failed.
+     * A stable equilibrium at load factor @p lambda, past the fold @p fold,
+     * found by the first of land_nearby(), descend() and follow_to_load()
+     * that finds one. False (@p u undefined) if none does; @p tried says
+     * what each gave.
      */
     bool
     jump_past_fold(const PathPoint &fold,
@@ -344,6 +342,38 @@ namespace rodnet
                    VectorType      &u,
                    JudgedResult    &result,
                    std::string     &tried);
+
+    /// Newton at @p lambda from @p fold's state, with the globalization
+    /// @p line_search ("full step" or "trust region") and at most
+    /// @p iterations iterations; true where it converges on a stable state
+    /// (and, with @p within, no farther from the fold than that, W norm).
+    bool
+    solve_past_fold(const PathPoint   &fold,
+                    double             lambda,
+                    const std::string &line_search,
+                    unsigned int       iterations,
+                    double             within,
+                    VectorType        &u,
+                    JudgedResult      &result,
+                    std::string       &tried);
+
+    /**
+     * The path followed on from @p fold, each point unreported, until it
+     * comes back to the load factor @p lambda with the load factor rising;
+     * the equilibrium there (land()) where it is stable. At most
+     * Parameters::max_steps points. False (@p u undefined) otherwise.
+     */
+    bool
+    follow_to_load(const PathPoint &fold,
+                   double           lambda,
+                   VectorType      &u,
+                   JudgedResult    &result,
+                   std::string     &tried);
+
+    /// The next step length after a corrector of @p iterations iterations
+    /// with step @p ds: ds scaled towards the target iterations.
+    double
+    next_step_length(double ds, unsigned int iterations) const;
 
     /**
      * Follows the path from @p p with first step length @p ds until it

@@ -173,12 +173,19 @@ namespace rodnet
         just_switched = false;
         finish_point(info, q, on_converged);
         p  = q;
-        ds = std::min(parameters.max_step,
-                      ds * std::clamp(double(parameters.target_iterations) /
-                                        std::max(1u, result.iterations),
-                                      0.5,
-                                      2.0));
+        ds = next_step_length(ds, result.iterations);
       }
+  }
+
+  double
+  ArclengthContinuation::next_step_length(const double       ds,
+                                          const unsigned int iterations) const
+  {
+    return std::min(parameters.max_step,
+                    ds * std::clamp(double(parameters.target_iterations) /
+                                      std::max(1u, iterations),
+                                    0.5,
+                                    2.0));
   }
 
   bool

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rodnet
 {
@@ -18,10 +19,15 @@ namespace rodnet
     /// the vertical line of a load-controlled experiment.
     constexpr double snap_overshoot = 1e-3;
 
-    /// Moves of the fold's state along its critical mode (W norm: a
-    /// fraction of the model size, or rad) that the jump starts from, in
-    /// turn, until one lands on a stable state.
-    constexpr double seed_amplitudes[] = {0, 0.01, 0.1};
+    /// A state past the fold found by Newton from the fold's is taken
+    /// within this distance of it (W norm: model sizes, rad): the end of
+    /// another branch there.
+    constexpr double near_fold = 0.1;
+
+    /// The descent from a fold to the state it snaps to takes the trust
+    /// region some 400 iterations for the bent ribbon (N = 100 and 200),
+    /// 75 for Lee's frame.
+    constexpr unsigned int descent_iterations = 1000;
   } // namespace
 
   ArclengthContinuation::PathPoint
@@ -76,47 +82,126 @@ namespace rodnet
   }
 
   bool
+  ArclengthContinuation::solve_past_fold(const PathPoint   &fold,
+                                         const double       lambda,
+                                         const std::string &line_search,
+                                         const unsigned int iterations,
+                                         const double       within,
+                                         VectorType        &u,
+                                         JudgedResult      &result,
+                                         std::string       &tried)
+  {
+    StaticSolver::Parameters settings;
+    settings.relative_tolerance      = parameters.relative_tolerance;
+    settings.newton.linear_solver    = parameters.linear_solver;
+    settings.newton.line_search      = line_search;
+    settings.newton.max_iterations   = iterations;
+    settings.branch_switch_amplitude = 0;
+    StaticSolver solver(model, settings);
+    model.set_state(*fold.state);
+    u                = fold.u;
+    result           = solver.solve_from_far_start(u, lambda);
+    VectorType moved = u;
+    moved -= fold.u;
+    const double distance = std::sqrt(dot_w(moved, moved));
+    std::string  outcome;
+    if (!result.converged)
+      outcome = result.failure;
+    else if (distance > within)
+      outcome = "a state " + number(distance) + " away";
+    else if (const unsigned int negative =
+               negative_eigenvalues(model, u, lambda, tangent);
+             negative > 0)
+      outcome = "an unstable state, " + std::to_string(negative) +
+                " negative eigenvalue(s)";
+    else
+      return true;
+    tried += (tried.empty() ? "" : "; ") + line_search + ": " + outcome;
+    model.set_state(*fold.state);
+    return false;
+  }
+
+  bool
+  ArclengthContinuation::follow_to_load(const PathPoint &fold,
+                                        const double     lambda,
+                                        VectorType      &u,
+                                        JudgedResult    &result,
+                                        std::string     &tried)
+  {
+    PathPoint p  = fold;
+    double    ds = parameters.initial_step;
+    for (unsigned int points = 0; points < parameters.max_steps;)
+      {
+        double l = 0;
+        if (!step(p, ds, u, l, result))
+          {
+            ds /= 2;
+            if (ds < parameters.min_step)
+              break;
+            continue;
+          }
+        ++points;
+        double ds_taken = ds;
+        if (p.lambda < lambda && l >= lambda &&
+            land(p, lambda, u, l, result, ds_taken) &&
+            negative_eigenvalues(model, u, lambda, tangent) == 0)
+          return true;
+        StepInfo  info;
+        PathPoint q = accept(u, l, &p, result, info);
+        p           = std::move(q);
+        ds          = next_step_length(ds, result.iterations);
+      }
+    tried += (tried.empty() ? "" : "; ") +
+             std::string("the path followed on from the fold does not come "
+                         "back to it on a stable state within ") +
+             std::to_string(parameters.max_steps) + " points";
+    model.set_state(*fold.state);
+    return false;
+  }
+
+  bool
   ArclengthContinuation::jump_past_fold(const PathPoint &fold,
                                         const double     lambda,
                                         VectorType      &u,
                                         JudgedResult    &result,
                                         std::string     &tried)
   {
-    StaticSolver::Parameters settings;
-    settings.relative_tolerance   = parameters.relative_tolerance;
-    settings.newton.linear_solver = parameters.linear_solver;
-    // The trust region descends to a minimum of the potential, as the
-    // snapping structure does. A model with multipliers (inextensible rods)
-    // has no potential, its equilibria being stationary points of a
-    // Lagrangian: full Newton steps there.
-    settings.newton.line_search =
-      model.multiplier_dofs().empty() ? "trust region" : "full step";
-    // The descent from a fold to the state it snaps to takes the trust
-    // region some 400 iterations for the bent ribbon (N = 100 and 200).
-    settings.newton.max_iterations   = 2000;
-    settings.branch_switch_amplitude = 0;
-    StaticSolver solver(model, settings);
-    for (const double amplitude : seed_amplitudes)
+    // Where the path folds onto the end of another branch (the over-curved
+    // ring's lobes closing onto the triply covered ring), the state past
+    // the fold lies next to the fold's: Newton finds it at once.
+    if (solve_past_fold(fold,
+                        lambda,
+                        "full step",
+                        25,
+                        near_fold,
+                        u,
+                        result,
+                        tried))
+      return true;
+    // Otherwise the structure moves away, down its energy, to a minimum:
+    // the trust region descends the same way, leaving the fold along its
+    // critical mode. Inextensible rods have no potential to descend (their
+    // equilibria are stationary points of a Lagrangian).
+    if (model.multiplier_dofs().empty())
       {
-        model.set_state(*fold.state);
-        u = fold.u;
-        u.add(amplitude, fold.t_u);
-        result = solver.solve_from_far_start(u, lambda);
-        std::string outcome;
-        if (!result.converged)
-          outcome = result.failure;
-        else if (const unsigned int negative =
-                   negative_eigenvalues(model, u, lambda, tangent);
-                 negative > 0)
-          outcome = "an unstable state, " + std::to_string(negative) +
-                    " negative eigenvalue(s)";
-        else
+        if (log != nullptr)
+          *log << "descending from the fold by the trust region" << std::endl;
+        if (solve_past_fold(fold,
+                            lambda,
+                            "trust region",
+                            descent_iterations,
+                            std::numeric_limits<double>::infinity(),
+                            u,
+                            result,
+                            tried))
           return true;
-        tried += (tried.empty() ? "" : "; ") + std::string("moved by ") +
-                 number(amplitude) + " along the critical mode: " + outcome;
       }
-    model.set_state(*fold.state);
-    return false;
+    // Last, the path itself: through a snap-back it comes back to the load
+    // on the branch the structure snaps to (Lee's frame, the deep arch).
+    if (log != nullptr)
+      *log << "following the path on from the fold to load factor "
+           << number(lambda) << std::endl;
+    return follow_to_load(fold, lambda, u, result, tried);
   }
 
   void

@@ -13,6 +13,7 @@
 #include <common/continuation_path.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <iomanip>
@@ -162,5 +163,56 @@ namespace
     // Measured 8e-12 L and 1.2e-10 L (the corrector's tolerance).
     EXPECT_LT(at_landing, 1e-8 * L);
     EXPECT_LT(at_end, 1e-8 * L);
+  }
+
+  TEST(ContinuationSnap, InextensibleDeepArchSnapsOntoItsInvertedBranch)
+  {
+    // scenes/deep_arch.prm (N = 200) with inextensible rods: no potential
+    // to descend, so the jump at the limit load is found by following the
+    // path on, through its snap-back, until it comes back to the load on
+    // the inverted arch. The fold against DaDeppo & Schmidt's limit load
+    // P R^2 / EI = 8.97 (10 lambda here; the extensible arch has 8.962 at
+    // N = 200); the path from the jump on against the path followed
+    // through the snap-back, at the end of the range.
+    std::ifstream     file(RODNET_SOURCE_DIR "/scenes/deep_arch.prm");
+    std::stringstream scene;
+    scene << file.rdbuf() << "\nsubsection Material\n"
+          << "  set Inextensible = true\nend\n";
+    const std::string      snap     = "subsection Solver\n  subsection "
+                                      "Continuation\n    set Limit points = "
+                                      "snap\n  end\nend\n";
+    const ContinuationPath snapped  = follow(scene.str() + snap, {"100"});
+    const ContinuationPath followed = follow(scene.str(), {"100"});
+    std::size_t            jumps = 0, jump = 0;
+    for (std::size_t i = 0; i < snapped.points.size(); ++i)
+      if (snapped.points[i].kind == ArclengthContinuation::PointKind::jump)
+        {
+          ++jumps;
+          jump = i;
+        }
+    ASSERT_EQ(jumps, 1u);
+    const double published = 8.97;
+    std::cout << "fold at P R^2 / EI = "
+              << 10 * snapped.points[jump - 1].load_factor << std::endl;
+    EXPECT_NEAR(10 * snapped.points[jump - 1].load_factor,
+                published,
+                0.005 * published);
+    for (std::size_t i = jump; i < snapped.points.size(); ++i)
+      {
+        EXPECT_TRUE(snapped.points[i].check.stable) << "step " << i;
+        EXPECT_GT(snapped.points[i].load_factor,
+                  snapped.points[i - 1].load_factor)
+          << "step " << i;
+      }
+    ASSERT_EQ(snapped.points.back().load_factor, 1.5);
+    ASSERT_EQ(followed.points.back().load_factor, 1.5);
+    const double R = 100;
+    const double difference =
+      (snapped.positions.back()[0] - followed.positions.back()[0]).norm();
+    std::cout << "apex at load factor 1.5: " << difference
+              << " from the followed path's" << std::endl;
+    EXPECT_LT(difference, 1e-8 * R);
+    // Inverted: the apex below the supports.
+    EXPECT_LT(snapped.positions.back()[0][1], -R * std::sin(17.5 * M_PI / 180));
   }
 } // namespace
