@@ -116,7 +116,10 @@ namespace rodnet
                 " negative eigenvalue(s)";
     else
       return true;
-    tried += (tried.empty() ? "" : "; ") + line_search + ": " + outcome;
+    tried += (tried.empty() ? "" : "; ") +
+             (line_search == "full step" ? std::string("Newton in full steps") :
+                                           "the " + line_search) +
+             " from the fold's state: " + outcome;
     model.set_state(*fold.state);
     return false;
   }
@@ -128,17 +131,23 @@ namespace rodnet
                                         JudgedResult    &result,
                                         std::string     &tried)
   {
-    PathPoint p  = fold;
-    double    ds = parameters.initial_step;
+    PathPoint   p  = fold;
+    double      ds = parameters.initial_step;
+    std::string outcome =
+      "does not come back to the load on a stable state within " +
+      std::to_string(parameters.max_steps) +
+      " points (entry \"Solver/Continuation/Max points\")";
     for (unsigned int points = 0; points < parameters.max_steps;)
       {
         double l = 0;
         if (!step(p, ds, u, l, result))
           {
             ds /= 2;
-            if (ds < parameters.min_step)
-              break;
-            continue;
+            if (ds >= parameters.min_step)
+              continue;
+            outcome = "stops at load factor " + number(p.lambda) + ": " +
+                      result.failure;
+            break;
           }
         ++points;
         double ds_taken = ds;
@@ -152,9 +161,7 @@ namespace rodnet
         ds          = next_step_length(ds, result.iterations);
       }
     tried += (tried.empty() ? "" : "; ") +
-             std::string("the path followed on from the fold does not come "
-                         "back to it on a stable state within ") +
-             std::to_string(parameters.max_steps) + " points";
+             std::string("the path followed on from the fold ") + outcome;
     model.set_state(*fold.state);
     return false;
   }
@@ -232,8 +239,7 @@ namespace rodnet
                           number(fold.lambda) +
                           ", but no stable equilibrium was found past it at "
                           "load factor " +
-                          number(target) + " (from the fold's state " + tried +
-                          ")");
+                          number(target) + " (" + tried + ")");
 
     VectorType jump = u;
     jump -= fold.u;

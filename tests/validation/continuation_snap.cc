@@ -214,5 +214,29 @@ namespace
     EXPECT_LT(difference, 1e-8 * R);
     // Inverted: the apex below the supports.
     EXPECT_LT(snapped.positions.back()[0][1], -R * std::sin(17.5 * M_PI / 180));
+
+    // With too few points for the path to come back, the run stops there
+    // (exit code 2), naming the fold and what each way to the state past
+    // it gave.
+    try
+      {
+        follow(scene.str() + snap +
+                 "subsection Solver\n  subsection Continuation\n"
+                 "    set Max points = 70\n  end\nend\n",
+               {"100"});
+        ADD_FAILURE() << "the run did not stop";
+      }
+    catch (const SolverFailure &e)
+      {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("snaps at the limit point at load factor "
+                               "0.89623"),
+                  std::string::npos)
+          << message;
+        EXPECT_NE(message.find("Newton in full steps"), std::string::npos)
+          << message;
+        EXPECT_NE(message.find("within 70 points"), std::string::npos)
+          << message;
+      }
   }
 } // namespace
