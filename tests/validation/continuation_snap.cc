@@ -98,6 +98,33 @@ namespace
     EXPECT_GT(*largest - *smallest_after, 0.05 * 120);
   }
 
+  /// The point of @p path that it jumped to (Limit points = snap), where
+  /// there is exactly one such point; 0 (with a test failure) otherwise.
+  std::size_t
+  the_one_jump(const ContinuationPath &path)
+  {
+    std::vector<std::size_t> jumps;
+    for (std::size_t i = 0; i < path.points.size(); ++i)
+      if (path.points[i].kind == ArclengthContinuation::PointKind::jump)
+        jumps.push_back(i);
+    EXPECT_EQ(jumps.size(), 1u);
+    return jumps.size() == 1 ? jumps[0] : 0;
+  }
+
+  /// Every point of @p path from @p first on is stable, its load factor
+  /// above the one before: a load-controlled path.
+  void
+  expect_stable_and_rising_from(const ContinuationPath &path,
+                                const std::size_t       first)
+  {
+    for (std::size_t i = first; i < path.points.size(); ++i)
+      {
+        EXPECT_TRUE(path.points[i].check.stable) << "step " << i;
+        EXPECT_GT(path.points[i].load_factor, path.points[i - 1].load_factor)
+          << "step " << i;
+      }
+  }
+
   TEST(ContinuationSnap, LeeFrameSnapsOntoTheStableBranchItsPathReturnsTo)
   {
     // Limit points = snap: at the limit load the frame jumps, as under
@@ -109,14 +136,10 @@ namespace
     const ContinuationPath snapped =
       follow_lee_frame("subsection Solver\n  subsection Continuation\n"
                        "    set Limit points = snap\n  end\nend\n");
-    std::vector<std::size_t> jumps;
-    for (std::size_t i = 0; i < snapped.points.size(); ++i)
-      if (snapped.points[i].kind == ArclengthContinuation::PointKind::jump)
-        jumps.push_back(i);
-    ASSERT_EQ(jumps.size(), 1u);
-    const std::size_t jump   = jumps[0];
-    const Point      &fold   = snapped.points[jump - 1];
-    const Point      &landed = snapped.points[jump];
+    const std::size_t jump = the_one_jump(snapped);
+    ASSERT_GT(jump, 0u);
+    const Point &fold   = snapped.points[jump - 1];
+    const Point &landed = snapped.points[jump];
     // The fold located by bisection, against the parabola through the
     // followed path's points around it.
     ASSERT_EQ(snapped.limit_points.size(), 1u);
@@ -128,13 +151,7 @@ namespace
     EXPECT_NEAR(fold.load_factor, lee_frame().limit_points[0], 1e-6);
     EXPECT_EQ(fold.kind, ArclengthContinuation::PointKind::fold);
     EXPECT_TRUE(fold.check.stable);
-    for (std::size_t i = jump; i < snapped.points.size(); ++i)
-      {
-        EXPECT_TRUE(snapped.points[i].check.stable) << "step " << i;
-        EXPECT_GT(snapped.points[i].load_factor,
-                  snapped.points[i - 1].load_factor)
-          << "step " << i;
-      }
+    expect_stable_and_rising_from(snapped, jump);
     EXPECT_EQ(snapped.points.back().load_factor, 4.0);
 
     std::ostringstream landing;
@@ -183,27 +200,15 @@ namespace
                                       "snap\n  end\nend\n";
     const ContinuationPath snapped  = follow(scene.str() + snap, {"100"});
     const ContinuationPath followed = follow(scene.str(), {"100"});
-    std::size_t            jumps = 0, jump = 0;
-    for (std::size_t i = 0; i < snapped.points.size(); ++i)
-      if (snapped.points[i].kind == ArclengthContinuation::PointKind::jump)
-        {
-          ++jumps;
-          jump = i;
-        }
-    ASSERT_EQ(jumps, 1u);
+    const std::size_t      jump     = the_one_jump(snapped);
+    ASSERT_GT(jump, 0u);
     const double published = 8.97;
     std::cout << "fold at P R^2 / EI = "
               << 10 * snapped.points[jump - 1].load_factor << std::endl;
     EXPECT_NEAR(10 * snapped.points[jump - 1].load_factor,
                 published,
                 0.005 * published);
-    for (std::size_t i = jump; i < snapped.points.size(); ++i)
-      {
-        EXPECT_TRUE(snapped.points[i].check.stable) << "step " << i;
-        EXPECT_GT(snapped.points[i].load_factor,
-                  snapped.points[i - 1].load_factor)
-          << "step " << i;
-      }
+    expect_stable_and_rising_from(snapped, jump);
     ASSERT_EQ(snapped.points.back().load_factor, 1.5);
     ASSERT_EQ(followed.points.back().load_factor, 1.5);
     const double R = 100;
