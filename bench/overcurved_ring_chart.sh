@@ -4,7 +4,8 @@
 # Three continuation runs of scenes/overcurved_ring.prm (N = 400):
 #  - as shipped: from the stress-free circle (O = 1 + lambda) through the
 #    bifurcation at O_b onto the two-lobe branch, to the fold at O_d where
-#    it ends on the triply covered ring;
+#    it ends on the triply covered ring, which it follows on to O = 3
+#    (Limit points = snap);
 #  - the same without switching: the circle's branch to O = 3.3;
 #  - the triply covered ring of radius L / (6 pi) bent from a straight rod
 #    (O = lambda), its branch followed from O = 0 to 3.3 without switching.
@@ -19,9 +20,9 @@ scene="$root/scenes/overcurved_ring.prm"
 distance="$root/bench/overcurved_ring_distance.py"
 length=0.314
 
-# As shipped; the run stops after "Max points" past the fold (exit code 2).
-"$run" "$scene" --output "$work/lobes" > "$work/lobes.log" 2>&1 || true
-grep -h "bifurcation at\|limit point at" "$work/lobes.log" || true
+# As shipped, to O = 3.
+"$run" "$scene" --output "$work/lobes" > "$work/lobes.log" 2>&1
+grep -h "bifurcation at\|limit point at\|jump at" "$work/lobes.log" || true
 python3 "$distance" "$work/lobes" $length 1 > "$work/lobes.txt"
 
 for covering in 1 3; do
@@ -54,11 +55,12 @@ END
   python3 "$distance" "$work/ring$covering" $length $offset > "$work/ring$covering.txt"
 done
 
-# Shapes of the two-lobe branch: the rows nearest O = 1.5, 2, 2.5 and the fold.
+# Shapes of the two-lobe branch: the rows nearest O = 1.5, 2, 2.5 and the
+# fold (the row before the jump).
 shapes=""
 for o in 1.5 2.0 2.5 fold; do
   row=$(awk -v o=$o 'BEGIN { best = -1 }
-    { if (o == "fold") { if ($1 > max) { max = $1; best = NR - 1 } }
+    { if (o == "fold") { if ($4 == 1 && best < 0) best = NR - 2 }
       else if (best < 0 || ($1 - o)^2 < bd) { bd = ($1 - o)^2; best = NR - 1 } }
     END { print best }' "$work/lobes.txt")
   python3 "$root/bench/vtu_table.py" "$(printf "$work/lobes/solution-%05d.vtu" $row)" > "$work/shape_$o.txt"
@@ -81,6 +83,9 @@ set yrange [0:0.35]
 set key at graph 0.99, 0.75 right
 stable(s, v) = (s == 1 ? v : 1/0)
 unstable(s, v) = (s == 0 ? v : 1/0)
+# The shipped run before its jump (j = 0) and from it on (j = 1).
+jumped = 0
+stretch(j, v) = (jumped = jumped || column(4) == 1, jumped == j ? v : 1/0)
 set arrow from 1.166920, 0 to 1.166920, 0.35 nohead dt 3 lc rgb "gray40"
 set arrow from 2.833233, 0 to 2.833233, 0.35 nohead dt 3 lc rgb "gray40"
 set arrow from 3.166881, 0 to 3.166881, 0.35 nohead dt 3 lc rgb "gray40"
@@ -89,9 +94,10 @@ set label "O_d" at 2.70, 0.34
 set label "O_u" at 3.18, 0.34
 plot "$work/ring1.txt" using 1:(stable(\$3, \$2)) with lines lw 2 lc rgb "#0050c0" title "circle, stable", \
      "" using 1:(unstable(\$3, \$2)) with lines lw 2 dt 2 lc rgb "#0050c0" title "circle, unstable", \
-     "$work/lobes.txt" using 1:(stable(\$3, \$2)) with lines lw 2 lc rgb "#c00000" title "two lobes (from O_b), stable", \
+     jumped = 0, "$work/lobes.txt" using 1:(stretch(0, stable(\$3, \$2))) with lines lw 2 lc rgb "#c00000" title "as shipped: two lobes (from O_b), stable", \
      "$work/ring3.txt" using 1:(stable(\$3, \$2)) with lines lw 3 lc rgb "#008000" title "triply covered ring, stable", \
      "" using 1:(unstable(\$3, \$2)) with lines lw 2 dt 2 lc rgb "#008000" title "triply covered ring, unstable", \
+     jumped = 0, "$work/lobes.txt" using 1:(stretch(1, \$2)) with points pt 7 ps 0.6 lc rgb "black" title "as shipped: past O_d (Limit points = snap)", \
      "< awk 'NR == 1 || \$1 > 1.49 && \$1 < 1.51 || \$1 > 1.99 && \$1 < 2.01 || \$1 > 2.49 && \$1 < 2.51' $work/lobes.txt" using 1:2 with points pt 7 ps 1.2 lc rgb "black" notitle
 unset arrow
 unset label

@@ -3,8 +3,10 @@
 converged point of a rodnet run: reads RUN/probes.csv and the VTU file of
 every row (solution-NNNNN.vtu, one per step), takes the first point of each
 cell as the ring's vertex (cell k is the segment from vertex k to k + 1)
-and prints "O D/L stable", with O = OFFSET + load factor, D the minimum of
-|x_k - x_{k + N/2}| over k (N even).
+and prints "O D/L stable jump", with O = OFFSET + load factor, D the
+minimum of |x_k - x_{k + N/2}| over k (N even), jump 1 on the row the path
+snapped to (Limit points = snap; 0 elsewhere, and where the run has no
+such column).
 
 Usage: bench/overcurved_ring_distance.py RUN_DIR LENGTH OFFSET
 """
@@ -52,8 +54,9 @@ def main():
     for i, row in enumerate(rows):
         vtu = os.path.join(run, "solution-%05d.vtu" % i)
         d = least_opposite_distance(vertices(vtu))
-        print("%.10g %.10g %s" % (offset + float(row["load_factor"]),
-                                  d / length, row["stable"]))
+        print("%.10g %.10g %s %s" % (offset + float(row["load_factor"]),
+                                     d / length, row["stable"],
+                                     row.get("jump", "0")))
 
 
 if __name__ == "__main__":

@@ -370,6 +370,27 @@ namespace rodnet
       return summary;
     }
 
+    /// The columns of probes.csv after the probes in a continuation run.
+    const std::vector<std::string> continuation_columns = {
+      "arclength",
+      "branch",
+      "negative_eigenvalues",
+      "stable",
+      "in_range",
+      "jump"};
+
+    /// The values of continuation_columns at the point @p info.
+    std::vector<double>
+    continuation_checks(const ArclengthContinuation::StepInfo &info)
+    {
+      return {info.arclength,
+              double(info.branch),
+              double(info.check.negative_eigenvalues),
+              double(info.check.stable),
+              double(info.strain.in_range),
+              double(info.kind == ArclengthContinuation::PointKind::jump)};
+    }
+
     RunSummary
     run_continuation(const Scene       &scene,
                      const std::string &output_directory,
@@ -382,14 +403,13 @@ namespace rodnet
       parameters.strain_limits.fiber_distance      = scene.fiber_distances();
 
       RunSummary               summary;
-      StepRecorder<VectorType> recorder(
-        scene,
-        output_directory,
-        probes,
-        *model,
-        summary,
-        "load_factor",
-        {"arclength", "branch", "negative_eigenvalues", "stable", "in_range"});
+      StepRecorder<VectorType> recorder(scene,
+                                        output_directory,
+                                        probes,
+                                        *model,
+                                        summary,
+                                        "load_factor",
+                                        continuation_columns);
       if (log != nullptr)
         *log << "rodnet (continuation): " << model->network().rods().size()
              << " rod(s), " << model->layout().n_dofs() << " DoFs" << std::endl;
@@ -416,11 +436,7 @@ namespace rodnet
                                                        info.load_factor,
                                                        tangent)),
                                      solution,
-                                     {info.arclength,
-                                      double(info.branch),
-                                      double(info.check.negative_eigenvalues),
-                                      double(info.check.stable),
-                                      double(info.strain.in_range)});
+                                     continuation_checks(info));
                    });
       });
       if (!solver.bifurcations().empty())

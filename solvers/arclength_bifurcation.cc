@@ -29,12 +29,11 @@ namespace rodnet
             s_hi - s_lo > 1e-6 * ds_hi) &&
            s_hi - s_lo > 1e-14 * ds_hi)
       {
-        const double s_mid  = 0.5 * (s_lo + s_hi);
-        VectorType   u      = u_lo;
-        double       lambda = lambda_lo + (s_mid - s_lo) * lo.t_lambda;
-        u.add(s_mid - s_lo, lo.t_u);
+        const double       s_mid = 0.5 * (s_lo + s_hi);
+        VectorType         u;
+        double             lambda;
         const JudgedResult result =
-          correct(lo, Constraint{&lo.t_u, lo.t_lambda, s_mid}, u, lambda);
+          point_along(lo, s_lo, u_lo, lambda_lo, s_mid, u, lambda);
         if (!result.converged)
           throw SolverFailure("locating the bifurcation near load factor " +
                               number(lambda) + " failed: " + result.failure);
@@ -62,6 +61,21 @@ namespace rodnet
       }
     PathPoint b = accept(u_lo, lambda_lo, &lo, result_lo, info);
     return b;
+  }
+
+  JudgedResult
+  ArclengthContinuation::point_along(const PathPoint  &base,
+                                     const double      s_from,
+                                     const VectorType &u_from,
+                                     const double      lambda_from,
+                                     const double      s,
+                                     VectorType       &u,
+                                     double           &lambda)
+  {
+    u      = u_from;
+    lambda = lambda_from + (s - s_from) * base.t_lambda;
+    u.add(s - s_from, base.t_u);
+    return correct(base, Constraint{&base.t_u, base.t_lambda, s}, u, lambda);
   }
 
   void

@@ -25,6 +25,10 @@ namespace rodnet
             return " (past a limit point)";
           case ArclengthContinuation::PointKind::bifurcation:
             return " (bifurcation)";
+          case ArclengthContinuation::PointKind::fold:
+            return " (limit point)";
+          case ArclengthContinuation::PointKind::jump:
+            return " (snapped to, past a limit point)";
           default:
             return "";
         }

@@ -42,7 +42,10 @@ namespace rodnet
    * Parameters::bifurcation_tolerance in lambda, and, if asked, the path
    * switches there to the branch along the tangent's null vector (inverse
    * iteration on the tangent at the bracket). A change of direction of
-   * lambda is a limit point (fold), reported with lambda at the turn.
+   * lambda is a limit point (fold), reported with lambda at the turn; with
+   * Parameters::snap_at_limit_points, at a maximum of lambda the path
+   * jumps instead, as a structure under a growing load snaps, to a stable
+   * state just past it (snap(), solvers/arclength_snap.cc).
    *
    * The reference configuration is reset at every converged point, as in
    * load stepping (StaticSolver).
@@ -79,7 +82,13 @@ namespace rodnet
       /// With switch_branches: once the path has left the range (or Max
       /// points), follow each switched branch's other side too, from its
       /// bifurcation ("Switch branches = both").
-      bool         follow_both_branches = false;
+      bool follow_both_branches = false;
+      /// At a limit point where the load factor would fall, jump as a
+      /// load-controlled structure snaps: to a stable equilibrium just past
+      /// the fold, found from the fold's state moved along its critical
+      /// mode, and follow the path on from there ("Limit points = snap").
+      /// Off, the path turns back through the fold.
+      bool         snap_at_limit_points = false;
       std::string  linear_solver        = "auto";
       StrainLimits strain_limits;
 
@@ -99,7 +108,9 @@ namespace rodnet
       regular,
       output_point, ///< landed on one of Parameters::output_points
       limit_point,  ///< the path turned back in lambda at this step
-      bifurcation   ///< the stable side of a located bifurcation
+      bifurcation,  ///< the stable side of a located bifurcation
+      fold,         ///< a located limit point that the path snaps from
+      jump          ///< the stable state the path snapped to past a limit point
     };
 
     struct StepInfo
@@ -148,7 +159,8 @@ namespace rodnet
     }
 
     /// Load factors of the limit points passed (lambda at the turn,
-    /// from a parabola through the three points around it).
+    /// from a parabola through the three points around it, or located by
+    /// bisection where the path snaps there).
     const std::vector<double> &
     limit_points() const
     {
@@ -250,6 +262,20 @@ namespace rodnet
                        double           ds_hi,
                        StepInfo        &info);
 
+    /// The point at pseudo-arclength @p s along @p base's tangent (the
+    /// constraint of a step of that length from @p base), predicted from
+    /// the bracket's point (@p u_from, @p lambda_from) at @p s_from and
+    /// corrected: the bisections' midpoint. The model's reference must be
+    /// base's.
+    JudgedResult
+    point_along(const PathPoint  &base,
+                double            s_from,
+                const VectorType &u_from,
+                double            lambda_from,
+                double            s,
+                VectorType       &u,
+                double           &lambda);
+
     /// Throws SolverFailure where the states @p u_lo, @p u_hi that bracket
     /// a change of the negative eigenvalues are further apart than 1e-3 of
     /// the step from @p lo to @p hi (W norm with the load factor): they
@@ -281,6 +307,73 @@ namespace rodnet
                        double           ds,
                        StepInfo        &q_info,
                        const Observer  &on_converged);
+
+    /**
+     * Locates the limit point between @p p, where the load factor rises,
+     * and the point at pseudo-arclength @p ds along p's tangent, where it
+     * falls, by bisection on the sign of dlambda/ds (and on the count of
+     * negative eigenvalues, one of which crosses zero there); returns the
+     * last point found before the turn (p itself if none is closer),
+     * accepted (@p info), its tangent along the critical mode.
+     */
+    PathPoint
+    locate_fold(const PathPoint &p, double ds, StepInfo &info);
+
+    /**
+     * Snapping at a limit point (Parameters::snap_at_limit_points): the
+     * step of pseudo-arclength @p ds from @p p passed a maximum of the
+     * load factor. Reports the fold, solves for a stable state just
+     * past it (jump_past_fold()), reports that as the start of a new branch
+     * and makes it @p p. Throws SolverFailure where no stable state is
+     * found.
+     */
+    void
+    snap(PathPoint &p, double ds, const Observer &on_converged);
+
+    /**
+     * A stable equilibrium at load factor @p lambda, past the fold @p fold,
+     * found by the first of land_nearby(), descend() and follow_to_load()
+     * that finds one. False (@p u undefined) if none does; @p tried says
+     * what each gave.
+     */
+    bool
+    jump_past_fold(const PathPoint &fold,
+                   double           lambda,
+                   VectorType      &u,
+                   JudgedResult    &result,
+                   std::string     &tried);
+
+    /// Newton at @p lambda from @p fold's state, with the globalization
+    /// @p line_search ("full step" or "trust region") and at most
+    /// @p iterations iterations; true where it converges on a stable state
+    /// (and, with @p within, no farther from the fold than that, W norm).
+    bool
+    solve_past_fold(const PathPoint   &fold,
+                    double             lambda,
+                    const std::string &line_search,
+                    unsigned int       iterations,
+                    double             within,
+                    VectorType        &u,
+                    JudgedResult      &result,
+                    std::string       &tried);
+
+    /**
+     * The path followed on from @p fold, each point unreported, until it
+     * comes back to the load factor @p lambda with the load factor rising;
+     * the equilibrium there (land()) where it is stable. At most
+     * Parameters::max_steps points. False (@p u undefined) otherwise.
+     */
+    bool
+    follow_to_load(const PathPoint &fold,
+                   double           lambda,
+                   VectorType      &u,
+                   JudgedResult    &result,
+                   std::string     &tried);
+
+    /// The next step length after a corrector of @p iterations iterations
+    /// with step @p ds: ds scaled towards the target iterations.
+    double
+    next_step_length(double ds, unsigned int iterations) const;
 
     /**
      * Follows the path from @p p with first step length @p ds until it

@@ -41,6 +41,12 @@ namespace rodnet
                       dealii::Patterns::Selection("true|false|both"),
                       "At a located bifurcation, follow the branch along "
                       "the null vector; both: then its other side too. [-]");
+    prm.declare_entry("Limit points",
+                      "follow",
+                      dealii::Patterns::Selection("follow|snap"),
+                      "At a maximum of the load factor: follow the path "
+                      "back, or snap to a stable state past it (column "
+                      "jump). [-]");
     prm.declare_entry("Bifurcation tolerance",
                       "1e-8",
                       Double(0, 1),
@@ -82,5 +88,6 @@ namespace rodnet
     switch_branches       = prm.get("Switch branches") != "false";
     follow_both_branches  = prm.get("Switch branches") == "both";
     bifurcation_tolerance = prm.get_double("Bifurcation tolerance");
+    snap_at_limit_points  = prm.get("Limit points") == "snap";
   }
 } // namespace rodnet

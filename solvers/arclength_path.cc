@@ -142,6 +142,13 @@ namespace rodnet
         if (target)
           info.kind = PointKind::output_point;
         PathPoint q = accept(next, lambda, &p, result, info);
+        if (q.t_lambda * p.t_lambda < 0 && parameters.snap_at_limit_points &&
+            p.t_lambda > 0)
+          {
+            snap(p, ds_taken, on_converged);
+            ds = parameters.initial_step;
+            continue;
+          }
         if (q.t_lambda * p.t_lambda < 0)
           {
             info.kind = PointKind::limit_point;
@@ -166,12 +173,19 @@ namespace rodnet
         just_switched = false;
         finish_point(info, q, on_converged);
         p  = q;
-        ds = std::min(parameters.max_step,
-                      ds * std::clamp(double(parameters.target_iterations) /
-                                        std::max(1u, result.iterations),
-                                      0.5,
-                                      2.0));
+        ds = next_step_length(ds, result.iterations);
       }
+  }
+
+  double
+  ArclengthContinuation::next_step_length(const double       ds,
+                                          const unsigned int iterations) const
+  {
+    return std::min(parameters.max_step,
+                    ds * std::clamp(double(parameters.target_iterations) /
+                                      std::max(1u, iterations),
+                                    0.5,
+                                    2.0));
   }
 
   bool

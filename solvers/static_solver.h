@@ -144,6 +144,19 @@ namespace rodnet
     double
     lowest_eigenvalue(const VectorType &u, double load_factor);
 
+    /**
+     * Newton, globalized as the parameters say, at @p load_factor from
+     * @p u, a start that may lie far from equilibrium (its out-of-balance
+     * counts in the scale of the tolerance, as for a branch switch);
+     * @p u holds the last iterate on return. The path following's jump
+     * past a limit point (ArclengthContinuation) solves with it.
+     */
+    JudgedResult
+    solve_from_far_start(VectorType &u, double load_factor)
+    {
+      return solve_at(u, load_factor, nullptr, nullptr, true);
+    }
+
   private:
     /**
      * Newton from @p u at @p load_factor; @p u holds the result. The scales

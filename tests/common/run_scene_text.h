@@ -6,7 +6,12 @@
 #include <io/scene.h>
 #include <io/scene_runner.h>
 
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rodnet::testing
 {
@@ -31,6 +36,32 @@ namespace rodnet::testing
       if (summary.probe_names[i] == name)
         return i + 1;
     throw std::invalid_argument("no probe " + name);
+  }
+
+  /// The values of column @p name of the probes.csv in @p directory, one
+  /// per row (columns that RunSummary leaves out, such as "jump").
+  inline std::vector<double>
+  probes_csv_column(const std::string &directory, const std::string &name)
+  {
+    std::ifstream csv(directory + "/probes.csv");
+    std::string   line, field;
+    std::getline(csv, line);
+    std::istringstream header(line);
+    std::size_t        column = 0;
+    while (std::getline(header, field, ',') && field != name)
+      ++column;
+    if (field != name)
+      throw std::invalid_argument("no column " + name + " in " + directory +
+                                  "/probes.csv");
+    std::vector<double> values;
+    while (std::getline(csv, line))
+      {
+        std::istringstream row(line);
+        for (std::size_t c = 0; c <= column; ++c)
+          std::getline(row, field, ',');
+        values.push_back(std::strtod(field.c_str(), nullptr));
+      }
+    return values;
   }
 } // namespace rodnet::testing
 

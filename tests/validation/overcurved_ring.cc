@@ -7,10 +7,12 @@
 // where B C (n^2 - 1) + m (B + C) - m^2 = 0, m = A (1 - O / p)), and the
 // statement that the triply covered ring is stress free at O = 3. N = 64
 // (the shipped scene has 400; the runs here take a few seconds):
-//  - from the stress-free circle, the bifurcation at O_b (n = 2) and the
-//    fold where the two-lobe branch ends on the triply covered ring at O_d
-//    (j = 2), its opposite points L / (3 pi) apart; the supports carry no
-//    force along the whole path;
+//  - the shipped path (Limit points = snap): from the stress-free circle,
+//    the bifurcation at O_b (n = 2), the fold where the two-lobe branch
+//    ends on the triply covered ring at O_d (j = 2), its opposite points
+//    L / (3 pi) apart, and past it the triply covered ring up to O = 3,
+//    every state there the triply covered polygon of the ring's segments
+//    with its prestress; the supports carry no force along the whole path;
 //  - the triply covered ring followed in O from 0 to 3.3: stable between
 //    O_d and O_u (j = 4), its energy zero at O = 3.
 #include <common/run_scene_text.h>
@@ -20,10 +22,12 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -52,6 +56,16 @@ namespace
     return p * (1 - m / A);
   }
 
+  /// Where run_ring() writes, one folder per process: the tests read
+  /// probes.csv back, and other test runs on the machine write theirs.
+  std::string
+  ring_directory()
+  {
+    return (std::filesystem::temp_directory_path() /
+            ("rodnet_overcurved_ring_" + std::to_string(::getpid())))
+      .string();
+  }
+
   /// scenes/overcurved_ring.prm at N = 64 (supports and probes moved to
   /// its vertices), with @p overrides, without VTU files and plots.
   RunSummary
@@ -73,10 +87,7 @@ namespace
             "r16z: reaction 16 z; r48z: reaction 48 z\n"
             "end\n"
          << overrides;
-    const std::string directory =
-      (std::filesystem::temp_directory_path() / "rodnet_overcurved_ring")
-        .string();
-    return run_scene_text(text.str(), directory);
+    return run_scene_text(text.str(), ring_directory());
   }
 
   /// The largest reaction of the supports over all rows of @p run.
@@ -109,14 +120,35 @@ namespace
   // scale A / L^2 = 42 N.
   const double reaction_tolerance = 1e-7 * A / (L * L);
 
-  TEST(OvercurvedRing, BucklesAtObAndFoldsIntoTheTriplyCoveredRingAtOd)
+  /// The triply covered polygon of the ring's N = 64 segments (each of
+  /// length l = 2 R sin(pi / N), R = L / (2 pi)): its curvature measure
+  /// 2 sin(3 pi / N) / l differs from 6 pi / L by O(1/N^2), opposite
+  /// vertices lie a diameter 2 / curvature apart, and at over-curvature O
+  /// it is prestressed by EI1 (O 2 pi / L - curvature) along its length.
+  struct TriplyCoveredPolygon
   {
-    // The two-lobe branch and its mirror image are a closed loop between
-    // O_b and O_d: 140 points take the path past the fold.
-    const RunSummary run =
-      run_ring("subsection Solver\n  subsection Continuation\n"
-               "    set Max points = 140\n  end\nend\n");
-    ASSERT_NE(run.failure.find("Max points"), std::string::npos) << run.failure;
+    double n_segments = 64;
+    double segment    = 2 * L / (2 * M_PI) * std::sin(M_PI / n_segments);
+    double curvature  = 2 * std::sin(3 * M_PI / n_segments) / segment;
+    double diameter   = 2 / curvature;
+
+    double
+    energy(const double o) const
+    {
+      const double mismatch = o * 2 * M_PI / L - curvature;
+      return n_segments * segment / 2 * A * mismatch * mismatch;
+    }
+  };
+
+  TEST(OvercurvedRing, BucklesAtObFoldsAtOdAndStaysTriplyCoveredToThree)
+  {
+    // As shipped (Limit points = snap): the whole path from O = 1 to 3.
+    // Before the snapping, the two-lobe branch and its mirror image made a
+    // closed loop between O_b and O_d, and the run stopped after its
+    // points with exit code 2.
+    const RunSummary run = run_ring("");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_EQ(run.rows.back()[0], 2.) << "the path does not end at O = 3";
 
     // O_b: measured 1.167727 (formula 1.166920; 6.9e-4 relative,
     // O(1/N^2): 1.7e-5 at N = 400).
@@ -125,45 +157,85 @@ namespace
               << std::endl;
     EXPECT_NEAR(1 + run.critical_load_factor, o_b, 1.5e-3 * o_b);
 
-    std::size_t fold = 0;
-    for (std::size_t i = 0; i < run.rows.size(); ++i)
-      if (run.rows[i][0] > run.rows[fold][0])
-        fold = i;
-    ASSERT_LT(fold + 5, run.rows.size()) << "the path did not turn back";
-    // O_d: measured 2.822677 (formula 2.833233; -3.7e-3, O(1/N^2): the
-    // fold lies at 2.8147, 2.82268, 2.83297 for N = 48, 64, 400, errors
-    // in the ratio (N'/N)^2). The fold is the extremum of lambda on the
-    // loop, located to the step there (a few 1e-5).
+    // One jump, from the fold (the row before it) to the triply covered
+    // ring just past it.
+    const std::vector<double> jumps =
+      probes_csv_column(ring_directory(), "jump");
+    ASSERT_EQ(jumps.size(), run.rows.size());
+    ASSERT_EQ(std::count(jumps.begin(), jumps.end(), 1.), 1);
+    const std::size_t jump =
+      std::find(jumps.begin(), jumps.end(), 1.) - jumps.begin();
+    ASSERT_GT(jump, 1u);
+    const std::vector<double> &fold = run.rows[jump - 1];
+    // O_d: measured 2.822797 (formula 2.833233; -3.7e-3, O(1/N^2): the
+    // fold lies at 2.8147, 2.8228, 2.83297 for N = 48, 64, 400, errors
+    // in the ratio (N'/N)^2). The fold is the largest O of the path before
+    // the jump, located by bisection.
     const double o_d = critical_over_curvature(3, 2, true);
-    const double o   = 1 + run.rows[fold][0];
-    std::cout << "O_d = " << o << ", formula " << o_d << std::endl;
+    const double o   = 1 + fold[0];
+    std::cout << std::setprecision(10) << "O_d = " << o << ", formula " << o_d
+              << std::setprecision(6) << std::endl;
     EXPECT_NEAR(o, o_d, 5e-3 * o_d);
-    // There the ring is the triply covered polygon of its N segments (each
-    // of length l = 2 R sin(pi / N), R = L / (2 pi)): opposite vertices a
-    // diameter 2 R sin(pi / N) / sin(3 pi / N) apart; its curvature measure
-    // 2 sin(3 pi / N) / l differs from 6 pi / L by O(1/N^2) and it is
-    // prestressed by EI1 (kappa0 - that), energy (N l / 2) A (...)^2.
-    // Measured: D 3e-4 and the energy 1.3e-4 off.
-    const double n_segments = 64, radius = L / (2 * M_PI);
-    const double segment   = 2 * radius * std::sin(M_PI / n_segments);
-    const double curvature = 2 * std::sin(3 * M_PI / n_segments) / segment;
-    const double diameter  = 2 / curvature;
-    const double d         = opposite_distance(run, run.rows[fold]);
+    for (std::size_t i = 0; i < jump; ++i)
+      EXPECT_LE(run.rows[i][0], fold[0]) << "row " << i;
+    // There the lobes have closed into the triply covered polygon,
+    // prestressed. Measured: D 6e-10 and the energy 1.4e-8 off (the fold
+    // located to 1e-4 of the step that passed it, where the largest O of
+    // the followed loop was 3e-4 and 1.3e-4 off).
+    const TriplyCoveredPolygon polygon;
+    const double               d = opposite_distance(run, fold);
     std::cout << "D at the fold = " << d << ", triply covered polygon "
-              << diameter << ", L / (3 pi) = " << L / (3 * M_PI) << std::endl;
-    EXPECT_NEAR(d, diameter, 1e-3 * diameter);
-    const double mismatch = o * 2 * M_PI / L - curvature;
-    const double prestress_energy =
-      n_segments * segment / 2 * A * mismatch * mismatch;
-    EXPECT_NEAR(run.rows[fold][probe_column(run, "energy")],
-                prestress_energy,
-                1e-3 * prestress_energy);
+              << polygon.diameter << ", L / (3 pi) = " << L / (3 * M_PI)
+              << "; relative errors of D " << d / polygon.diameter - 1
+              << " and of the energy "
+              << fold[probe_column(run, "energy")] / polygon.energy(o) - 1
+              << std::endl;
+    EXPECT_NEAR(d, polygon.diameter, 1e-6 * polygon.diameter);
+    EXPECT_NEAR(fold[probe_column(run, "energy")],
+                polygon.energy(o),
+                1e-6 * polygon.energy(o));
 
     // Stable on the whole two-lobe branch (the lowest eigenvalue crosses
     // zero only at O_b and touches it at O_d).
-    for (const std::vector<double> &row : run.rows)
-      if (row[0] > run.critical_load_factor + 1e-6 && row[0] < 1.8)
-        EXPECT_GT(row[probe_column(run, "lowest")], 0) << row[0];
+    for (std::size_t i = 0; i + 1 < jump; ++i)
+      if (run.rows[i][0] > run.critical_load_factor + 1e-6)
+        EXPECT_GT(run.rows[i][probe_column(run, "lowest")], 0) << "row " << i;
+
+    // From the jump (1e-3 past the fold in load factor) to O = 3, the
+    // state is the triply covered polygon, stable, with the prestress of
+    // its O: at O = 3 what the polygon's curvature measure leaves, 0.0033
+    // of the prestress at O_d. Measured: D within 6e-10, the energy within
+    // 1.0e-7 J (7.3 J at O_d, 0.024 J at O = 3).
+    EXPECT_GT(run.rows[jump][0], fold[0]);
+    EXPECT_LT(run.rows[jump][0] - fold[0], 2e-3 * fold[0]);
+    double diameter_error = 0, energy_error = 0;
+    for (std::size_t i = jump; i < run.rows.size(); ++i)
+      {
+        const std::vector<double> &row = run.rows[i];
+        diameter_error =
+          std::max(diameter_error,
+                   std::abs(opposite_distance(run, row) / polygon.diameter -
+                            1));
+        energy_error = std::max(energy_error,
+                                std::abs(row[probe_column(run, "energy")] -
+                                         polygon.energy(1 + row[0])));
+        EXPECT_NEAR(opposite_distance(run, row),
+                    polygon.diameter,
+                    1e-8 * polygon.diameter)
+          << "row " << i;
+        EXPECT_NEAR(row[probe_column(run, "energy")],
+                    polygon.energy(1 + row[0]),
+                    1e-6 * polygon.energy(o) + 1e-6 * polygon.energy(3))
+          << "row " << i;
+        EXPECT_GT(row[probe_column(run, "lowest")], 0) << "row " << i;
+      }
+    std::cout << "from the jump on: D within " << diameter_error
+              << " of the polygon's, the energy within " << energy_error
+              << " J of its prestress" << std::endl;
+    std::cout << "energy at O = 3: "
+              << run.rows.back()[probe_column(run, "energy")]
+              << " J, triply covered polygon " << polygon.energy(3) << " J"
+              << std::endl;
 
     // The supports hold only rigid motions and the slide: no force.
     std::cout << "largest reaction " << largest_reaction(run) << " N"
