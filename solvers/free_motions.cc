@@ -803,4 +803,88 @@ namespace rodnet
       return {};
     return symmetries_of(model, roles, u, load_factor, part_of_rod, parts);
   }
+
+  std::vector<global_dof_index>
+  free_frame_turns(const RodModel   &model,
+                   const VectorType &u,
+                   const double      load_factor)
+  {
+    // One candidate per rod that no junction joins: 1 at each of its
+    // twists, none of them fixed (a junction element holds the frame of
+    // the segment it joins).
+    const DofRoles                roles(model);
+    const RodNetwork             &network = model.network();
+    const unsigned int            n_rods  = network.rods().size();
+    const global_dof_index        none    = roles.n_dofs();
+    std::vector<global_dof_index> held(n_rods, none);
+    std::vector<bool>             candidate(n_rods, true);
+    for (const Junction &j : network.junctions())
+      {
+        for (const RodEnd &end : j.ends)
+          candidate[end.rod] = false;
+        if (j.ends.empty())
+          candidate[j.interior->rod] = false;
+      }
+    for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+      if (roles.kind(d) == Kind::twist)
+        {
+          const unsigned int r = roles.cell_place(roles.owner(d)).first;
+          if (model.constraints().is_constrained(d))
+            candidate[r] = false;
+          else if (held[r] == none)
+            held[r] = d;
+        }
+    Eigen::MatrixXd           values = Eigen::MatrixXd::Zero(roles.n_dofs(), 1);
+    std::vector<unsigned int> rod_of_dof(roles.n_dofs(), n_rods);
+    bool                      any = false;
+    for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+      if (roles.kind(d) == Kind::twist &&
+          candidate[roles.cell_place(roles.owner(d)).first])
+        {
+          values(d, 0)  = 1;
+          rod_of_dof[d] = roles.cell_place(roles.owner(d)).first;
+          any           = true;
+        }
+    if (!any)
+      return {};
+
+    // Whether the energy resists the turn: as for a rigid motion
+    // (keep_motions_the_energy_leaves()), each family in its own units,
+    // but at the load factor of the state (a ramped natural curvature
+    // breaks the symmetry).
+    const StencilState           state{u,
+                             model.configuration(),
+                             model.internal_variables(),
+                             model.time_step(),
+                             model.applied_load_factor(load_factor)};
+    const Eigen::MatrixXd        zero = Eigen::MatrixXd::Zero(1, 1);
+    std::vector<Eigen::MatrixXd> energy(n_rods, zero), weight(n_rods, zero);
+    for (const auto &family : model.element_families())
+      {
+        std::vector<Eigen::MatrixXd> family_energy(n_rods, zero),
+          family_weight(n_rods, zero);
+        add_family_grams(*family,
+                         state,
+                         values,
+                         rod_of_dof,
+                         family_energy,
+                         family_weight);
+        for (unsigned int r = 0; r < n_rods; ++r)
+          if (family_weight[r](0, 0) > 0)
+            {
+              energy[r] += family_energy[r] / family_weight[r](0, 0);
+              weight[r] += family_weight[r] / family_weight[r](0, 0);
+            }
+      }
+    std::vector<global_dof_index> turns;
+    for (unsigned int r = 0; r < n_rods; ++r)
+      if (candidate[r] && held[r] != none &&
+          null_motions(Eigen::MatrixXd::Identity(1, 1),
+                       energy[r],
+                       weight[r],
+                       free_tolerance)
+              .cols() == 1)
+        turns.push_back(held[r]);
+    return turns;
+  }
 } // namespace rodnet
