@@ -57,6 +57,8 @@ namespace rodnet
    * largest of the applied forces, the support reactions, and the applied
    * and reaction moments divided by L (a moment M on a structure of size L
    * is carried by forces of order M / L, and a force F by moments F L).
+   * Where no load acts and the reactions are rounding, S is the scale of
+   * the internal forces instead (judging_scale()).
    *
    * The floors are what rounding lets a residual reach, measured rather
    * than bounded: every DoF x_j is known to eps |x_j| at best (positions

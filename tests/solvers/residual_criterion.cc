@@ -3,8 +3,8 @@
 // of the loads and reactions (of the internal forces where the loads
 // vanish), and the round-off floor tracks the stiffness of the stiffest
 // segment.
+#include <common/naturally_twisted_ring.h>
 #include <common/rod_models.h>
-#include <core/rod_generators.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
 
@@ -176,41 +176,6 @@ namespace
     EXPECT_EQ(judged.moment, loads.moment);
   }
 
-  /// A circle of radius 1 in the xy-plane in 100 segments, naturally
-  /// straight with the natural twist @p tau0, EI1 = EI2 = GJ = 1,
-  /// EA = 1e7, its rigid motions held (vertex 0 in x, y, z, vertex 50 in y
-  /// and z, vertex 25 in z), and a force @p tip at vertex 75.
-  std::unique_ptr<RodModel>
-  twisted_ring_model(const double tau0, const Vector3 &tip = Vector3::Zero())
-  {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::ring(Vector3::Zero(),
-                                      1.0,
-                                      Vector3::UnitX(),
-                                      Vector3::UnitY(),
-                                      100),
-                     true,
-                     Vector3::UnitZ(),
-                     "simple",
-                     NaturalShape::straight);
-    network->create_triangulation();
-    RodNaturalShape natural;
-    natural.twist = tau0;
-    auto model    = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>{
-           std::make_shared<LinearElasticRod>(RodStiffness{1e7, 1, 1, 1},
-                                           natural)});
-    const auto &v = model->network().rods()[0].vertices;
-    model->fix_components("origin", v[0], {{true, true, true}});
-    model->fix_components("opposite", v[50], {{false, true, true}});
-    model->fix_components("quarter", v[25], {{false, false, true}});
-    if (tip.norm() > 0)
-      model->add_point_force(v[75], tip);
-    model->finalize();
-    return model;
-  }
-
   TEST(ResidualCriterion, UnloadedPrestressedRingIsJudgedByItsInternalForces)
   {
     // The circle of a naturally twisted ring is an equilibrium without
@@ -220,8 +185,8 @@ namespace
     // residual is judged against those, and far below them it shows
     // equilibrium by itself (not rounding-limited). Any applied load, even
     // one below the floor, keeps the loads' scales.
-    const double            tau0  = 0.99 * std::sqrt(3.0);
-    const auto              model = twisted_ring_model(tau0);
+    const double tau0  = 0.99 * std::sqrt(3.0);
+    const auto   model = rodnet::testing::naturally_twisted_ring(tau0);
     const ResidualCriterion criterion(*model);
     const VectorType        u     = model->create_vector();
     const ResidualParts     floor = criterion.roundoff_noise(u, 1.0).floor;
@@ -241,7 +206,8 @@ namespace
       criterion.norms(u, r),
       ResidualCriterion::tolerance(judged, floor, 1e-9)));
 
-    const auto loaded = twisted_ring_model(tau0, Vector3(0, 0, 1e-12));
+    const auto loaded =
+      rodnet::testing::naturally_twisted_ring(tau0, Vector3(0, 0, 1e-12));
     const ResidualCriterion loaded_criterion(*loaded);
     const ResidualParts     tiny =
       loaded_criterion

@@ -17,6 +17,7 @@
 // pi EI / R + pi R GJ tau0^2 without any load, and Michell's limit on the
 // moment, |m3| R < sqrt(3) EI, says it is stable for tau0 < sqrt(3) at
 // R = EI = GJ = 1.
+#include <common/naturally_twisted_ring.h>
 #include <common/run_scene_text.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
@@ -121,10 +122,10 @@ namespace
       }
   }
 
-  /// The scene of issue 33: the ring above (R = 1, 100 segments) built as
-  /// a circle with Natural shape = straight, EI1 = EI2 = GJ = 1, EA = 1e7,
-  /// natural twist @p tau0, its rigid motions held by six components (as
-  /// twisted_ring()), one load step; then @p extra.
+  /// The scene of issue 33, the model of naturally_twisted_ring(): R = 1,
+  /// 100 segments, Natural shape = straight, EI1 = EI2 = GJ = 1, EA = 1e7,
+  /// natural twist @p tau0, its rigid motions held by six components, one
+  /// load step; then @p extra.
   std::string
   naturally_twisted_ring_scene(const double tau0, const std::string &extra = "")
   {
@@ -219,42 +220,6 @@ namespace
     EXPECT_NEAR(last[rodnet::testing::probe_column(run, "z60")], 0, 1e-9);
   }
 
-  /// The ring of naturally_twisted_ring_scene() as a model, in @p n
-  /// segments (supports at vertices 0, n/2 and n/4), with the force
-  /// @p force at vertex 3n/4.
-  std::unique_ptr<RodModel>
-  naturally_twisted_ring(const double       tau0,
-                         const Vector3     &force,
-                         const unsigned int n = 100)
-  {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::ring(Vector3::Zero(),
-                                      1.0,
-                                      Vector3::UnitX(),
-                                      Vector3::UnitY(),
-                                      n),
-                     true,
-                     Vector3::UnitZ(),
-                     "simple",
-                     NaturalShape::straight);
-    network->create_triangulation();
-    RodNaturalShape natural;
-    natural.twist = tau0;
-    auto model    = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>{
-           std::make_shared<LinearElasticRod>(RodStiffness{1e7, 1, 1, 1},
-                                           natural)});
-    const auto &v = model->network().rods()[0].vertices;
-    model->fix_components("origin", v[0], {{true, true, true}});
-    model->fix_components("opposite", v[n / 2], {{false, true, true}});
-    model->fix_components("quarter", v[n / 4], {{false, false, true}});
-    if (force.norm() > 0)
-      model->add_point_force(v[3 * n / 4], force);
-    model->finalize();
-    return model;
-  }
-
   TEST(TwistedRing, DiscreteMichellLimitOfTheNaturalTwist)
   {
     // The natural twist where the unloaded circle turns unstable, by
@@ -266,8 +231,9 @@ namespace
       double stable = 1.5, unstable = 2.0;
       while (unstable - stable > 1e-9)
         {
-          const double tau0  = (stable + unstable) / 2;
-          auto         model = naturally_twisted_ring(tau0, Vector3::Zero(), n);
+          const double tau0 = (stable + unstable) / 2;
+          auto         model =
+            rodnet::testing::naturally_twisted_ring(tau0, Vector3::Zero(), n);
           const VectorType u = model->create_vector();
           MatrixType       tangent;
           model->initialize_matrix(tangent);
@@ -294,7 +260,8 @@ namespace
     // twist angles stays within their spread. Newton's steps along the
     // singular direction turned the frames by 36 rad, then 38 rad.
     auto model =
-      naturally_twisted_ring(0.99 * std::sqrt(3.0), Vector3(0.03, 0.02, 0.01));
+      rodnet::testing::naturally_twisted_ring(0.99 * std::sqrt(3.0),
+                                              Vector3(0.03, 0.02, 0.01));
     VectorType               u = model->create_vector();
     StaticSolver::Parameters parameters;
     parameters.n_steps = 2;
