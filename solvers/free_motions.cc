@@ -608,16 +608,18 @@ namespace rodnet
     /**
      * Keeps, of the motions the supports leave to each part, those that
      * the energy does not stop either (null_motions()), from the Hessians
-     * of every family's stencils at @p u and load factor 0 (a load is no
-     * support), family by family, so that each is measured against its
-     * own stiffness. Evaluates nothing if no part has a motion left.
+     * of every family's stencils at @p u and @p load_factor (0 for rigid
+     * motions: a load is no support), family by family, so that each is
+     * measured against its own stiffness. Evaluates nothing if no part has
+     * a motion left.
      */
     void
     keep_motions_the_energy_leaves(const RodModel                  &model,
                                    const DofRoles                  &roles,
                                    const VectorType                &u,
                                    const std::vector<unsigned int> &part_of_rod,
-                                   std::vector<Part>               &parts)
+                                   std::vector<Part>               &parts,
+                                   const double load_factor = 0)
     {
       if (std::all_of(parts.begin(), parts.end(), [](const Part &part) {
             return part.motions.cols() == 0;
@@ -630,7 +632,7 @@ namespace rodnet
                                model.configuration(),
                                model.internal_variables(),
                                model.time_step(),
-                               0.0};
+                               model.applied_load_factor(load_factor)};
       std::vector<Eigen::MatrixXd> energy = zero_grams(parts),
                                    weight = zero_grams(parts);
       for (const auto &family : model.element_families())
@@ -661,6 +663,41 @@ namespace rodnet
                                           energy[p],
                                           weight[p],
                                           free_tolerance);
+    }
+
+    /**
+     * Per rod, its first twist DoF where the common turn of all its frames
+     * is a candidate symmetry: no junction joins the rod (a junction
+     * element holds the frame of the segment it joins) and none of its
+     * twists is fixed; roles.n_dofs() otherwise.
+     */
+    std::vector<global_dof_index>
+    turning_twists(const RodModel &model, const DofRoles &roles)
+    {
+      const RodNetwork             &network = model.network();
+      const global_dof_index        none    = roles.n_dofs();
+      std::vector<global_dof_index> twist(network.rods().size(), none);
+      std::vector<bool>             held(network.rods().size(), false);
+      for (const Junction &j : network.junctions())
+        {
+          for (const RodEnd &end : j.ends)
+            held[end.rod] = true;
+          if (j.ends.empty())
+            held[j.interior->rod] = true;
+        }
+      for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+        if (roles.kind(d) == Kind::twist)
+          {
+            const unsigned int r = roles.cell_place(roles.owner(d)).first;
+            if (model.constraints().is_constrained(d))
+              held[r] = true;
+            else if (twist[r] == none)
+              twist[r] = d;
+          }
+      for (unsigned int r = 0; r < twist.size(); ++r)
+        if (held[r])
+          twist[r] = none;
+      return twist;
     }
 
     /// The largest change of @p mode in angles: positions over
@@ -809,82 +846,29 @@ namespace rodnet
                    const VectorType &u,
                    const double      load_factor)
   {
-    // One candidate per rod that no junction joins: 1 at each of its
-    // twists, none of them fixed (a junction element holds the frame of
-    // the segment it joins).
-    const DofRoles                roles(model);
-    const RodNetwork             &network = model.network();
-    const unsigned int            n_rods  = network.rods().size();
-    const global_dof_index        none    = roles.n_dofs();
-    std::vector<global_dof_index> held(n_rods, none);
-    std::vector<bool>             candidate(n_rods, true);
-    for (const Junction &j : network.junctions())
-      {
-        for (const RodEnd &end : j.ends)
-          candidate[end.rod] = false;
-        if (j.ends.empty())
-          candidate[j.interior->rod] = false;
-      }
-    for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
-      if (roles.kind(d) == Kind::twist)
+    const DofRoles                      roles(model);
+    const std::vector<global_dof_index> twists = turning_twists(model, roles);
+    std::vector<unsigned int>           part_of_rod;
+    std::vector<Part>                   parts = parts_at(model, u, part_of_rod);
+    for (Part &part : parts)
+      if (part.rods.size() == 1 && twists[part.rods[0]] != roles.n_dofs())
         {
-          const unsigned int r = roles.cell_place(roles.owner(d)).first;
-          if (model.constraints().is_constrained(d))
-            candidate[r] = false;
-          else if (held[r] == none)
-            held[r] = d;
+          // The turn column alone of the candidates.
+          part.turns   = true;
+          part.motions = Eigen::VectorXd::Unit(turn_columns, rigid_columns);
         }
-    Eigen::MatrixXd           values = Eigen::MatrixXd::Zero(roles.n_dofs(), 1);
-    std::vector<unsigned int> rod_of_dof(roles.n_dofs(), n_rods);
-    bool                      any = false;
-    for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
-      if (roles.kind(d) == Kind::twist &&
-          candidate[roles.cell_place(roles.owner(d)).first])
-        {
-          values(d, 0)  = 1;
-          rod_of_dof[d] = roles.cell_place(roles.owner(d)).first;
-          any           = true;
-        }
-    if (!any)
-      return {};
-
-    // Whether the energy resists the turn: as for a rigid motion
-    // (keep_motions_the_energy_leaves()), each family in its own units,
-    // but at the load factor of the state (a ramped natural curvature
-    // breaks the symmetry).
-    const StencilState           state{u,
-                             model.configuration(),
-                             model.internal_variables(),
-                             model.time_step(),
-                             model.applied_load_factor(load_factor)};
-    const Eigen::MatrixXd        zero = Eigen::MatrixXd::Zero(1, 1);
-    std::vector<Eigen::MatrixXd> energy(n_rods, zero), weight(n_rods, zero);
-    for (const auto &family : model.element_families())
-      {
-        std::vector<Eigen::MatrixXd> family_energy(n_rods, zero),
-          family_weight(n_rods, zero);
-        add_family_grams(*family,
-                         state,
-                         values,
-                         rod_of_dof,
-                         family_energy,
-                         family_weight);
-        for (unsigned int r = 0; r < n_rods; ++r)
-          if (family_weight[r](0, 0) > 0)
-            {
-              energy[r] += family_energy[r] / family_weight[r](0, 0);
-              weight[r] += family_weight[r] / family_weight[r](0, 0);
-            }
-      }
-    std::vector<global_dof_index> turns;
-    for (unsigned int r = 0; r < n_rods; ++r)
-      if (candidate[r] && held[r] != none &&
-          null_motions(Eigen::MatrixXd::Identity(1, 1),
-                       energy[r],
-                       weight[r],
-                       free_tolerance)
-              .cols() == 1)
-        turns.push_back(held[r]);
-    return turns;
+    // At the load factor of the state: a ramped natural curvature breaks
+    // the symmetry.
+    keep_motions_the_energy_leaves(model,
+                                   roles,
+                                   u,
+                                   part_of_rod,
+                                   parts,
+                                   load_factor);
+    std::vector<global_dof_index> held;
+    for (const Part &part : parts)
+      if (part.turns && part.motions.cols() == 1)
+        held.push_back(twists[part.rods[0]]);
+    return held;
   }
 } // namespace rodnet
