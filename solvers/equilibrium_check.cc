@@ -102,7 +102,7 @@ namespace rodnet
       const SymmetryBorder border =
         symmetry_border(model, u, load_factor, factorization);
       const unsigned int k = border.modes.size();
-      if (k == 0)
+      if (k == 0 || !border.s.allFinite())
         return correction;
       Eigen::VectorXd along(k);
       for (unsigned int a = 0; a < k; ++a)

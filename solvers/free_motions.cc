@@ -665,26 +665,36 @@ namespace rodnet
                                           free_tolerance);
     }
 
-    /**
-     * Per rod, its first twist DoF where the common turn of all its frames
-     * is a candidate symmetry: no junction joins the rod (a junction
-     * element holds the frame of the segment it joins) and none of its
-     * twists is fixed; roles.n_dofs() otherwise.
-     */
-    std::vector<global_dof_index>
-    turning_twists(const RodModel &model, const DofRoles &roles)
+    /// Whether each rod is joined to a junction: by an end, or by a
+    /// rotation handle inside it (a junction element holds the frame of
+    /// the segment it joins).
+    std::vector<bool>
+    joined_rods(const RodNetwork &network)
     {
-      const RodNetwork             &network = model.network();
-      const global_dof_index        none    = roles.n_dofs();
-      std::vector<global_dof_index> twist(network.rods().size(), none);
-      std::vector<bool>             held(network.rods().size(), false);
+      std::vector<bool> joined(network.rods().size(), false);
       for (const Junction &j : network.junctions())
         {
           for (const RodEnd &end : j.ends)
-            held[end.rod] = true;
+            joined[end.rod] = true;
           if (j.ends.empty())
-            held[j.interior->rod] = true;
+            joined[j.interior->rod] = true;
         }
+      return joined;
+    }
+
+    /**
+     * Per rod, its first twist DoF where the common turn of all its frames
+     * is a candidate symmetry: the rod is not @p joined and none of its
+     * twists is fixed; roles.n_dofs() otherwise.
+     */
+    std::vector<global_dof_index>
+    turning_twists(const RodModel          &model,
+                   const DofRoles          &roles,
+                   const std::vector<bool> &joined)
+    {
+      const global_dof_index        none = roles.n_dofs();
+      std::vector<global_dof_index> twist(joined.size(), none);
+      std::vector<bool>             held = joined;
       for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
         if (roles.kind(d) == Kind::twist)
           {
@@ -846,10 +856,15 @@ namespace rodnet
                    const VectorType &u,
                    const double      load_factor)
   {
+    // Where every rod is joined (a welded network), nothing to look at.
+    const std::vector<bool> joined = joined_rods(model.network());
+    if (std::all_of(joined.begin(), joined.end(), [](bool j) { return j; }))
+      return {};
     const DofRoles                      roles(model);
-    const std::vector<global_dof_index> twists = turning_twists(model, roles);
-    std::vector<unsigned int>           part_of_rod;
-    std::vector<Part>                   parts = parts_at(model, u, part_of_rod);
+    const std::vector<global_dof_index> twists =
+      turning_twists(model, roles, joined);
+    std::vector<unsigned int> part_of_rod;
+    std::vector<Part>         parts = parts_at(model, u, part_of_rod);
     for (Part &part : parts)
       if (part.rods.size() == 1 && twists[part.rods[0]] != roles.n_dofs())
         {
