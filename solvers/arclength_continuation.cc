@@ -132,8 +132,8 @@ namespace rodnet
     try
       {
         model.apply_boundary_values(u, lambda);
-        result.scale = criterion.load_scale(u, lambda);
         result.noise = criterion.roundoff_noise(u, lambda);
+        result.scale = criterion.judging_scale(u, lambda, result.noise.floor);
         result.rounding_limited =
           ResidualCriterion::inconclusive(result.noise.floor,
                                           result.scale,

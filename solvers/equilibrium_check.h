@@ -43,8 +43,9 @@ namespace rodnet
    * @p tangent) gives its inertia (negative_eigenvalues(): symmetry modes
    * do not count),
    * and, where @p result was rounding-limited, the Newton correction of its
-   * residual, which may not exceed @p uncertainty_limit without a warning
-   * (ResidualCriterion::rounding_hint()).
+   * residual on the complement of the symmetry modes (along which every
+   * state is an equilibrium), which may not exceed @p uncertainty_limit
+   * without a warning (ResidualCriterion::rounding_hint()).
    */
   EquilibriumCheck
   check_equilibrium(const RodModel          &model,

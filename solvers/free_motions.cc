@@ -608,16 +608,18 @@ namespace rodnet
     /**
      * Keeps, of the motions the supports leave to each part, those that
      * the energy does not stop either (null_motions()), from the Hessians
-     * of every family's stencils at @p u and load factor 0 (a load is no
-     * support), family by family, so that each is measured against its
-     * own stiffness. Evaluates nothing if no part has a motion left.
+     * of every family's stencils at @p u and @p load_factor (0 for rigid
+     * motions: a load is no support), family by family, so that each is
+     * measured against its own stiffness. Evaluates nothing if no part has
+     * a motion left.
      */
     void
     keep_motions_the_energy_leaves(const RodModel                  &model,
                                    const DofRoles                  &roles,
                                    const VectorType                &u,
                                    const std::vector<unsigned int> &part_of_rod,
-                                   std::vector<Part>               &parts)
+                                   std::vector<Part>               &parts,
+                                   const double load_factor = 0)
     {
       if (std::all_of(parts.begin(), parts.end(), [](const Part &part) {
             return part.motions.cols() == 0;
@@ -630,7 +632,7 @@ namespace rodnet
                                model.configuration(),
                                model.internal_variables(),
                                model.time_step(),
-                               0.0};
+                               model.applied_load_factor(load_factor)};
       std::vector<Eigen::MatrixXd> energy = zero_grams(parts),
                                    weight = zero_grams(parts);
       for (const auto &family : model.element_families())
@@ -661,6 +663,51 @@ namespace rodnet
                                           energy[p],
                                           weight[p],
                                           free_tolerance);
+    }
+
+    /// Whether each rod is joined to a junction: by an end, or by a
+    /// rotation handle inside it (a junction element holds the frame of
+    /// the segment it joins).
+    std::vector<bool>
+    joined_rods(const RodNetwork &network)
+    {
+      std::vector<bool> joined(network.rods().size(), false);
+      for (const Junction &j : network.junctions())
+        {
+          for (const RodEnd &end : j.ends)
+            joined[end.rod] = true;
+          if (j.ends.empty())
+            joined[j.interior->rod] = true;
+        }
+      return joined;
+    }
+
+    /**
+     * Per rod, its first twist DoF where the common turn of all its frames
+     * is a candidate symmetry: the rod is not @p joined and none of its
+     * twists is fixed; roles.n_dofs() otherwise.
+     */
+    std::vector<global_dof_index>
+    turning_twists(const RodModel          &model,
+                   const DofRoles          &roles,
+                   const std::vector<bool> &joined)
+    {
+      const global_dof_index        none = roles.n_dofs();
+      std::vector<global_dof_index> twist(joined.size(), none);
+      std::vector<bool>             held = joined;
+      for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+        if (roles.kind(d) == Kind::twist)
+          {
+            const unsigned int r = roles.cell_place(roles.owner(d)).first;
+            if (model.constraints().is_constrained(d))
+              held[r] = true;
+            else if (twist[r] == none)
+              twist[r] = d;
+          }
+      for (unsigned int r = 0; r < twist.size(); ++r)
+        if (held[r])
+          twist[r] = none;
+      return twist;
     }
 
     /// The largest change of @p mode in angles: positions over
@@ -802,5 +849,41 @@ namespace rodnet
     if (!any)
       return {};
     return symmetries_of(model, roles, u, load_factor, part_of_rod, parts);
+  }
+
+  std::vector<global_dof_index>
+  free_frame_turns(const RodModel   &model,
+                   const VectorType &u,
+                   const double      load_factor)
+  {
+    // Where every rod is joined (a welded network), nothing to look at.
+    const std::vector<bool> joined = joined_rods(model.network());
+    if (std::all_of(joined.begin(), joined.end(), [](bool j) { return j; }))
+      return {};
+    const DofRoles                      roles(model);
+    const std::vector<global_dof_index> twists =
+      turning_twists(model, roles, joined);
+    std::vector<unsigned int> part_of_rod;
+    std::vector<Part>         parts = parts_at(model, u, part_of_rod);
+    for (Part &part : parts)
+      if (part.rods.size() == 1 && twists[part.rods[0]] != roles.n_dofs())
+        {
+          // The turn column alone of the candidates.
+          part.turns   = true;
+          part.motions = Eigen::VectorXd::Unit(turn_columns, rigid_columns);
+        }
+    // At the load factor of the state: a ramped natural curvature breaks
+    // the symmetry.
+    keep_motions_the_energy_leaves(model,
+                                   roles,
+                                   u,
+                                   part_of_rod,
+                                   parts,
+                                   load_factor);
+    std::vector<global_dof_index> held;
+    for (const Part &part : parts)
+      if (part.turns && part.motions.cols() == 1)
+        held.push_back(twists[part.rods[0]]);
+    return held;
   }
 } // namespace rodnet

@@ -63,6 +63,23 @@ namespace rodnet
   symmetry_modes(const RodModel   &model,
                  const VectorType &u,
                  double            load_factor);
+
+  /**
+   * The rods of @p model whose material frames can all turn together about
+   * their tangents (all their twists changing alike) without changing the
+   * energy at (@p u, @p load_factor): an isotropic section (EI1 = EI2)
+   * without natural curvature, no twist of the rod fixed, and no junction
+   * element or other family that resists the turn (each family's Hessian
+   * in its own units, as describe_free_motions() asks, to rounding). The
+   * discrete energy is exactly invariant under that turn, so the tangent
+   * is singular along it at every state; a closed ring, which has no end
+   * to clamp, always has it. Returns one free twist DoF per such rod, in
+   * the order of the rods: holding it holds the turn.
+   */
+  std::vector<global_dof_index>
+  free_frame_turns(const RodModel   &model,
+                   const VectorType &u,
+                   double            load_factor);
 } // namespace rodnet
 
 #endif

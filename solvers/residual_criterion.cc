@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <random>
 
 namespace rodnet
@@ -99,8 +100,8 @@ namespace rodnet
     return {std::sqrt(force2), std::sqrt(moment2)};
   }
 
-  ResidualParts
-  ResidualCriterion::load_scale(const VectorType &u,
+  ResidualCriterion::LoadParts
+  ResidualCriterion::load_parts(const VectorType &u,
                                 const double      load_factor,
                                 const VectorType *extra_force) const
   {
@@ -162,13 +163,105 @@ namespace rodnet
             reaction_moment2 += junction_moment(u, j, g_reaction).squaredNorm();
         }
 
+    return {{std::sqrt(applied_force2), std::sqrt(applied_moment2)},
+            {std::sqrt(reaction_force2), std::sqrt(reaction_moment2)}};
+  }
+
+  ResidualParts
+  ResidualCriterion::combined(const double force, const double moment) const
+  {
     const double length = model.length_scale();
-    const double force  = std::max(
-      {std::sqrt(applied_force2),
-        std::sqrt(reaction_force2),
-        std::max(std::sqrt(applied_moment2), std::sqrt(reaction_moment2)) /
-          length});
-    return {force, force * length};
+    const double scale  = std::max(force, moment / length);
+    return {scale, scale * length};
+  }
+
+  ResidualParts
+  ResidualCriterion::load_scale(const VectorType &u,
+                                const double      load_factor,
+                                const VectorType *extra_force) const
+  {
+    return scale_of(load_parts(u, load_factor, extra_force));
+  }
+
+  ResidualParts
+  ResidualCriterion::scale_of(const LoadParts &loads) const
+  {
+    return combined(std::max(loads.applied.force, loads.reactions.force),
+                    std::max(loads.applied.moment, loads.reactions.moment));
+  }
+
+  ResidualParts
+  ResidualCriterion::internal_scale(const VectorType &u,
+                                    const double      load_factor) const
+  {
+    // What each row balances: the stencils' generalized forces on it,
+    // without their signs (junction rotations: the moments they stand for).
+    std::vector<double> row(dof_roles.n_dofs(), 0.0);
+    std::vector<double> junction(model.network().junctions().size(), 0.0);
+    const StencilState  state{u,
+                             model.configuration(),
+                             model.internal_variables(),
+                             model.time_step(),
+                             model.applied_load_factor(load_factor)};
+    const auto         &constraints = model.constraints();
+    LocalContribution   local;
+    std::map<unsigned int, Eigen::Vector4d> rotations;
+    for (const auto &family : model.element_families())
+      for (unsigned int s = 0; s < family->n_stencils(); ++s)
+        {
+          family->get_dofs(s, local.dofs);
+          family->evaluate(s, state, Derivatives::gradient, local);
+          rotations.clear();
+          for (unsigned int a = 0; a < local.dofs.size(); ++a)
+            {
+              const global_dof_index d = local.dofs[a];
+              if (constraints.is_constrained(d))
+                continue;
+              if (dof_roles.kind(d) != Kind::quaternion)
+                row[d] += std::abs(local.vector[a]);
+              else
+                {
+                  auto [place, added] =
+                    rotations.try_emplace(dof_roles.owner(d),
+                                          Eigen::Vector4d::Zero());
+                  place->second[dof_roles.component(d)] = local.vector[a];
+                }
+            }
+          for (const auto &[j, g] : rotations)
+            junction[j] += junction_moment(u, j, g).norm();
+        }
+    double force = 0, moment = 0;
+    for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
+      if (dof_roles.kind(i) == Kind::position ||
+          dof_roles.kind(i) == Kind::multiplier)
+        force = std::max(force, row[i]);
+      else if (dof_roles.kind(i) == Kind::twist ||
+               dof_roles.kind(i) == Kind::shape)
+        moment = std::max(moment, row[i]);
+    for (const double m : junction)
+      moment = std::max(moment, m);
+    return combined(force, moment);
+  }
+
+  ResidualParts
+  ResidualCriterion::judging_scale(const VectorType    &u,
+                                   const double         load_factor,
+                                   const ResidualParts &floor,
+                                   const VectorType    *extra_force) const
+  {
+    const LoadParts     loads = load_parts(u, load_factor, extra_force);
+    const ResidualParts scale = scale_of(loads);
+    // Reactions are residuals at fixed rows: within the floor they are
+    // rounding, however the supports are placed.
+    const bool vanish =
+      loads.applied.force == 0 && loads.applied.moment == 0 &&
+      combined(loads.reactions.force, loads.reactions.moment).force <=
+        combined(floor.force, floor.moment).force;
+    if (!vanish)
+      return scale;
+    const ResidualParts internal = internal_scale(u, load_factor);
+    return {std::max(scale.force, internal.force),
+            std::max(scale.moment, internal.moment)};
   }
 
   ResidualParts

@@ -57,6 +57,8 @@ namespace rodnet
    * largest of the applied forces, the support reactions, and the applied
    * and reaction moments divided by L (a moment M on a structure of size L
    * is carried by forces of order M / L, and a force F by moments F L).
+   * Where no load acts and the reactions are rounding, S is the scale of
+   * the internal forces instead (judging_scale()).
    *
    * The floors are what rounding lets a residual reach, measured rather
    * than bounded: every DoF x_j is known to eps |x_j| at best (positions
@@ -92,6 +94,37 @@ namespace rodnet
     load_scale(const VectorType &u,
                double            load_factor,
                const VectorType *extra_force = nullptr) const;
+
+    /**
+     * Scales of the internal forces at (@p u, @p load_factor), in N and
+     * N m: per row that the residual counts, the generalized forces the
+     * stencils exert on it summed without their signs, sum_s |g_s,i| (the
+     * forces of a vertex's segments and hinges on it, the moments on a
+     * twist; the moments that a junction's rotation rows stand for), which
+     * the residual sums to (near) zero at an equilibrium. The force scale
+     * is the largest of these forces and of these moments over L, as for
+     * the loads. One evaluation of every stencil's gradient.
+     */
+    ResidualParts
+    internal_scale(const VectorType &u, double load_factor) const;
+
+    /**
+     * The scales a residual at (@p u, @p load_factor) is judged against:
+     * those of the loads (load_scale()), unless the loads vanish: no
+     * applied force or moment at all (exactly), and reactions within the
+     * rounding floor @p floor (in forces, a moment over L). Then they are
+     * those of the internal forces (internal_scale()): a prestressed ring
+     * without loads is in equilibrium when its residual is far below the
+     * forces its elements exert on each other, not below the rounding of
+     * its reactions (issue 33). An applied load, however small, keeps the
+     * loads' scales: a residual below the floor cannot show how the
+     * structure carries it, and the solvers check the Newton correction.
+     */
+    ResidualParts
+    judging_scale(const VectorType    &u,
+                  double               load_factor,
+                  const ResidualParts &floor,
+                  const VectorType    *extra_force = nullptr) const;
 
     /**
      * The rounding noise of the residual at (@p u, @p load_factor), with
@@ -198,6 +231,29 @@ namespace rodnet
     }
 
   private:
+    /// Norms of the applied generalized forces and of the reactions.
+    struct LoadParts
+    {
+      ResidualParts applied;
+      ResidualParts reactions;
+    };
+
+    /// The parts of load_scale() before they are combined.
+    LoadParts
+    load_parts(const VectorType &u,
+               double            load_factor,
+               const VectorType *extra_force) const;
+
+    /// The scales of @p loads: the larger applied or reaction part, each
+    /// combined().
+    ResidualParts
+    scale_of(const LoadParts &loads) const;
+
+    /// The force scale of @p force and @p moment, the larger of the force
+    /// and the moment over L, and the moment scale that times L.
+    ResidualParts
+    combined(double force, double moment) const;
+
     /// The moment (N m) that rows @p g (w, x, y, z) of junction
     /// @p junction's quaternion stand for at @p u; the w row is completed
     /// from the gauge invariance g . q = 0.

@@ -18,6 +18,27 @@
 
 namespace rodnet
 {
+  namespace
+  {
+    /// Adds to the diagonal of @p tangent at each of the twist DoFs
+    /// @p twists its own value (1 where that is 0): a spring as stiff as
+    /// the twist's row, which fixes the twist in a Newton step along a
+    /// motion the tangent does not resist.
+    void
+    hold_twists(MatrixType                          &tangent,
+                const std::vector<global_dof_index> &twists)
+    {
+      if (twists.empty())
+        return;
+      for (const global_dof_index d : twists)
+        {
+          const double diagonal = std::abs(tangent.diag_element(d));
+          tangent.add(d, d, diagonal > 0 ? diagonal : 1.0);
+        }
+      tangent.compress(dealii::VectorOperation::add);
+    }
+  } // namespace
+
   StaticSolver::StaticSolver(RodModel         &model,
                              const Parameters &parameters,
                              std::ostream     *log)
@@ -66,8 +87,17 @@ namespace rodnet
       problem.residual = [potential](const VectorType &x, VectorType &r) {
         potential(x, &r);
       };
+    // The common turn of an isotropic rod's frames changes no energy: the
+    // tangent is singular along it, and a Newton step turns the frames by
+    // whatever the rounding pivot there makes of the residual (tens of rad
+    // on a loaded ring, until Newton fails; issue 33). A spring on one
+    // twist of each such rod, in the tangent only, holds the turn where
+    // it is; the residual, and so the equilibrium, is unchanged.
+    const std::vector<global_dof_index> turns =
+      free_frame_turns(model, u, load_factor);
     problem.tangent = [&](const VectorType &x, MatrixType &k) {
       model.assemble(x, load_factor, nullptr, &k, true, extra_force);
+      hold_twists(k, turns);
     };
 
     JudgedResult  outcome;
@@ -84,8 +114,9 @@ namespace rodnet
       {
         VectorType start = scale_state != nullptr ? *scale_state : u;
         model.apply_boundary_values(start, load_factor);
-        scale = criterion.load_scale(start, load_factor, extra_force);
         noise = criterion.roundoff_noise(u, load_factor, extra_force);
+        scale =
+          criterion.judging_scale(start, load_factor, noise.floor, extra_force);
         if (far_start)
           {
             // Newton assembles its own tangent: the residual alone here.
@@ -128,7 +159,8 @@ namespace rodnet
           }
         try
           {
-            scale = criterion.load_scale(u, load_factor, extra_force);
+            scale =
+              criterion.judging_scale(u, load_factor, noise.floor, extra_force);
           }
         catch (const std::exception &e)
           {

@@ -381,16 +381,6 @@ namespace rodnet
         model.set_time_step(start.h);
         NewtonSolver::Problem problem;
         scheme.set_up(start, problem);
-        // The scales of statics, or the out-of-balance force of the
-        // predictor where inertia is what the residual balances.
-        VectorType r = model.create_vector();
-        problem.residual(x, r);
-        const ResidualParts loads = criterion.load_scale(x, start.load_factor);
-        const ResidualParts predicted = criterion.norms(x, r);
-        const double        length    = model.length_scale();
-        const double        force =
-          std::max({loads.force, predicted.force, predicted.moment / length});
-        const ResidualParts scale{force, force * length};
         // The noise follows the slowly changing shape: measured every
         // noise_interval steps (and after a failed step) rather than at
         // every one of thousands.
@@ -399,6 +389,17 @@ namespace rodnet
             noise             = criterion.roundoff_noise(x, start.load_factor);
             steps_since_noise = 0;
           }
+        // The scales of statics, or the out-of-balance force of the
+        // predictor where inertia is what the residual balances.
+        VectorType r = model.create_vector();
+        problem.residual(x, r);
+        const ResidualParts loads =
+          criterion.judging_scale(x, start.load_factor, noise.floor);
+        const ResidualParts predicted = criterion.norms(x, r);
+        const double        length    = model.length_scale();
+        const double        force =
+          std::max({loads.force, predicted.force, predicted.moment / length});
+        const ResidualParts scale{force, force * length};
         ResidualParts tolerance =
           ResidualCriterion::tolerance(scale,
                                        noise.floor,

@@ -1,7 +1,9 @@
 // The units of the residual's parts (ResidualCriterion): a quaternion
 // residual is the moment it stands for, forces and moments get the scales
-// of the loads and reactions, and the round-off floor tracks the stiffness
-// of the stiffest segment.
+// of the loads and reactions (of the internal forces where the loads
+// vanish), and the round-off floor tracks the stiffness of the stiffest
+// segment.
+#include <common/naturally_twisted_ring.h>
 #include <common/rod_models.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
@@ -134,5 +136,83 @@ namespace
           << message;
         EXPECT_NE(message.find("segment"), std::string::npos) << message;
       }
+  }
+
+  TEST(ResidualCriterion, InternalForcesOfABarThatCannotExpand)
+  {
+    // A straight bar of 10 segments pinned at both ends with an axial
+    // eigenstrain eps0: it stays straight, every segment pushes with
+    // N = EA eps0, and each inner vertex carries N from either side, 2 N
+    // without signs (no bending, no twist). The reactions, N at each pin
+    // (sqrt(2) N together), are the loads, and they do not vanish: the
+    // scale stays theirs.
+    const double    EA = 1e4, eps0 = 1e-3;
+    RodNaturalShape natural;
+    natural.axial_eigenstrain = eps0;
+    auto              network = rodnet::testing::straight_network(10);
+    const std::size_t n_rods  = network->rods().size();
+    RodModel          model(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>(
+        n_rods,
+        std::make_shared<LinearElasticRod>(RodStiffness{EA, 1, 1, 1},
+                                           natural)));
+    model.fix_components("start", 0, {{true, true, true}});
+    model.fix_components("end", 10, {{true, true, true}});
+    model.finalize();
+    const ResidualCriterion criterion(model);
+    const VectorType        u        = model.create_vector();
+    const ResidualParts     internal = criterion.internal_scale(u, 1.0);
+    EXPECT_NEAR(internal.force, 2 * EA * eps0, 1e-12 * EA * eps0);
+    EXPECT_NEAR(internal.moment,
+                2 * EA * eps0 * model.length_scale(),
+                1e-12 * EA * eps0);
+
+    const ResidualParts loads = criterion.load_scale(u, 1.0);
+    EXPECT_NEAR(loads.force, std::sqrt(2.0) * EA * eps0, 1e-12 * EA * eps0);
+    const ResidualParts judged =
+      criterion.judging_scale(u, 1.0, criterion.roundoff_noise(u, 1.0).floor);
+    EXPECT_EQ(judged.force, loads.force);
+    EXPECT_EQ(judged.moment, loads.moment);
+  }
+
+  TEST(ResidualCriterion, UnloadedPrestressedRingIsJudgedByItsInternalForces)
+  {
+    // The circle of a naturally twisted ring is an equilibrium without
+    // loads: its supports carry rounding (3e-13 N), below the residual's
+    // floor (6e-7 N), while its hinges and twists exert forces of order
+    // EI / (R l) on every vertex and moments GJ tau0 on every twist. The
+    // residual is judged against those, and far below them it shows
+    // equilibrium by itself (not rounding-limited). Any applied load, even
+    // one below the floor, keeps the loads' scales.
+    const double tau0  = 0.99 * std::sqrt(3.0);
+    const auto   model = rodnet::testing::naturally_twisted_ring(tau0);
+    const ResidualCriterion criterion(*model);
+    const VectorType        u     = model->create_vector();
+    const ResidualParts     floor = criterion.roundoff_noise(u, 1.0).floor;
+    const ResidualParts     loads = criterion.load_scale(u, 1.0);
+    EXPECT_LT(loads.force, floor.force);
+    const ResidualParts internal = criterion.internal_scale(u, 1.0);
+    const ResidualParts judged   = criterion.judging_scale(u, 1.0, floor);
+    EXPECT_EQ(judged.force, internal.force);
+    EXPECT_EQ(judged.moment, internal.moment);
+    // Each twist row carries the twisting moment GJ tau0 of the hinges on
+    // either side of it; the vertices' hinge forces are larger.
+    EXPECT_GE(internal.moment, 2 * tau0 * (1 - 1e-12));
+    EXPECT_FALSE(ResidualCriterion::inconclusive(floor, judged, 1e-3));
+    VectorType r = model->create_vector();
+    model->assemble(u, 1.0, &r, nullptr);
+    EXPECT_TRUE(ResidualCriterion::within(
+      criterion.norms(u, r),
+      ResidualCriterion::tolerance(judged, floor, 1e-9)));
+
+    const auto loaded =
+      rodnet::testing::naturally_twisted_ring(tau0, Vector3(0, 0, 1e-12));
+    const ResidualCriterion loaded_criterion(*loaded);
+    const ResidualParts     tiny =
+      loaded_criterion
+        .judging_scale(u, 1.0, loaded_criterion.roundoff_noise(u, 1.0).floor);
+    EXPECT_EQ(tiny.force, loaded_criterion.load_scale(u, 1.0).force);
+    EXPECT_LT(tiny.force, 1e-9);
   }
 } // namespace
