@@ -13,6 +13,18 @@ namespace rodnet
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
 
+    /// The shared Geometry entries that no network generator reads.
+    std::vector<UnreadEntry>
+    entries_a_network_does_not_read()
+    {
+      return {{"Director d1",
+               "a network orients each beam itself, with d1 = e_z (for a "
+               "beam along z the coordinate axis least aligned with it) "
+               "unless the beam gives its own (a network file's \"d1 <x> "
+               "<y> <z>\", the frame's and the windmill's beams; "
+               "doc/networks.md)"}};
+    }
+
     /// A generator of a network of beams.
     class NetworkGenerator : public GeometryGenerator
     {
@@ -29,12 +41,7 @@ namespace rodnet
       std::vector<UnreadEntry>
       unread_shared_entries() const override
       {
-        return {{"Director d1",
-                 "a network orients each beam itself, with d1 = e_z (for a "
-                 "beam along z the coordinate axis least aligned with it) "
-                 "unless the beam gives its own (a network file's \"d1 <x> "
-                 "<y> <z>\", the frame's and the windmill's beams; "
-                 "doc/networks.md)"}};
+        return entries_a_network_does_not_read();
       }
 
     protected:
@@ -205,6 +212,12 @@ namespace rodnet
           scene_entries::get_file(prm, "Mesh file", input.scene_directory),
           &geometry.notes);
         return geometry;
+      }
+
+      std::vector<UnreadEntry>
+      unread_shared_entries() const override
+      {
+        return entries_a_network_does_not_read();
       }
     };
   } // namespace
