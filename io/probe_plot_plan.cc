@@ -98,6 +98,18 @@ namespace rodnet
       return scales;
     }
 
+    /// The resolution of the equilibria in @p unit: the force resolution
+    /// for forces, times the length scale for moments; 0 for the others.
+    double
+    resolution(const TableView &view, const std::string &unit)
+    {
+      if (unit == "N")
+        return view.options.force_resolution;
+      if (unit == "N m")
+        return view.options.force_resolution * view.options.length_scale;
+      return 0;
+    }
+
     /// A panel for every probe that varies beyond rounding, a note for
     /// every other.
     void
@@ -122,7 +134,8 @@ namespace rodnet
           const double scale    = unit.empty() ?
                                     std::max(std::abs(low), std::abs(high)) :
                                     scales.at(unit);
-          const double rounding = rounding_level * scale;
+          const double rounding =
+            std::max(rounding_level * scale, resolution(view, unit));
           if (n_values == 0)
             plan.notes.push_back(name + ": no value");
           else if (n_values == 1)

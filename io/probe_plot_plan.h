@@ -57,6 +57,11 @@ namespace rodnet
     /// A length scale of the model (m; 0 if none): positions are constant
     /// where they vary less than 1e-10 of it.
     double length_scale = 0;
+    /// The smallest force the run's equilibria resolve (N; 0 if none
+    /// given): forces (N) and moments (N m, with the length scale) that
+    /// vary less than it are constant, and stated as 0 where they stay
+    /// below it (reactions of supports that hold nothing).
+    double force_resolution = 0;
     /// What a row is, for the notes: "step", "run's end".
     std::string row_name = "step";
     /// Whether plot_probes() warns where no probe varies (a study's

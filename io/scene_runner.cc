@@ -84,6 +84,8 @@ namespace rodnet
         summary.final_stable =
           stable_check < checks.size() ? checks[stable_check] : std::nan("");
         last = {abscissa, u};
+        largest_energy = std::max(largest_energy,
+                                  std::abs(model.elastic_energy(u, load_factor)));
         if (vtu && step % scene.vtu_interval == 0)
           write_vtu(step, abscissa, u);
         throw_if_stop_requested();
@@ -108,6 +110,14 @@ namespace rodnet
         options.n_probes     = probes.size();
         options.x_range      = x_range;
         options.length_scale = model.length_scale();
+        // The solvers accept a residual of 1e-9 (their default relative
+        // tolerance) of the loads or internal forces; a rod storing the
+        // energy E over the size L carries internal forces of order E/L,
+        // so reactions below 1e-8 of that are what an accepted residual
+        // leaves (the reactions of a ring held against rigid motions).
+        if (options.length_scale > 0)
+          options.force_resolution =
+            1e-8 * largest_energy / options.length_scale;
         // A single state (a run that stopped at its first step) has no
         // plot.
         if (scene.plot && !summary.probe_names.empty() &&
@@ -171,6 +181,9 @@ namespace rodnet
       /// The probe values of the step before, for continue_probes().
       std::vector<double>                     previous_values;
       std::optional<std::pair<double, State>> last;
+      /// The largest elastic energy of a recorded state (J): the scale of
+      /// the internal forces (finish()).
+      double largest_energy = 0;
     };
 
     /**
