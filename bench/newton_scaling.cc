@@ -6,7 +6,7 @@
 // iteration from u = 0 is
 //   assemble: RodModel::assemble(u, 1, &r, &K) on the constrained system,
 //   solve:    the Newton solver's direct solver (TangentFactorization:
-//             band LU or Amesos KLU, --linear-solver), its numeric
+//             band LU or KLU, --linear-solver), its numeric
 //             factorization and the triangular solves (its one-time set-up,
 //             KLU's symbolic analysis, counts in "setup"),
 // timed separately, median (min-max), for N = 1e2 ... 1e6 vertices
@@ -16,14 +16,32 @@
 // N. As a check that the iteration did solve the linear problem, it prints
 // the tip deflection against P L^3 / (3 EI).
 //
+// Then welded square lattices of n x n cells (issue 33): beams of length
+// 0.1 in 10 segments, EA = 1e5, EI1 = 400, EI2 = 100, GJ = 67, pinned at
+// the four corners, under gravity (0.05 kg/m), n = 10, 20, 40, 57, 80, 111
+// up to --max-cells (1e4 to 1.1e6 DoFs). Timed are the first Newton
+// iterations (full steps) of the first of two load steps from the flat
+// lattice: the states the run goes through, whose tangents are indefinite
+// once the net sags far from equilibrium. Per iteration: the residual,
+// assemble / factorize / solve and the fill of the factor (its entries
+// over those of the tangent). The median and the largest time per DoF of
+// a lattice over those of the previous one show a superlinear jump: with
+// KLU's default pivot tolerance (before issue 33) the fill and the time of
+// the later iterations grew with the size (doc/performance.md).
+//
 // Usage: newton_scaling [--threads n] [--repeats n] [--max-vertices n]
-// [--linear-solver auto|klu|band] (defaults 1, 5, 100000 and auto; N = 1e6
-// gets 3 repeats). The default stops at
-// 1e5 because building the model is quadratic in N: RodNetwork::add_rod
-// compares every pair of vertices for coincidence, 15 s at 1e5 and an
-// estimated 25 min at 1e6 (see doc/performance.md).
+// [--linear-solver auto|klu|band] [--max-cells n] [--iterations n]
+// (defaults 1, 5, 100000, auto, 40 and 5; N = 1e6 gets 3 repeats;
+// --max-vertices below 100 leaves out the rods, --max-cells below 10 the
+// lattices). The rods stop at 1e5 by default because building the model
+// is quadratic in N: RodNetwork::add_rod compares every pair of vertices
+// for coincidence, 15 s at 1e5 and an estimated 25 min at 1e6 (see
+// doc/performance.md).
+#include <deal.II/base/parameter_handler.h>
+
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <io/scene.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/tangent_factorization.h>
@@ -33,6 +51,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 using namespace rodnet;
@@ -45,6 +64,8 @@ namespace
     unsigned int repeats       = 5;
     unsigned int max_vertices  = 100000;
     std::string  linear_solver = "auto";
+    unsigned int max_cells     = 40;
+    unsigned int iterations    = 5;
 
     /// The options of the usage line above.
     std::vector<bench::Option>
@@ -53,7 +74,9 @@ namespace
       return {bench::number("--threads", threads),
               bench::number("--repeats", repeats, 5),
               bench::number("--max-vertices", max_vertices),
-              bench::text("--linear-solver", linear_solver)};
+              bench::text("--linear-solver", linear_solver),
+              bench::number("--max-cells", max_cells),
+              bench::number("--iterations", iterations, 1)};
     }
   };
 
@@ -154,10 +177,9 @@ namespace
     return result;
   }
 
-  /// The benchmark proper, run once the command line is read and MPI is
-  /// up.
+  /// The straight rods of the header, N = 1e2 ... --max-vertices.
   void
-  benchmark(const Options &options)
+  rod_benchmark(const Options &options)
   {
     std::cout << "One Newton iteration (assemble + direct solve), clamped "
                  "straight rod, small tip load; "
@@ -246,6 +268,188 @@ namespace
                       exponent(&Result::total));
         std::cout << line;
       }
+  }
+  /// The lattice of the header with @p cells x @p cells cells.
+  std::unique_ptr<RodModel>
+  lattice_model(const unsigned int cells)
+  {
+    std::ostringstream scene;
+    scene << "subsection Geometry\n  set Generator = square lattice\n"
+          << "  set Cells = " << cells << ", " << cells << "\n"
+          << "  set Beam length = 0.1\n  set Segments = 10\nend\n"
+          << "subsection Material\n  subsection linear elastic\n"
+          << "    set Stiffness input = direct\n    set EA = 1e5\n"
+          << "    set EI1 = 400\n    set EI2 = 100\n    set GJ = 67\n"
+          << "  end\nend\nsubsection Supports\n  set Pinned vertices = "
+          << "@n_0_0, @n_" << cells << "_0, @n_0_" << cells << ", @n_" << cells
+          << "_" << cells << "\nend\nsubsection Loads\n"
+          << "  set Steps = 2\n  set Gravity = 0, 0, -9.81\n"
+          << "  set Mass per length = 0.05\nend\n";
+    dealii::ParameterHandler prm;
+    Scene::declare_parameters(prm);
+    prm.parse_input_from_string(scene.str());
+    return Scene(prm).build_model();
+  }
+
+  /// One Newton iteration of a lattice: its residual before, its times
+  /// and the fill of its factor.
+  struct LatticeIteration
+  {
+    double residual, assemble, factorize, solve, fill;
+
+    double
+    total() const
+    {
+      return assemble + factorize + solve;
+    }
+  };
+
+  /// The first @p iterations full Newton steps of the first load step
+  /// (load factor 0.5) of the lattice of @p cells cells; fewer where the
+  /// state leaves what the model can assemble (a segment turned by 180
+  /// degrees), which is printed.
+  std::vector<LatticeIteration>
+  lattice_iterations(RodModel          &model,
+                     const unsigned int iterations,
+                     const std::string &linear_solver)
+  {
+    VectorType u  = model.create_vector();
+    VectorType r  = model.create_vector();
+    VectorType du = model.create_vector();
+    MatrixType K;
+    model.initialize_matrix(K);
+    const auto direct = TangentFactorization::create(K, linear_solver);
+    std::vector<LatticeIteration> result;
+    try
+      {
+        for (unsigned int k = 0; k < iterations; ++k)
+          {
+            LatticeIteration it;
+            const double     t0 = bench::now();
+            model.assemble(u, 0.5, &r, &K);
+            const double t1 = bench::now();
+            direct->factorize();
+            const double t2 = bench::now();
+            direct->solve(r, du);
+            const double t3 = bench::now();
+            it.residual     = r.l2_norm();
+            it.assemble     = t1 - t0;
+            it.factorize    = t2 - t1;
+            it.solve        = t3 - t2;
+            it.fill         = direct->factor_entries() / K.n_nonzero_elements();
+            result.push_back(it);
+            u.add(-1.0, du);
+          }
+      }
+    catch (const std::exception &e)
+      {
+        std::cout << "  stopped after " << result.size()
+                  << " iterations: " << e.what() << "\n";
+      }
+    return result;
+  }
+
+  /// Prints a lattice case's iterations and returns the median and the
+  /// largest time per iteration.
+  std::pair<double, double>
+  report_lattice(const unsigned int                   cells,
+                 const double                         n_dofs,
+                 const double                         setup,
+                 const std::vector<LatticeIteration> &iterations)
+  {
+    std::vector<double> totals;
+    char                line[300];
+    std::snprintf(line,
+                  sizeof(line),
+                  "lattice %3u x %-3u DoFs %8.0f  setup %.3g s\n",
+                  cells,
+                  cells,
+                  n_dofs,
+                  setup);
+    std::cout << line;
+    for (std::size_t k = 0; k < iterations.size(); ++k)
+      {
+        const LatticeIteration &it = iterations[k];
+        totals.push_back(it.total());
+        std::snprintf(line,
+                      sizeof(line),
+                      "  iteration %zu  |r| %9.3e  assemble %.3g  factorize "
+                      "%.3g  solve %.3g  total %.3g s  fill %.2f\n",
+                      k + 1,
+                      it.residual,
+                      it.assemble,
+                      it.factorize,
+                      it.solve,
+                      it.total(),
+                      it.fill);
+        std::cout << line;
+      }
+    if (totals.empty())
+      return {std::nan(""), std::nan("")};
+    const bench::Statistics t = bench::statistics(totals);
+    std::snprintf(line,
+                  sizeof(line),
+                  "  per iteration: median %.3g s (%.3g us per DoF), largest "
+                  "%.3g s (%.3g us per DoF); peak memory %.0f MB\n",
+                  t.median,
+                  1e6 * t.median / n_dofs,
+                  t.max,
+                  1e6 * t.max / n_dofs,
+                  peak_memory_mb());
+    std::cout << line << std::flush;
+    return {t.median, t.max};
+  }
+
+  /// The lattices of the header, n = 10 ... --max-cells.
+  void
+  lattice_benchmark(const Options &options)
+  {
+    std::cout << "\nNewton iterations of the welded lattice under gravity, "
+                 "the first "
+              << options.iterations << " of its first load step; times in s\n";
+    std::vector<double> dofs, median, largest;
+    for (const unsigned int cells : {10u, 20u, 40u, 57u, 80u, 111u})
+      {
+        if (cells > options.max_cells)
+          break;
+        const double start = bench::now();
+        const auto   model = lattice_model(cells);
+        const double setup = bench::now() - start;
+        const auto   iterations =
+          lattice_iterations(*model, options.iterations, options.linear_solver);
+        dofs.push_back(model->layout().n_dofs());
+        const auto [m, l] =
+          report_lattice(cells, dofs.back(), setup, iterations);
+        median.push_back(m);
+        largest.push_back(l);
+      }
+    std::cout << "\nLinearity: time per DoF against the previous lattice "
+                 "(1 = linear)\n";
+    for (std::size_t i = 1; i < dofs.size(); ++i)
+      {
+        char line[200];
+        std::snprintf(line,
+                      sizeof(line),
+                      "  DoFs %8.0f / %8.0f: median iteration %.2f  largest "
+                      "%.2f\n",
+                      dofs[i],
+                      dofs[i - 1],
+                      (median[i] / dofs[i]) / (median[i - 1] / dofs[i - 1]),
+                      (largest[i] / dofs[i]) / (largest[i - 1] / dofs[i - 1]));
+        std::cout << line;
+      }
+  }
+
+
+  /// The benchmark proper, run once the command line is read and MPI is
+  /// up: the rods, then the lattices.
+  void
+  benchmark(const Options &options)
+  {
+    if (options.max_vertices >= 100)
+      rod_benchmark(options);
+    if (options.max_cells >= 10)
+      lattice_benchmark(options);
   }
 } // namespace
 

@@ -15,9 +15,16 @@ namespace rodnet
   }
 
   double
+  ProblemSize::factor_entries() const
+  {
+    return 32 * dofs() + 53 * std::pow(junctions, 1.35);
+  }
+
+  double
   ProblemSize::memory() const
   {
-    return 200e6 + bytes_per_dof * dofs();
+    return 200e6 + bytes_per_dof * dofs() +
+           bytes_per_factor_entry * factor_entries();
   }
 
   double
@@ -25,8 +32,14 @@ namespace rodnet
                  const bool time_stepping,
                  const bool vtu)
   {
-    const double solver = static_checks ? 1650 : time_stepping ? 1000 : 250;
+    const double solver = static_checks ? 1300 : time_stepping ? 900 : 250;
     return solver + (vtu ? 150 : 0);
+  }
+
+  double
+  memory_per_factor_entry(const bool static_checks, const bool time_stepping)
+  {
+    return static_checks ? 16 : time_stepping ? 28 : 0;
   }
 
   ProblemSize

@@ -27,6 +27,9 @@ namespace rodnet
     /// Peak memory per DoF of the solution method, bytes (see
     /// memory_per_dof()).
     double bytes_per_dof = 0;
+    /// Peak memory per entry of the tangent's factorization, bytes (see
+    /// memory_per_factor_entry()).
+    double bytes_per_factor_entry = 0;
 
     /// DoFs of the RodModel (DofLayout): 3 per vertex, a twist per
     /// segment, 4 quaternion components per junction with a rotation, and
@@ -34,25 +37,49 @@ namespace rodnet
     double
     dofs() const;
 
+    /**
+     * Estimated entries of the sparse LU of the tangent (KLU's L and U,
+     * or the band of a rod): 32 per DoF, as along a rod, and the fill
+     * that the junctions bring, 53 J^1.35 for J junctions. Fitted to KLU's
+     * counts on welded square lattices of 441 to 25921 junctions (2, 4
+     * and 10 segments per beam, 1e4 to 6.7e5 DoFs) within 4%; smaller
+     * lattices are overestimated (by 30% at 36 junctions). The exponent
+     * is that of planar networks; a network that fills space fills more.
+     */
+    double
+    factor_entries() const;
+
     /// Estimated peak memory of a run: a fixed 200 MB of libraries and
-    /// MPI, and bytes_per_dof per DoF.
+    /// MPI, bytes_per_dof per DoF and bytes_per_factor_entry per entry of
+    /// the factorization.
     double
     memory() const;
   };
 
   /**
-   * Peak memory per DoF measured on straight rods and a square lattice of
-   * 1e5 to 4e6 DoFs (Release build): Newton 1.6 kB (the tangent, its
-   * unconstrained copy, KLU's factors: 0.62 kB; the sparse LDL^T that
-   * checks the stability of every converged state: 1 kB), dynamic time
-   * stepping 0.95 kB (the mass matrix and the integrator's vectors
-   * besides), quasi-static time stepping as Newton, dynamic relaxation
-   * 0.24 kB; VTU output adds 0.13 kB. The values returned round these up.
-   * @p static_checks: Newton or quasi-static steps, whose states are
-   * checked for stability.
+   * Peak memory per DoF, besides the factorizations (see
+   * memory_per_factor_entry()): fitted with it to the peak resident
+   * memory of runs of straight rods (1.2e5 and 4e5 DoFs) and welded
+   * square lattices (4e4 to 6.7e5 DoFs), Release build, VTU output on
+   * (doc/performance.md, "Memory estimate"): Newton 1.3 kB and dynamic
+   * time stepping 0.9 kB per DoF; quasi-static time stepping as Newton;
+   * dynamic relaxation 0.25 kB (it factorizes nothing); VTU output adds
+   * 0.15 kB. @p static_checks: Newton or quasi-static steps, whose states
+   * are checked for stability.
    */
   double
   memory_per_dof(bool static_checks, bool time_stepping, bool vtu);
+
+  /**
+   * Peak memory per entry of the tangent's factorization
+   * (ProblemSize::factor_entries()), fitted as memory_per_dof(): 16 bytes
+   * with the stability check of every converged state (KLU's L and U, 14
+   * bytes an entry, and the sparse LDL^T of the check, half as many
+   * entries), 28 bytes for dynamic time stepping, none for dynamic
+   * relaxation.
+   */
+  double
+  memory_per_factor_entry(bool static_checks, bool time_stepping);
 
   /// @p n_rods rods of @p n_segments segments in all, @p n_closed of them
   /// closed (a closed rod has as many vertices as segments).

@@ -300,21 +300,26 @@ namespace rodnet
                          "Geometry/Network file",
                          "Output/Directory"});
     const std::string solution_method = prm.get({"Solver"}, "Method");
-    const double      bytes_per_dof =
-      memory_per_dof(solution_method == "newton" ||
-                       solution_method == "continuation" ||
-                       (solution_method == "time stepping" &&
-                        prm.get({"Solver", "Time stepping"}, "Integrator") ==
-                          "quasi-static"),
-                     solution_method == "time stepping",
+    const bool        static_checks =
+      solution_method == "newton" || solution_method == "continuation" ||
+      (solution_method == "time stepping" &&
+       prm.get({"Solver", "Time stepping"}, "Integrator") == "quasi-static");
+    const bool   time_stepping = solution_method == "time stepping";
+    const double bytes_per_dof =
+      memory_per_dof(static_checks,
+                     time_stepping,
                      prm.get_bool({"Output"}, "Write VTU"));
+    const double bytes_per_factor_entry =
+      memory_per_factor_entry(static_checks, time_stepping);
     // What cannot fit in memory is refused before it is generated.
-    const SizeCheck check_size = [bytes_per_dof](ProblemSize        size,
-                                                 const std::string &entry) {
-      size.bytes_per_dof = bytes_per_dof;
-      check_memory(size, available_memory(), entry);
-      return size;
-    };
+    const SizeCheck check_size =
+      [bytes_per_dof, bytes_per_factor_entry](ProblemSize        size,
+                                              const std::string &entry) {
+        size.bytes_per_dof          = bytes_per_dof;
+        size.bytes_per_factor_entry = bytes_per_factor_entry;
+        check_memory(size, available_memory(), entry);
+        return size;
+      };
 
     refuse_unread_geometry_entries(*entries.find("Geometry"),
                                    prm.get({"Geometry"}, "Generator"));
@@ -359,8 +364,8 @@ namespace rodnet
     natural_shape_ramp =
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
     fixed_loads = prm.get_bool("Fixed loads");
-    if (fixed_loads && !natural_shape_ramp && prescribed_displacements.empty() &&
-        prescribed_rotations.empty())
+    if (fixed_loads && !natural_shape_ramp &&
+        prescribed_displacements.empty() && prescribed_rotations.empty())
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
         "has nothing to ramp; give Loads/Ramped natural shape, "
@@ -515,8 +520,7 @@ namespace rodnet
     std::vector<std::array<double, 2>> result;
     for (const unsigned int g : rod_groups())
       {
-        const std::optional<CrossSection> &section =
-          material_groups[g].section;
+        const std::optional<CrossSection> &section = material_groups[g].section;
         if (section)
           result.push_back({{2 * std::sqrt(section->I1 / section->area),
                              2 * std::sqrt(section->I2 / section->area)}});
@@ -553,7 +557,7 @@ namespace rodnet
         network->create_triangulation();
       }
     std::vector<std::shared_ptr<const RodMaterial>> materials;
-    const std::vector<unsigned int> groups = rod_groups();
+    const std::vector<unsigned int>                 groups = rod_groups();
     for (unsigned int r = 0; r < groups.size(); ++r)
       {
         materials.push_back(material_groups[groups[r]].material);
@@ -681,7 +685,8 @@ namespace rodnet
     for (const MaterialGroup &group : material_groups)
       if (group.inextensible)
         throw std::invalid_argument(
-          "entry \"" + group.subsection + "/Inextensible\": the "
+          "entry \"" + group.subsection +
+          "/Inextensible\": the "
           "bending-active element of dynamic relaxation has no constraints; "
           "use Solver/Method = newton or continuation");
     auto [network, materials] = build_network();
@@ -755,12 +760,12 @@ namespace rodnet
             select_rotation_target(net, name, entry);
           // Rotations are given in degrees, moments in N m.
           const bool rotation = list == &spec.rotations;
-          list->push_back({"entry \"" + std::string(entry) + "\": \"" + name +
-                             "\"",
-                           target.vertex,
-                           target.junction,
-                           axis,
-                           rotation ? amount * M_PI / 180 : amount});
+          list->push_back(
+            {"entry \"" + std::string(entry) + "\": \"" + name + "\"",
+             target.vertex,
+             target.junction,
+             axis,
+             rotation ? amount * M_PI / 180 : amount});
         }
   }
 

@@ -17,8 +17,8 @@ namespace rodnet
   /**
    * Newton's method with a line search, run by Trilinos NOX ("Line Search
    * Based" solver) on deal.II's Trilinos vectors and matrix through our own
-   * NOX group (NoxGroup), with linear solves by Amesos KLU or LAPACK's band
-   * LU (TangentFactorization). deal.II 9.4 has no NOX wrapper; this is the
+   * NOX group (NoxGroup), with linear solves by SuiteSparse KLU or LAPACK's
+   * band LU (TangentFactorization). deal.II 9.4 has no NOX wrapper; this is the
    * thin interface between the two.
    */
   class NewtonSolver

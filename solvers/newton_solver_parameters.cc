@@ -16,8 +16,8 @@ namespace rodnet
     prm.declare_entry("Linear solver",
                       "auto",
                       dealii::Patterns::Selection("auto|klu|band"),
-                      "Newton's direct solver: Amesos KLU, LAPACK band LU "
-                      "(one process); auto: band if 32 wide at most. [-]");
+                      "Newton's direct solver: SuiteSparse KLU, LAPACK band "
+                      "LU (one process); auto: band if 32 wide at most. [-]");
     prm.declare_entry(
       "Max iterations",
       "25",

@@ -1,6 +1,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <core/scatter_positions.h>
+#include <solvers/epetra_entries.h>
+#include <solvers/klu_factorization.h>
 #include <solvers/tangent_factorization.h>
 
 #include <Amesos.h>
@@ -8,6 +10,7 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
@@ -44,11 +47,13 @@ namespace rodnet
     using VectorType = TangentFactorization::VectorType;
     using MatrixType = TangentFactorization::MatrixType;
 
-    /// Trilinos Amesos KLU.
-    class KluFactorization : public TangentFactorization
+    /// Trilinos Amesos KLU, where the tangent is spread over several
+    /// processes (Amesos gathers it onto one); its pivot tolerance is
+    /// KLU's default (see make_klu_factorization()).
+    class AmesosKluFactorization : public TangentFactorization
     {
     public:
-      explicit KluFactorization(const MatrixType &matrix)
+      explicit AmesosKluFactorization(const MatrixType &matrix)
           : problem(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()),
                     nullptr,
                     nullptr)
@@ -83,28 +88,17 @@ namespace rodnet
         return "klu";
       }
 
+      /// Amesos does not tell.
+      double
+      factor_entries() const override
+      {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+
     private:
       Epetra_LinearProblem               problem;
       std::unique_ptr<Amesos_BaseSolver> solver;
     };
-
-
-    /// Calls @p f(row, column, value) for every stored entry of @p m (one
-    /// process: local and global indices are the same).
-    template <class Function>
-    void
-    for_each_entry(const Epetra_CrsMatrix &m, const Function &f)
-    {
-      for (int row = 0; row < m.NumMyRows(); ++row)
-        {
-          int     n;
-          int    *columns;
-          double *values;
-          m.ExtractMyRowView(row, n, values, columns);
-          for (int k = 0; k < n; ++k)
-            f(row, m.GCID(columns[k]), values[k]);
-        }
-    }
 
 
     /// The lower and upper half-widths of the band of @p m's pattern, its
@@ -243,8 +237,8 @@ namespace rodnet
       void
       solve(const VectorType &b, VectorType &x) override
       {
-        x              = b;
-        double   *data = x.trilinos_vector()[0];
+        x            = b;
+        double *data = x.trilinos_vector()[0];
         if (!new_index.empty())
           {
             renumbered.resize(n);
@@ -276,6 +270,13 @@ namespace rodnet
       name() const override
       {
         return "band";
+      }
+
+      /// The band as LAPACK stores it, room for the row exchanges included.
+      double
+      factor_entries() const override
+      {
+        return band.size();
       }
 
     private:
@@ -315,8 +316,10 @@ namespace rodnet
     if (kind == "band" && !one_process)
       throw std::invalid_argument(
         "the band LU (Linear solver = band) runs on one process only");
-    if (kind == "klu" || !one_process)
-      return std::make_unique<KluFactorization>(matrix);
+    if (!one_process)
+      return std::make_unique<AmesosKluFactorization>(matrix);
+    if (kind == "klu")
+      return make_klu_factorization(matrix);
     const Epetra_CrsMatrix &m      = matrix.trilinos_matrix();
     const auto              narrow = [](const std::pair<int, int> &widths) {
       return widths.first <= max_auto_band_width &&
@@ -326,7 +329,7 @@ namespace rodnet
     if (narrow(widths))
       return std::make_unique<BandFactorization>(matrix, widths);
     // Renumbered, the band may be narrow (a rod with multipliers).
-    std::vector<int>          new_index = reverse_cuthill_mckee(m);
+    std::vector<int>          new_index         = reverse_cuthill_mckee(m);
     const std::pair<int, int> renumbered_widths = band_widths(m, new_index);
     if (narrow(renumbered_widths))
       return std::make_unique<BandFactorization>(matrix,
@@ -334,7 +337,7 @@ namespace rodnet
                                                  std::move(new_index));
     if (kind == "band")
       return std::make_unique<BandFactorization>(matrix, widths);
-    return std::make_unique<KluFactorization>(matrix);
+    return make_klu_factorization(matrix);
   }
 
 

@@ -14,8 +14,11 @@ namespace rodnet
    * The direct solver of Newton's linear systems K x = b with the tangent
    * K: factorized once per Newton iteration, then used for one or more
    * solves. Two kinds:
-   *  - "klu": Trilinos Amesos KLU, sparse LU for any pattern; its
-   *    symbolic analysis (ordering) is done once, at construction.
+   *  - "klu": SuiteSparse KLU, sparse LU for any pattern; its symbolic
+   *    analysis (the fill-reducing order) is done once, at construction,
+   *    and its pivots stay on the diagonal, where that order wants them,
+   *    unless the diagonal is tiny (make_klu_factorization()). On several
+   *    processes Trilinos Amesos KLU.
    *  - "band": LAPACK's band LU with partial pivoting (dgbtrf, dgbtrs) on
    *    the tangent's band. A rod's DoFs are numbered along it, so its
    *    tangent is a narrow band (half-width 11 for one rod), which the
@@ -61,6 +64,13 @@ namespace rodnet
     /// "klu" or "band".
     virtual std::string
     name() const = 0;
+
+    /// The entries the last factorization stores: those of KLU's L and U
+    /// (their diagonals included), or the band as LAPACK stores it; NaN
+    /// where the solver does not tell (Amesos, on several processes), 0
+    /// before the first factorization.
+    virtual double
+    factor_entries() const = 0;
   };
 
   /**

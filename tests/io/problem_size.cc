@@ -1,12 +1,15 @@
 // The size a scene reports before its model is built is the size of the
 // model built: rods, segments and DoFs against the DoF layout, for every
 // generator (networks of meshes too, whose chains keep their segments) and
-// the constraints' DoFs of inextensible rods and ribbons.
+// the constraints' DoFs of inextensible rods and ribbons; the entries of the
+// tangent's factorization against KLU's count, and the memory estimate,
+// which counts them, against measured peaks.
 #include <deal.II/base/parameter_handler.h>
 
 #include <common/scene_text.h>
 #include <io/scene.h>
 #include <io/scene_runner.h>
+#include <solvers/tangent_factorization.h>
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -187,9 +190,8 @@ namespace
   TEST(ProblemSize, MemoryEstimateOfANewtonRun)
   {
     // 30000 segments (120003 DoFs), one Newton step: the peak memory grows
-    // by the estimate per DoF within 50% (measured 1.6 kB per DoF on
-    // 4e5 and 2e6 DoFs, 1 kB of it the stability check's LDL^T; the
-    // estimate is 1.65 kB).
+    // by the estimate within 50% (measured 1.6 kB per DoF; the estimate is
+    // 1.3 kB per DoF and 16 bytes for each of 32 factor entries per DoF).
     const auto scene =
       scene_of(rod_director + "  set Segments = 30000\n  set End = 30, 0, 0\n",
                "subsection Supports\n  set Clamped ends = start\nend\n"
@@ -206,11 +208,95 @@ namespace
     const RunSummary run = run_scene(*scene, "problem_size_memory", nullptr);
     ASSERT_TRUE(run.failure.empty()) << run.failure;
     const double growth   = peak_memory() - before;
-    const double estimate = scene->size().bytes_per_dof * scene->size().dofs();
+    const double estimate = scene->size().memory() - 200e6;
     std::cout << "peak memory growth " << growth / scene->size().dofs()
-              << " bytes per DoF, estimate " << scene->size().bytes_per_dof
+              << " bytes per DoF, estimate " << estimate / scene->size().dofs()
               << std::endl;
     EXPECT_GT(growth, 0.5 * estimate);
     EXPECT_LT(growth, 1.5 * estimate);
+  }
+  /// The issue-33 lattice of @p cells x @p cells cells, @p segments
+  /// segments per beam (EA = 1e5, EI1 = 400, EI2 = 100, GJ = 67, beams of
+  /// 0.1), pinned at its corners, under gravity, solved with the energy
+  /// line search.
+  std::unique_ptr<Scene>
+  lattice_scene(const unsigned int cells, const unsigned int segments)
+  {
+    const std::string n = std::to_string(cells);
+    return scene_of("  set Generator = square lattice\n"
+                    "  set Cells = " +
+                      n + ", " + n +
+                      "\n"
+                      "  set Beam length = 0.1\n"
+                      "  set Segments = " +
+                      std::to_string(segments) + "\n",
+                    rodnet::testing::direct_material(1e5, 400, 100, 67) +
+                      "subsection Supports\n  set Pinned vertices = @n_0_0, "
+                      "@n_" +
+                      n + "_0, @n_0_" + n + ", @n_" + n + "_" + n +
+                      "\nend\nsubsection Loads\n  set Steps = 2\n"
+                      "  set Gravity = 0, 0, -9.81\n"
+                      "  set Mass per length = 0.05\nend\n"
+                      "subsection Solver\n  set Line search = energy\nend\n");
+  }
+
+  /// KLU's count of the entries of the factorization of the tangent of
+  /// @p scene's model, unloaded.
+  double
+  klu_factor_entries(const Scene &scene)
+  {
+    const auto model = scene.build_model();
+    MatrixType tangent;
+    model->initialize_matrix(tangent);
+    model->assemble(model->create_vector(), 0.0, nullptr, &tangent);
+    const auto klu = TangentFactorization::create(tangent, "auto");
+    EXPECT_EQ(klu->name(), "klu");
+    klu->factorize();
+    return klu->factor_entries();
+  }
+
+  TEST(ProblemSize, FactorEntriesOfALatticeAgainstKlu)
+  {
+    // The estimate against KLU's count on lattices of 441 and 1681
+    // junctions, and its growth between them, which is faster than that of
+    // the DoFs (the junctions' fill); a rod's estimate is linear.
+    const auto   small = lattice_scene(20, 2), large = lattice_scene(40, 2);
+    const double small_klu = klu_factor_entries(*small);
+    const double large_klu = klu_factor_entries(*large);
+    EXPECT_NEAR(small->size().factor_entries() / small_klu, 1, 0.05);
+    EXPECT_NEAR(large->size().factor_entries() / large_klu, 1, 0.05);
+    const double dof_growth = large->size().dofs() / small->size().dofs();
+    EXPECT_GT(large->size().factor_entries() / small->size().factor_entries(),
+              1.15 * dof_growth);
+    EXPECT_GT(large_klu / small_klu, 1.15 * dof_growth);
+    const auto rod    = scene_of(rod_director + "  set Segments = 1000\n"),
+               longer = scene_of(rod_director + "  set Segments = 4000\n");
+    EXPECT_NEAR(longer->size().factor_entries() / rod->size().factor_entries(),
+                longer->size().dofs() / rod->size().dofs(),
+                1e-12);
+  }
+
+  TEST(ProblemSize, MemoryEstimateCountsTheFactorization)
+  {
+    // The estimate is the fixed part, the DoFs' and the factorization's.
+    const auto         scene = lattice_scene(80, 10);
+    const ProblemSize &size  = scene->size();
+    EXPECT_GT(size.bytes_per_factor_entry, 0);
+    EXPECT_DOUBLE_EQ(size.memory(),
+                     200e6 + size.bytes_per_dof * size.dofs() +
+                       size.bytes_per_factor_entry * size.factor_entries());
+    // Against the peak resident memory of whole runs of these scenes
+    // (Release, /usr/bin/time -v, doc/performance.md "Memory estimate"):
+    // within 15%. Without the factorization (before issue 33) the 80 x 80
+    // lattice was estimated at 1.25 GB, the 160 x 160 one at 1.41 GB.
+    for (const auto &[cells, segments, peak] :
+         std::vector<std::tuple<unsigned int, unsigned int, double>>{
+           {80, 10, 1.672e9},
+           {160, 2, 2.127e9},
+           {40, 10, 0.548e9}})
+      EXPECT_NEAR(lattice_scene(cells, segments)->size().memory() / peak,
+                  1,
+                  0.15)
+        << cells << " x " << cells << " cells, " << segments << " segments";
   }
 } // namespace

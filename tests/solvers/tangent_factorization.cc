@@ -1,11 +1,13 @@
 // The direct solvers of Newton's systems (TangentFactorization): LAPACK's
-// band LU and Amesos KLU solve a rod's tangent system to its backward
+// band LU and KLU solve a rod's tangent system to its backward
 // error; "auto" takes the band for one rod and KLU where junction DoFs
 // widen the band; a singular tangent is reported, not solved; a kept
 // factorization (TangentFactorizationCache) is reused only for the same
 // matrix, pattern and kind, and solves new values to their backward error;
 // and NOX's line searches, which apply the Jacobian through our group,
-// still work.
+// still work. KLU keeps the fill of its fill-reducing order on an
+// indefinite lattice tangent, where the pivoting of Amesos KLU (before
+// issue 33) broke it.
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
@@ -13,11 +15,13 @@
 #include <common/rod_models.h>
 #include <core/network_generators.h>
 #include <core/rod_graph.h>
+#include <solvers/epetra_entries.h>
 #include <solvers/newton_solver.h>
 #include <solvers/tangent_factorization.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <klu.h>
 #include <stdexcept>
 
 using namespace rodnet;
@@ -172,6 +176,144 @@ TEST(TangentFactorization, AKeptFactorizationServesTheSamePatternOnly)
   const auto after = cache.get(rod.tangent, "klu");
   EXPECT_NE(after, klu);
   EXPECT_EQ(cache.get(rod.tangent, "klu"), after);
+}
+
+namespace
+{
+  /**
+   * A welded square lattice of 30 x 30 cells of side 0.1 (10 segments per
+   * beam, EA = 1e5, EI1 = 400, EI2 = 100, GJ = 67: the lattice of issue 33;
+   * 83820 DoFs) pinned at its corners, and its tangent where the lattice
+   * is rolled into a cylinder of one turn about a line along y, the
+   * junction rotations left at the identity: a state far from equilibrium,
+   * as Newton's first iterates on a large lattice are, whose tangent is
+   * indefinite.
+   */
+  struct RolledLattice
+  {
+    static constexpr unsigned int cells = 30;
+    static constexpr double       side  = 0.1;
+
+    std::unique_ptr<RodModel> model;
+    MatrixType                tangent;
+
+    RolledLattice()
+    {
+      BuiltNetwork built = build_rod_network(
+        network_generators::square_lattice(cells, cells, side),
+        10,
+        "simple");
+      model = rodnet::testing::elastic_model(std::move(built.network),
+                                             {1e5, 400, 100, 67});
+      for (const unsigned int node :
+           {0u, cells, cells * (cells + 1), (cells + 1) * (cells + 1) - 1})
+        model->fix_components("corner",
+                              built.node_vertex[node],
+                              {{true, true, true}});
+      model->finalize();
+      model->initialize_matrix(tangent);
+    }
+
+    /// Assembles the tangent, flat (@p turns = 0) or rolled by @p turns.
+    void
+    assemble_rolled(const double turns)
+    {
+      VectorType   u      = model->create_vector();
+      const double radius = cells * side / (2 * M_PI * turns);
+      for (unsigned int v = 0; v < model->network().n_vertices() && turns > 0;
+           ++v)
+        {
+          const Vector3 x = model->network().vertex(v);
+          const Vector3 rolled(radius * std::sin(x[0] / radius),
+                               x[1],
+                               radius * (1 - std::cos(x[0] / radius)));
+          for (unsigned int c = 0; c < 3; ++c)
+            u[model->layout().vertex_dof(v, c)] = rolled[c] - x[c];
+        }
+      u.compress(dealii::VectorOperation::insert);
+      model->assemble(u, 0.0, nullptr, &tangent);
+    }
+  };
+
+  /// The normwise backward error |b - K x| / (|K|_F |x| + |b|) of the
+  /// solution x of K x = b by @p solver.
+  double
+  normwise_backward_error(TangentFactorization &solver,
+                          const MatrixType     &tangent,
+                          const VectorType     &b)
+  {
+    VectorType x = b;
+    solver.solve(b, x);
+    VectorType kx = x;
+    tangent.vmult(kx, x);
+    kx.add(-1.0, b);
+    return kx.l2_norm() /
+           (tangent.frobenius_norm() * x.l2_norm() + b.l2_norm());
+  }
+
+  /// The entries of KLU's L and U of @p tangent as Trilinos Amesos KLU
+  /// factorized it before issue 33: rows unscaled (Amesos_Control's
+  /// ScaleMethod 0), KLU's pivot tolerance 1e-3.
+  double
+  amesos_klu_fill(const MatrixType &tangent)
+  {
+    const Epetra_CrsMatrix &m = tangent.trilinos_matrix();
+    std::vector<int>        offsets(m.NumMyRows() + 1, 0), columns;
+    std::vector<double>     values;
+    for_each_entry(m, [&](const int row, const int column, const double v) {
+      ++offsets[row + 1];
+      columns.push_back(column);
+      values.push_back(v);
+    });
+    for (std::size_t row = 0; row + 1 < offsets.size(); ++row)
+      offsets[row + 1] += offsets[row];
+    klu_common common;
+    klu_defaults(&common);
+    common.scale    = 0;
+    common.tol      = 1e-3;
+    const int     n = m.NumMyRows();
+    klu_symbolic *symbolic =
+      klu_analyze(n, offsets.data(), columns.data(), &common);
+    klu_numeric *numeric = klu_factor(offsets.data(),
+                                      columns.data(),
+                                      values.data(),
+                                      symbolic,
+                                      &common);
+    const double fill    = numeric == nullptr ?
+                             std::nan("") :
+                             double(numeric->lnz) + numeric->unz + numeric->nzoff;
+    klu_free_numeric(&numeric, &common);
+    klu_free_symbolic(&symbolic, &common);
+    return fill;
+  }
+} // namespace
+
+TEST(TangentFactorization, KluKeepsItsFillOnAnIndefiniteLatticeTangent)
+{
+  RolledLattice lattice;
+  // Flat, the tangent is positive definite: the fill of the order (its
+  // diagonal pivots), a small multiple of the tangent's entries.
+  lattice.assemble_rolled(0);
+  const auto klu = TangentFactorization::create(lattice.tangent, "klu");
+  klu->factorize();
+  const double entries = lattice.tangent.n_nonzero_elements();
+  const double order   = klu->factor_entries();
+  EXPECT_LT(order, 2.5 * entries);
+  EXPECT_EQ(amesos_klu_fill(lattice.tangent), order);
+
+  // Rolled: no more than the order's fill, and a backward stable solve
+  // (9e-22 measured).
+  lattice.assemble_rolled(1);
+  klu->factorize();
+  EXPECT_LE(klu->factor_entries(), 1.01 * order);
+  VectorType b = lattice.model->create_vector();
+  for (unsigned int i = 0; i < b.size(); ++i)
+    b[i] = std::sin(0.37 * i + 1);
+  b.compress(dealii::VectorOperation::insert);
+  EXPECT_LT(normwise_backward_error(*klu, lattice.tangent, b), 1e-15);
+  // Amesos's pivoting leaves the diagonal here and fills far beyond the
+  // order (1.72 times measured): the factorization of 3641289.
+  EXPECT_GT(amesos_klu_fill(lattice.tangent), 1.3 * order);
 }
 
 TEST(TangentFactorization, ASingularTangentIsReported)

@@ -1,0 +1,124 @@
+#include <solvers/epetra_entries.h>
+#include <solvers/klu_factorization.h>
+
+#include <klu.h>
+#include <stdexcept>
+#include <vector>
+
+namespace rodnet
+{
+  namespace
+  {
+    using VectorType = TangentFactorization::VectorType;
+    using MatrixType = TangentFactorization::MatrixType;
+
+    /// KLU's pivot tolerance (see make_klu_factorization()): a diagonal
+    /// entry at least this fraction of its column's largest, rows scaled by
+    /// their largest entry, is the pivot.
+    constexpr double diagonal_pivot_tolerance = 1e-8;
+
+    /**
+     * KLU on the compressed rows of the tangent, read as the compressed
+     * columns of its transpose: KLU factorizes K^T and solves K x = b by
+     * its transposed solve.
+     */
+    class SuiteSparseKlu : public TangentFactorization
+    {
+    public:
+      explicit SuiteSparseKlu(const MatrixType &matrix)
+          : matrix(matrix)
+      {
+        const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
+        offsets.assign(m.NumMyRows() + 1, 0);
+        for_each_entry(m, [&](const int row, const int column, double) {
+          ++offsets[row + 1];
+          columns.push_back(column);
+        });
+        for (std::size_t row = 0; row + 1 < offsets.size(); ++row)
+          offsets[row + 1] += offsets[row];
+        values.resize(columns.size());
+        klu_defaults(&common);
+        common.tol   = diagonal_pivot_tolerance;
+        common.scale = 2; // rows by their largest entry, KLU's default
+        symbolic = klu_analyze(n(), offsets.data(), columns.data(), &common);
+        if (symbolic == nullptr)
+          throw std::runtime_error(
+            "KLU could not analyse the tangent's pattern (status " +
+            std::to_string(common.status) + ")");
+      }
+
+      ~SuiteSparseKlu() override
+      {
+        klu_free_numeric(&numeric, &common);
+        klu_free_symbolic(&symbolic, &common);
+      }
+
+      void
+      factorize() override
+      {
+        if (std::size_t(matrix.trilinos_matrix().NumMyNonzeros()) !=
+            values.size())
+          throw std::logic_error("the tangent's pattern changed after KLU's "
+                                 "analysis of it");
+        std::size_t k = 0;
+        for_each_entry(matrix.trilinos_matrix(),
+                       [&](int, int, const double value) {
+                         values[k++] = value;
+                       });
+        klu_free_numeric(&numeric, &common);
+        numeric = klu_factor(offsets.data(),
+                             columns.data(),
+                             values.data(),
+                             symbolic,
+                             &common);
+        if (numeric == nullptr)
+          throw std::runtime_error(
+            "the tangent is singular (KLU found no pivot)");
+      }
+
+      void
+      solve(const VectorType &b, VectorType &x) override
+      {
+        x          = b;
+        double *xs = x.trilinos_vector()[0];
+        if (klu_tsolve(symbolic, numeric, n(), 1, xs, &common) != 1)
+          throw std::runtime_error("KLU's solve failed");
+      }
+
+      std::string
+      name() const override
+      {
+        return "klu";
+      }
+
+      double
+      factor_entries() const override
+      {
+        return numeric == nullptr ?
+                 0.0 :
+                 double(numeric->lnz) + numeric->unz + numeric->nzoff;
+      }
+
+    private:
+      int
+      n() const
+      {
+        return offsets.size() - 1;
+      }
+
+      const MatrixType   &matrix;
+      std::vector<int>    offsets, columns;
+      std::vector<double> values;
+      klu_common          common;
+      klu_symbolic       *symbolic = nullptr;
+      klu_numeric        *numeric  = nullptr;
+    };
+  } // namespace
+
+
+  std::unique_ptr<TangentFactorization>
+  make_klu_factorization(const TangentFactorization::MatrixType &matrix)
+  {
+    return std::make_unique<SuiteSparseKlu>(matrix);
+  }
+} // namespace rodnet
