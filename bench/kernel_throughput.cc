@@ -1,4 +1,4 @@
-// K1 of /work/shared/BENCHMARKS.md: hinge kernel throughput.
+// K1 of ../shared/BENCHMARKS.md: hinge kernel throughput.
 //
 // An open rod of N vertices on the helix x = cos t, y = sin t, z = 0.1 t,
 // t_i = 2 pi i / 50, circular section of diameter 0.01, E = 1e9 (G = E/3;
@@ -28,7 +28,8 @@
 // Usage: kernel_throughput [--threads n] [--repeats n] [--kernel NAME]
 // [--vertices N] (defaults 1, 7, both kernels, N = 1e3 and 1e5: the peer
 // figures are single-threaded; one kernel and one N for a profile)
-// [--peers file] (the peer figures; default /work/shared/BENCHMARKS.md).
+// [--peers file] (the peer figures; default ../shared/BENCHMARKS.md beside
+// the source tree).
 #include <core/rod_model.h>
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>

@@ -1,4 +1,4 @@
-// P1 of /work/shared/BENCHMARKS.md (gravity cantilever, large deflection)
+// P1 of ../shared/BENCHMARKS.md (gravity cantilever, large deflection)
 // by dynamic relaxation on the bending-active element (DrModel,
 // DynamicRelaxation), beside the peer DR code DRMSimulationModel.
 //
@@ -29,7 +29,7 @@
 //
 // Usage: p1_dynamic_relaxation [--repeats n] [--threads n] [--search 0|1]
 // [--max-n N] (largest N; default 200) [--peers file] (the peer figures;
-// default /work/shared/BENCHMARKS.md)
+// default ../shared/BENCHMARKS.md beside the source tree)
 #include <solvers/dynamic_relaxation.h>
 
 #include <bench/options.h>

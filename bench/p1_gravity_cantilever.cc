@@ -1,4 +1,4 @@
-// P1 of /work/shared/BENCHMARKS.md: gravity cantilever, large deflection.
+// P1 of ../shared/BENCHMARKS.md: gravity cantilever, large deflection.
 //
 // A straight rod from (0,0,0) to (1,0,0), circular section r = 5e-3,
 // E = 1e8, nu = 0.5 (G = E/3), under its weight q = rho A g = 0.770476 N/m
@@ -37,7 +37,7 @@
 // "full step", the default) [--linear-solver auto|klu|band] (Newton's direct
 // solver, TangentFactorization; default auto) [--only-n n] (one of the N
 // above only, e.g. to profile it) [--peers file] (the peer figures; default
-// /work/shared/BENCHMARKS.md)
+// ../shared/BENCHMARKS.md)
 #include <solvers/static_solver.h>
 
 #include <bench/options.h>

@@ -1,4 +1,4 @@
-// P1 of /work/shared/BENCHMARKS.md, the gravity cantilever with large
+// P1 of ../shared/BENCHMARKS.md, the gravity cantilever with large
 // deflection, as the benchmark programs build it for either rod model:
 // p1_gravity_cantilever (Newton on discrete elastic rods),
 // p1_dynamic_relaxation (the bending-active element, dynamic relaxation) and

@@ -1,4 +1,4 @@
-// The peer figures of /work/shared/BENCHMARKS.md, read when a benchmark
+// The peer figures of ../shared/BENCHMARKS.md, read when a benchmark
 // runs.
 //
 // The benchmark programs set their figures beside those of established codes
@@ -35,8 +35,9 @@ namespace rodnet
   namespace bench
   {
     /// The file of peer figures a benchmark reads unless --peers names
-    /// another.
-    inline const std::string default_peer_file = "/work/shared/BENCHMARKS.md";
+    /// another: ../shared/BENCHMARKS.md beside the source tree.
+    inline const std::string default_peer_file =
+      RODNET_SOURCE_DIR "/../shared/BENCHMARKS.md";
 
     /// One row of a table of BENCHMARKS.md: a cell per column, and the date
     /// of its figures.
