@@ -9,6 +9,7 @@
 #include <io/scene_entries.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
+#include <io/substrate.h>
 #include <io/unread_geometry_entries.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
@@ -124,6 +125,7 @@ namespace rodnet
     declare_geometry(prm);
     declare_materials(prm);
     declare_supports(prm);
+    Substrate::declare_parameters(prm);
     declare_loads(prm);
     declare_solver(prm);
     declare_output(prm);
@@ -330,6 +332,7 @@ namespace rodnet
     model_size.constraint_dofs = constraint_dofs();
     model_size                 = check_size(model_size, model_size_entry);
     parse_supports(prm);
+    substrate = Substrate::parse(prm);
     parse_loads(prm);
     if (gravity.norm() > 0)
       rod_masses = masses_per_length();
@@ -365,11 +368,13 @@ namespace rodnet
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
     fixed_loads = prm.get_bool("Fixed loads");
     if (fixed_loads && !natural_shape_ramp &&
-        prescribed_displacements.empty() && prescribed_rotations.empty())
+        prescribed_displacements.empty() && prescribed_rotations.empty() &&
+        !substrate.moves())
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
         "has nothing to ramp; give Loads/Ramped natural shape, "
-        "Supports/Prescribed displacements or Supports/Prescribed rotations");
+        "Supports/Prescribed displacements, Supports/Prescribed rotations "
+        "or a strain of the Substrate");
     prm.leave_subsection();
   }
 
@@ -716,6 +721,7 @@ namespace rodnet
     add_rotational_loads(network, spec);
     add_position_supports(network, spec);
     add_forces(network, spec);
+    substrate.add_sites(network, spec);
     return spec;
   }
 

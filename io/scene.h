@@ -15,6 +15,7 @@
 #include <io/read_notes.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
+#include <io/substrate.h>
 #include <materials/cross_section.h>
 #include <solvers/arclength_continuation.h>
 #include <solvers/dynamic_relaxation.h>
@@ -349,6 +350,8 @@ namespace rodnet
     std::optional<NaturalShapeRamp> natural_shape_ramp;
     /// Loads/Fixed loads.
     bool        fixed_loads = false;
+    /// Subsection Substrate: bonding sites that follow a substrate.
+    Substrate   substrate;
     ProblemSize model_size;
     /// The entry a message about the model's size names
     /// (GeometryGenerator::size_entry()).

@@ -451,6 +451,86 @@ namespace
      1,
      "entry \"Supports/Clamped ends\": there is no vertex or junction called "
      "\"tipp\"; the names are \"clamp\", \"corner\", \"tip\""},
+    // Substrate loading (doc/morphing.md): sites that are no vertex or rod
+    // end, held twice or off the substrate, strains that fold it.
+    {"substrate_unknown_site",
+     with("Substrate",
+          "  set Pinned sites = @nowhere\n  set Compressive strain = 0.1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/Pinned sites\": there is no vertex or junction "
+     "called \"nowhere\""},
+    {"substrate_clamped_site_not_an_end",
+     with("Substrate",
+          "  set Clamped sites = mid\n  set Compressive strain = 0.1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/Clamped sites\": \"mid\" names no rod end"},
+    {"substrate_site_also_clamped",
+     with("Substrate",
+          "  set Clamped sites = start\n  set Compressive strain = 0.1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/Clamped sites\": the bonding site \"start\" holds "
+     "vertex 0 of rod 0, which \"Clamped ends: start\" holds as well; a "
+     "bonding site takes its position from the substrate alone"},
+    {"substrate_site_also_prescribed",
+     with("Substrate",
+          "  set Pinned sites = end\n  set Compressive strain = 0.1\n") +
+       section("Supports", "  set Prescribed displacements = end: x=-0.1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/Pinned sites\": the bonding site \"end\" holds "
+     "vertex 10 of rod 0, which \"Prescribed displacements: end: x=-0.1\" "
+     "holds as well"},
+    {"substrate_site_off_the_plane",
+     with("Geometry",
+          "  set Generator = polyline\n"
+          "  set Points = 0,0,0; 1,0,0; 1,0,1\n") +
+       section("Substrate",
+               "  set Pinned sites = 0:10, end\n"
+               "  set Compressive strain = 0.1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/Pinned sites\": the bonding site \"end\" lies at "
+     "z = 1, off the substrate, the plane z = 0 of \"0:10\""},
+    {"substrate_inverted",
+     with("Substrate",
+          "  set Pinned sites = end\n  set Compressive strain = 1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/Compressive strain\": 1 would shrink the substrate "
+     "to a point or turn it inside out"},
+    {"substrate_folded",
+     with("Substrate",
+          "  set Pinned sites = end\n  set In-plane strain = 0.2, -1.5, 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/In-plane strain\": the substrate's principal "
+     "stretch -0.5 at load factor 1 folds or inverts it"},
+    {"substrate_two_strains",
+     with("Substrate",
+          "  set Pinned sites = end\n  set Compressive strain = 0.1\n"
+          "  set Released prestretch = 0.2\n"),
+     ".prm",
+     "",
+     1,
+     "subsection \"Substrate\": give one of \"Compressive strain\", "
+     "\"Released prestretch\" and \"In-plane strain\", not several"},
+    {"substrate_without_sites",
+     with("Substrate", "  set Released prestretch = 0.5\n"),
+     ".prm",
+     "",
+     1,
+     "subsection \"Substrate\": the substrate is strained but nothing is "
+     "bonded to it"},
     {"unknown_probe_kind",
      with("Output", "  set Probes = a: angle end\n"),
      ".prm",
