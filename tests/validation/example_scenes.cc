@@ -185,6 +185,7 @@ namespace
     "overcurved_ring",    // validation/overcurved_ring
     "ribbon_snapping",    // validation/ribbon_snapping
     "rollup_lateral",     // validation/rollup_lateral
+    "substrate_bridge",   // validation/substrate_bridge
   };
 
   class ExampleScenes : public ::testing::TestWithParam<Expectation>
