@@ -35,7 +35,8 @@ namespace
                   "_" + c + ": position " + site_vertices[s] + " " + c;
     return direct_material() +
            "subsection Geometry\n  set Generator = polyline\n"
-           "  set Points = 0,0,0; 1,0,0; 1,1,0\n  set Segments = 4\nend\n"
+           "  set Points = 0,0,0; 1,0,0; 1,1,0\n  set Segments = 4\n"
+           "  set Director d1 = 0, 0, 1\nend\n"
            "subsection Substrate\n  set Pinned sites = start, 4, end\n" +
            substrate +
            "end\nsubsection Loads\n  set Steps = 2\nend\n"
