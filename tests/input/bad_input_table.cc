@@ -487,6 +487,21 @@ namespace
      "entry \"Substrate/Pinned sites\": the bonding site \"end\" holds "
      "vertex 10 of rod 0, which \"Prescribed displacements: end: x=-0.1\" "
      "holds as well"},
+    {"substrate_clamped_pinned_junction",
+     valid_cantilever +
+       section("Geometry",
+               "  set Generator = network file\n"
+               "  set Network file = " +
+                 data_folder + "pinned_junction.net\n") +
+       section("Supports", "  set Clamped ends = @a\n") +
+       section("Substrate",
+               "  set Clamped sites = @j\n  set Compressive strain = 0.1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Substrate/Clamped sites\": \"@j\" is the pinned junction "
+     "\"j\", which has no rotation to clamp; give it in \"Substrate/Pinned "
+     "sites\""},
     {"substrate_site_off_the_plane",
      with("Geometry",
           "  set Generator = polyline\n"

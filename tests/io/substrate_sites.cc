@@ -2,12 +2,15 @@
 // affine map x -> c + (I + lambda H)(x - c) carries them, at every load
 // factor, for a general in-plane strain about a given centre; a released
 // prestretch eps_pre moves them as the compressive strain
-// eps_pre / (1 + eps_pre) does, about the sites' centroid.
+// eps_pre / (1 + eps_pre) does, about the sites' centroid; a clamped
+// junction moves with the map and keeps its rotation, a clamped free end
+// moves rigidly with the map of its end segment's midpoint.
 #include <common/run_scene_text.h>
 #include <common/scene_text.h>
 
 #include <Eigen/Dense>
 #include <array>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
@@ -93,5 +96,55 @@ namespace
       expect_sites_follow(run_scene_text(pinned_l(entry), "substrate_release"),
                           0.25 * Eigen::Matrix2d::Identity(),
                           centroid);
+  }
+  TEST(SubstrateSites, ClampedJunctionAndEndsTranslateWithTheSubstrate)
+  {
+    // A T of three unit beams welded at j; its free ends a, b and the
+    // junction clamped, the stem's end c free.
+    std::ofstream("substrate_t.net") << "node a 0 0 0\nnode j 1 0 0\n"
+                                        "node b 2 0 0\nnode c 1 1 0\n"
+                                        "beam a j\nbeam j b\nbeam j c\n";
+    std::string probes = "rotation: rotation j 0,0,1";
+    for (const char *v : {"a", "j", "b"})
+      for (const char *c : {"x", "y", "z"})
+        probes +=
+          std::string("; ") + v + "_" + c + ": position @" + v + " " + c;
+    const RunSummary run = run_scene_text(
+      direct_material() +
+        "subsection Geometry\n  set Generator = network file\n"
+        "  set Network file = substrate_t.net\n  set Segments = 4\nend\n"
+        "subsection Substrate\n  set Clamped sites = @a, @j, @b\n"
+        "  set In-plane strain = 0.1, -0.05, 0.03\n  set Centre = 0, 0\n"
+        "end\nsubsection Loads\n  set Steps = 2\nend\n"
+        "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+        "  set Probes = " +
+        probes + "\nend\n",
+      "substrate_t");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    Eigen::Matrix2d h;
+    h << 0.1, 0.03, 0.03, -0.05;
+    // Where each site is bonded (a and b: the midpoints of their end
+    // segments, a quarter beam long) and where its vertex is.
+    const std::array<std::pair<const char *, Eigen::Vector2d>, 3> bonded = {
+      {{"a", Eigen::Vector2d(0.125, 0)},
+       {"j", Eigen::Vector2d(1, 0)},
+       {"b", Eigen::Vector2d(1.875, 0)}}};
+    const std::array<Eigen::Vector2d, 3> vertex = {
+      {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(2, 0)}};
+    for (const std::vector<double> &row : run.rows)
+      {
+        EXPECT_NEAR(row.at(probe_column(run, "rotation")), 0, 1e-12);
+        for (unsigned int s = 0; s < 3; ++s)
+          {
+            const Eigen::Vector2d x = vertex[s] + row[0] * h * bonded[s].second;
+            const std::string     name = bonded[s].first;
+            EXPECT_NEAR(row.at(probe_column(run, name + "_x")), x[0], 1e-12)
+              << name << " at " << row[0];
+            EXPECT_NEAR(row.at(probe_column(run, name + "_y")), x[1], 1e-12)
+              << name << " at " << row[0];
+            EXPECT_NEAR(row.at(probe_column(run, name + "_z")), 0, 1e-12)
+              << name << " at " << row[0];
+          }
+      }
   }
 } // namespace
