@@ -401,8 +401,10 @@ namespace
                  {"missing.net:1", "missing"});
     expect_error(read("kind.net", "node a 0 0 0 glued\n"),
                  {"kind.net:1", "\"glued\""});
-    expect_error(read("option.net", nodes + "beam a b group -1\n"),
-                 {"option.net:3", "\"-1\""});
+    expect_error(read("option.net", nodes + "beam a b group\n"),
+                 {"option.net:3", "the group's name"});
+    expect_error(read("option.net", nodes + "beam a b d1 0 0 1 d1 0 1 0\n"),
+                 {"option.net:3", "\"d1\""});
     expect_error([] { read_network_file("no/such/file.net"); },
                  {"no/such/file.net"});
 
