@@ -34,16 +34,16 @@ namespace rodnet
       }
 
       void
-      add_beam(RodGraph          &graph,
-               const unsigned int from,
-               const unsigned int to,
-               const unsigned int group         = 0,
-               const Vector3     &director_hint = Vector3::Zero())
+      add_beam(RodGraph                       &graph,
+               const unsigned int              from,
+               const unsigned int              to,
+               const std::vector<std::string> &groups        = {},
+               const Vector3                  &director_hint = Vector3::Zero())
       {
         RodGraph::Beam beam;
         beam.from          = from;
         beam.to            = to;
-        beam.group         = group;
+        beam.groups        = groups;
         beam.director_hint = director_hint;
         graph.beams.push_back(beam);
       }
@@ -75,7 +75,7 @@ namespace rodnet
                                         Vector3(0, 0, shaft_length),
                                         JunctionKind::clamped);
       // The default d1 = e_z is parallel to the shaft.
-      add_beam(graph, hub, top, 0, Vector3::UnitX());
+      add_beam(graph, hub, top, {"shaft"}, Vector3::UnitX());
       for (unsigned int k = 0; k < 3; ++k)
         {
           const double       angle = (90. + 120. * k) * M_PI / 180;
@@ -84,7 +84,7 @@ namespace rodnet
                      "blade" + std::to_string(k + 1),
                      blade_length *
                        Vector3(std::cos(angle), std::sin(angle), 0));
-          add_beam(graph, hub, tip, 1);
+          add_beam(graph, hub, tip, {"blades"});
         }
       return graph;
     }
@@ -103,12 +103,21 @@ namespace rodnet
           add_node(graph,
                    "n_" + std::to_string(i) + "_" + std::to_string(j),
                    Vector3(i * a, j * a, 0));
+      const auto place = [](const bool on_boundary) {
+        return on_boundary ? "boundary" : "interior";
+      };
       for (unsigned int j = 0; j <= ny; ++j)
         for (unsigned int i = 0; i < nx; ++i)
-          add_beam(graph, node(i, j), node(i + 1, j), 0);
+          add_beam(graph,
+                   node(i, j),
+                   node(i + 1, j),
+                   {"x-beams", place(j == 0 || j == ny)});
       for (unsigned int j = 0; j < ny; ++j)
         for (unsigned int i = 0; i <= nx; ++i)
-          add_beam(graph, node(i, j), node(i, j + 1), 1);
+          add_beam(graph,
+                   node(i, j),
+                   node(i, j + 1),
+                   {"y-beams", place(i == 0 || i == nx)});
       return graph;
     }
 
@@ -125,8 +134,9 @@ namespace rodnet
       const int corner_offsets[6][2] =
         {{1, 1}, {0, 2}, {-1, 1}, {-1, -1}, {0, -2}, {1, -1}};
       using GridPoint = std::pair<int, int>; // (Y, X): sorts rows first
-      std::set<GridPoint>                       corners;
-      std::set<std::pair<GridPoint, GridPoint>> sides;
+      std::set<GridPoint> corners;
+      // Each side with the number of cells it borders: one on the boundary.
+      std::map<std::pair<GridPoint, GridPoint>, unsigned int> sides;
       for (unsigned int r = 0; r < ny; ++r)
         for (unsigned int c = 0; c < nx; ++c)
           {
@@ -139,7 +149,7 @@ namespace rodnet
                 const GridPoint start{Y + p[1], X + p[0]};
                 const GridPoint end{Y + q[1], X + q[0]};
                 corners.insert(start);
-                sides.insert(std::minmax(start, end));
+                ++sides[std::minmax(start, end)];
               }
           }
 
@@ -154,8 +164,11 @@ namespace rodnet
         }
       // The (Y, X) order of the grid points is the node order, so sides
       // sorted by grid points are sorted by node indices too.
-      for (const auto &[from, to] : sides)
-        add_beam(graph, index.at(from), index.at(to));
+      for (const auto &[side, cells] : sides)
+        add_beam(graph,
+                 index.at(side.first),
+                 index.at(side.second),
+                 {cells == 1 ? "boundary" : "interior"});
       return graph;
     }
   } // namespace network_generators

@@ -19,7 +19,7 @@ namespace rodnet
      * @p L welded at a right angle in the xy-plane. Nodes: "clamp" (0,0,0),
      * clamped; "corner" (L,0,0), welded; "tip" (L,L,0), a free end (where
      * the out-of-plane displacement is applied). Beams: clamp -> corner,
-     * corner -> tip, group 0; d1 = e_z (out of plane).
+     * corner -> tip, in no group; d1 = e_z (out of plane).
      */
     RodGraph
     right_angle_frame(double L);
@@ -36,8 +36,8 @@ namespace rodnet
      * ends) and the scene decides how they are supported, e.g. by pinning
      * the vertices "@blade1" ... .
      *
-     * Beams: 0 hub -> top (group 0, d1 = e_x), 1-3 hub -> blade k (group 1,
-     * d1 = e_z).
+     * Beams: 0 hub -> top (group "shaft", d1 = e_x), 1-3 hub -> blade k
+     * (group "blades", d1 = e_z).
      */
     RodGraph
     windmill(double shaft_length);
@@ -46,8 +46,10 @@ namespace rodnet
      * A planar square lattice of @p nx by @p ny square cells of side @p a:
      * nodes "n_i_j" at (i a, j a, 0) for i = 0..nx, j = 0..ny (node index
      * j (nx + 1) + i). Beams: first the horizontal ones n_i_j -> n_(i+1)_j
-     * (group 0), ordered by j then i; then the vertical ones n_i_j ->
-     * n_i_(j+1) (group 1), ordered by j then i. d1 = e_z for all (L&K
+     * (group "x-beams"), ordered by j then i; then the vertical ones n_i_j
+     * -> n_i_(j+1) (group "y-beams"), ordered by j then i; each also in
+     * group "boundary" (on the lattice's edge) or "interior". d1 = e_z for
+     * all (L&K
      * section 4.3). Kinds are unset: every node joins two beams or more and
      * is welded; scenes choose supports.
      */
@@ -64,8 +66,9 @@ namespace rodnet
      * Corners lie on the grid x = X sqrt(3) a / 2, y = Y a / 2 with
      * integers X, Y; node "n_X_Y" is the corner there. Nodes are ordered by
      * Y, then X; each shared side is one beam, from its node of lower index
-     * to the higher one, beams ordered by those two indices. Group 0,
-     * d1 = e_z, kinds unset (welded). A patch has
+     * to the higher one, beams ordered by those two indices. Groups
+     * "boundary" (the sides of one cell) and "interior" (of two), d1 = e_z,
+     * kinds unset (welded). A patch has
      * 2 nx ny + 2 nx + 2 ny nodes and 3 nx ny + 2 nx + 2 ny - 1 beams.
      */
     RodGraph

@@ -195,7 +195,11 @@ namespace rodnet
         std::vector<Vector3>  points;
         if (beam.interior.empty())
           {
-            points = generators::straight(from, to, segments_per_beam);
+            points =
+              generators::straight(from,
+                                   to,
+                                   beam.segments > 0 ? beam.segments :
+                                                       segments_per_beam);
             // Rod ends sit exactly on their node, whatever the round-off
             // of the split.
             points.back() = to;
@@ -213,7 +217,6 @@ namespace rodnet
                         director_hint(graph, b),
                         hinge_kernel,
                         natural_shape);
-        built.rod_group.push_back(beam.group);
         node_ends[beam.from].push_back(RodEnd{b, true});
         node_ends[beam.to].push_back(RodEnd{b, false});
       }

@@ -31,8 +31,13 @@ namespace rodnet
     {
       unsigned int from; ///< node index; the rod runs from -> to
       unsigned int to;
-      /// Material group: scenes and programs assign one material per group.
-      unsigned int group = 0;
+      /// The named groups the beam belongs to (a lattice's "x-beams" and
+      /// "boundary", a network file's "group <name>", a Gmsh physical
+      /// line): scenes give materials, frames and segments per group.
+      std::vector<std::string> groups;
+      /// Segments of a beam without interior vertices; 0: the
+      /// segments_per_beam of build_rod_network().
+      unsigned int segments = 0;
       /// Orientation of d1 (made orthogonal to the beam). Zero: the graph's
       /// default_director, or, where that is parallel to the beam, the
       /// coordinate axis least aligned with the beam.
@@ -66,8 +71,6 @@ namespace rodnet
   struct BuiltNetwork
   {
     std::unique_ptr<RodNetwork> network;
-    /// Rod index of beam b is b; its material group.
-    std::vector<unsigned int> rod_group;
     /// Junction index of each node, or -1 where the node is a free end.
     std::vector<int> node_junction;
     /// Triangulation vertex of each node (the junction's shared vertex).
@@ -76,7 +79,8 @@ namespace rodnet
 
   /**
    * Builds the rods (beam b -> rod b, through its interior vertices or
-   * split into @p segments_per_beam equal segments; hinge kernel
+   * split into its own segments, or @p segments_per_beam, equal segments;
+   * hinge kernel
    * @p hinge_kernel, natural shape @p natural_shape, which matters for
    * beams with interior vertices off the chord) and the junctions (named
    * as the nodes) of @p graph, and creates the triangulation. Throws

@@ -411,16 +411,13 @@ namespace rodnet
                     return a.first_tag < b.first_tag;
                   });
 
-        std::set<int> physical_lines;
-        for (const LineElement &line : mesh.lines)
-          physical_lines.insert(line.physical);
         for (const Chain &chain : chains)
           {
             RodGraph::Beam beam;
-            beam.from  = node_index.at(chain.nodes.front());
-            beam.to    = node_index.at(chain.nodes.back());
-            beam.group = std::distance(physical_lines.begin(),
-                                       physical_lines.find(chain.physical));
+            beam.from = node_index.at(chain.nodes.front());
+            beam.to   = node_index.at(chain.nodes.back());
+            if (chain.physical != 0)
+              beam.groups = physical_line_groups(chain.physical);
             for (std::size_t k = 1; k + 1 < chain.nodes.size(); ++k)
               beam.interior.push_back(mesh.nodes.at(chain.nodes[k]));
             if (chain.nodes.size() == 3)
@@ -451,6 +448,19 @@ namespace rodnet
       fail(const std::string &message) const
       {
         throw std::invalid_argument(where + ": " + message);
+      }
+
+      /// The groups of a beam of the physical line @p tag: its tag ("3"),
+      /// and its name where the mesh gives one.
+      std::vector<std::string>
+      physical_line_groups(const int tag) const
+      {
+        std::vector<std::string> groups{std::to_string(tag)};
+        const auto               name = mesh.physical_names.find({1, tag});
+        if (name != mesh.physical_names.end() && !name->second.empty() &&
+            name->second != groups.front())
+          groups.push_back(name->second);
+        return groups;
       }
 
       /// "beam 3 (node1 to node5, its hinge at node 4)": @p chain, of two

@@ -146,18 +146,13 @@ namespace rodnet
           return it->second.first;
         };
         RodGraph::Beam beam;
-        beam.from      = node(pending.from);
-        beam.to        = node(pending.to);
-        bool has_group = false, has_d1 = false;
+        beam.from   = node(pending.from);
+        beam.to     = node(pending.to);
+        bool has_d1 = false;
         for (std::size_t i = 3; i < s.tokens.size();)
-          if (s.tokens[i] == "group" && !has_group)
+          if (s.tokens[i] == "group")
             {
-              const std::string &g = s.token(i + 1, "the group number");
-              if (g.find_first_not_of("0123456789") != std::string::npos ||
-                  g.size() > 9)
-                s.fail("\"" + g + "\" is not a group number (an integer >= 0)");
-              beam.group = std::stoul(g);
-              has_group  = true;
+              beam.groups.push_back(s.token(i + 1, "the group's name"));
               i += 2;
             }
           else if (s.tokens[i] == "d1" && !has_d1)
@@ -168,8 +163,8 @@ namespace rodnet
             }
           else
             s.fail("unexpected \"" + s.tokens[i] +
-                   "\"; a beam takes \"group <g>\" and \"d1 <x> <y> <z>\", "
-                   "each at most once");
+                   "\"; a beam takes \"group <name>\" (one per group) and "
+                   "\"d1 <x> <y> <z>\" (at most once)");
         graph.beams.push_back(beam);
       }
     return graph;

@@ -12,15 +12,17 @@ namespace rodnet
    * @code
    * # a comment runs from '#' to the end of the line
    * node <name> <x> <y> <z> [<kind>]
-   * beam <from> <to> [group <g>] [d1 <x> <y> <z>]
+   * beam <from> <to> [group <name>]... [d1 <x> <y> <z>]
    * @endcode
    * One statement per line, tokens separated by blanks. Node names are
    * single tokens; beams refer to nodes declared anywhere in the file. The
    * optional kind is one of welded, pinned, clamped, welded-and-pinned
    * (hyphens instead of the blanks of to_string(JunctionKind)); without it a
    * node is welded where beams meet and a free end where one beam ends.
-   * A beam's options may come in any order: the material group (an integer
-   * >= 0, default 0) and the director hint d1 (default: see RodGraph::Beam).
+   * A beam's options may come in any order: the groups it belongs to
+   * (RodGraph::Beam::groups; "group" repeated for several, a name is one
+   * token, "1" as good as "struts") and the director hint d1 (at most once;
+   * default: see RodGraph::Beam).
    * The n-th beam line becomes beam n - 1, the n-th node line node n - 1.
    * Beams are straight; build_rod_network() splits them.
    *

@@ -21,8 +21,9 @@ namespace rodnet
                "a network orients each beam itself, with d1 = e_z (for a "
                "beam along z the coordinate axis least aligned with it) "
                "unless the beam gives its own (a network file's \"d1 <x> "
-               "<y> <z>\", the frame's and the windmill's beams; "
-               "doc/networks.md)"}};
+               "<y> <z>\", the frame's and the windmill's beams) or its "
+               "group does (\"Group <name>/Director d1\", \"Group "
+               "all/Director d1\" for every beam; doc/networks.md)"}};
     }
 
     /// A generator of a network of beams.

@@ -327,8 +327,10 @@ namespace rodnet
                                    prm.get({"Geometry"}, "Generator"));
     parse_geometry(prm, scene_directory, check_size);
     parse_materials(prm, entries);
-    // The materials say which rods carry constraints with DoFs of their
-    // own.
+    parse_rod_groups(prm, entries);
+    // The groups give segments; the materials say which rods carry
+    // constraints with DoFs of their own.
+    model_size                 = geometry_size();
     model_size.constraint_dofs = constraint_dofs();
     model_size                 = check_size(model_size, model_size_entry);
     parse_supports(prm);
@@ -472,33 +474,14 @@ namespace rodnet
         " or more, or \"Write VTU = false\"");
   }
 
-  std::vector<unsigned int>
-  Scene::rod_groups() const
-  {
-    if (!graph)
-      return std::vector<unsigned int>(rod_points.size(), 0);
-    // build_rod_network() makes beam b rod b.
-    std::vector<unsigned int> groups;
-    for (const RodGraph::Beam &beam : graph->beams)
-      {
-        if (beam.group >= material_groups.size())
-          throw std::invalid_argument(
-            "the network has material group " + std::to_string(beam.group) +
-            "; scenes define groups 0 to " +
-            std::to_string(material_groups.size() - 1));
-        groups.push_back(beam.group);
-      }
-    return groups;
-  }
-
   std::vector<RodInertia>
   Scene::inertia() const
   {
     const std::string      &integrator = time_stepping.integrator;
     std::vector<RodInertia> result;
-    for (const unsigned int g : rod_groups())
+    for (const unsigned int g : rod_material)
       {
-        const MaterialGroup &group = material_groups[g];
+        const SceneMaterial &group = scene_materials[g];
         if (!(group.density > 0))
           throw std::invalid_argument(
             "entry \"" + group.subsection +
@@ -523,9 +506,9 @@ namespace rodnet
     // Twice the radius of gyration about each axis: the radius of a
     // circle, 1.15 times the half depth of a rectangle (on the safe side).
     std::vector<std::array<double, 2>> result;
-    for (const unsigned int g : rod_groups())
+    for (const unsigned int g : rod_material)
       {
-        const std::optional<CrossSection> &section = material_groups[g].section;
+        const std::optional<CrossSection> &section = scene_materials[g].section;
         if (section)
           result.push_back({{2 * std::sqrt(section->I1 / section->area),
                              2 * std::sqrt(section->I2 / section->area)}});
@@ -562,11 +545,11 @@ namespace rodnet
         network->create_triangulation();
       }
     std::vector<std::shared_ptr<const RodMaterial>> materials;
-    const std::vector<unsigned int>                 groups = rod_groups();
+    const std::vector<unsigned int>                &groups = rod_material;
     for (unsigned int r = 0; r < groups.size(); ++r)
       {
-        materials.push_back(material_groups[groups[r]].material);
-        network->set_inextensible(r, material_groups[groups[r]].inextensible);
+        materials.push_back(scene_materials[groups[r]].material);
+        network->set_inextensible(r, scene_materials[groups[r]].inextensible);
       }
     return {std::move(network), materials};
   }
@@ -687,7 +670,7 @@ namespace rodnet
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "
         "only; use Solver/Method = newton or continuation");
-    for (const MaterialGroup &group : material_groups)
+    for (const SceneMaterial &group : scene_materials)
       if (group.inextensible)
         throw std::invalid_argument(
           "entry \"" + group.subsection +
@@ -863,7 +846,7 @@ namespace rodnet
   }
 
   double
-  Scene::mass_per_length_of(const MaterialGroup &group) const
+  Scene::mass_per_length_of(const SceneMaterial &group) const
   {
     const std::string density_entry = "\"" + group.subsection + "/Density\"";
     if (group.density > 0 && group.section)
@@ -899,8 +882,8 @@ namespace rodnet
   Scene::masses_per_length() const
   {
     std::vector<double> masses;
-    for (const unsigned int g : rod_groups())
-      masses.push_back(mass_per_length_of(material_groups[g]));
+    for (const unsigned int g : rod_material)
+      masses.push_back(mass_per_length_of(scene_materials[g]));
     return masses;
   }
 

@@ -13,6 +13,7 @@
 #include <io/probes.h>
 #include <io/problem_size.h>
 #include <io/read_notes.h>
+#include <io/rod_groups.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
 #include <io/substrate.h>
@@ -55,6 +56,19 @@ namespace rodnet
     /// Declares every entry of a scene, with defaults.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Declares the subsections a scene names itself, among the titles
+     * @p titles of its top-level subsections: "Material <name>", a
+     * material with the entries of subsection Material, and "Group
+     * <name>", what the rods of a group take (io/rod_groups.h). Other
+     * titles are left to the parser. Throws std::invalid_argument for the
+     * numbered "Material of group <n>" of earlier scenes, saying what to
+     * write instead.
+     */
+    static void
+    declare_named_subsections(dealii::ParameterHandler       &prm,
+                              const std::vector<std::string> &titles);
 
     /// Reads and checks the entries; throws std::invalid_argument naming
     /// the entry for inadmissible values: numbers that are not finite or
@@ -151,10 +165,10 @@ namespace rodnet
 
   private:
     /// What a material subsection defines.
-    struct MaterialGroup
+    struct SceneMaterial
     {
       std::shared_ptr<const RodMaterial> material;
-      /// The subsection, for messages ("Material", "Material of group 2").
+      /// The subsection, for messages ("Material", "Material soft").
       std::string subsection;
       /// The subsection of the material model within it.
       std::string model;
@@ -175,8 +189,7 @@ namespace rodnet
     /// of each registered generator (GeneratorRegistry).
     static void
     declare_geometry(dealii::ParameterHandler &prm);
-    /// Subsections Material and Material of group 1.. with the entries of
-    /// every registered material.
+    /// Subsection Material with the entries of every registered material.
     static void
     declare_materials(dealii::ParameterHandler &prm);
     static void
@@ -200,10 +213,45 @@ namespace rodnet
     parse_geometry(dealii::ParameterHandler &prm,
                    const std::string        &scene_directory,
                    const SizeCheck          &check_size);
-    /// Reads every material group; @p entries (entry_tree() of @p prm)
-    /// shows which entries a material subsection sets.
+    /// Reads subsection Material and every "Material <name>"; @p entries
+    /// (entry_tree() of @p prm) shows which entries a material subsection
+    /// sets.
     void
     parse_materials(dealii::ParameterHandler &prm, const EntryNode &entries);
+
+    /**
+     * Reads every "Group <name>" subsection of @p entries and gives each
+     * rod its material (rod_material), and each beam of a network its
+     * director and segments. Throws std::invalid_argument naming the
+     * subsection for what io/rod_groups.h refuses, an unknown material, a
+     * named material no rod takes, a director or segments given to rods
+     * that are not a network's beams, segments given to a mesh's chain,
+     * and a director parallel to a beam.
+     */
+    void
+    parse_rod_groups(dealii::ParameterHandler &prm, const EntryNode &entries);
+
+    /// Gives beam @p b of the network the director @p d1 of group
+    /// @p group; refused where there is no network or d1 is parallel to
+    /// the beam (@p describe names it).
+    void
+    orient_beam(unsigned int                                    b,
+                const Vector3                                  &d1,
+                const std::string                              &group,
+                const std::function<std::string(unsigned int)> &describe);
+
+    /// Gives beam @p b of the network @p segments segments, of group
+    /// @p group; refused where there is no network or the beam is a mesh's
+    /// chain.
+    void
+    split_beam(unsigned int                                    b,
+               unsigned int                                    segments,
+               const std::string                              &group,
+               const std::function<std::string(unsigned int)> &describe);
+
+    /// The index in scene_materials of the material @p rod takes.
+    unsigned int
+    material_index(const RodSettings &rod) const;
     void
     parse_supports(dealii::ParameterHandler &prm);
     /// Subsection Loads, and "Steps" into solver.n_steps.
@@ -219,11 +267,11 @@ namespace rodnet
     void
     parse_time_stepping(dealii::ParameterHandler &prm);
 
-    /// The material group @p group from its subsection (current).
-    static MaterialGroup
+    /// The material of subsection @p title (current).
+    static SceneMaterial
     parse_material(dealii::ParameterHandler &prm,
                    const EntryNode          &entries,
-                   unsigned int              group);
+                   const std::string        &title);
 
     /// Throws std::invalid_argument naming the entry unless the scene can
     /// be time stepped: a positive step, an end after the start, densities
@@ -241,9 +289,9 @@ namespace rodnet
     void
     check_run_length() const;
 
-    /// Material group of every rod of build_network(), rod by rod.
-    std::vector<unsigned int>
-    rod_groups() const;
+    /// The material (index in scene_materials) of every rod of
+    /// build_network(), rod by rod.
+    std::vector<unsigned int> rod_material;
 
     /// Segments of every rod of build_network(), rod by rod.
     std::vector<double>
@@ -310,7 +358,7 @@ namespace rodnet
      * differ (by more than 1e-6 relative) and where neither is.
      */
     double
-    mass_per_length_of(const MaterialGroup &group) const;
+    mass_per_length_of(const SceneMaterial &group) const;
 
     /// mass_per_length_of() the group of every rod of build_network(),
     /// rod by rod.
@@ -323,16 +371,15 @@ namespace rodnet
     std::string                       hinge_kernel;
     /// Geometry/Frame half turns, of the closed rods.
     unsigned int frame_half_turns = 0;
-    NaturalShape natural_shape = NaturalShape::initial_geometry;
+    NaturalShape natural_shape    = NaturalShape::initial_geometry;
     /// Every rod begins half a segment behind its start (midpoint clamp).
     bool midpoint_clamp = false;
     /// Networks: the beams and junctions, built into rods by build_model().
     std::optional<RodGraph> graph;
     unsigned int            segments_per_beam = 1;
     GhostSpin               ghost_spin        = GhostSpin::exact;
-    /// Every material group (group 0: every plain rod); a group without
-    /// its own material repeats group 0.
-    std::vector<MaterialGroup> material_groups;
+    /// Subsection Material (first) and every "Material <name>".
+    std::vector<SceneMaterial> scene_materials;
     /// Time stepping: displacement and velocity fields of the undeformed
     /// position x, y, z (three components each).
     std::shared_ptr<const dealii::Function<3>> initial_displacement,

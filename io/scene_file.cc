@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace rodnet
 {
@@ -117,12 +118,44 @@ namespace rodnet
         throw std::invalid_argument(
           "the scene is a JSON array or value; it must be an object of "
           "subsections, e.g. {\"Geometry\": {\"Segments\": \"50\"}}");
+      std::vector<std::string> titles;
+      for (const auto &[name, value] : tree)
+        titles.push_back(name);
+      Scene::declare_named_subsections(prm, titles);
       unsigned int n_entries = 0;
       check_json_shape(tree, entry_tree(prm), "", n_entries);
       if (n_entries == 0)
         refuse_empty();
       std::istringstream in(text);
       prm.parse_input_from_json(in);
+    }
+
+    /// The titles of the subsections at the top level of the .prm @p text
+    /// ("Material soft", "Group x-beams", "Geometry", ...).
+    std::vector<std::string>
+    top_level_subsections(const std::string &text)
+    {
+      std::vector<std::string> titles;
+      std::istringstream       lines(text);
+      int                      depth = 0;
+      for (std::string line; std::getline(lines, line);)
+        {
+          line = line.substr(0, line.find('#'));
+          std::istringstream words(line);
+          std::string        first;
+          words >> first;
+          if (first == "subsection")
+            {
+              std::string title;
+              std::getline(words >> std::ws, title);
+              if (depth++ == 0)
+                titles.push_back(
+                  title.substr(0, title.find_last_not_of(" \t\r") + 1));
+            }
+          else if (first == "end")
+            --depth;
+        }
+      return titles;
     }
 
     /// True if a line of the .prm @p text sets an entry.
@@ -155,6 +188,7 @@ namespace rodnet
           return parse_json(prm, text);
         if (!sets_an_entry(text))
           refuse_empty();
+        Scene::declare_named_subsections(prm, top_level_subsections(text));
         std::istringstream in(text);
         prm.parse_input(in, name);
       }

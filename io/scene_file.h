@@ -10,7 +10,10 @@ namespace rodnet
   /**
    * Reads the scene file @p path into @p prm, whose entries
    * Scene::declare_parameters() declared: a name ending in ".json" as JSON,
-   * any other as .prm text. A UTF-8 byte-order mark is skipped. Throws
+   * any other as .prm text. The subsections a scene names itself,
+   * "Material <name>" and "Group <name>", are declared from the file's
+   * titles first (Scene::declare_named_subsections()). A UTF-8 byte-order
+   * mark is skipped. Throws
    * std::invalid_argument with one line that names the problem and what to
    * do for: a missing, unreadable or directory path; a file that sets no
    * entry; JSON whose shape is not that of the scene (an array, a value

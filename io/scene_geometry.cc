@@ -156,10 +156,10 @@ namespace rodnet
         "entry \"Geometry/Frame half turns\": the " + name +
         " generator makes no closed rod to turn the frame around; use the "
         "ring generator or set it to 0");
-    graph                      = std::move(geometry.graph);
-    segments_per_beam          = graph ? input.segments : 1;
-    ghost_spin = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
-                                                    GhostSpin::small_rotation;
+    graph             = std::move(geometry.graph);
+    segments_per_beam = graph ? input.segments : 1;
+    ghost_spin        = prm.get("Ghost spin") == "exact" ? GhostSpin::exact :
+                                                           GhostSpin::small_rotation;
 
     geometry_notes   = std::move(geometry.notes);
     model_size_entry = size_entry;
@@ -175,8 +175,9 @@ namespace rodnet
     std::vector<double> segments;
     if (graph)
       for (const RodGraph::Beam &beam : graph->beams)
-        segments.push_back(beam.interior.empty() ? segments_per_beam :
-                                                   beam.interior.size() + 1.0);
+        segments.push_back(!beam.interior.empty() ? beam.interior.size() + 1.0 :
+                           beam.segments > 0      ? beam.segments :
+                                                    segments_per_beam);
     else
       for (std::size_t r = 0; r < rod_points.size(); ++r)
         segments.push_back(rod_closed[r] ? rod_points[r].size() :
@@ -204,12 +205,12 @@ namespace rodnet
     // inextensible rod (a developable ribbon is one), and three DoFs per
     // hinge of a ribbon (every vertex of a closed rod, the inner ones of an
     // open one).
-    const std::vector<double>       segments = rod_segments();
-    const std::vector<unsigned int> groups   = rod_groups();
-    double                          dofs     = 0;
+    const std::vector<double>        segments = rod_segments();
+    const std::vector<unsigned int> &groups   = rod_material;
+    double                           dofs     = 0;
     for (std::size_t r = 0; r < segments.size(); ++r)
       {
-        const MaterialGroup &group = material_groups[groups[r]];
+        const SceneMaterial &group = scene_materials[groups[r]];
         const bool ribbon = group.material->developable_ribbon() != nullptr;
         const bool closed = !graph && rod_closed[r];
         if (ribbon || group.inextensible)

@@ -208,6 +208,8 @@ namespace rodnet
   {
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
+    // A scene names these subsections itself, as many as it needs.
+    Scene::declare_named_subsections(prm, {"Material <name>", "Group <name>"});
     const EntryNode tree = entry_tree(prm);
     for (const EntryNode &section : tree.children)
       if (section.is_entry)

@@ -1,23 +1,38 @@
 #include <deal.II/base/patterns.h>
 
 #include <io/entry_tree.h>
+#include <io/nearest_names.h>
+#include <io/rod_groups.h>
 #include <io/scene.h>
 #include <io/scene_entries.h>
 #include <materials/rod_material.h>
+
+#include <regex>
+#include <set>
 
 namespace rodnet
 {
   namespace
   {
-    /// Material subsections: "Material" for every rod, and optional ones
-    /// for the material groups of a network.
-    constexpr unsigned int n_material_groups = 4;
+    /// Material subsections: "Material" for every rod, and "Material
+    /// <name>" for the rods whose group names it.
+    const std::string &material_prefix = material_subsection_prefix;
 
-    std::string
-    material_section(const unsigned int group)
+    /// Refuses the numbered material groups of earlier scenes ("Material of
+    /// group 1" with "Use = true").
+    void
+    refuse_numbered_group(const std::string &title)
     {
-      return group == 0 ? "Material" :
-                          "Material of group " + std::to_string(group);
+      static const std::regex numbered("Material of group ([0-9]+)");
+      std::smatch             match;
+      if (std::regex_match(title, match, numbered))
+        throw std::invalid_argument(
+          "subsection \"" + title +
+          "\": material groups are named now: write the material as "
+          "\"subsection Material <name>\" (without \"Use\") and give it to "
+          "the rods of group " +
+          match[1].str() + " with \"subsection Group " + match[1].str() +
+          "\", \"set Material = <name>\" (doc/networks.md)");
     }
 
     /// True if an entry below @p section holds other than its default.
@@ -74,29 +89,38 @@ namespace rodnet
   void
   Scene::declare_materials(dealii::ParameterHandler &prm)
   {
-    for (unsigned int group = 0; group < n_material_groups; ++group)
+    prm.enter_subsection("Material");
+    declare_material(prm);
+    prm.leave_subsection();
+  }
+
+  void
+  Scene::declare_named_subsections(dealii::ParameterHandler       &prm,
+                                   const std::vector<std::string> &titles)
+  {
+    for (const std::string &title :
+         std::set<std::string>(titles.begin(), titles.end()))
       {
-        prm.enter_subsection(material_section(group));
-        if (group > 0)
-          prm.declare_entry("Use",
-                            "false",
-                            dealii::Patterns::Bool(),
-                            "Give the beams of material group " +
-                              std::to_string(group) +
-                              " of a network this material instead of "
-                              "that of subsection Material. [-]");
-        declare_material(prm);
+        refuse_numbered_group(title);
+        const bool material = name_in_title(title, material_prefix).has_value();
+        if (!material && !name_in_title(title, group_subsection_prefix))
+          continue;
+        prm.enter_subsection(title);
+        if (material)
+          declare_material(prm);
+        else
+          declare_rod_group(prm);
         prm.leave_subsection();
       }
   }
 
-  Scene::MaterialGroup
+  Scene::SceneMaterial
   Scene::parse_material(dealii::ParameterHandler &prm,
                         const EntryNode          &entries,
-                        const unsigned int        group)
+                        const std::string        &title)
   {
-    MaterialGroup g;
-    g.subsection   = material_section(group);
+    SceneMaterial g;
+    g.subsection   = title;
     g.model        = prm.get("Model");
     g.density      = prm.get_double("Density");
     g.inextensible = prm.get_bool("Inextensible");
@@ -130,14 +154,34 @@ namespace rodnet
   Scene::parse_materials(dealii::ParameterHandler &prm,
                          const EntryNode          &entries)
   {
-    for (unsigned int group = 0; group < n_material_groups; ++group)
-      {
-        prm.enter_subsection(material_section(group));
-        if (group == 0 || prm.get_bool("Use"))
-          material_groups.push_back(parse_material(prm, entries, group));
-        else
-          material_groups.push_back(material_groups.front());
-        prm.leave_subsection();
-      }
+    for (const EntryNode &section : entries.children)
+      if (section.name == "Material" ||
+          name_in_title(section.name, material_prefix))
+        {
+          prm.enter_subsection(section.name);
+          scene_materials.push_back(parse_material(prm, entries, section.name));
+          prm.leave_subsection();
+        }
+  }
+
+  unsigned int
+  Scene::material_index(const RodSettings &rod) const
+  {
+    if (rod.material.empty())
+      return 0;
+    for (unsigned int m = 0; m < scene_materials.size(); ++m)
+      if (scene_materials[m].subsection == material_prefix + rod.material)
+        return m;
+    std::vector<std::string> names;
+    for (const SceneMaterial &material : scene_materials)
+      if (const auto name = name_in_title(material.subsection, material_prefix))
+        names.push_back(*name);
+    throw std::invalid_argument(
+      "entry \"" + group_subsection_prefix + rod.material_group +
+      "/Material\": the scene has no subsection \"Material " + rod.material +
+      "\"" +
+      (names.empty() ?
+         std::string("; it names none") :
+         "; it names " + quoted_list(nearest_names(names, rod.material, 8))));
   }
 } // namespace rodnet

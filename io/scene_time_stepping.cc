@@ -137,9 +137,9 @@ namespace rodnet
     // Throws for a material group without density or section.
     inertia();
     if (p.integrator == "midpoint")
-      for (const unsigned int g : rod_groups())
+      for (const unsigned int g : rod_material)
         {
-          const RodMaterial &m = *material_groups[g].material;
+          const RodMaterial &m = *scene_materials[g].material;
           if (m.n_hinge_internal_variables() +
                 m.n_segment_internal_variables() >
               0)
@@ -147,8 +147,8 @@ namespace rodnet
               entry +
               "Integrator\": the midpoint rule conserves a stored "
               "energy, which the \"" +
-              material_groups[g].model + "\" of subsection \"" +
-              material_groups[g].subsection +
+              scene_materials[g].model + "\" of subsection \"" +
+              scene_materials[g].subsection +
               "\" does not have (it has internal variables); use newmark or "
               "backward euler");
         }

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <io/scene.h>
+#include <io/scene_file.h>
 #include <io/scene_runner.h>
 
 #include <cstdlib>
@@ -23,7 +24,7 @@ namespace rodnet::testing
   {
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text);
+    read_scene_text(prm, prm_text, "scene", false);
     const Scene scene(prm);
     return run_scene(scene, output_directory, nullptr);
   }

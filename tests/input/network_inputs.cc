@@ -56,7 +56,7 @@ namespace
       }
   }
 
-  /// Same rods (vertex positions to 1e-14, directors, groups), same
+  /// Same rods (vertex positions to 1e-14, directors), same
   /// junctions (kinds, ends, names if @p same_names) and node maps.
   void
   expect_same_network(const BuiltNetwork &a,
@@ -77,7 +77,6 @@ namespace
         EXPECT_EQ(ra.director_hint, rb.director_hint) << "rod " << r;
         EXPECT_EQ(ra.closed, rb.closed);
       }
-    EXPECT_EQ(a.rod_group, b.rod_group);
     EXPECT_EQ(a.node_junction, b.node_junction);
     EXPECT_EQ(a.node_vertex, b.node_vertex);
     ASSERT_EQ(na.junctions().size(), nb.junctions().size());
@@ -158,10 +157,17 @@ namespace
     EXPECT_EQ(generated.network->junctions().size(), 9u);
     for (const Junction &j : read.network->junctions())
       EXPECT_EQ(j.kind, JunctionKind::welded) << j.name;
-    // Horizontal beams are group 0, vertical ones group 1 in both.
-    EXPECT_EQ(std::set<unsigned int>(read.rod_group.begin(),
-                                     read.rod_group.end()),
-              (std::set<unsigned int>{0, 1}));
+    // The mesh's two physical lines split the beams as the generator's
+    // "x-beams" and "y-beams" do; a beam of the mesh is in the group of
+    // its physical tag.
+    for (unsigned int b = 0; b < read_graph.beams.size(); ++b)
+      {
+        const std::vector<std::string> &groups = read_graph.beams[b].groups;
+        ASSERT_FALSE(groups.empty()) << "beam " << b;
+        EXPECT_EQ(groups.front() == read_graph.beams.front().groups.front(),
+                  generated_graph.beams[b].groups.front() == "x-beams")
+          << "beam " << b;
+      }
   }
 
   /// Solves the lattice @p graph (beams of EA = 1000, EI = 1, GJ = 2/3 in
@@ -284,7 +290,9 @@ namespace
     };
     ASSERT_EQ(graph.beams.size(), 4u);
     EXPECT_NEAR((chord(0) - Vector3(0, 0, La)).norm(), 0, 1e-15);
-    EXPECT_EQ(built.rod_group, (std::vector<unsigned int>{0, 1, 1, 1}));
+    EXPECT_EQ(graph.beams[0].groups, std::vector<std::string>{"shaft"});
+    for (unsigned int b = 1; b <= 3; ++b)
+      EXPECT_EQ(graph.beams[b].groups, std::vector<std::string>{"blades"});
     EXPECT_EQ(net.rods()[0].director_hint, Vector3::UnitX());
     for (unsigned int b = 1; b <= 3; ++b)
       {
@@ -393,8 +401,10 @@ namespace
                  {"missing.net:1", "missing"});
     expect_error(read("kind.net", "node a 0 0 0 glued\n"),
                  {"kind.net:1", "\"glued\""});
-    expect_error(read("option.net", nodes + "beam a b group -1\n"),
-                 {"option.net:3", "\"-1\""});
+    expect_error(read("option.net", nodes + "beam a b group\n"),
+                 {"option.net:3", "the group's name"});
+    expect_error(read("option.net", nodes + "beam a b d1 0 0 1 d1 0 1 0\n"),
+                 {"option.net:3", "\"d1\""});
     expect_error([] { read_network_file("no/such/file.net"); },
                  {"no/such/file.net"});
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <io/scene.h>
+#include <io/scene_file.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -19,7 +20,7 @@ namespace
   {
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
-    prm.parse_input_from_string(text);
+    read_scene_text(prm, text, "scene", false);
     return Scene(prm);
   }
 
@@ -74,8 +75,8 @@ namespace
 
   TEST(TimeSteppingScene, InertiaFollowsTheMaterialGroups)
   {
-    // A square cell: beams 0 and 1 horizontal (group 0), 2 and 3 vertical
-    // (group 1, its own material).
+    // A square cell: beams 0 and 1 horizontal (subsection Material), 2 and
+    // 3 vertical (group "y-beams", material "thick").
     const std::string geometry = "subsection Geometry\n"
                                  "  set Generator = square lattice\n"
                                  "  set Cells = 1, 1\n"
@@ -84,8 +85,10 @@ namespace
                                  "subsection Material\n" +
                                  elastic_circle("0.01", "1000") + "end\n";
     const Scene                   scene   = parse_scene(geometry +
-                                    "subsection Material of group 1\n"
-                                                        "  set Use = true\n" +
+                                    "subsection Group y-beams\n"
+                                                        "  set Material = thick\n"
+                                                        "end\n"
+                                                        "subsection Material thick\n" +
                                     elastic_circle("0.02", "500") + "end\n");
     const std::vector<RodInertia> inertia = scene.inertia();
     ASSERT_EQ(inertia.size(), 4u);

@@ -57,7 +57,7 @@ namespace
             "  set Plot = false\nend\n";
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
-    prm.parse_input_from_string(text.str());
+    read_scene_text(prm, text.str(), name + ".prm", false);
     const Scene scene(prm, RODNET_SOURCE_DIR "/scenes");
     return run_scene(scene, "example_" + name, nullptr);
   }
@@ -76,8 +76,7 @@ namespace
     const double kappa0    = 3 * 20.010144290380847;
     const double segment   = 2 * radius * std::sin(pi / n);
     const double curvature = 2 * std::sin(3 * pi / n) / segment;
-    return n * segment / 2 * ei1 * (kappa0 - curvature) *
-           (kappa0 - curvature);
+    return n * segment / 2 * ei1 * (kappa0 - curvature) * (kappa0 - curvature);
   }
 
   const std::string energy_search =
@@ -95,7 +94,10 @@ namespace
     {"arc", "clamp_force_z", -1e-3, 1e-9},
     // Ring across a diameter: R - (pi/4 - 2/pi) P R^3 / EI; measured
     // +1.6e-3 of the displacement at N = 160 (+6e-3 at 80, second order).
-    {"ring", "top_y", 1 - (pi / 4 - 2 / pi) * 1e-3, 2.5e-3,
+    {"ring",
+     "top_y",
+     1 - (pi / 4 - 2 / pi) * 1e-3,
+     2.5e-3,
      (pi / 4 - 2 / pi) * 1e-3},
     {"ring", "bottom_force_y", 1e-3, 1e-8},
     // L-shaped rod, out-of-plane force: P L^3 (2/(3 EI) + 1/GJ) = 13/6 P.
@@ -139,13 +141,19 @@ namespace
     // load, times exp(-beta x)(cos beta x + sin beta x) at x = 1.6 (beta = 1).
     // Measured +6.2e-4 at beta h = 0.05 (second order).
     {"beam_on_elastic_foundation", "mid_z", -1.25e-4, 1e-3},
-    {"beam_on_elastic_foundation", "x16_z",
-     -1.25e-4 * std::exp(-1.6) * (std::cos(1.6) + std::sin(1.6)), 1e-3,
+    {"beam_on_elastic_foundation",
+     "x16_z",
+     -1.25e-4 * std::exp(-1.6) * (std::cos(1.6) + std::sin(1.6)),
+     1e-3,
      1.25e-4},
     // The right-angle frame with its tip moved by a small u_z = 1e-4 (the
     // shipped u_z = L has no closed form): F = (6/13) EI u_z / L^3
     // (VALIDATION.md, doc/junctions.md).
-    {"frame", "force_z", 6. / 13 * 1e-4, 2e-3, 0,
+    {"frame",
+     "force_z",
+     6. / 13 * 1e-4,
+     2e-3,
+     0,
      "subsection Supports\n  set Prescribed displacements = @tip: z=1e-4\n"
      "end\nsubsection Loads\n  set Steps = 1\nend\n"},
     // The seed examples of Korner et al. section 5, which snap at a limit
@@ -162,13 +170,21 @@ namespace
     // (doc/nonlinear_solvers.md): P1 needs cut steps, the others none.
     {"p1_gravity_cantilever", "tip_x", 0.5157790, 1e-4, 1, energy_search},
     {"p1_gravity_cantilever", "tip_z", -0.7938299, 1e-4, 1, energy_search},
-    {"arc", "tip_z", 1e-3 * (pi / 4 + (3 * pi / 4 - 2) * 1.5), 1e-3, 0,
+    {"arc",
+     "tip_z",
+     1e-3 * (pi / 4 + (3 * pi / 4 - 2) * 1.5),
+     1e-3,
+     0,
      energy_search},
     {"beam_on_elastic_foundation", "mid_z", -1.25e-4, 1e-3, 0, energy_search},
     // And by the trust region (doc/nonlinear_solvers.md): P1 creeps as with
     // the energy line search, 4 cut steps.
     {"p1_gravity_cantilever", "tip_x", 0.5157790, 1e-4, 1, trust_region},
-    {"arc", "tip_z", 1e-3 * (pi / 4 + (3 * pi / 4 - 2) * 1.5), 1e-3, 0,
+    {"arc",
+     "tip_z",
+     1e-3 * (pi / 4 + (3 * pi / 4 - 2) * 1.5),
+     1e-3,
+     0,
      trust_region},
     {"beam_on_elastic_foundation", "mid_z", -1.25e-4, 1e-3, 0, trust_region},
   };

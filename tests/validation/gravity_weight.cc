@@ -24,10 +24,9 @@ namespace
   circle_material(const std::string &subsection,
                   const double       rho,
                   const double       E,
-                  const double       r,
-                  const std::string &extra = "")
+                  const double       r)
   {
-    return "subsection " + subsection + "\n" + extra +
+    return "subsection " + subsection + "\n" +
            "  set Density = " + std::to_string(rho) +
            "\n"
            "  subsection linear elastic\n"
@@ -82,8 +81,9 @@ namespace
                 1e-6 * q * length);
   }
 
-  /// A square lattice cell of side 1, beams along x of material group 0,
-  /// along y of group 1, pinned at its four corners, with @p materials.
+  /// A square lattice cell of side 1, beams along x of subsection
+  /// Material, along y (group "y-beams") of "Material aluminium", pinned at
+  /// its four corners, with @p materials.
   std::string
   two_group_cell(const std::string &materials)
   {
@@ -93,6 +93,7 @@ namespace
            "  set Segments = 10\n"
            "end\n" +
            materials +
+           "subsection Group y-beams\n  set Material = aluminium\nend\n"
            "subsection Supports\n"
            "  set Pinned vertices = @n_0_0, @n_1_0, @n_0_1, @n_1_1\n"
            "end\n" +
@@ -109,11 +110,7 @@ namespace
     const double     weight = 2 * (m0 + m1) * g;
     const RunSummary run    = run_scene_text(
       two_group_cell(circle_material("Material", 7850, 210e9, 0.01) +
-                     circle_material("Material of group 1",
-                                     2700,
-                                     70e9,
-                                     0.02,
-                                     "  set Use = true\n")) +
+                     circle_material("Material aluminium", 2700, 70e9, 0.02)) +
         "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
            "  set Probes = a: reaction @n_0_0 z; b: reaction @n_1_0 z; "
            "c: reaction @n_0_1 z; d: reaction @n_1_1 z\nend\n",
@@ -138,13 +135,12 @@ namespace
     // given: gravity would weigh it as nothing.
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
-    prm.parse_input_from_string(
-      two_group_cell(circle_material("Material", 7850, 210e9, 0.01) +
-                     circle_material("Material of group 1",
-                                     0,
-                                     70e9,
-                                     0.02,
-                                     "  set Use = true\n")));
+    read_scene_text(prm,
+                    two_group_cell(
+                      circle_material("Material", 7850, 210e9, 0.01) +
+                      circle_material("Material aluminium", 0, 70e9, 0.02)),
+                    "scene",
+                    false);
     try
       {
         const Scene scene(prm);
@@ -153,9 +149,9 @@ namespace
     catch (const std::invalid_argument &e)
       {
         EXPECT_NE(std::string(e.what()).find(
-                    "entry \"Loads/Gravity\": the rods of \"Material of group "
-                    "1\" have no mass to weigh; give \"Material of group "
-                    "1/Density\""),
+                    "entry \"Loads/Gravity\": the rods of \"Material "
+                    "aluminium\" have no mass to weigh; give \"Material "
+                    "aluminium/Density\""),
                   std::string::npos)
           << e.what();
       }
