@@ -1,0 +1,444 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/patterns.h>
+#include <deal.II/base/utilities.h>
+
+#include <io/gnuplot.h>
+#include <io/network_picture.h>
+#include <io/picture_camera.h>
+#include <io/picture_fields.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    using Point2 = std::array<double, 2>;
+
+    /// A rod as drawn: its polyline before and after the deformation (in
+    /// screen coordinates), the value of the field on each piece of the
+    /// deformed one (that of the piece ending at point k is values[k],
+    /// gnuplot's rule) and its mean depth.
+    struct DrawnRod
+    {
+      std::vector<Point2> undeformed, deformed;
+      std::vector<double> values;
+      double              depth = 0;
+    };
+
+    /**
+     * The rods of @p network projected by @p camera, coloured by @p field.
+     * A segment field colours its segment; a vertex field the half of
+     * each segment next to the vertex (a point at the segment's middle
+     * splits it), so that no value is averaged away. Closed rods come
+     * back to their first vertex.
+     */
+    std::vector<DrawnRod>
+    drawn_rods(const RodNetwork    &network,
+               const PictureState  &state,
+               const PictureField  &field,
+               const PictureCamera &camera)
+    {
+      const auto screen = [&](const Vector3 &p) {
+        const auto xyz = camera.project(p);
+        return Point2{{xyz[0], xyz[1]}};
+      };
+      std::vector<DrawnRod> rods;
+      for (const Rod &rod : network.rods())
+        {
+          DrawnRod           drawn;
+          const unsigned int n = rod.segments.size();
+          for (unsigned int j = 0; j <= n; ++j)
+            {
+              const unsigned int v  = rod.vertices[j % rod.vertices.size()];
+              const Vector3     &x  = state.positions[v];
+              const Vector3     &x0 = network.vertex(v);
+              drawn.undeformed.push_back(screen(x0));
+              drawn.depth += camera.project(x)[2] / (n + 1);
+              if (field.per_segment)
+                {
+                  drawn.deformed.push_back(screen(x));
+                  drawn.values.push_back(
+                    field.values[rod.segments[j == 0 ? 0 : j - 1]]);
+                  continue;
+                }
+              if (j > 0)
+                {
+                  const unsigned int before =
+                    rod.vertices[(j - 1) % rod.vertices.size()];
+                  drawn.deformed.push_back(
+                    screen(0.5 * (x + state.positions[before])));
+                  drawn.values.push_back(field.values[before]);
+                }
+              drawn.deformed.push_back(screen(x));
+              drawn.values.push_back(field.values[v]);
+            }
+          rods.push_back(std::move(drawn));
+        }
+      // The farthest first: nearer rods are drawn over them.
+      std::stable_sort(rods.begin(),
+                       rods.end(),
+                       [](const DrawnRod &a, const DrawnRod &b) {
+                         return a.depth < b.depth;
+                       });
+      return rods;
+    }
+
+    /**
+     * The frame of a picture: the range of screen coordinates it shows
+     * (every point of both shapes, with a margin of 4 % of the larger
+     * extent), widened so that its aspect is that of the drawing area,
+     * and that area's size in pixels: @p size along its longer side, at
+     * least 240 along the other (room for the colour bar).
+     */
+    struct PictureFrame
+    {
+      PictureFrame(const std::vector<DrawnRod> &rods, unsigned int size);
+
+      std::array<double, 2> low{}, high{};
+      unsigned int          width = 0, height = 0;
+      /// Pixels per unit of screen coordinates.
+      double scale = 1;
+    };
+
+    PictureFrame::PictureFrame(const std::vector<DrawnRod> &rods,
+                               const unsigned int           size)
+    {
+      low  = {{INFINITY, INFINITY}};
+      high = {{-INFINITY, -INFINITY}};
+      for (const DrawnRod &rod : rods)
+        for (const auto *line : {&rod.undeformed, &rod.deformed})
+          for (const Point2 &p : *line)
+            for (unsigned int c = 0; c < 2; ++c)
+              if (std::isfinite(p[c]))
+                {
+                  low[c]  = std::min(low[c], p[c]);
+                  high[c] = std::max(high[c], p[c]);
+                }
+      if (!(low[0] <= high[0] && low[1] <= high[1]))
+        low = {{-1, -1}}, high = {{1, 1}};
+      double extent = std::max({high[0] - low[0], high[1] - low[1], 0.0});
+      if (!(extent > 0))
+        extent = 1;
+      const double          margin = 0.04 * extent;
+      std::array<double, 2> span;
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          low[c] -= margin, high[c] += margin;
+          span[c] = high[c] - low[c];
+        }
+      const bool         wide   = span[0] >= span[1];
+      const double       aspect = span[wide ? 1 : 0] / span[wide ? 0 : 1];
+      const unsigned int other =
+        std::max(240u, static_cast<unsigned int>(std::lround(size * aspect)));
+      width  = wide ? size : other;
+      height = wide ? other : size;
+      // The short side grown to 240 pixels: its range grows alike.
+      scale = std::min(width / span[0], height / span[1]);
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          const double grow =
+            0.5 * ((c == 0 ? width : height) / scale - span[c]);
+          low[c] -= grow, high[c] += grow;
+        }
+    }
+
+    /// @p value with @p digits significant digits ("NaN" if not finite).
+    std::string
+    picture_number(const double value, const int digits = 6)
+    {
+      if (!std::isfinite(value))
+        return "NaN";
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.*g", digits, value);
+      return text;
+    }
+
+    /**
+     * The colour settings of @p field: the palette, the colour bar's range
+     * and label. viridis (perceptually uniform, readable in grey and by
+     * the colour-blind); a field of at most 12 integers (rod, group,
+     * layer) in bands, one per value; one constant to 1e-9 (rounding)
+     * around its value.
+     */
+    std::string
+    colour_settings(const PictureField &field)
+    {
+      double low = INFINITY, high = -INFINITY;
+      bool   integers = true;
+      for (const double v : field.values)
+        if (std::isfinite(v))
+          {
+            low      = std::min(low, v);
+            high     = std::max(high, v);
+            integers = integers && v == std::round(v);
+          }
+      if (!(low <= high))
+        low = 0, high = 0;
+      std::ostringstream text;
+      text << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', "
+              "3 '#5ec962', 4 '#fde725')\n";
+      if (integers && high - low < 12)
+        {
+          text << "set palette maxcolors " << high - low + 1 << "\n"
+               << "set cbtics 1\n";
+          low -= 0.5, high += 0.5;
+        }
+      else if (high - low <= 1e-9 * std::max(std::abs(low), std::abs(high)))
+        {
+          const double half = low == 0 ? 1 : 0.1 * std::abs(low);
+          low -= half, high += half;
+        }
+      const std::string unit =
+        field.unit.empty() ? "" : " [" + field.unit + "]";
+      text << "set cbrange [" << picture_number(low, 15) << ":"
+           << picture_number(high, 15) << "]\n"
+           << "set cblabel " << gnuplot_quote(field.name + unit) << "\n";
+      return text.str();
+    }
+
+    /// The line width of the deformed rods in pixels: 0.05 of the area
+    /// per pixel of line drawn, between 0.6 and 3.
+    double
+    line_width(const std::vector<DrawnRod> &rods, const PictureFrame &frame)
+    {
+      double length = 0;
+      for (const DrawnRod &rod : rods)
+        for (std::size_t k = 1; k < rod.deformed.size(); ++k)
+          {
+            const double piece =
+              std::hypot(rod.deformed[k][0] - rod.deformed[k - 1][0],
+                         rod.deformed[k][1] - rod.deformed[k - 1][1]);
+            if (std::isfinite(piece))
+              length += piece * frame.scale;
+          }
+      const double width =
+        0.05 * frame.width * frame.height / std::max(length, 1.0);
+      return std::clamp(width, 0.6, 3.0);
+    }
+
+    /// The data blocks $undeformed (x y) and $deformed (x y value), a
+    /// blank line between two rods.
+    void
+    write_picture_data(std::ostream &script, const std::vector<DrawnRod> &rods)
+    {
+      script << "$undeformed << EOD\n";
+      for (const DrawnRod &rod : rods)
+        {
+          for (const Point2 &p : rod.undeformed)
+            script << picture_number(p[0]) << " " << picture_number(p[1])
+                   << "\n";
+          script << "\n";
+        }
+      script << "EOD\n$deformed << EOD\n";
+      for (const DrawnRod &rod : rods)
+        {
+          for (std::size_t k = 0; k < rod.deformed.size(); ++k)
+            script << picture_number(rod.deformed[k][0]) << " "
+                   << picture_number(rod.deformed[k][1]) << " "
+                   << picture_number(rod.values[k]) << "\n";
+          script << "\n";
+        }
+      script << "EOD\n";
+    }
+
+    /**
+     * The terminal and layout: the drawing area of @p frame's size with
+     * 20 pixels around it, 40 above for the title and 150 at its right
+     * for the colour bar, which spans 80 % of its height; no axes.
+     */
+    std::string
+    layout_settings(const PictureFrame &frame,
+                    const std::string  &png_path,
+                    const std::string  &title)
+    {
+      const double left = 20, right = 150, bottom = 20, top = 40;
+      const double width  = frame.width + left + right;
+      const double height = frame.height + bottom + top;
+      const int    font   = std::max(10, int(std::lround(frame.width / 90.)));
+      std::ostringstream text;
+      text << "set terminal pngcairo noenhanced rounded size " << width << ","
+           << height << " font '," << font << "'\n"
+           << "set output " << gnuplot_quote(png_path) << "\n"
+           << "unset border\nunset tics\nunset key\nset cbtics\n"
+           << "set lmargin at screen " << left / width << "\n"
+           << "set rmargin at screen " << (left + frame.width) / width << "\n"
+           << "set bmargin at screen " << bottom / height << "\n"
+           << "set tmargin at screen " << (bottom + frame.height) / height
+           << "\n"
+           << "set xrange [" << picture_number(frame.low[0], 15) << ":"
+           << picture_number(frame.high[0], 15) << "]\n"
+           << "set yrange [" << picture_number(frame.low[1], 15) << ":"
+           << picture_number(frame.high[1], 15) << "]\n"
+           << "set size ratio -1\n"
+           << "set colorbox vertical user origin screen "
+           << (left + frame.width + 20) / width << ", screen "
+           << (bottom + 0.1 * frame.height) / height << " size screen "
+           << 18 / width << ", screen " << 0.8 * frame.height / height << "\n"
+           << "set label 1 " << gnuplot_quote(title) << " at screen "
+           << left / width << ", screen " << 1 - 0.5 * top / height
+           << " left\n";
+      return text.str();
+    }
+
+    /// The angle @p text, the @p name of "Picture view" = @p view, in
+    /// degrees within [@p low, @p high]; throws naming the entry otherwise.
+    double
+    angle_of_view(const std::string &view,
+                  const std::string &text,
+                  const std::string &name,
+                  const double       low,
+                  const double       high)
+    {
+      std::size_t used  = 0;
+      double      angle = NAN;
+      try
+        {
+          angle = std::stod(text, &used);
+        }
+      catch (const std::exception &)
+        {
+        }
+      if (used != text.size() || !(angle >= low && angle <= high))
+        throw std::invalid_argument(
+          "entry \"Output/Picture view\": in \"" + view + "\", the " + name +
+          " \"" + text + "\" is not an angle in degrees from " +
+          picture_number(low) + " to " + picture_number(high));
+      return angle;
+    }
+  } // namespace
+
+
+  void
+  PictureOptions::declare_entries(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    prm.declare_entry("Picture field",
+                      "displacement",
+                      Anything(),
+                      "Colours the deformed rods of picture.png: "
+                      "displacement, rod (index), a field of the VTU files "
+                      "(curvature, axial_strain, ...; name[k]: component "
+                      "k), or none (no picture). [-]");
+    prm.declare_entry("Picture view",
+                      "auto",
+                      Anything(),
+                      "The camera's azimuth (from x towards y) and "
+                      "elevation (-90 to 90), as \"-60, 30\", or auto: "
+                      "chosen from the shape. [deg]");
+    prm.declare_entry("Picture interval",
+                      "0",
+                      Integer(0),
+                      "Also draw picture-NNNNN.png at every n-th step; 0: "
+                      "none. [-]");
+  }
+
+
+  void
+  PictureOptions::parse_entries(dealii::ParameterHandler &prm)
+  {
+    field                  = prm.get("Picture field");
+    enabled                = field != "none";
+    interval               = prm.get_integer("Picture interval");
+    const std::string view = prm.get("Picture view");
+    if (view == "auto")
+      return;
+    const std::vector<std::string> angles =
+      dealii::Utilities::split_string_list(view, ',');
+    if (angles.size() != 2)
+      throw std::invalid_argument("entry \"Output/Picture view\": \"" + view +
+                                  "\" should read \"auto\" or \"<azimuth>, "
+                                  "<elevation>\" (degrees)");
+    azimuth   = angle_of_view(view, angles[0], "azimuth", -360, 360);
+    elevation = angle_of_view(view, angles[1], "elevation", -90, 90);
+  }
+
+
+  std::string
+  network_picture_script(const RodNetwork     &network,
+                         const PictureState   &state,
+                         const PictureOptions &options,
+                         const std::string    &png_path,
+                         const std::string    &title)
+  {
+    const PictureField field =
+      PictureFieldCatalogue(network, state.positions, state.fields)
+        .select(options.field);
+    std::vector<Vector3> undeformed;
+    for (unsigned int v = 0; v < network.n_vertices(); ++v)
+      undeformed.push_back(network.vertex(v));
+    const PictureCamera         camera = choose_camera(undeformed,
+                                               state.positions,
+                                               options.azimuth,
+                                               options.elevation);
+    const std::vector<DrawnRod> rods =
+      drawn_rods(network, state, field, camera);
+    const PictureFrame frame(rods, options.size);
+    const double       width = line_width(rods, frame);
+
+    std::ostringstream script;
+    script << "# rodnet picture: azimuth " << picture_number(camera.azimuth)
+           << ", elevation " << picture_number(camera.elevation)
+           << " degrees; screen coordinates (m)\n"
+           << layout_settings(frame, png_path, title) << colour_settings(field);
+    write_picture_data(script, rods);
+    script << "plot $undeformed with lines linecolor rgb '#c8c8c8' linewidth "
+           << picture_number(0.6 * width, 3)
+           << ", \\\n     $deformed using 1:2:3 with lines linecolor palette "
+              "linewidth "
+           << picture_number(width, 3) << "\n";
+    return script.str();
+  }
+
+
+  NetworkPictures::NetworkPictures(const RodNetwork     &network_,
+                                   const PictureState   &sample,
+                                   const PictureOptions &options_)
+      : network(network_)
+      , options(options_)
+  {
+    try
+      {
+        PictureFieldCatalogue(network, sample.positions, sample.fields)
+          .select(options.field);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw std::invalid_argument("entry \"Output/Picture field\": " +
+                                    std::string(e.what()));
+      }
+  }
+
+
+  bool
+  NetworkPictures::draw(const PictureState &state,
+                        const std::string  &png_path,
+                        const std::string  &title)
+  {
+    if (failed || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return false;
+    std::string failure;
+    try
+      {
+        failure = draw_with_gnuplot(
+          network_picture_script(network, state, options, png_path, title),
+          png_path);
+      }
+    catch (const std::exception &e)
+      {
+        failure = e.what();
+      }
+    if (failure.empty())
+      return true;
+    failed = true;
+    std::cerr << "warning: no picture \"" << png_path << "\" (nor any later "
+              << "of this run): " << failure << std::endl;
+    return false;
+  }
+} // namespace rodnet
