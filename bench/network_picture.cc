@@ -17,6 +17,7 @@
 #include <io/network_picture.h>
 #include <io/scene.h>
 
+#include <algorithm>
 #include <bench/options.h>
 #include <bench/timing.h>
 #include <filesystem>
@@ -89,8 +90,9 @@ main(int argc, char **argv)
                       if (!failure.empty())
                         throw std::runtime_error(failure);
                     }));
-  std::printf("script %.3g MB, PNG %.3g kB\n",
+  std::printf("script %.3g MB (%ld lines), PNG %.3g kB\n",
               script.size() / 1e6,
+              static_cast<long>(std::count(script.begin(), script.end(), '\n')),
               std::filesystem::file_size(png) / 1e3);
   return 0;
 }

@@ -149,6 +149,33 @@ namespace rodnet
         }
     }
 
+    /**
+     * Drops the points of @p line (and their @p values, if given) that lie
+     * closer than @p spacing to the point kept before them, but the last:
+     * a piece shorter than a pixel or two shows nothing a reader can see
+     * and costs gnuplot as much as a long one. A merged piece takes the
+     * colour of its last original piece.
+     */
+    void
+    thin_out(std::vector<Point2> &line,
+             std::vector<double> *values,
+             const double         spacing)
+    {
+      std::size_t kept = 0;
+      for (std::size_t k = 1; k < line.size(); ++k)
+        if (k + 1 == line.size() ||
+            std::hypot(line[k][0] - line[kept][0],
+                       line[k][1] - line[kept][1]) >= spacing)
+          {
+            line[++kept] = line[k];
+            if (values != nullptr)
+              (*values)[kept] = (*values)[k];
+          }
+      line.resize(std::min(line.size(), kept + 1));
+      if (values != nullptr)
+        values->resize(line.size());
+    }
+
     /// @p value with @p digits significant digits ("NaN" if not finite).
     std::string
     picture_number(const double value, const int digits = 6)
@@ -373,14 +400,19 @@ namespace rodnet
     std::vector<Vector3> undeformed;
     for (unsigned int v = 0; v < network.n_vertices(); ++v)
       undeformed.push_back(network.vertex(v));
-    const PictureCamera         camera = choose_camera(undeformed,
+    const PictureCamera   camera = choose_camera(undeformed,
                                                state.positions,
                                                options.azimuth,
                                                options.elevation);
-    const std::vector<DrawnRod> rods =
-      drawn_rods(network, state, field, camera);
-    const PictureFrame frame(rods, options.size);
-    const double       width = line_width(rods, frame);
+    std::vector<DrawnRod> rods   = drawn_rods(network, state, field, camera);
+    const PictureFrame    frame(rods, options.size);
+    const double          width = line_width(rods, frame);
+    // Pieces shorter than 1.5 pixels are merged (a dense lattice).
+    for (DrawnRod &rod : rods)
+      {
+        thin_out(rod.undeformed, nullptr, 1.5 / frame.scale);
+        thin_out(rod.deformed, &rod.values, 1.5 / frame.scale);
+      }
 
     std::ostringstream script;
     script << "# rodnet picture: azimuth " << picture_number(camera.azimuth)
