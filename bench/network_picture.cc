@@ -1,23 +1,22 @@
-// What picture.png costs (io/network_picture.h): a square lattice of n x n
-// cells, 10 segments per beam (2 n (n + 1) beams), drawn in the undeformed
-// state from the oblique camera (azimuth -60, elevation 35, the automatic
-// view of a flat lattice buckled out of its plane): the drawing holds
-// every segment twice (undeformed grey, deformed coloured by the
-// displacement), as at the end of a run. Times, median (min-max) of the
-// repeats:
+// What picture.png costs (io/network_picture.h): the square lattice of
+// bench/gridshell_scene.h with n x n cells, 10 segments per beam
+// (2 n (n + 1) beams), drawn in the undeformed state from the oblique
+// camera (azimuth -60, elevation 35, the automatic view of a flat lattice
+// buckled out of its plane): the drawing holds every segment twice
+// (undeformed grey, deformed coloured by the displacement), as at the end
+// of a run. Times, median (min-max) of the repeats:
 //   fields: picture_state (positions and the model's output fields),
 //   script: network_picture_script (projection, data blocks),
 //   gnuplot: gnuplot drawing the PNG from the script,
-// and the size of the PNG.
+// and the sizes of the script and of the PNG.
 //
 // Usage: network_picture [--cells n] [--repeats n] (defaults 80 and 5).
-#include <deal.II/base/parameter_handler.h>
-
 #include <io/gnuplot.h>
 #include <io/network_picture.h>
 #include <io/scene.h>
 
 #include <algorithm>
+#include <bench/gridshell_scene.h>
 #include <bench/options.h>
 #include <bench/timing.h>
 #include <filesystem>
@@ -26,28 +25,6 @@
 #include <string>
 
 using namespace rodnet;
-
-namespace
-{
-  /// The lattice of @p cells x @p cells cells of side 1 / cells.
-  Scene
-  lattice(const unsigned int cells)
-  {
-    std::ostringstream s;
-    s << "subsection Geometry\n  set Generator = square lattice\n"
-      << "  set Cells = " << cells << ", " << cells << "\n"
-      << "  set Beam length = " << 1.0 / cells << "\n"
-      << "  set Segments = 10\nend\n"
-      << "subsection Material\n  subsection linear elastic\n"
-      << "    set Stiffness input = direct\n    set EA = 1000\n"
-      << "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
-      << "subsection Supports\n  set Pinned vertices = @n_0_0\nend\n";
-    dealii::ParameterHandler prm;
-    Scene::declare_parameters(prm);
-    prm.parse_input_from_string(s.str());
-    return Scene(prm);
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -59,7 +36,7 @@ main(int argc, char **argv)
                {bench::number("--cells", cells, 1),
                 bench::number("--repeats", repeats, 1)});
 
-  const Scene                     scene = lattice(cells);
+  const Scene                     scene = bench::gridshell(cells, 10);
   const std::unique_ptr<RodModel> model = scene.build_model();
   const VectorType                u     = model->create_vector();
   PictureOptions                  options;
