@@ -101,6 +101,15 @@ namespace rodnet
     {
       PictureFrame(const std::vector<DrawnRod> &rods, unsigned int size);
 
+      /// The middle of the range: the script's coordinates are written
+      /// from it, so that a structure far from the origin keeps its
+      /// digits.
+      Point2
+      centre() const
+      {
+        return {{0.5 * (low[0] + high[0]), 0.5 * (low[1] + high[1])}};
+      }
+
       std::array<double, 2> low{}, high{};
       unsigned int          width = 0, height = 0;
       /// Pixels per unit of screen coordinates.
@@ -250,25 +259,29 @@ namespace rodnet
       return std::clamp(width, 0.6, 3.0);
     }
 
-    /// The data blocks $undeformed (x y) and $deformed (x y value), a
-    /// blank line between two rods.
+    /// The data blocks $undeformed (x y) and $deformed (x y value), the
+    /// coordinates from @p origin, a blank line between two rods.
     void
-    write_picture_data(std::ostream &script, const std::vector<DrawnRod> &rods)
+    write_picture_data(std::ostream                &script,
+                       const std::vector<DrawnRod> &rods,
+                       const Point2                &origin)
     {
+      const auto xy = [&](const Point2 &p) {
+        return picture_number(p[0] - origin[0]) + " " +
+               picture_number(p[1] - origin[1]);
+      };
       script << "$undeformed << EOD\n";
       for (const DrawnRod &rod : rods)
         {
           for (const Point2 &p : rod.undeformed)
-            script << picture_number(p[0]) << " " << picture_number(p[1])
-                   << "\n";
+            script << xy(p) << "\n";
           script << "\n";
         }
       script << "EOD\n$deformed << EOD\n";
       for (const DrawnRod &rod : rods)
         {
           for (std::size_t k = 0; k < rod.deformed.size(); ++k)
-            script << picture_number(rod.deformed[k][0]) << " "
-                   << picture_number(rod.deformed[k][1]) << " "
+            script << xy(rod.deformed[k]) << " "
                    << picture_number(rod.values[k]) << "\n";
           script << "\n";
         }
@@ -278,7 +291,8 @@ namespace rodnet
     /**
      * The terminal and layout: the drawing area of @p frame's size with
      * 20 pixels around it, 40 above for the title and 150 at its right
-     * for the colour bar, which spans 80 % of its height; no axes.
+     * for the colour bar, which spans 80 % of its height; no axes. The
+     * coordinates are those from the frame's centre.
      */
     std::string
     layout_settings(const PictureFrame &frame,
@@ -289,6 +303,7 @@ namespace rodnet
       const double width  = frame.width + left + right;
       const double height = frame.height + bottom + top;
       const int    font   = std::max(10, int(std::lround(frame.width / 90.)));
+      const Point2 origin = frame.centre();
       std::ostringstream text;
       text << "set terminal pngcairo noenhanced rounded size " << width << ","
            << height << " font '," << font << "'\n"
@@ -299,10 +314,10 @@ namespace rodnet
            << "set bmargin at screen " << bottom / height << "\n"
            << "set tmargin at screen " << (bottom + frame.height) / height
            << "\n"
-           << "set xrange [" << picture_number(frame.low[0], 15) << ":"
-           << picture_number(frame.high[0], 15) << "]\n"
-           << "set yrange [" << picture_number(frame.low[1], 15) << ":"
-           << picture_number(frame.high[1], 15) << "]\n"
+           << "set xrange [" << picture_number(frame.low[0] - origin[0], 15)
+           << ":" << picture_number(frame.high[0] - origin[0], 15) << "]\n"
+           << "set yrange [" << picture_number(frame.low[1] - origin[1], 15)
+           << ":" << picture_number(frame.high[1] - origin[1], 15) << "]\n"
            << "set size ratio -1\n"
            << "set colorbox vertical user origin screen "
            << (left + frame.width + 20) / width << ", screen "
@@ -417,9 +432,9 @@ namespace rodnet
     std::ostringstream script;
     script << "# rodnet picture: azimuth " << picture_number(camera.azimuth)
            << ", elevation " << picture_number(camera.elevation)
-           << " degrees; screen coordinates (m)\n"
+           << " degrees; screen coordinates (m) from the frame's centre\n"
            << layout_settings(frame, png_path, title) << colour_settings(field);
-    write_picture_data(script, rods);
+    write_picture_data(script, rods, frame.centre());
     script << "plot $undeformed with lines linecolor rgb '#c8c8c8' linewidth "
            << picture_number(0.6 * width, 3)
            << ", \\\n     $deformed using 1:2:3 with lines linecolor palette "

@@ -48,6 +48,21 @@ namespace rodnet
       sources.push_back({&field, false});
     for (const OutputFields::Field &field : fields.segment_fields)
       sources.push_back({&field, true});
+    // A field that does not fit the network would be read past its end.
+    const unsigned int n_segments = network.triangulation().n_active_cells();
+    for (const Source &source : sources)
+      {
+        const OutputFields::Field &field = *source.field;
+        const unsigned int         n =
+          source.per_segment ? n_segments : deformed.size();
+        if (!(field.components == 1 || field.components == 3) ||
+            field.values.size() != std::size_t(field.components) * n)
+          throw std::invalid_argument(
+            "PictureFieldCatalogue: the field \"" + field.name + "\" has " +
+            std::to_string(field.values.size()) + " values for " +
+            std::to_string(n) +
+            (source.per_segment ? " segments" : " vertices"));
+      }
   }
 
 

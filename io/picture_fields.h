@@ -35,11 +35,13 @@ namespace rodnet
    * (per vertex, @p deformed minus the undeformed positions of
    * @p network), network_fields(), and the vertex and segment fields of
    * @p fields. A field of three components gives its length under its own
-   * name and component k (1 to 3) as "name[k]".
+   * name and component k (1 to 3) as "name[k]". @p fields must outlive the
+   * catalogue, which reads them where they are.
    */
   class PictureFieldCatalogue
   {
   public:
+    /// Throws std::invalid_argument if a field does not fit @p network.
     PictureFieldCatalogue(const RodNetwork           &network,
                           const std::vector<Vector3> &deformed,
                           const OutputFields         &fields);
