@@ -196,10 +196,57 @@ namespace rodnet
       return text;
     }
 
+    /// Five colours of viridis, evenly spaced from its low end to its high
+    /// end (perceptually uniform, readable in grey and by the
+    /// colour-blind).
+    constexpr std::array<std::array<int, 3>, 5> viridis = {
+      {{{0x44, 0x01, 0x54}},
+       {{0x3b, 0x52, 0x8b}},
+       {{0x21, 0x91, 0x8c}},
+       {{0x5e, 0xc9, 0x62}},
+       {{0xfd, 0xe7, 0x25}}}};
+
+    /// Viridis at @p t (0 to 1) as "'#rrggbb'", interpolated linearly.
+    std::string
+    viridis_at(const double t)
+    {
+      const double       x = std::clamp(t, 0.0, 1.0) * (viridis.size() - 1);
+      const unsigned int k = std::min<unsigned int>(x, viridis.size() - 2);
+      char               text[16];
+      int                c[3];
+      for (unsigned int i = 0; i < 3; ++i)
+        c[i] = std::lround(viridis[k][i] +
+                           (x - k) * (viridis[k + 1][i] - viridis[k][i]));
+      std::snprintf(text, sizeof(text), "'#%02x%02x%02x'", c[0], c[1], c[2]);
+      return text;
+    }
+
+    /// The palette: viridis, or, given @p bands (the lowest of some
+    /// consecutive integers and how many they are), one band of one colour
+    /// per integer (a sharp step where two colours share a position).
+    std::string
+    palette(const std::optional<std::pair<double, unsigned int>> &bands)
+    {
+      std::string text = "set palette defined (";
+      if (!bands)
+        for (unsigned int k = 0; k < viridis.size(); ++k)
+          text += (k == 0 ? "" : ", ") + std::to_string(k) + " " +
+                  viridis_at(k / (viridis.size() - 1.0));
+      else
+        for (unsigned int i = 0; i < bands->second; ++i)
+          {
+            const std::string colour =
+              viridis_at(bands->second == 1 ? 0.5 : i / (bands->second - 1.0));
+            const double value = bands->first + i;
+            text += (i == 0 ? "" : ", ") + picture_number(value - 0.5) + " " +
+                    colour + ", " + picture_number(value + 0.5) + " " + colour;
+          }
+      return text + ")\n";
+    }
+
     /**
      * The colour settings of @p field: the palette, the colour bar's range
-     * and label. viridis (perceptually uniform, readable in grey and by
-     * the colour-blind); a field of at most 12 integers (rod, group,
+     * and label. viridis; a field of at most 12 integers (rod, group,
      * layer) in bands, one per value; one constant to 1e-9 (rounding)
      * around its value.
      */
@@ -217,13 +264,16 @@ namespace rodnet
           }
       if (!(low <= high))
         low = 0, high = 0;
+      const bool         bands = integers && high - low < 12;
       std::ostringstream text;
-      text << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', "
-              "3 '#5ec962', 4 '#fde725')\n";
-      if (integers && high - low < 12)
+      text << palette(
+        bands ?
+          std::make_optional(
+            std::make_pair(low, static_cast<unsigned int>(high - low + 1))) :
+          std::nullopt);
+      if (bands)
         {
-          text << "set palette maxcolors " << high - low + 1 << "\n"
-               << "set cbtics 1\n";
+          text << "set cbtics 1\n";
           low -= 0.5, high += 0.5;
         }
       else if (high - low <= 1e-9 * std::max(std::abs(low), std::abs(high)))
@@ -430,8 +480,9 @@ namespace rodnet
       }
 
     std::ostringstream script;
-    script << "# rodnet picture: azimuth " << picture_number(camera.azimuth)
-           << ", elevation " << picture_number(camera.elevation)
+    script << "# rodnet picture: azimuth "
+           << picture_number(camera.azimuth + 0.0) << ", elevation "
+           << picture_number(camera.elevation + 0.0)
            << " degrees; screen coordinates (m) from the frame's centre\n"
            << layout_settings(frame, png_path, title) << colour_settings(field);
     write_picture_data(script, rods, frame.centre());

@@ -238,6 +238,35 @@ namespace
     EXPECT_LT(distance(end_colour(content, false), content.high), 40);
   }
 
+  TEST(NetworkPicture, RodIndexInOneBandPerRod)
+  {
+    if (!gnuplot_on_path())
+      GTEST_SKIP() << "gnuplot is not on PATH";
+    // The frame's two rods (indices 0 and 1), its tip pushed out of its
+    // plane: one in the bar's low colour, one in its high colour, and no
+    // colour between (a band per rod, no gradient).
+    const std::string scene =
+      "subsection Geometry\n  set Generator = frame\n  set Segments = 8\n"
+      "end\n" +
+      direct_material("100") +
+      "subsection Supports\n  set Prescribed displacements = @tip: z=0.3\n"
+      "end\nsubsection Output\n  set Write VTU = false\n"
+      "  set Picture field = rod\nend\n";
+    const PictureContent content = content_of(picture_of_run(scene, "rods"));
+    const Rgb            middle{{0x21, 0x91, 0x8c}};
+    std::size_t          low = 0, high = 0, between = 0;
+    for (const auto &[xy, c] : content.drawn)
+      {
+        low += distance(c, content.low) < 30;
+        high += distance(c, content.high) < 30;
+        between += distance(c, middle) < 30;
+      }
+    EXPECT_GT(low, 500u);
+    EXPECT_GT(high, 500u);
+    EXPECT_EQ(between, 0u);
+    EXPECT_GT(distance(content.low, content.high), 200);
+  }
+
   TEST(NetworkPicture, RingStaysRound)
   {
     if (!gnuplot_on_path())
