@@ -8,7 +8,7 @@ namespace rodnet
 {
   namespace
   {
-    constexpr double degree = M_PI / 180;
+    constexpr double radians_per_degree = M_PI / 180;
 
     /// Points whose spread across a plane is below this fraction of their
     /// largest spread lie in that plane: an out-of-plane motion that small
@@ -76,8 +76,8 @@ namespace rodnet
     {
       if (std::hypot(c[0], c[1]) < 1e-6)
         return {{-90, c[2] > 0 ? 90.0 : -90.0}};
-      return {{std::atan2(c[1], c[0]) / degree,
-               std::asin(std::clamp(c[2], -1.0, 1.0)) / degree}};
+      return {{std::atan2(c[1], c[0]) / radians_per_degree,
+               std::asin(std::clamp(c[2], -1.0, 1.0)) / radians_per_degree}};
     }
 
     /// 35 degrees above the plane of normal @p normal, from the side of
@@ -85,12 +85,14 @@ namespace rodnet
     Vector3
     oblique_to(const Vector3 &normal)
     {
-      const Vector3 usual(std::cos(-60 * degree), std::sin(-60 * degree), 0);
+      const Vector3 usual(std::cos(-60 * radians_per_degree),
+                          std::sin(-60 * radians_per_degree),
+                          0);
       Vector3       along = usual - usual.dot(normal) * normal;
       if (along.norm() < 1e-6)
         along = Vector3::UnitZ() - normal[2] * normal;
-      return std::sin(35 * degree) * normal +
-             std::cos(35 * degree) * along.normalized();
+      return std::sin(35 * radians_per_degree) * normal +
+             std::cos(35 * radians_per_degree) * along.normalized();
     }
   } // namespace
 
@@ -99,12 +101,13 @@ namespace rodnet
       : azimuth(azimuth_)
       , elevation(elevation_)
   {
-    const double a = azimuth * degree, e = elevation * degree;
-    toward_viewer = Vector3(std::cos(e) * std::cos(a),
+    const double a = azimuth * radians_per_degree,
+                 e = elevation * radians_per_degree;
+    toward_viewer  = Vector3(std::cos(e) * std::cos(a),
                             std::cos(e) * std::sin(a),
                             std::sin(e));
-    right         = Vector3(-std::sin(a), std::cos(a), 0);
-    up            = toward_viewer.cross(right);
+    right          = Vector3(-std::sin(a), std::cos(a), 0);
+    up             = toward_viewer.cross(right);
   }
 
 
