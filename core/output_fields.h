@@ -31,6 +31,11 @@ namespace rodnet
       unsigned int        components;
       std::vector<double> values;
       std::string         unit = "";
+      /// A vertex field defined at the interior vertices of each open rod
+      /// only (at its hinges: curvature, twist rate), whose value at a rod's
+      /// end (0) is no value: a picture colours the end's half segment by
+      /// the vertex next to it.
+      bool interior_vertices_only = false;
     };
 
     /**

@@ -33,15 +33,16 @@ namespace rodnet
     }
 
     /// Appends the fields of @p named (name -> (unit, values)) to
-    /// @p fields.
+    /// @p fields, defined at the hinges only where @p at_hinges.
     void
     append_scalar_fields(
       const std::map<std::string, std::pair<std::string, std::vector<double>>>
                                        &named,
-      std::vector<OutputFields::Field> &fields)
+      std::vector<OutputFields::Field> &fields,
+      const bool                        at_hinges = false)
     {
       for (const auto &[name, values] : named)
-        fields.push_back({name, 1, values.second, values.first});
+        fields.push_back({name, 1, values.second, values.first, at_hinges});
     }
 
     /// The values of the field of the internal variable labelled @p label
@@ -162,11 +163,13 @@ namespace rodnet
     OutputFields::Field curvature{"curvature",
                                   3,
                                   std::vector<double>(3 * n_vertices),
-                                  "1/m"};
+                                  "1/m",
+                                  true};
     OutputFields::Field twist_rate{"twist_rate",
                                    1,
                                    std::vector<double>(n_vertices),
-                                   "rad/m"};
+                                   "rad/m",
+                                   true};
     const auto         &hinges = layout_->hinges();
     for (unsigned int h = 0; h < hinges.size(); ++h)
       {
@@ -215,7 +218,7 @@ namespace rodnet
             history.block(Owner::segment, stencil)[m];
         ++stencil;
       }
-    append_scalar_fields(vertex_history, output.vertex_fields);
+    append_scalar_fields(vertex_history, output.vertex_fields, true);
     append_scalar_fields(cell_history, output.segment_fields);
     return output;
   }

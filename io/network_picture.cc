@@ -33,11 +33,28 @@ namespace rodnet
     };
 
     /**
+     * The value of the vertex field @p field that colours the half
+     * segments next to vertex @p j of @p rod: its own, but where the field
+     * is defined at interior vertices only (curvature: at hinges), at the
+     * ends of an open rod of two or more segments that of the vertex next
+     * to it; the end's 0 would draw every junction of a network as a spot
+     * of zero.
+     */
+    double
+    vertex_value(const Rod &rod, const PictureField &field, unsigned int j)
+    {
+      const unsigned int n = rod.segments.size();
+      if (field.interior_vertices_only && !rod.closed && n >= 2)
+        j = std::clamp(j, 1u, n - 1);
+      return field.values[rod.vertices[j % rod.vertices.size()]];
+    }
+
+    /**
      * The rods of @p network projected by @p camera, coloured by @p field.
      * A segment field colours its segment; a vertex field the half of
      * each segment next to the vertex (a point at the segment's middle
-     * splits it), so that no value is averaged away. Closed rods come
-     * back to their first vertex.
+     * splits it; vertex_value()), so that no value is averaged away.
+     * Closed rods come back to their first vertex.
      */
     std::vector<DrawnRod>
     drawn_rods(const RodNetwork    &network,
@@ -74,10 +91,10 @@ namespace rodnet
                     rod.vertices[(j - 1) % rod.vertices.size()];
                   drawn.deformed.push_back(
                     screen(0.5 * (x + state.positions[before])));
-                  drawn.values.push_back(field.values[before]);
+                  drawn.values.push_back(vertex_value(rod, field, j - 1));
                 }
               drawn.deformed.push_back(screen(x));
-              drawn.values.push_back(field.values[v]);
+              drawn.values.push_back(vertex_value(rod, field, j));
             }
           rods.push_back(std::move(drawn));
         }

@@ -96,7 +96,11 @@ namespace rodnet
         return s.field->name == name.substr(0, bracket);
       });
     const OutputFields::Field &field = *source.field;
-    PictureField               picked{name, field.unit, source.per_segment, {}};
+    PictureField               picked{name,
+                        field.unit,
+                        source.per_segment,
+                        {},
+                        field.interior_vertices_only};
     for (std::size_t i = 0; i < field.values.size(); i += field.components)
       {
         const double *value = &field.values[i];

@@ -28,6 +28,8 @@ namespace rodnet
     std::string         unit;
     bool                per_segment = true;
     std::vector<double> values;
+    /// OutputFields::Field::interior_vertices_only.
+    bool interior_vertices_only = false;
   };
 
   /**

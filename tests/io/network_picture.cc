@@ -267,6 +267,48 @@ namespace
     EXPECT_GT(distance(content.low, content.high), 200);
   }
 
+  TEST(NetworkPicture, RodEndsTakeTheirNeighboursCurvature)
+  {
+    // A cantilever bent by an end moment M = EI into an arc of curvature
+    // 1/m: every piece of the drawn rod carries kappa = 1, the half
+    // segments at its ends too (its end vertices have no hinge: the
+    // model's output gives them 0, which would draw two spots of zero),
+    // while a field with values at the ends (displacement) keeps them (the
+    // tests above: the clamp in the bar's low colour). The script's
+    // $deformed block: x, y, value.
+    const std::string dir = "network_picture_tests/end_moment";
+    fs::remove_all(dir);
+    const RunSummary run =
+      run_scene_text("subsection Geometry\n  set Segments = 20\nend\n" +
+                       direct_material() +
+                       "subsection Supports\n  set Clamped ends = start\nend\n"
+                       "subsection Loads\n  set Steps = 2\n"
+                       "  set Moments = end: 0,0,1 1\nend\n"
+                       "subsection Output\n  set Write VTU = false\n"
+                       "  set Picture field = curvature\nend\n",
+                     dir);
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    std::ifstream script(dir + "/picture.png.gp");
+    std::string   line;
+    while (std::getline(script, line) && line != "$deformed << EOD")
+      ;
+    // The discrete curvature of the arc, 2 tan(h kappa / 2) / h, is
+    // kappa (1 + (h kappa)^2 / 12): 2e-4 above it at h = 0.05.
+    std::vector<double> values;
+    while (std::getline(script, line) && line != "EOD")
+      if (!line.empty())
+        {
+          double x, y, kappa;
+          std::istringstream(line) >> x >> y >> kappa;
+          EXPECT_NEAR(kappa, 1, 1e-3) << line;
+          values.push_back(kappa);
+        }
+    // 21 vertices and 20 midpoints, all of one value.
+    ASSERT_EQ(values.size(), 41u);
+    for (const double kappa : values)
+      EXPECT_NEAR(kappa, values[20], 1e-9 * values[20]);
+  }
+
   TEST(NetworkPicture, RingStaysRound)
   {
     if (!gnuplot_on_path())
