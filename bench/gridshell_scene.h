@@ -1,7 +1,8 @@
 // The large welded lattice the solver benchmarks time (solver_checks,
-// lowest_eigenpairs): the square lattice of scenes/gridshell.prm with
-// n x n cells of span 1, 8 segments per lath, its two edges pushed together
-// by a tenth of the span and a small uplift.
+// lowest_eigenpairs, network_picture): the square lattice of
+// scenes/gridshell.prm with n x n cells of span 1, 8 segments per lath (by
+// default), its two edges pushed together by a tenth of the span and a
+// small uplift.
 #ifndef RODNET_BENCH_GRIDSHELL_SCENE_H
 #define RODNET_BENCH_GRIDSHELL_SCENE_H
 
@@ -18,15 +19,16 @@ namespace rodnet
 {
   namespace bench
   {
-    /// The gridshell scene with @p cells x @p cells cells of span 1.
+    /// The gridshell scene with @p cells x @p cells cells of span 1 and
+    /// @p segments segments per beam.
     inline std::string
-    gridshell_scene(const unsigned int cells)
+    gridshell_scene(const unsigned int cells, const unsigned int segments = 8)
     {
       std::ostringstream s;
       s << "subsection Geometry\n  set Generator = square lattice\n"
         << "  set Cells = " << cells << ", " << cells << "\n"
         << "  set Beam length = " << 1.0 / cells << "\n"
-        << "  set Segments = 8\nend\n"
+        << "  set Segments = " << segments << "\nend\n"
         << "subsection Material\n  subsection linear elastic\n"
         << "    set Stiffness input = direct\n    set EA = 1000\n"
         << "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
@@ -39,13 +41,13 @@ namespace rodnet
       return s.str();
     }
 
-    /// The Scene of gridshell_scene(@p cells).
+    /// The Scene of gridshell_scene(@p cells, @p segments).
     inline Scene
-    gridshell(const unsigned int cells)
+    gridshell(const unsigned int cells, const unsigned int segments = 8)
     {
       dealii::ParameterHandler prm;
       Scene::declare_parameters(prm);
-      prm.parse_input_from_string(gridshell_scene(cells));
+      prm.parse_input_from_string(gridshell_scene(cells, segments));
       return Scene(prm);
     }
 

@@ -671,7 +671,7 @@ namespace rodnet
   DrModel::output_fields(const DrVector &u) const
   {
     OutputFields        output;
-    OutputFields::Field normals{"normal", 3, {}};
+    OutputFields::Field normals{"normal", 3, {}, "-"};
     for (unsigned int v = 0; v < network_->n_vertices(); ++v)
       {
         output.displacement.emplace_back(u[position_dof(v, 0)],

@@ -23,12 +23,19 @@ namespace rodnet
   struct OutputFields
   {
     /// A scalar (1 component) or vector (3 components) field; values
-    /// component by component, entity by entity: values[3 i + c].
+    /// component by component, entity by entity: values[3 i + c]; its unit
+    /// as a picture's colour bar states it ("1/m", "-").
     struct Field
     {
       std::string         name;
       unsigned int        components;
       std::vector<double> values;
+      std::string         unit = "";
+      /// A vertex field defined at the interior vertices of each open rod
+      /// only (at its hinges: curvature, twist rate), whose value at a rod's
+      /// end (0) is no value: a picture colours the end's half segment by
+      /// the vertex next to it.
+      bool interior_vertices_only = false;
     };
 
     /**
@@ -43,8 +50,8 @@ namespace rodnet
       dealii::Vector<double>          values;
       /// One name per component ("displacement" three times, ...).
       std::vector<std::string> names;
-      std::vector<dealii::DataComponentInterpretation::
-                    DataComponentInterpretation>
+      std::vector<
+        dealii::DataComponentInterpretation::DataComponentInterpretation>
         interpretation;
     };
 

@@ -21,14 +21,43 @@ namespace rodnet
       return name;
     }
 
-    /// Appends the fields of @p named (name -> values) to @p fields.
+    /// The unit of an internal variable labelled "name (unit)"; "-" where
+    /// the label gives none.
+    std::string
+    field_unit(const std::string &label)
+    {
+      const std::size_t open = label.find(" (");
+      if (open == std::string::npos || label.back() != ')')
+        return "-";
+      return label.substr(open + 2, label.size() - open - 3);
+    }
+
+    /// Appends the fields of @p named (name -> (unit, values)) to
+    /// @p fields, defined at the hinges only where @p at_hinges.
     void
     append_scalar_fields(
-      const std::map<std::string, std::vector<double>> &named,
-      std::vector<OutputFields::Field>                 &fields)
+      const std::map<std::string, std::pair<std::string, std::vector<double>>>
+                                       &named,
+      std::vector<OutputFields::Field> &fields,
+      const bool                        at_hinges = false)
     {
       for (const auto &[name, values] : named)
-        fields.push_back({name, 1, values});
+        fields.push_back({name, 1, values.second, values.first, at_hinges});
+    }
+
+    /// The values of the field of the internal variable labelled @p label
+    /// in @p named, made with @p n zeros and the label's unit if new.
+    std::vector<double> &
+    internal_variable_field(
+      std::map<std::string, std::pair<std::string, std::vector<double>>> &named,
+      const std::string                                                  &label,
+      const std::size_t                                                   n)
+    {
+      return named
+        .try_emplace(field_name(label),
+                     field_unit(label),
+                     std::vector<double>(n))
+        .first->second.second;
     }
   } // namespace
 
@@ -53,7 +82,8 @@ namespace rodnet
     OutputFields::Field force{"axial_force",
                               1,
                               std::vector<double>(
-                                network_->triangulation().n_active_cells())};
+                                network_->triangulation().n_active_cells()),
+                              "N"};
     StretchStrain       stretch;
     unsigned int        stencil = 0;
     for (const SegmentStencil &segment : layout_->segments())
@@ -101,9 +131,12 @@ namespace rodnet
        component_is_part_of_vector,
        component_is_scalar}};
 
-    OutputFields::Field strain{"axial_strain", 1, std::vector<double>(n_cells)};
-    OutputFields::Field d1{"d1", 3, std::vector<double>(3 * n_cells)};
-    OutputFields::Field d2{"d2", 3, std::vector<double>(3 * n_cells)};
+    OutputFields::Field strain{"axial_strain",
+                               1,
+                               std::vector<double>(n_cells),
+                               "-"};
+    OutputFields::Field d1{"d1", 3, std::vector<double>(3 * n_cells), "-"};
+    OutputFields::Field d2{"d2", 3, std::vector<double>(3 * n_cells), "-"};
     StretchStrain       stretch;
     for (const SegmentStencil &segment : layout_->segments())
       {
@@ -129,10 +162,14 @@ namespace rodnet
     // without a hinge (rod ends) keep zero.
     OutputFields::Field curvature{"curvature",
                                   3,
-                                  std::vector<double>(3 * n_vertices)};
+                                  std::vector<double>(3 * n_vertices),
+                                  "1/m",
+                                  true};
     OutputFields::Field twist_rate{"twist_rate",
                                    1,
-                                   std::vector<double>(n_vertices)};
+                                   std::vector<double>(n_vertices),
+                                   "rad/m",
+                                   true};
     const auto         &hinges = layout_->hinges();
     for (unsigned int h = 0; h < hinges.size(); ++h)
       {
@@ -153,14 +190,16 @@ namespace rodnet
     // zero where a rod's material has no such variable. (Junction elements
     // share their vertex with several rods and are not drawn.)
     using Owner = InternalVariables::Owner;
-    std::map<std::string, std::vector<double>> vertex_history, cell_history;
+    std::map<std::string, std::pair<std::string, std::vector<double>>>
+      vertex_history, cell_history;
     for (unsigned int h = 0; !history.empty() && h < hinges.size(); ++h)
       {
         const auto names =
           materials[hinges[h].rod]->hinge_internal_variable_names();
         for (unsigned int m = 0; m < names.size(); ++m)
-          vertex_history.try_emplace(field_name(names[m]), n_vertices)
-            .first->second[hinges[h].vertices[1]] =
+          internal_variable_field(vertex_history,
+                                  names[m],
+                                  n_vertices)[hinges[h].vertices[1]] =
             history.block(Owner::hinge, h)[m];
       }
     // The segment stencils skip the segments of inextensible rods.
@@ -173,12 +212,13 @@ namespace rodnet
         const auto names =
           materials[segments[c].rod]->segment_internal_variable_names();
         for (unsigned int m = 0; m < names.size(); ++m)
-          cell_history.try_emplace(field_name(names[m]), n_cells)
-            .first->second[segments[c].cell] =
+          internal_variable_field(cell_history,
+                                  names[m],
+                                  n_cells)[segments[c].cell] =
             history.block(Owner::segment, stencil)[m];
         ++stencil;
       }
-    append_scalar_fields(vertex_history, output.vertex_fields);
+    append_scalar_fields(vertex_history, output.vertex_fields, true);
     append_scalar_fields(cell_history, output.segment_fields);
     return output;
   }

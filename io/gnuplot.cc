@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
 #include <spawn.h>
 #include <string>
 #include <sys/wait.h>
@@ -99,5 +100,18 @@ namespace rodnet
         "gnuplot exited with code " + std::to_string(WEXITSTATUS(status)) :
         "gnuplot was killed";
     return last.empty() ? exit_text : exit_text + ": " + last;
+  }
+
+  std::string
+  draw_with_gnuplot(const std::string &script, const std::string &image_path)
+  {
+    const std::string script_path = image_path + ".gp";
+    {
+      std::ofstream file(script_path);
+      file << script;
+      if (!file)
+        return "cannot write the script \"" + script_path + "\"";
+    }
+    return run_gnuplot(script_path);
   }
 } // namespace rodnet

@@ -17,6 +17,16 @@ namespace rodnet
    */
   std::string
   run_gnuplot(const std::string &script_path);
+
+  /**
+   * Keeps @p script, a gnuplot script that draws @p image_path, next to
+   * the image as `<image_path>.gp` (a user can restyle it and run it
+   * again) and runs it; returns an empty string on success, otherwise why
+   * no image was drawn (the script cannot be written, gnuplot is missing
+   * or fails: see run_gnuplot()).
+   */
+  std::string
+  draw_with_gnuplot(const std::string &script, const std::string &image_path);
 } // namespace rodnet
 
 #endif

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 #include <ostream>
@@ -355,15 +354,9 @@ namespace rodnet
             return warn(png_path,
                         "no probe varies" + notes + (notes.empty() ? "" : ")"));
           }
-        const std::string script_path = png_path + ".gp";
-        {
-          std::ofstream script(script_path);
-          write_script(script, png_path, table, options, plan);
-          if (!script)
-            return warn(png_path,
-                        "cannot write the script \"" + script_path + "\"");
-        }
-        const std::string failure = run_gnuplot(script_path);
+        std::ostringstream script;
+        write_script(script, png_path, table, options, plan);
+        const std::string failure = draw_with_gnuplot(script.str(), png_path);
         if (!failure.empty())
           return warn(png_path, failure);
         return true;

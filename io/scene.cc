@@ -281,14 +281,15 @@ namespace rodnet
                       "true",
                       Bool(),
                       "Plot the probes against the load factor (the time "
-                      "for time stepping) into probes.png (needs "
-                      "gnuplot). [-]");
+                      "for time stepping) into probes.png, and draw "
+                      "picture.png (both need gnuplot). [-]");
     prm.declare_entry("Mode shapes",
                       "0",
                       Integer(0, 100),
                       "Newton and continuation: the n lowest eigenvalues "
                       "of the tangent at the last equilibrium into "
                       "modes.csv, the modes into modes-NNNNN.vtu. [-]");
+    PictureOptions::declare_entries(prm);
     prm.leave_subsection();
   }
 
@@ -409,6 +410,7 @@ namespace rodnet
     probe_text       = prm.get("Probes");
     plot             = prm.get_bool("Plot");
     mode_shapes      = prm.get_integer("Mode shapes");
+    picture.parse_entries(prm);
     prm.leave_subsection();
     if (mode_shapes > 0 && method != SolutionMethod::newton &&
         method != SolutionMethod::continuation)

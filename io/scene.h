@@ -10,6 +10,7 @@
 #include <core/rod_model.h>
 #include <io/entry_tree.h>
 #include <io/natural_shape_ramp.h>
+#include <io/network_picture.h>
 #include <io/probes.h>
 #include <io/problem_size.h>
 #include <io/read_notes.h>
@@ -153,6 +154,8 @@ namespace rodnet
     bool                       write_vtu    = true;
     unsigned int               vtu_interval = 1;
     bool                       plot         = true;
+    /// picture.png and picture-NNNNN.png (io/network_picture.h).
+    PictureOptions picture;
     /// How many of the lowest eigenpairs of the last equilibrium's
     /// tangent to write (io/mode_shapes.h); Newton and continuation.
     unsigned int mode_shapes = 0;

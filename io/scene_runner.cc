@@ -2,6 +2,7 @@
 
 #include <io/interrupt.h>
 #include <io/mode_shapes.h>
+#include <io/network_picture.h>
 #include <io/probe_plot.h>
 #include <io/run_limits.h>
 #include <io/scene_runner.h>
@@ -22,11 +23,25 @@ namespace rodnet
 {
   namespace
   {
+    /// The name of the run in the folder @p output_directory: the folder's
+    /// own name ("elastica").
+    std::string
+    run_name(const std::string &output_directory)
+    {
+      std::error_code       error;
+      std::filesystem::path folder =
+        std::filesystem::absolute(output_directory, error).lexically_normal();
+      if (!folder.has_filename())
+        folder = folder.parent_path();
+      return folder.filename().string();
+    }
+
     /// What every solution method does with a converged step: a row of
-    /// probes.csv, a row of the summary, and the VTU files, against the
-    /// load factor or the time (@p abscissa names which). After each step
-    /// it ends the run with StopRequested if a signal asked for that: every
-    /// file is complete then. The VTU files show the states of @p model.
+    /// probes.csv, a row of the summary, the VTU files and the pictures,
+    /// against the load factor or the time (@p abscissa names which).
+    /// After each step it ends the run with StopRequested if a signal
+    /// asked for that: every file is complete then. The VTU files and
+    /// pictures show the states of @p model.
     template <class State>
     class StepRecorder
     {
@@ -41,6 +56,7 @@ namespace rodnet
           : scene(scene)
           , model(model)
           , probes(probes)
+          , directory(output_directory)
           , csv(csv_path(output_directory))
           , table(csv, probes, abscissa, check_columns)
           , summary(summary)
@@ -54,6 +70,11 @@ namespace rodnet
         summary.outputs      = {"probes.csv"};
         if (scene.write_vtu)
           vtu = std::make_unique<VtuOutput>(model.network(), output_directory);
+        // The field is checked even where Plot = false draws no picture.
+        if (scene.picture.enabled)
+          pictures = std::make_unique<NetworkPictures>(model, scene.picture);
+        if (!scene.plot)
+          pictures.reset();
         for (const auto &p : probes)
           {
             summary.probe_names.push_back(p->name());
@@ -84,10 +105,17 @@ namespace rodnet
         summary.final_stable =
           stable_check < checks.size() ? checks[stable_check] : std::nan("");
         last = {abscissa, u};
-        largest_energy = std::max(largest_energy,
-                                  std::abs(model.elastic_energy(u, load_factor)));
+        largest_energy =
+          std::max(largest_energy,
+                   std::abs(model.elastic_energy(u, load_factor)));
         if (vtu && step % scene.vtu_interval == 0)
           write_vtu(step, abscissa, u);
+        if (pictures && scene.picture.interval > 0 &&
+            step % scene.picture.interval == 0)
+          pictures->draw(picture_state(model, u),
+                         directory + "/picture-" +
+                           dealii::Utilities::int_to_string(step, 5) + ".png",
+                         picture_title(abscissa));
         throw_if_stop_requested();
       }
 
@@ -99,13 +127,8 @@ namespace rodnet
                std::nullopt) const
       {
         // Titled by the folder, which names the run ("elastica").
-        std::error_code       error;
-        std::filesystem::path folder =
-          std::filesystem::absolute(output_directory, error).lexically_normal();
-        if (!folder.has_filename())
-          folder = folder.parent_path();
         ProbePlotOptions options;
-        options.title        = "rodnet probes: " + folder.filename().string();
+        options.title        = "rodnet probes: " + run_name(output_directory);
         options.units        = units;
         options.n_probes     = probes.size();
         options.x_range      = x_range;
@@ -126,6 +149,11 @@ namespace rodnet
           summary.outputs.push_back("probes.png");
         if (vtu_files > 0)
           summary.outputs.push_back("solution.pvd");
+        if (pictures && last &&
+            pictures->draw(picture_state(model, last->second),
+                           output_directory + "/picture.png",
+                           picture_title(last->first)))
+          summary.outputs.push_back("picture.png");
       }
 
       /// The abscissa and state of the last step recorded, if any.
@@ -136,6 +164,17 @@ namespace rodnet
       }
 
     private:
+      /// "elastica: load factor 1" or "elastica: time 0.5 s".
+      std::string
+      picture_title(const double abscissa) const
+      {
+        std::ostringstream text;
+        text << run_name(directory) << ": "
+             << (summary.abscissa == "time" ? "time " : "load factor ")
+             << abscissa << (summary.abscissa == "time" ? " s" : "");
+        return text.str();
+      }
+
       /// probes.csv in @p directory, created if needed.
       static std::string
       csv_path(const std::string &directory)
@@ -165,15 +204,17 @@ namespace rodnet
           }
       }
 
-      const Scene               &scene;
-      const Model<State>        &model;
-      const ProbeList           &probes;
-      const std::string          csv;
-      ProbeTable                 table;
-      RunSummary                &summary;
-      std::unique_ptr<VtuOutput> vtu;
-      unsigned int               vtu_files  = 0;
-      bool                       vtu_capped = false;
+      const Scene                     &scene;
+      const Model<State>              &model;
+      const ProbeList                 &probes;
+      const std::string                directory;
+      const std::string                csv;
+      ProbeTable                       table;
+      RunSummary                      &summary;
+      std::unique_ptr<VtuOutput>       vtu;
+      std::unique_ptr<NetworkPictures> pictures;
+      unsigned int                     vtu_files  = 0;
+      bool                             vtu_capped = false;
       /// The abscissa's unit, then each probe's.
       std::vector<std::string> units;
       /// The index of the check "stable" among the checks, if there.

@@ -45,7 +45,8 @@ namespace rodnet
     /// stop_cleanly_on_signals()), 0 if none did.
     int stopped_by = 0;
     /// The files written into the output directory: "probes.csv", and
-    /// "probes.png" and "solution.pvd" (with its .vtu files) if written.
+    /// "probes.png", "solution.pvd" (with its .vtu files) and
+    /// "picture.png" if written.
     std::vector<std::string> outputs;
   };
 
@@ -53,10 +54,11 @@ namespace rodnet
    * Runs a scene: prints its size to @p log, builds the model, steps the
    * load (or the time), and after every step writes the VTU/PVD files and
    * a row of probes.csv into @p output_directory (created if needed), and
-   * finally probes.png (plot_probes()). Step 0 is the unloaded state of
-   * load stepping and continuation and the initial state of time stepping
-   * (before its preload, if any); time stepping also records every
-   * preload step (at times up to the start time). The rows of rod models
+   * finally probes.png (plot_probes()) and picture.png, the last state
+   * (io/network_picture.h; picture-NNNNN.png of steps on request). Step 0 is
+   * the unloaded state of load stepping and continuation and the initial state
+   * of time stepping (before its preload, if any); time stepping also records
+   * every preload step (at times up to the start time). The rows of rod models
    * end with the solver's checks of the state: "stable" (Newton and
    * quasi-static runs) and "in_range" (1 or 0; the warnings on @p log say
    * where), after the continuation's "arclength", "branch" and

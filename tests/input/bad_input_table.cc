@@ -197,6 +197,20 @@ namespace
      1,
      "entry \"Output/VTU interval\": the run would write 50001 VTU files, "
      "more than the 10000 a run may write; set the interval to 6 or more"},
+    {"unknown_picture_field",
+     with("Output", "  set Picture field = curvatur\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Output/Picture field\": no field \"curvatur\" to colour the "
+     "picture by (nearest: \"curvature\""},
+    {"picture_elevation_out_of_range",
+     with("Output", "  set Picture view = -60, 95\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Output/Picture view\": in \"-60, 95\", the elevation \"95\" "
+     "is not an angle in degrees from -90 to 90"},
     {"billion_segments",
      with("Geometry", "  set Segments = 1000000000\n"),
      ".prm",

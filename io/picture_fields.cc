@@ -1,0 +1,116 @@
+#include <io/nearest_names.h>
+#include <io/picture_fields.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rodnet
+{
+  std::vector<OutputFields::Field>
+  network_fields(const RodNetwork &network)
+  {
+    OutputFields::Field rod{"rod",
+                            1,
+                            std::vector<double>(
+                              network.triangulation().n_active_cells()),
+                            "-"};
+    for (unsigned int r = 0; r < network.rods().size(); ++r)
+      for (const unsigned int cell : network.rods()[r].segments)
+        rod.values[cell] = r;
+    return {rod};
+  }
+
+
+  PictureFieldCatalogue::PictureFieldCatalogue(
+    const RodNetwork           &network,
+    const std::vector<Vector3> &deformed,
+    const OutputFields         &fields)
+      : displacement{"displacement", 3, {}, "m"}
+      , network_field_list(network_fields(network))
+  {
+    if (deformed.size() != network.n_vertices())
+      throw std::invalid_argument("PictureFieldCatalogue: positions of " +
+                                  std::to_string(deformed.size()) +
+                                  " vertices for a network of " +
+                                  std::to_string(network.n_vertices()));
+    for (unsigned int v = 0; v < deformed.size(); ++v)
+      {
+        const Vector3 u = deformed[v] - network.vertex(v);
+        displacement.values.insert(displacement.values.end(),
+                                   u.data(),
+                                   u.data() + 3);
+      }
+    sources.push_back({&displacement, false});
+    for (const OutputFields::Field &field : network_field_list)
+      sources.push_back({&field, true});
+    for (const OutputFields::Field &field : fields.vertex_fields)
+      sources.push_back({&field, false});
+    for (const OutputFields::Field &field : fields.segment_fields)
+      sources.push_back({&field, true});
+    // A field that does not fit the network would be read past its end.
+    const unsigned int n_segments = network.triangulation().n_active_cells();
+    for (const Source &source : sources)
+      {
+        const OutputFields::Field &field = *source.field;
+        const unsigned int         n =
+          source.per_segment ? n_segments : deformed.size();
+        if (!(field.components == 1 || field.components == 3) ||
+            field.values.size() != std::size_t(field.components) * n)
+          throw std::invalid_argument(
+            "PictureFieldCatalogue: the field \"" + field.name + "\" has " +
+            std::to_string(field.values.size()) + " values for " +
+            std::to_string(n) +
+            (source.per_segment ? " segments" : " vertices"));
+      }
+  }
+
+
+  std::vector<std::string>
+  PictureFieldCatalogue::names() const
+  {
+    std::vector<std::string> list;
+    for (const Source &source : sources)
+      {
+        list.push_back(source.field->name);
+        for (unsigned int k = 1; source.field->components == 3 && k <= 3; ++k)
+          list.push_back(source.field->name + "[" + std::to_string(k) + "]");
+      }
+    return list;
+  }
+
+
+  PictureField
+  PictureFieldCatalogue::select(const std::string &name) const
+  {
+    const std::vector<std::string> known = names();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw std::invalid_argument("no field \"" + name +
+                                  "\" to colour the picture by (nearest: " +
+                                  quoted_list(nearest_names(known, name, 3)) +
+                                  "); the fields are " + quoted_list(known));
+    // "name[k]": component k of a vector field; "name": its length.
+    const std::size_t bracket = name.find('[');
+    const Source     &source =
+      *std::find_if(sources.begin(), sources.end(), [&](const Source &s) {
+        return s.field->name == name.substr(0, bracket);
+      });
+    const OutputFields::Field &field = *source.field;
+    PictureField               picked{name,
+                        field.unit,
+                        source.per_segment,
+                        {},
+                        field.interior_vertices_only};
+    for (std::size_t i = 0; i < field.values.size(); i += field.components)
+      {
+        const double *value = &field.values[i];
+        if (field.components == 1)
+          picked.values.push_back(value[0]);
+        else if (bracket == std::string::npos)
+          picked.values.push_back(std::hypot(value[0], value[1], value[2]));
+        else
+          picked.values.push_back(value[name[bracket + 1] - '1']);
+      }
+    return picked;
+  }
+} // namespace rodnet
