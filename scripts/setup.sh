@@ -11,6 +11,8 @@ packages=(
   libgtest-dev              # the ctest programs
   numdiff                   # tolerant comparison of numeric outputs
   gnuplot-nox               # PNG plots of probes and benchmark charts
+  libsuitesparse-dev        # KLU, the sparse LU of Newton's systems
+  libpng-dev                # the tests read the pictures runs draw
 )
 # Callers add what only they need (scripts/fuzz.sh: clang and libFuzzer).
 packages+=("$@")
