@@ -185,10 +185,8 @@ namespace rodnet
     prm.declare_entry("Pinned vertices",
                       "",
                       Anything(),
-                      "Vertices whose position is fixed, e.g. \"end, 0:mid\". "
-                      "Vertices are [rod:]start|end|mid|<index> or @<name>; "
-                      "\"junctions\": every junction of the network (its "
-                      "rotation stays free). [-]");
+                      "Vertices whose position is fixed, e.g. \"end, 0:mid\"; "
+                      "\"junctions\": every junction, its rotation free. [-]");
     prm.declare_entry("Fixed components",
                       "",
                       Anything(),
@@ -268,22 +266,16 @@ namespace rodnet
     prm.declare_entry("Point forces",
                       "",
                       Anything(),
-                      "Small dead forces that select a buckling pattern, as "
-                      "Loads/Point forces: \"<vertex>: fx, fy, fz; ...\". "
-                      "[N]");
+                      "Small forces, as Loads/Point forces. [N]");
     prm.declare_entry("Moments",
                       "",
                       Anything(),
-                      "Small moments that select a buckling pattern, as "
-                      "Loads/Moments: \"<where>: <ax>,<ay>,<az> <M>; "
-                      "...\". [N m]");
+                      "Small moments, as Loads/Moments. [N m]");
     prm.declare_entry("Magnitude",
                       "held",
                       dealii::Patterns::Selection("held|ramped"),
-                      "held: the imperfections at their full value from the "
-                      "first step on, whatever the load factor ramps; "
-                      "ramped: scaled by the load factor like the loads. "
-                      "[-]");
+                      "held: full from the first step on; ramped: scaled by "
+                      "the load factor. [-]");
     prm.leave_subsection();
     prm.leave_subsection();
   }
