@@ -185,7 +185,8 @@ namespace rodnet
     prm.declare_entry("Pinned vertices",
                       "",
                       Anything(),
-                      "Vertices whose position is fixed, e.g. \"end, 0:mid\"; "
+                      "Vertices whose position is fixed, e.g. \"end, 0:mid\". "
+                      "Vertices are [rod:]start|end|mid|<index>; "
                       "\"junctions\": every junction, its rotation free. [-]");
     prm.declare_entry("Fixed components",
                       "",
