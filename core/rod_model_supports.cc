@@ -210,10 +210,18 @@ namespace rodnet
             moment.where + " is held by the clamp \"" + clamp->name +
             "\", which would take up the whole moment; load a free "
             "vertex, or prescribe a rotation of the clamp instead");
-        add_moment(moment.junction.value(),
-                   moment.axis,
-                   moment.value,
-                   moment.ramp);
+        try
+          {
+            add_moment(moment.junction.value(),
+                       moment.axis,
+                       moment.value,
+                       moment.ramp);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            // The junction cannot take it: say which entry asked.
+            throw std::invalid_argument(moment.where + ": " + e.what());
+          }
       }
   }
 

@@ -491,6 +491,18 @@ namespace
      1,
      "entry \"Loads/Imperfections/Moments\": \"0,0,1\" should read "
      "\"<ax>,<ay>,<az> <value>\""},
+    {"imperfection_moment_at_a_clamped_junction",
+     with("Geometry", "  set Generator = frame\n") +
+       section("Supports", "  set Clamped ends =\n") +
+       section("Loads",
+               "  set Point forces = @tip: 0, 0, 1e-3\n"
+               "  subsection Imperfections\n"
+               "    set Moments = clamp: 0,0,1 0.1\n  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Imperfections/Moments\": \"clamp\": moment at junction "
+     "\"clamp\": a clamped junction has no free rotation to load"},
     {"held_imperfection_dynamic_relaxation",
      with("Loads",
           "  set Point forces = end: 0, 0, 1\n"
