@@ -297,9 +297,9 @@ namespace rodnet
                            VectorType        *residual) const
   {
     const double load_factor = applied_load_factor(ramp);
-    // Potential -lambda f.x, with x = X + u; the constant f.X does not
-    // change any derivative and is dropped.
-    energy -= load_factor * (f_ext * u);
+    // Potential -(lambda f + f_held).x, with x = X + u; the constant f.X
+    // does not change any derivative and is dropped.
+    energy -= load_factor * (f_ext * u) + f_held * u;
     if (extra_force != nullptr)
       energy -= *extra_force * u;
     if (residual == nullptr)
@@ -307,7 +307,7 @@ namespace rodnet
     residual->compress(dealii::VectorOperation::add);
     if (block == nullptr)
       {
-        residual->add(-load_factor, f_ext);
+        residual->add(-load_factor, f_ext, -1.0, f_held);
         if (extra_force != nullptr)
           residual->add(-1.0, *extra_force);
         return;
@@ -316,7 +316,7 @@ namespace rodnet
     std::vector<double>           values;
     for (const global_dof_index i : owned_dofs)
       {
-        const double f = load_factor * f_ext[i] +
+        const double f = load_factor * f_ext[i] + f_held[i] +
                          (extra_force != nullptr ? (*extra_force)[i] : 0.0);
         if (f != 0)
           {

@@ -354,6 +354,15 @@ namespace rodnet
 
 
   void
+  DrModel::add_held_point_force(const unsigned int vertex, const Vector3 &)
+  {
+    throw std::invalid_argument(
+      "held point force at vertex " + std::to_string(vertex) +
+      ": dynamic relaxation ramps every load with the load factor");
+  }
+
+
+  void
   DrModel::add_distributed_force(const unsigned int rod,
                                  const Vector3     &force_per_length)
   {

@@ -112,6 +112,11 @@ namespace rodnet
     void
     add_point_force(unsigned int vertex, const Vector3 &force) override;
 
+    /// Refused: dynamic relaxation ramps all its loads with the load
+    /// factor (its residual scale is the ramped load vector's).
+    void
+    add_held_point_force(unsigned int vertex, const Vector3 &force) override;
+
     /// Force per unit undeformed length on rod @p rod, lumped to the nodes
     /// with half of each adjacent element (DeadLoads::vertex_forces()).
     void

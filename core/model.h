@@ -78,6 +78,11 @@ namespace rodnet
     virtual void
     add_point_force(unsigned int vertex, const Vector3 &force) = 0;
 
+    /// A dead force at its full value at every load factor
+    /// (LoadRamp::held).
+    virtual void
+    add_held_point_force(unsigned int vertex, const Vector3 &force) = 0;
+
     /// Force per unit undeformed length on rod @p rod (lumped_forces()).
     virtual void
     add_distributed_force(unsigned int   rod,
@@ -97,7 +102,10 @@ namespace rodnet
       for (const auto &f : spec.fixed_components)
         fix_components(f.name, f.vertex, f.mask, f.displacement);
       for (const auto &f : spec.point_forces)
-        add_point_force(f.vertex, f.force);
+        if (f.ramp == LoadRamp::held)
+          add_held_point_force(f.vertex, f.force);
+        else
+          add_point_force(f.vertex, f.force);
       for (const auto &f : spec.distributed_forces)
         add_distributed_force(f.rod, f.force_per_length);
     }

@@ -103,6 +103,15 @@ namespace rodnet
   }
 
   void
+  RodModel::add_held_point_force(const unsigned int vertex,
+                                 const Vector3     &force)
+  {
+    require_not_finalized("RodModel::add_held_point_force at vertex " +
+                          std::to_string(vertex));
+    held_loads.add_point_force(*network_, vertex, force);
+  }
+
+  void
   RodModel::add_distributed_force(const unsigned int rod,
                                   const Vector3     &force_per_length)
   {
@@ -212,25 +221,35 @@ namespace rodnet
 
     std::vector<AxisMoment> axis_moments;
     for (const AxisLoad &m : moments)
-      axis_moments.push_back({m.junction, m.axis, m.value});
+      axis_moments.push_back(
+        {m.junction, m.axis, m.value, m.ramp == LoadRamp::held});
     if (!axis_moments.empty())
       families.push_back(
         std::make_unique<AxisMomentFamily>(*layout_, std::move(axis_moments)));
     make_sparsity_pattern();
 
-    // Dead loads, distributed ones lumped by Voronoi lengths.
-    f_ext                             = create_vector();
-    const std::vector<Vector3> forces = loads.vertex_forces(*network_);
-    for (unsigned int v = 0; v < forces.size(); ++v)
-      for (unsigned int c = 0; c < 3; ++c)
-        f_ext[layout_->vertex_dof(v, c)] += forces[v][c];
-    f_ext.compress(dealii::VectorOperation::add);
+    f_ext  = force_vector(loads);
+    f_held = force_vector(held_loads);
     for (const auto &family : families)
       stencil_blocks.push_back(
         color_stencil_blocks(*family,
                              layout_->n_dofs(),
                              default_block_size(family->n_stencils())));
     finalized = true;
+  }
+
+
+  VectorType
+  RodModel::force_vector(const DeadLoads &dead_loads) const
+  {
+    // Distributed forces lumped by Voronoi lengths.
+    VectorType                 f      = create_vector();
+    const std::vector<Vector3> forces = dead_loads.vertex_forces(*network_);
+    for (unsigned int v = 0; v < forces.size(); ++v)
+      for (unsigned int c = 0; c < 3; ++c)
+        f[layout_->vertex_dof(v, c)] += forces[v][c];
+    f.compress(dealii::VectorOperation::add);
+    return f;
   }
 
 

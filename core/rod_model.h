@@ -182,6 +182,12 @@ namespace rodnet
     void
     add_point_force(unsigned int vertex, const Vector3 &force) override;
 
+    /// A point force at its full value at every load factor, ramped
+    /// neither by the load factor nor with the other loads (an
+    /// imperfection, LoadRamp::held).
+    void
+    add_held_point_force(unsigned int vertex, const Vector3 &force) override;
+
     /// Force per unit undeformed length on rod @p rod, lumped to the
     /// vertices by their Voronoi lengths (DeadLoads::vertex_forces()).
     void
@@ -195,10 +201,15 @@ namespace rodnet
      * state (AxisMomentFamily). The junction must have a free rotation:
      * finalize() refuses one whose rotation is held. A moment at a rod end
      * or inside a rod acts on a rotation handle there
-     * (RodNetwork::add_rotation_handle()).
+     * (RodNetwork::add_rotation_handle()). A moment with @p ramp
+     * LoadRamp::held keeps its full value at every load factor (-M
+     * theta_u(q), an imperfection).
      */
     void
-    add_moment(unsigned int junction, const Vector3 &axis, double moment);
+    add_moment(unsigned int   junction,
+               const Vector3 &axis,
+               double         moment,
+               LoadRamp       ramp = LoadRamp::ramped);
 
     /**
      * Turns junction @p junction about the unit @p axis by @p angle (rad)
@@ -540,7 +551,8 @@ namespace rodnet
     {
       return *materials[rod];
     }
-    /// External force vector at load factor 1.
+    /// External force vector at load factor 1: the ramped dead forces
+    /// (not the held ones, add_held_point_force()).
     const VectorType &
     external_force() const
     {
@@ -618,7 +630,8 @@ namespace rodnet
       bool concurrent_copier = false) const;
 
     /// Adds the dead load terms at @p load_factor (their factor
-    /// applied_load_factor(); and @p extra_force, if not null) to @p energy
+    /// applied_load_factor(); the held forces at full value; and
+    /// @p extra_force, if not null) to @p energy
     /// and, at the rows @p block (null: the model's own numbering), to @p
     /// residual (if not null).
     void
@@ -722,10 +735,14 @@ namespace rodnet
       unsigned int junction;
       Vector3      axis;
       double       value; ///< moment (N m) or angle (rad) at load factor 1
+      LoadRamp     ramp = LoadRamp::ramped; ///< moments only
     };
-    std::vector<AxisLoad>                     moments;
-    std::vector<AxisLoad>                     prescribed_rotations;
-    VectorType                                f_ext;
+    std::vector<AxisLoad> moments;
+    std::vector<AxisLoad> prescribed_rotations;
+    VectorType            f_ext;
+    /// The held point forces (add_held_point_force()) and their vector.
+    DeadLoads                                 held_loads;
+    VectorType                                f_held;
     InternalVariables                         history;
     double                                    step_length = 0;
     dealii::TrilinosWrappers::SparsityPattern sparsity;
@@ -741,6 +758,10 @@ namespace rodnet
 
     /// Fixes the multipliers of inextensible segments whose ends are both
     /// held and adds the inextensibility family for the others.
+    /// The force vector of @p dead_loads at load factor 1 (finalize()).
+    VectorType
+    force_vector(const DeadLoads &dead_loads) const;
+
     void
     add_inextensibility();
 

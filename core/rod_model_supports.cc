@@ -210,14 +210,26 @@ namespace rodnet
             moment.where + " is held by the clamp \"" + clamp->name +
             "\", which would take up the whole moment; load a free "
             "vertex, or prescribe a rotation of the clamp instead");
-        add_moment(moment.junction.value(), moment.axis, moment.value);
+        try
+          {
+            add_moment(moment.junction.value(),
+                       moment.axis,
+                       moment.value,
+                       moment.ramp);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            // The junction cannot take it: say which entry asked.
+            throw std::invalid_argument(moment.where + ": " + e.what());
+          }
       }
   }
 
   void
   RodModel::add_moment(const unsigned int junction,
                        const Vector3     &axis,
-                       const double       moment)
+                       const double       moment,
+                       const LoadRamp     ramp)
   {
     require_not_finalized("RodModel::add_moment at junction " +
                           std::to_string(junction));
@@ -227,7 +239,7 @@ namespace rodnet
                                   ": a " + to_string(j.kind) +
                                   " junction has no free rotation to load");
     require_unit_axis(axis, "moment at junction " + in_quotes(j.name));
-    moments.push_back({junction, axis, moment});
+    moments.push_back({junction, axis, moment, ramp});
   }
 
   void

@@ -11,6 +11,17 @@
 
 namespace rodnet
 {
+  /// How a load follows the load factor lambda.
+  enum class LoadRamp
+  {
+    /// lambda times its value at load factor 1 (unless the model holds
+    /// all its loads, RodModel::fix_loads()).
+    ramped,
+    /// Its full value at every load factor, whatever else lambda ramps:
+    /// an imperfection present from the first step on.
+    held
+  };
+
   /**
    * The supports and dead loads of a structure, in terms of its network
    * alone (rods, rod ends, vertices, junctions), at load factor 1: what a
@@ -52,12 +63,15 @@ namespace rodnet
       std::optional<unsigned int> junction;
       Vector3                     axis;
       double                      value;
+      /// Moments only: how the moment follows the load factor.
+      LoadRamp ramp = LoadRamp::ramped;
     };
 
     struct PointForce
     {
       unsigned int vertex;
       Vector3      force;
+      LoadRamp     ramp = LoadRamp::ramped;
     };
 
     /// A force per undeformed length on a whole rod (a weight: mass per

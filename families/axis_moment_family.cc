@@ -71,7 +71,7 @@ namespace rodnet
                                            reference.y(),
                                            reference.z()))
         .angle;
-    const double scale = -state.load_factor * m.moment;
+    const double scale = -(m.held ? 1.0 : state.load_factor) * m.moment;
     local.energy =
       scale *
       (at_reference + std::remainder(angle.angle - at_reference, 2 * M_PI));

@@ -8,12 +8,14 @@
 namespace rodnet
 {
   /// A moment @p moment (N m, at load factor 1) about the fixed unit
-  /// @p axis, applied at the quaternion of junction @p junction.
+  /// @p axis, applied at the quaternion of junction @p junction; a
+  /// @p held one keeps its full value at every load factor.
   struct AxisMoment
   {
     unsigned int junction;
     Vector3      axis;
     double       moment;
+    bool         held = false;
   };
 
   /**

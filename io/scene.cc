@@ -83,6 +83,26 @@ namespace rodnet
       return mask;
     }
 
+    /// Parses "fx, fy, fz".
+    Vector3
+    parse_force(const std::string &text, const std::string &entry)
+    {
+      const auto xyz = dealii::Utilities::split_string_list(text, ',');
+      try
+        {
+          if (xyz.size() != 3)
+            throw std::invalid_argument("");
+          const std::vector<double> f =
+            dealii::Utilities::string_to_double(xyz);
+          return Vector3(f[0], f[1], f[2]);
+        }
+      catch (const std::exception &)
+        {
+          throw std::invalid_argument("entry \"" + entry + "\": \"" + text +
+                                      "\" is not a force fx, fy, fz");
+        }
+    }
+
     /// Splits "vertex: rest" items of a ';'-separated list.
     std::vector<std::pair<std::string, std::string>>
     split_items(const std::string &text, const std::string &entry)
@@ -102,6 +122,25 @@ namespace rodnet
       return items;
     }
 
+    /// The junctions of @p network that tie rod ends (not the rotation
+    /// handles), for "Pinned vertices = junctions"; throws naming the
+    /// entry where there are none.
+    std::vector<unsigned int>
+    rod_end_junctions(const RodNetwork &network)
+    {
+      std::vector<unsigned int> junctions;
+      for (unsigned int j = 0; j < network.junctions().size(); ++j)
+        if (!network.junctions()[j].ends.empty())
+          junctions.push_back(j);
+      if (junctions.empty())
+        throw std::invalid_argument(
+          "entry \"Supports/Pinned vertices\": \"junctions\" pins every "
+          "junction, but the scene has none (" +
+          std::to_string(network.rods().size()) +
+          (network.rods().size() == 1 ? " rod" : " rods") +
+          " and no junction); name the vertices to pin, e.g. \"start, end\"");
+      return junctions;
+    }
   } // namespace
 
   std::string
@@ -149,7 +188,8 @@ namespace rodnet
                       "",
                       Anything(),
                       "Vertices whose position is fixed, e.g. \"end, 0:mid\". "
-                      "Vertices are [rod:]start|end|mid|<index>. [-]");
+                      "Vertices are [rod:]start|end|mid|<index>; "
+                      "\"junctions\": every junction, its rotation free. [-]");
     prm.declare_entry("Fixed components",
                       "",
                       Anything(),
@@ -225,6 +265,21 @@ namespace rodnet
                       dealii::Patterns::Bool(),
                       "Forces and moments at full value at every load "
                       "factor, which ramps only the rest. [-]");
+    prm.enter_subsection("Imperfections");
+    prm.declare_entry("Point forces",
+                      "",
+                      Anything(),
+                      "Small forces, as Loads/Point forces. [N]");
+    prm.declare_entry("Moments",
+                      "",
+                      Anything(),
+                      "Small moments, as Loads/Moments. [N m]");
+    prm.declare_entry("Magnitude",
+                      "held",
+                      dealii::Patterns::Selection("held|ramped"),
+                      "held: full from the first step on; ramped: scaled by "
+                      "the load factor. [-]");
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -369,16 +424,47 @@ namespace rodnet
     mass_per_length   = prm.get_double("Mass per length");
     natural_shape_ramp =
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
-    fixed_loads = prm.get_bool("Fixed loads");
-    if (fixed_loads && !natural_shape_ramp &&
-        prescribed_displacements.empty() && prescribed_rotations.empty() &&
-        !substrate.moves())
+    fixed_loads                        = prm.get_bool("Fixed loads");
+    const bool ramped_shape_or_support = natural_shape_ramp ||
+                                         !prescribed_displacements.empty() ||
+                                         !prescribed_rotations.empty() ||
+                                         substrate.moves();
+    if (fixed_loads && !ramped_shape_or_support)
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
         "has nothing to ramp; give Loads/Ramped natural shape, "
         "Supports/Prescribed displacements, Supports/Prescribed rotations "
         "or a strain of the Substrate");
+    prm.enter_subsection("Imperfections");
+    imperfection_forces  = prm.get("Point forces");
+    imperfection_moments = prm.get("Moments");
+    imperfection_ramp =
+      prm.get("Magnitude") == "held" ? LoadRamp::held : LoadRamp::ramped;
     prm.leave_subsection();
+    prm.leave_subsection();
+    check_imperfection_ramp(ramped_shape_or_support);
+  }
+
+  void
+  Scene::check_imperfection_ramp(const bool ramped_shape_or_support) const
+  {
+    const std::string entry = "entry \"Loads/Imperfections/Magnitude\": ";
+    if (imperfection_forces.empty() && imperfection_moments.empty())
+      return;
+    if (imperfection_ramp == LoadRamp::ramped && fixed_loads)
+      throw std::invalid_argument(
+        entry + "\"ramped\" contradicts Loads/Fixed loads = true, which "
+                "holds every load at its full value; set Magnitude = held");
+    const bool ramped_loads =
+      !fixed_loads && (!point_forces.empty() || !moments.empty() ||
+                       distributed_force.norm() > 0 || gravity.norm() > 0);
+    if (imperfection_ramp == LoadRamp::held && !ramped_shape_or_support &&
+        !ramped_loads)
+      throw std::invalid_argument(
+        entry + "the imperfections are held at their full value and the "
+                "load factor has nothing else to ramp; give the loads, "
+                "Loads/Ramped natural shape or a prescribed displacement or "
+                "rotation that they perturb, or set Magnitude = ramped");
   }
 
   void
@@ -639,7 +725,8 @@ namespace rodnet
       }
     for (const auto &[entry, text] :
          {std::make_pair("Supports/Prescribed rotations", prescribed_rotations),
-          std::make_pair("Loads/Moments", moments)})
+          std::make_pair("Loads/Moments", moments),
+          std::make_pair("Loads/Imperfections/Moments", imperfection_moments)})
       for (const auto &[name, value] : split_items(text, entry))
         {
           const RotationTarget target =
@@ -672,6 +759,12 @@ namespace rodnet
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "
         "only; use Solver/Method = newton or continuation");
+    if (imperfection_ramp == LoadRamp::held &&
+        !(imperfection_forces.empty() && imperfection_moments.empty()))
+      throw std::invalid_argument(
+        "entry \"Loads/Imperfections/Magnitude\": dynamic relaxation ramps "
+        "its loads only, and cannot hold the imperfections; set Magnitude = "
+        "ramped or use Solver/Method = newton or continuation");
     for (const SceneMaterial &group : scene_materials)
       if (group.inextensible)
         throw std::invalid_argument(
@@ -739,11 +832,19 @@ namespace rodnet
   Scene::add_rotational_loads(const RodNetwork &net,
                               SupportsAndLoads &spec) const
   {
-    for (const auto &[entry, text, list] :
+    for (const auto &[entry, text, list, ramp] :
          {std::make_tuple("Supports/Prescribed rotations",
                           &prescribed_rotations,
-                          &spec.rotations),
-          std::make_tuple("Loads/Moments", &moments, &spec.moments)})
+                          &spec.rotations,
+                          LoadRamp::ramped),
+          std::make_tuple("Loads/Moments",
+                          &moments,
+                          &spec.moments,
+                          LoadRamp::ramped),
+          std::make_tuple("Loads/Imperfections/Moments",
+                          &imperfection_moments,
+                          &spec.moments,
+                          imperfection_ramp)})
       for (const auto &[name, value] : split_items(*text, entry))
         {
           const auto [axis, amount] = parse_axis_value(value, entry);
@@ -756,7 +857,8 @@ namespace rodnet
              target.vertex,
              target.junction,
              axis,
-             rotation ? amount * M_PI / 180 : amount});
+             rotation ? amount * M_PI / 180 : amount,
+             ramp});
         }
   }
 
@@ -766,10 +868,17 @@ namespace rodnet
   {
     for (const std::string &v :
          dealii::Utilities::split_string_list(pinned_vertices, ','))
-      spec.fixed_components.push_back(
-        {"Pinned vertices: " + v,
-         select_vertex(net, v, "Supports/Pinned vertices"),
-         {{true, true, true}}});
+      if (v == "junctions")
+        for (const unsigned int j : rod_end_junctions(net))
+          spec.fixed_components.push_back(
+            {"Pinned vertices: @" + net.junctions()[j].name,
+             net.junctions()[j].vertex,
+             {{true, true, true}}});
+      else
+        spec.fixed_components.push_back(
+          {"Pinned vertices: " + v,
+           select_vertex(net, v, "Supports/Pinned vertices"),
+           {{true, true, true}}});
     for (const auto &[v, components] :
          split_items(fixed_components, "Supports/Fixed components"))
       spec.fixed_components.push_back(
@@ -817,26 +926,16 @@ namespace rodnet
   void
   Scene::add_forces(const RodNetwork &net, SupportsAndLoads &spec) const
   {
-    for (const auto &[v, value] :
-         split_items(point_forces, "Loads/Point forces"))
-      {
-        const auto xyz = dealii::Utilities::split_string_list(value, ',');
-        std::vector<double> f;
-        try
-          {
-            if (xyz.size() != 3)
-              throw std::invalid_argument("");
-            f = dealii::Utilities::string_to_double(xyz);
-          }
-        catch (const std::exception &)
-          {
-            throw std::invalid_argument("entry \"Loads/Point forces\": \"" +
-                                        value + "\" is not a force fx, fy, fz");
-          }
+    for (const auto &[entry, text, ramp] :
+         {std::make_tuple("Loads/Point forces",
+                          &point_forces,
+                          LoadRamp::ramped),
+          std::make_tuple("Loads/Imperfections/Point forces",
+                          &imperfection_forces,
+                          imperfection_ramp)})
+      for (const auto &[v, value] : split_items(*text, entry))
         spec.point_forces.push_back(
-          {select_vertex(net, v, "Loads/Point forces"),
-           Vector3(f[0], f[1], f[2])});
-      }
+          {select_vertex(net, v, entry), parse_force(value, entry), ramp});
     // The weight is a distributed force, added with it.
     for (unsigned int r = 0; r < net.rods().size(); ++r)
       {

@@ -260,6 +260,13 @@ namespace rodnet
     /// Subsection Loads, and "Steps" into solver.n_steps.
     void
     parse_loads(dealii::ParameterHandler &prm);
+    /// Throws naming Loads/Imperfections/Magnitude where the imperfections
+    /// cannot follow it: ramped while Loads/Fixed loads holds every load,
+    /// held while the load factor ramps nothing else
+    /// (@p ramped_shape_or_support: no natural shape, prescribed
+    /// displacement or rotation).
+    void
+    check_imperfection_ramp(bool ramped_shape_or_support) const;
     /// Subsection Solver: the method and the parameters of every method.
     void
     parse_solver(dealii::ParameterHandler &prm);
@@ -399,9 +406,14 @@ namespace rodnet
     /// Loads/Ramped natural shape, if set.
     std::optional<NaturalShapeRamp> natural_shape_ramp;
     /// Loads/Fixed loads.
-    bool        fixed_loads = false;
+    bool fixed_loads = false;
     /// Subsection Substrate: bonding sites that follow a substrate.
-    Substrate   substrate;
+    Substrate substrate;
+    /// Loads/Imperfections: point forces and moments (the syntax of
+    /// Loads/Point forces and Loads/Moments) and how they follow the load
+    /// factor.
+    std::string imperfection_forces, imperfection_moments;
+    LoadRamp    imperfection_ramp = LoadRamp::held;
     ProblemSize model_size;
     /// The entry a message about the model's size names
     /// (GeometryGenerator::size_entry()).

@@ -560,6 +560,69 @@ namespace
      1,
      "subsection \"Substrate\": the substrate is strained but nothing is "
      "bonded to it"},
+    // Pinning every junction where there is none.
+    {"pinned_junctions_of_a_rod",
+     with("Supports", "  set Pinned vertices = junctions\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Pinned vertices\": \"junctions\" pins every "
+     "junction, but the scene has none (1 rod and no junction)"},
+    // Imperfections that cannot act as their Magnitude says.
+    {"held_imperfection_alone",
+     with("Loads",
+          "  subsection Imperfections\n"
+          "    set Moments = end: 0,0,1 0.01\n  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Imperfections/Magnitude\": the imperfections are held "
+     "at their full value and the load factor has nothing else to ramp"},
+    {"ramped_imperfection_fixed_loads",
+     with("Supports", "  set Prescribed displacements = end: x=1e-3\n") +
+       section("Loads",
+               "  set Fixed loads = true\n"
+               "  subsection Imperfections\n"
+               "    set Point forces = end: 0, 1e-3, 0\n"
+               "    set Magnitude = ramped\n  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Imperfections/Magnitude\": \"ramped\" contradicts "
+     "Loads/Fixed loads = true"},
+    {"imperfection_moment_without_value",
+     with("Loads",
+          "  set Point forces = end: 0, 0, 1\n"
+          "  subsection Imperfections\n"
+          "    set Moments = end: 0,0,1\n  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Imperfections/Moments\": \"0,0,1\" should read "
+     "\"<ax>,<ay>,<az> <value>\""},
+    {"imperfection_moment_at_a_clamped_junction",
+     with("Geometry", "  set Generator = frame\n") +
+       section("Supports", "  set Clamped ends =\n") +
+       section("Loads",
+               "  set Point forces = @tip: 0, 0, 1e-3\n"
+               "  subsection Imperfections\n"
+               "    set Moments = clamp: 0,0,1 0.1\n  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Imperfections/Moments\": \"clamp\": moment at junction "
+     "\"clamp\": a clamped junction has no free rotation to load"},
+    {"held_imperfection_dynamic_relaxation",
+     with("Loads",
+          "  set Point forces = end: 0, 0, 1\n"
+          "  subsection Imperfections\n"
+          "    set Point forces = end: 0, 1e-3, 0\n  end\n") +
+       section("Solver", "  set Method = dynamic relaxation\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Imperfections/Magnitude\": dynamic relaxation ramps its "
+     "loads only"},
     {"unknown_probe_kind",
      with("Output", "  set Probes = a: angle end\n"),
      ".prm",

@@ -193,6 +193,8 @@ namespace
   const std::set<std::string> tested_elsewhere = {
     "deep_arch",          // validation/continuation
     "eigenstrain_column", // validation/eigenstrain_column
+    "fig8_pinned_lattice_a", // validation/pinned_lattice (4 x 4 cells)
+    "fig8_pinned_lattice_b", // validation/pinned_lattice (7 x 7 cells)
     "gridshell",          // validation/gridshell
     "helical_spring",     // validation/helical_spring
     "hexagonal_truss",    // validation/hexagonal_truss
