@@ -366,11 +366,12 @@ namespace rodnet
     natural_shape_ramp =
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
     fixed_loads = prm.get_bool("Fixed loads");
-    if (fixed_loads && !natural_shape_ramp &&
+    if (fixed_loads && !natural_shape_ramp && !ramps_activation() &&
         prescribed_displacements.empty() && prescribed_rotations.empty())
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
-        "has nothing to ramp; give Loads/Ramped natural shape, "
+        "has nothing to ramp; give Loads/Ramped natural shape, a ramped "
+        "activation field (Group <name>/Natural curvature, ...), "
         "Supports/Prescribed displacements or Supports/Prescribed rotations");
     prm.leave_subsection();
   }
@@ -561,6 +562,7 @@ namespace rodnet
     model->apply(supports_and_loads(model->network()));
     if (natural_shape_ramp)
       ramp_natural_shape(*model);
+    add_activation_fields(*model);
     if (fixed_loads)
       model->fix_loads();
     model->finalize();
@@ -661,6 +663,12 @@ namespace rodnet
         "entry \"" + natural_shape_ramp_entry +
         "\": the bending-active element of dynamic relaxation has no "
         "natural shape; use Solver/Method = newton or continuation");
+    for (const std::vector<ActivationItem> &items : rod_activation)
+      if (!items.empty())
+        throw std::invalid_argument(
+          "entry \"" + items.front().entry +
+          "\": the bending-active element of dynamic relaxation has no "
+          "natural shape; use Solver/Method = newton or continuation");
     if (fixed_loads)
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "

@@ -1,0 +1,211 @@
+// Activation fields of rod groups (issue 34, doc/morphing.md): an unloaded
+// rod, clamped at its start, takes its natural shape. L = 1, EA = 1e4,
+// EI1 = EI2 = GJ = 1, d1 = e_z: a natural curvature about d1 bends it in
+// the x-y plane, and its tip lies where the plane curve of that curvature
+// ends:
+//  - curvature kappa_0 on [a, b] (straight, circular arc, straight): the
+//    closed form, second order in the segment length with region ends
+//    between vertices (the hinges take the field integrated over their
+//    Voronoi cells);
+//  - axial eigenstrain eps on [a, b]: the rod grows by eps (b - a) to
+//    rounding (each segment takes the field's mean over it);
+//  - kappa(s) = k s / L, a clothoid: against a quadrature of its tangent
+//    angle k s^2 / (2 L), second order;
+//  - two items of one group, and the fields of two groups on a network's
+//    beam (its clamp a junction element, which takes the field over the
+//    half segment beside the node), add: piecewise circular arcs.
+#include <common/run_scene_text.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using namespace rodnet;
+  using namespace rodnet::testing;
+
+  /// A piece of a plane curve: its length and its constant curvature.
+  struct Piece
+  {
+    double length, curvature;
+  };
+
+  /// The end of the plane curve of @p pieces from the origin along e_x.
+  std::array<double, 2>
+  curve_end(const std::vector<Piece> &pieces)
+  {
+    double x = 0, y = 0, angle = 0;
+    for (const Piece &p : pieces)
+      {
+        const double turned = angle + p.curvature * p.length;
+        if (p.curvature == 0)
+          {
+            x += p.length * std::cos(angle);
+            y += p.length * std::sin(angle);
+          }
+        else
+          {
+            x += (std::sin(turned) - std::sin(angle)) / p.curvature;
+            y += (std::cos(angle) - std::cos(turned)) / p.curvature;
+          }
+        angle = turned;
+      }
+    return {{x, y}};
+  }
+
+  /// The scene text of the unloaded rod from (0,0,0) to (1,0,0) (or the
+  /// network @p network) with @p segments segments and the group
+  /// subsections @p groups, its start clamped, 4 load steps.
+  std::string
+  rod_scene(const unsigned int segments,
+            const std::string &groups,
+            const std::string &network = "")
+  {
+    std::ostringstream s;
+    s << "subsection Geometry\n";
+    if (!network.empty())
+      s << "  set Generator = network file\n  set Network file = " << network
+        << "\n";
+    else
+      s << "  set Director d1 = 0, 0, 1\n";
+    s << "  set Segments = " << segments
+      << "\nend\n"
+         "subsection Material\n  subsection linear elastic\n"
+         "    set Stiffness input = direct\n    set EA = 1e4\n"
+         "    set EI1 = 1\n    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
+      << groups;
+    if (network.empty())
+      s << "subsection Supports\n  set Clamped ends = start\nend\n";
+    s << "subsection Loads\n  set Steps = 4\nend\n"
+         "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+         "  set Probes = x: position "
+      << (network.empty() ? "end" : "@tip") << " x; y: position "
+      << (network.empty() ? "end" : "@tip") << " y\nend\n";
+    return s.str();
+  }
+
+  /// The tip of the run of @p scene at load factor 1.
+  std::array<double, 2>
+  tip_of(const std::string &scene, const std::string &directory)
+  {
+    const RunSummary run = run_scene_text(scene, directory);
+    EXPECT_TRUE(run.failure.empty()) << run.failure;
+    EXPECT_DOUBLE_EQ(run.rows.back()[0], 1.0);
+    return {{run.rows.back()[probe_column(run, "x")],
+             run.rows.back()[probe_column(run, "y")]}};
+  }
+
+  /// The distances of the tips of @p groups at 20, 80 and 320 segments
+  /// from @p exact; asserts the last is below @p tolerance and that they
+  /// fall at an observed order above 1.9. Where a region ends inside a
+  /// cell the error depends on where in the cell: refined by 4, the ends of
+  /// the regions below (a multiple of 1/30 plus 1/3 of a cell, or
+  /// multiples of 0.1) stay where they are in their cells.
+  void
+  expect_second_order(const std::string           &groups,
+                      const std::array<double, 2> &exact,
+                      const double                 tolerance,
+                      const std::string           &network = "")
+  {
+    std::vector<double> errors;
+    for (const unsigned int n : {20u, 80u, 320u})
+      {
+        const std::array<double, 2> tip =
+          tip_of(rod_scene(n, groups, network),
+                 "activation_" + std::to_string(n));
+        errors.push_back(std::hypot(tip[0] - exact[0], tip[1] - exact[1]));
+        std::cout << n << " segments: tip error " << errors.back() << "\n";
+      }
+    for (std::size_t i = 1; i < errors.size(); ++i)
+      {
+        const double order = std::log(errors[i - 1] / errors[i]) / std::log(4.);
+        EXPECT_GT(order, 1.9)
+          << "errors " << errors[i - 1] << ", " << errors[i];
+      }
+    EXPECT_LT(errors.back(), tolerance);
+  }
+
+  TEST(ActivationFields, NaturalCurvatureOnAnInterval)
+  {
+    // Region ends 2/3 of a cell past a vertex.
+    const double       a = 7. / 30, b = 22. / 30, kappa0 = 2.;
+    std::ostringstream groups;
+    groups << std::setprecision(17)
+           << "subsection Group all\n  set Natural curvature = 2, 0 on " << a
+           << " to " << b << "\nend\n";
+    expect_second_order(groups.str(),
+                        curve_end({{a, 0.}, {b - a, kappa0}, {1 - b, 0.}}),
+                        1.5e-6); // 9.4e-7 measured
+  }
+
+  TEST(ActivationFields, AxialEigenstrainLengthensItsRegion)
+  {
+    for (const unsigned int n : {20u, 37u})
+      {
+        const std::array<double, 2> tip =
+          tip_of(rod_scene(n,
+                           "subsection Group all\n  set Axial eigenstrain = "
+                           "0.01 on 0.23 to 0.71\nend\n"),
+                 "activation_eigenstrain");
+        EXPECT_NEAR(tip[0], 1 + 0.01 * (0.71 - 0.23), 1e-12) << n;
+        EXPECT_NEAR(tip[1], 0., 1e-12) << n;
+      }
+  }
+
+  TEST(ActivationFields, ClothoidOfAnExpression)
+  {
+    // Tangent angle k s^2 / (2 L), k = 3, L = 1: Simpson's rule on 2000
+    // intervals (error about 1e-14) for the exact tip.
+    const double          k = 3.;
+    const unsigned int    m = 2000;
+    std::array<double, 2> exact{{0., 0.}};
+    for (unsigned int i = 0; i <= m; ++i)
+      {
+        const double s = double(i) / m, w = (i == 0 || i == m ? 1. :
+                                             i % 2            ? 4. :
+                                                                2.) /
+                                            (3. * m);
+        exact[0] += w * std::cos(0.5 * k * s * s);
+        exact[1] += w * std::sin(0.5 * k * s * s);
+      }
+    expect_second_order(
+      "subsection Group all\n  set Natural curvature = 3*s/L, 0\nend\n",
+      exact,
+      5e-6); // 3.6e-6 measured
+  }
+
+  TEST(ActivationFields, ItemsOfOneGroupAdd)
+  {
+    // 1 on [0.2, 0.6] and 1 on [0.4, 0.8]: 1, 2, 1 on three pieces.
+    expect_second_order(
+      "subsection Group all\n  set Natural curvature = 1, 0 on 0.2 to 0.6; "
+      "1, 0 on 0.4 to 0.8\nend\n",
+      curve_end({{0.2, 0.}, {0.2, 1.}, {0.2, 2.}, {0.2, 1.}, {0.2, 0.}}),
+      1e-6); // 5.0e-7 measured
+  }
+
+  TEST(ActivationFields, GroupsOfOneBeamAdd)
+  {
+    // A beam clamped at the node "clamp", in group "bent" and in "all":
+    // 1 along it and 0.5 within 0.3 of its ends, 1.5, 1, 1.5.
+    const std::string network =
+      std::filesystem::absolute("activation_beam.net").string();
+    std::ofstream(network) << "node clamp 0 0 0 clamped\nnode tip 1 0 0\n"
+                              "beam clamp tip group bent d1 0 0 1\n";
+    expect_second_order(
+      "subsection Group all\n  set Natural curvature = 1, 0\nend\n"
+      "subsection Group bent\n  set Natural curvature = 0.5, 0 on near ends "
+      "0.3\nend\n",
+      curve_end({{0.3, 1.5}, {0.4, 1.}, {0.3, 1.5}}),
+      1.2e-6, // 7.4e-7 measured
+      network);
+  }
+} // namespace
