@@ -7,13 +7,38 @@
 #include <io/scene.h>
 
 #include <cmath>
+#include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace rodnet
 {
+  /// Holds std::cerr's output while it lives: deal.II writes muparser's
+  /// diagnosis of an expression there before it throws, and the entry's
+  /// message must say it once, on one line.
+  class MutedStandardError
+  {
+  public:
+    MutedStandardError()
+        : saved(std::cerr.rdbuf(held.rdbuf()))
+    {
+    }
+    ~MutedStandardError()
+    {
+      std::cerr.rdbuf(saved);
+    }
+    MutedStandardError(const MutedStandardError &) = delete;
+    MutedStandardError &
+    operator=(const MutedStandardError &) = delete;
+
+  private:
+    std::ostringstream held;
+    std::streambuf    *saved;
+  };
+
   /**
    * The function of the muparser expressions @p expressions (one per
    * component) in the variables @p variables, with the constant pi.
@@ -33,6 +58,7 @@ namespace rodnet
       std::make_shared<dealii::FunctionParser<dim>>(expressions.size());
     try
       {
+        const MutedStandardError muted;
         function->initialize(variables, expressions, {{"pi", M_PI}});
         for (unsigned int c = 0; c < expressions.size(); ++c)
           function->value(dealii::Point<dim>(), c);

@@ -8,7 +8,8 @@
 //    between vertices (the hinges take the field integrated over their
 //    Voronoi cells);
 //  - axial eigenstrain eps on [a, b]: the rod grows by eps (b - a) to
-//    rounding (each segment takes the field's mean over it);
+//    rounding (each segment takes the field's mean over it); at the first
+//    of four load steps by a quarter of that if ramped, by all if fixed;
 //  - kappa(s) = k s / L, a clothoid: against a quadrature of its tangent
 //    angle k s^2 / (2 L), second order;
 //  - two items of one group, and the fields of two groups on a network's
@@ -157,6 +158,28 @@ namespace
                  "activation_eigenstrain");
         EXPECT_NEAR(tip[0], 1 + 0.01 * (0.71 - 0.23), 1e-12) << n;
         EXPECT_NEAR(tip[1], 0., 1e-12) << n;
+      }
+  }
+
+  TEST(ActivationFields, FixedFieldsAreThereFromTheStart)
+  {
+    // At load factor 0.25 (the first of 4 steps) a ramped eigenstrain has
+    // grown the rod by a quarter of eps (b - a), a fixed one by all of it.
+    for (const bool fixed : {false, true})
+      {
+        const RunSummary run =
+          run_scene_text(rod_scene(20,
+                                   std::string(
+                                     "subsection Group all\n  set Axial "
+                                     "eigenstrain = 0.01 on 0.23 to 0.71") +
+                                     (fixed ? " fixed" : "") + "\nend\n"),
+                         "activation_fixed");
+        ASSERT_TRUE(run.failure.empty()) << run.failure;
+        ASSERT_DOUBLE_EQ(run.rows[1][0], 0.25);
+        EXPECT_NEAR(run.rows[1][probe_column(run, "x")],
+                    1 + (fixed ? 1. : 0.25) * 0.01 * (0.71 - 0.23),
+                    1e-12)
+          << fixed;
       }
   }
 
