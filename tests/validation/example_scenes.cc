@@ -57,7 +57,9 @@ namespace
             "  set Plot = false\nend\n";
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
-    prm.parse_input_from_string(text.str());
+    // As rodnet-run reads it: its "Group <name>" and "Material <name>"
+    // subsections declared first.
+    read_scene_text(prm, text.str(), name + ".prm", false);
     const Scene scene(prm, RODNET_SOURCE_DIR "/scenes");
     return run_scene(scene, "example_" + name, nullptr);
   }
