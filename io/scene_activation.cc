@@ -60,11 +60,12 @@ namespace rodnet
           catch (const std::invalid_argument &e)
             {
               const std::string what = e.what();
-              // The field's own messages name the entry already.
-              throw std::invalid_argument(
-                what.rfind("entry ", 0) == 0 ?
-                  what :
-                  "entry \"" + item.entry + "\": " + rod_name(r) + ": " + what);
+              // The field's own messages name the entry already, the
+              // model's the rod.
+              throw std::invalid_argument(what.rfind("entry ", 0) == 0 ?
+                                            what :
+                                            "entry \"" + item.entry +
+                                              "\": " + what);
             }
       }
   }

@@ -500,6 +500,14 @@ namespace
      "entry \"Group all/Axial eigenstrain\", item \"0.01 on middle\": the "
      "region after \"on\" should be \"all\", \"<s0> to <s1>\" or \"near "
      "ends <d>\""},
+    {"activation_inextensible",
+     with("Material", "  set Inextensible = true\n") +
+       section("Group all", "  set Axial eigenstrain = 0.01\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Axial eigenstrain\": rod 0 is inextensible: an axial "
+     "eigenstrain cannot change its length"},
     {"activation_expression",
      with("Group all", "  set Natural twist = 2*q\n"),
      ".prm",
