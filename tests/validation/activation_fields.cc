@@ -15,12 +15,16 @@
 //  - curvature 2 about d1 and twist rate 3 sin(pi s / L) along a rod
 //    clamped at its first segment's midpoint: against an RK4 integration
 //    of the Kirchhoff frame equations, second order;
+//  - the eigenstrain column of scenes/eigenstrain_column.prm with its
+//    eigenstrain a field that the continuation parameter ramps: the
+//    published bifurcation and deflections;
 //  - two items of one group, and the fields of two groups on a network's
 //    beam (its clamp a junction element, which takes the field over the
 //    half segment beside the node), add: piecewise circular arcs.
 #include <common/run_scene_text.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -303,5 +307,49 @@ namespace
       curve_end({{0.3, 1.5}, {0.4, 1.}, {0.3, 1.5}}),
       1.2e-6, // 7.4e-7 measured
       network);
+  }
+
+  TEST(ActivationFields, EigenstrainColumnDrivenByItsField)
+  {
+    // scenes/eigenstrain_column.prm (continuation, Lestringant & Kochmann
+    // Fig. 8c) with its eigenstrain an activation field of "Group all"
+    // instead of the material's, ramped by the continuation parameter: the
+    // bifurcation at e_cr = pi^2 I / (A L^2) and the table's midspan
+    // deflections over L (1 + e0) at e0 / e_cr = 2, 5, 10
+    // (../shared/VALIDATION.md), to the tolerances of
+    // validation/eigenstrain_column at 200 segments.
+    std::ifstream     file(RODNET_SOURCE_DIR "/scenes/eigenstrain_column.prm");
+    std::stringstream text;
+    text << file.rdbuf();
+    std::string scene = text.str();
+    for (const std::string line :
+         {"    set Axial eigenstrain = 0.0098696044010894\n",
+          "  set Ramped natural shape = eigenstrain\n"})
+      {
+        const std::size_t at = scene.find(line);
+        ASSERT_NE(at, std::string::npos) << line;
+        scene.erase(at, line.size());
+      }
+    scene.replace(scene.find("set Segments = 100"), 18, "set Segments = 200");
+    scene += "subsection Group all\n  set Axial eigenstrain = "
+             "0.0098696044010894\nend\n";
+    const RunSummary run = run_scene_text(scene, "activation_column");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    const double critical = M_PI * M_PI * 1e-4, e0 = 10 * critical;
+    EXPECT_NEAR(run.critical_load_factor * 10, 1.0, 1e-4);
+    const std::size_t w = probe_column(run, "w_mid");
+    for (const auto &[ratio, expected] :
+         {std::pair{2.0, 0.019979}, {5.0, 0.039862}, {10.0, 0.059556}})
+      {
+        const auto row =
+          std::find_if(run.rows.begin(), run.rows.end(), [&](const auto &r) {
+            return std::abs(r[0] - ratio * critical / e0) < 1e-12;
+          });
+        ASSERT_NE(row, run.rows.end()) << ratio;
+        EXPECT_NEAR(std::abs((*row)[w]) / (1 + ratio * critical) / expected,
+                    1.0,
+                    2e-4)
+          << ratio;
+      }
   }
 } // namespace
