@@ -10,6 +10,7 @@
 //  - axial eigenstrain eps on [a, b]: the rod grows by eps (b - a) to
 //    rounding (each segment takes the field's mean over it); at the first
 //    of four load steps by a quarter of that if ramped, by all if fixed;
+//    in time stepping with the load factor t^2, by t^2 eps (b - a);
 //  - kappa(s) = k s / L, a clothoid: against a quadrature of its tangent
 //    angle k s^2 / (2 L), second order;
 //  - curvature 2 about d1 and twist rate 3 sin(pi s / L) along a rod
@@ -190,6 +191,28 @@ namespace
                     1e-12)
           << fixed;
       }
+  }
+
+  TEST(ActivationFields, FieldsFollowTheLoadFactorInTime)
+  {
+    // Quasi-static time stepping, load factor t^2: a ramped eigenstrain
+    // grows the rod by t^2 eps (b - a) at every time.
+    std::string scene = rod_scene(
+      20,
+      "subsection Group all\n  set Axial eigenstrain = 0.01 on 0.23 to "
+      "0.71\nend\n"
+      "subsection Solver\n  set Method = time stepping\n"
+      "  subsection Time stepping\n    set Integrator = quasi-static\n"
+      "    set Time step = 0.25\n    set Load factor = t^2\n  end\nend\n");
+    scene.erase(scene.find("subsection Loads"), 37);
+    const RunSummary run = run_scene_text(scene, "activation_in_time");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_EQ(run.rows.size(), 5u);
+    for (const std::vector<double> &row : run.rows)
+      EXPECT_NEAR(row[probe_column(run, "x")],
+                  1 + row[0] * row[0] * 0.01 * (0.71 - 0.23),
+                  1e-12)
+        << "t = " << row[0];
   }
 
   TEST(ActivationFields, ClothoidOfAnExpression)
