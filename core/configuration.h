@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <core/activation_field.h>
 #include <core/dof_layout.h>
 #include <core/dof_values.h>
 #include <core/rod_network.h>
@@ -33,7 +34,10 @@ namespace rodnet
    * undeformed configuration for rods of NaturalShape::initial_geometry,
    * zero for NaturalShape::straight. They are fixed at construction: the
    * measures depend on positions and material frames only, not on the
-   * reference, so reset_reference() leaves them valid.
+   * reference, so reset_reference() leaves them valid. Activation fields
+   * (add_activation()) add to them, to the junction elements' (zero
+   * otherwise) and to the segments' axial eigenstrain, the ramped ones
+   * times the activation factor (follow_activation()).
    */
   class Configuration
   {
@@ -121,6 +125,40 @@ namespace rodnet
       return hinge_natural_strains[h];
     }
 
+    /// Natural strains of junction element @p e (integrated over its
+    /// Voronoi length): zero but for activation fields.
+    Vector3
+    junction_natural_strains(unsigned int e) const
+    {
+      return activation.empty() ? Vector3::Zero() : activation.junction_now[e];
+    }
+
+    /// Axial eigenstrain of the segment on cell @p cell from activation
+    /// fields (the material's own comes on top): the segment's material
+    /// sees its strain less this.
+    double
+    segment_eigenstrain(unsigned int cell) const
+    {
+      return activation.empty() ? 0. : activation.segment_now[cell];
+    }
+
+    /**
+     * Adds the activation field @p field to rod @p rod (doc/morphing.md):
+     * each hinge's natural strains gain the integral of (kappa_1, kappa_2,
+     * tau) over its Voronoi cell, each junction element's over its half
+     * segment, each segment's eigenstrain the mean over the segment. So a
+     * field uniform over a rod gives what a material's natural shape gives,
+     * and a field's total turn and stretch are kept exactly, wherever its
+     * region ends. @p ramped: scaled by the activation factor, else fixed.
+     */
+    void
+    add_activation(unsigned int rod, const ActivationField &field, bool ramped);
+
+    /// Puts the ramped activation fields at @p factor (the load factor);
+    /// nothing without activation fields or if they are at it.
+    void
+    follow_activation(double factor);
+
     /// Current director frame of the segment on cell @p cell.
     Quaternion
     director_frame(const dealii::TrilinosWrappers::MPI::Vector &u,
@@ -160,6 +198,35 @@ namespace rodnet
     closes_with_a_flip(const HingeStencil &h) const;
 
   private:
+    /// What activation fields add, fixed and ramped, and the sum at the
+    /// activation factor (add_activation()).
+    struct Activation
+    {
+      bool
+      empty() const
+      {
+        return segment_now.empty();
+      }
+      std::vector<Vector3> hinge_fixed, hinge_ramped, junction_fixed,
+        junction_ramped, junction_now;
+      std::vector<double> segment_fixed, segment_ramped, segment_now;
+      /// The natural strains of the geometry alone, per hinge.
+      std::vector<Vector3> hinge_geometric;
+      /// Per rod, its hinges and its junction elements; per cell, its
+      /// segment's place in its rod.
+      std::vector<std::vector<unsigned int>> rod_hinges, rod_junctions;
+      std::vector<unsigned int>              cell_position;
+      double                                 factor = 0.;
+    };
+
+    /// Sizes the activation storage (first add_activation()).
+    void
+    start_activation();
+
+    /// The undeformed arc length of rod @p rod's vertices, from its first.
+    std::vector<double>
+    vertex_arc_lengths(unsigned int rod) const;
+
     /// The reference frames of hinge @p i from the segments' frames.
     void
     set_hinge_frames(unsigned int i);
@@ -173,6 +240,7 @@ namespace rodnet
     std::vector<double>                 twist_at_reference;
     std::vector<HingeReference>         hinge_refs;
     std::vector<Vector3>                hinge_natural_strains;
+    Activation                          activation;
     std::vector<const JunctionKernel *> junction_kernels; ///< per element
     std::vector<JunctionReference>      junction_refs;
     std::vector<double>                 junction_lengths;

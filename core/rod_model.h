@@ -160,6 +160,18 @@ namespace rodnet
                        const std::vector<unsigned int> &rods);
 
     /**
+     * Adds the activation field @p field to rod @p rod
+     * (Configuration::add_activation(): natural curvatures, twist and axial
+     * eigenstrain along the rod), ramped with the load factor as the
+     * natural shape of ramp_natural_shape() is, or held fixed (before
+     * finalize()). Fields add. Throws std::invalid_argument naming the rod
+     * for an eigenstrain of an inextensible rod or any field of a
+     * developable ribbon.
+     */
+    void
+    add_activation(unsigned int rod, const ActivationField &field, bool ramped);
+
+    /**
      * Holds the dead loads and the applied moments at their full value at
      * every load factor, which then ramps only the prescribed displacements
      * and rotations and the ramped natural shape: a natural shape that grows

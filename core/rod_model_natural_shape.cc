@@ -1,4 +1,5 @@
-// RodModel: a natural shape ramped with the load factor.
+// RodModel: a natural shape ramped with the load factor, activation
+// fields.
 #include <core/rod_model.h>
 
 #include <stdexcept>
@@ -37,6 +38,21 @@ namespace rodnet
 
 
   void
+  RodModel::add_activation(const unsigned int     rod,
+                           const ActivationField &field,
+                           const bool             ramped)
+  {
+    require_not_finalized("RodModel::add_activation on rod " +
+                          std::to_string(rod));
+    if (rod >= materials.size())
+      throw std::invalid_argument("add_activation: there is no rod " +
+                                  std::to_string(rod) + " (the network has " +
+                                  std::to_string(materials.size()) + ")");
+    configuration_->add_activation(rod, field, ramped);
+  }
+
+
+  void
   RodModel::fix_loads()
   {
     loads_fixed = true;
@@ -46,6 +62,7 @@ namespace rodnet
   void
   RodModel::follow_natural_shape(const double load_factor) const
   {
+    configuration_->follow_activation(load_factor);
     if (given_materials.empty() || load_factor == ramped_at)
       return;
     for (std::size_t rod = 0; rod < given_materials.size(); ++rod)

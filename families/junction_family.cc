@@ -42,7 +42,7 @@ namespace rodnet
             *materials[stencil.rod],
             config.junction_voronoi_length(s),
             state.history.block(*this, s),
-            Vector3::Zero()};
+            config.junction_natural_strains(s)};
   }
 
 

@@ -19,7 +19,8 @@ namespace rodnet
    * junction's quaternion turns, bent and twisted like a hinge of the rod
    * and priced by its material. Stress free where built: the ghost frame
    * starts as the segment's (Configuration), so there are no natural
-   * strains. Internal variables: the material's hinge variables, per
+   * strains but those of activation fields
+   * (Configuration::junction_natural_strains()). Internal variables: the material's hinge variables, per
    * junction element.
    */
   class JunctionFamily : public ElementFamily

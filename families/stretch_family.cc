@@ -46,12 +46,12 @@ namespace rodnet
                      l0,
                      stretch,
                      with_hessian);
-    const MaterialResponse<1> w =
-      materials[stencil.rod]->segment_increment(stretch.strain,
-                                                l0,
-                                                state.history.block(*this, s),
-                                                state.time_step,
-                                                nullptr);
+    const MaterialResponse<1> w = materials[stencil.rod]->segment_increment(
+      stretch.strain - state.configuration.segment_eigenstrain(stencil.cell),
+      l0,
+      state.history.block(*this, s),
+      state.time_step,
+      nullptr);
     local.energy = w.energy;
     if (derivatives == Derivatives::energy)
       return;
@@ -88,10 +88,11 @@ namespace rodnet
                      l0,
                      stretch,
                      false);
-    materials[stencil.rod]->segment_increment(stretch.strain,
-                                              l0,
-                                              state.history.block(*this, s),
-                                              state.time_step,
-                                              updated);
+    materials[stencil.rod]->segment_increment(
+      stretch.strain - state.configuration.segment_eigenstrain(stencil.cell),
+      l0,
+      state.history.block(*this, s),
+      state.time_step,
+      updated);
   }
 } // namespace rodnet

@@ -11,7 +11,9 @@ namespace rodnet
 {
   /**
    * The segments of every extensible rod: axial strain l/l0 - 1 of each
-   * segment (elements/stretch_kernel.h) priced by its rod's material. The
+   * segment (elements/stretch_kernel.h), less the eigenstrain of
+   * activation fields (Configuration::segment_eigenstrain()), priced by its
+   * rod's material. The
    * segments of inextensible rods, which keep their length by a multiplier
    * (DofLayout::has_multiplier()), store no energy and are left out.
    * Internal variables: the material's segment variables, per segment.

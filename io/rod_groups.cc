@@ -108,6 +108,27 @@ namespace rodnet
                       "Segments of each straight beam of the group; 0: "
                       "Geometry/Segments. Networks only; a mesh's chain "
                       "keeps the segments the mesh gives it. [-]");
+    prm.declare_entry("Natural curvature",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Activation field: natural curvatures about d1 and d2 "
+                      "of the group's rods, ';'-separated items \"k1, k2 "
+                      "[on <region>] [fixed]\", each value a number or an "
+                      "expression of the arc length s and the rod's length "
+                      "L; region: all (the default), \"<s0> to <s1>\", "
+                      "\"near ends <d>\"; ramped with the load factor "
+                      "unless \"fixed\"; fields add (doc/morphing.md). "
+                      "[1/m]");
+    prm.declare_entry("Natural twist",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Activation field: natural twist rate, items as for "
+                      "Natural curvature with one value. [rad/m]");
+    prm.declare_entry("Axial eigenstrain",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Activation field: axial eigenstrain, items as for "
+                      "Natural curvature with one value. [-]");
   }
 
   RodGroupSettings
@@ -117,6 +138,10 @@ namespace rodnet
     group.name     = name;
     group.material = prm.get("Material");
     group.segments = prm.get_integer("Segments");
+    for (const ActivationEntry &entry : activation_entries())
+      for (ActivationItem &item :
+           parse_activation_items(name, entry, prm.get(entry.name)))
+        group.activation.push_back(std::move(item));
     if (!prm.get("Director d1").empty())
       {
         const std::string entry = "entry \"" + group_subsection_prefix + name +
@@ -150,6 +175,9 @@ namespace rodnet
               std::find(in.begin(), in.end(), group.name) == in.end())
             continue;
           RodSettings &rod = rods[r];
+          rod.activation.insert(rod.activation.end(),
+                                group.activation.begin(),
+                                group.activation.end());
           if (!group.material.empty())
             give(rod.material,
                  rod.material_group,

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <core/rod_network.h>
+#include <io/activation_fields.h>
 
 #include <functional>
 #include <optional>
@@ -31,6 +32,8 @@ namespace rodnet
     std::optional<Vector3> director;
     /// Segments of each beam of the group; 0: not given.
     unsigned int segments = 0;
+    /// The items of its activation entries (activation_entries()).
+    std::vector<ActivationItem> activation;
   };
 
   /// What the groups give one rod, and which group gave it (for messages).
@@ -41,6 +44,8 @@ namespace rodnet
     std::string            director_group;
     unsigned int           segments = 0;
     std::string            segments_group;
+    /// The activation items of all its groups: they add.
+    std::vector<ActivationItem> activation;
   };
 
   /// The title prefix of a group subsection, "Group ".
@@ -69,7 +74,8 @@ namespace rodnet
    * in "all"). Throws std::invalid_argument naming the subsection: a group
    * no rod belongs to (with the nearest names there are), and two groups
    * that give one rod two materials, two directors or two segment counts,
-   * naming the rod with @p describe_rod.
+   * naming the rod with @p describe_rod. Activation items of several
+   * groups of one rod add.
    */
   std::vector<RodSettings>
   resolve_rod_groups(

@@ -426,13 +426,15 @@ namespace rodnet
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
     fixed_loads                        = prm.get_bool("Fixed loads");
     const bool ramped_shape_or_support = natural_shape_ramp ||
+                                         ramps_activation() ||
                                          !prescribed_displacements.empty() ||
                                          !prescribed_rotations.empty() ||
                                          substrate.moves();
     if (fixed_loads && !ramped_shape_or_support)
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
-        "has nothing to ramp; give Loads/Ramped natural shape, "
+        "has nothing to ramp; give Loads/Ramped natural shape, a ramped "
+        "activation field (Group <name>/Natural curvature, ...), "
         "Supports/Prescribed displacements, Supports/Prescribed rotations "
         "or a strain of the Substrate");
     prm.enter_subsection("Imperfections");
@@ -654,6 +656,7 @@ namespace rodnet
     model->apply(supports_and_loads(model->network()));
     if (natural_shape_ramp)
       ramp_natural_shape(*model);
+    add_activation_fields(*model);
     if (fixed_loads)
       model->fix_loads();
     model->finalize();
@@ -755,6 +758,12 @@ namespace rodnet
         "entry \"" + natural_shape_ramp_entry +
         "\": the bending-active element of dynamic relaxation has no "
         "natural shape; use Solver/Method = newton or continuation");
+    for (const std::vector<ActivationItem> &items : rod_activation)
+      if (!items.empty())
+        throw std::invalid_argument(
+          "entry \"" + items.front().entry +
+          "\": the bending-active element of dynamic relaxation has no "
+          "natural shape; use Solver/Method = newton or continuation");
     if (fixed_loads)
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "

@@ -252,6 +252,25 @@ namespace rodnet
                const std::string                              &group,
                const std::function<std::string(unsigned int)> &describe);
 
+    /// "beam 3 (n1 to n2)" of a network, "rod 3" otherwise, for messages.
+    std::string
+    rod_name(unsigned int r) const;
+
+    /**
+     * Adds the activation fields of the groups (rod_activation) to
+     * @p model, each rod's arc length from its start (after the half
+     * segment behind it under a midpoint clamp). Throws
+     * std::invalid_argument naming the entry and the rod for a region past
+     * the rod's length, values not finite on the rod, an eigenstrain of an
+     * inextensible rod and a field on a developable ribbon.
+     */
+    void
+    add_activation_fields(RodModel &model) const;
+
+    /// Whether a group gives a rod a ramped activation field.
+    bool
+    ramps_activation() const;
+
     /// The index in scene_materials of the material @p rod takes.
     unsigned int
     material_index(const RodSettings &rod) const;
@@ -302,6 +321,9 @@ namespace rodnet
     /// The material (index in scene_materials) of every rod of
     /// build_network(), rod by rod.
     std::vector<unsigned int> rod_material;
+
+    /// The activation items of every rod of build_network(), rod by rod.
+    std::vector<std::vector<ActivationItem>> rod_activation;
 
     /// Segments of every rod of build_network(), rod by rod.
     std::vector<double>

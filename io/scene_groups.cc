@@ -35,20 +35,16 @@ namespace rodnet
                                                          rod_points.size());
     for (std::size_t b = 0; graph && b < graph->beams.size(); ++b)
       groups[b] = graph->beams[b].groups;
-    const auto describe = [this](const unsigned int r) {
-      if (!graph)
-        return "rod " + std::to_string(r);
-      const RodGraph::Beam &beam = graph->beams[r];
-      return "beam " + std::to_string(r) + " (" + graph->nodes[beam.from].name +
-             " to " + graph->nodes[beam.to].name + ")";
-    };
+    const auto describe = [this](const unsigned int r) { return rod_name(r); };
     const std::vector<RodSettings> rods =
       resolve_rod_groups(groups, settings, describe);
 
     rod_material.clear();
+    rod_activation.clear();
     for (unsigned int r = 0; r < rods.size(); ++r)
       {
         rod_material.push_back(material_index(rods[r]));
+        rod_activation.push_back(rods[r].activation);
         if (rods[r].director)
           orient_beam(r, *rods[r].director, rods[r].director_group, describe);
         if (rods[r].segments > 0)
@@ -64,6 +60,16 @@ namespace rodnet
           *name_in_title(scene_materials[m].subsection,
                          material_subsection_prefix) +
           "\") or remove it");
+  }
+
+  std::string
+  Scene::rod_name(const unsigned int r) const
+  {
+    if (!graph)
+      return "rod " + std::to_string(r);
+    const RodGraph::Beam &beam = graph->beams[r];
+    return "beam " + std::to_string(r) + " (" + graph->nodes[beam.from].name +
+           " to " + graph->nodes[beam.to].name + ")";
   }
 
   void

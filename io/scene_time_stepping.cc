@@ -2,6 +2,7 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <io/parsed_function.h>
 #include <io/scene.h>
 #include <io/scene_entries.h>
 
@@ -13,45 +14,6 @@ namespace rodnet
   {
     using scene_entries::number;
     using scene_entries::time_stepping_section;
-
-    /**
-     * The function of the ';'-separated muparser expressions @p text
-     * (one per component) in the variables @p variables, with the constant
-     * pi. Muparser reads
-     * an expression when it is first evaluated, so every component is
-     * evaluated once at the origin here, which makes a syntax error or an
-     * unknown name an error of the entry @p entry rather than of the run.
-     */
-    template <int dim>
-    std::shared_ptr<const dealii::FunctionParser<dim>>
-    parse_function(const std::string &text,
-                   const std::string &variables,
-                   const unsigned int n_components,
-                   const std::string &entry)
-    {
-      const std::vector<std::string> expressions =
-        dealii::Utilities::split_string_list(text, ';');
-      if (expressions.size() != n_components)
-        throw std::invalid_argument(
-          "entry \"" + entry + "\": \"" + text + "\" should be " +
-          std::to_string(n_components) + " expression(s) of " + variables +
-          " separated by ';'");
-      auto function =
-        std::make_shared<dealii::FunctionParser<dim>>(n_components);
-      try
-        {
-          function->initialize(variables, expressions, {{"pi", M_PI}});
-          for (unsigned int c = 0; c < n_components; ++c)
-            function->value(dealii::Point<dim>(), c);
-        }
-      catch (const std::exception &e)
-        {
-          throw std::invalid_argument("entry \"" + entry + "\": \"" + text +
-                                      "\" is not an expression of " +
-                                      variables + ": " + error_message(e));
-        }
-      return function;
-    }
 
     /// The load factor of the expression of entry "Load factor" of
     /// @p prm: throws naming the entry where it is not finite.

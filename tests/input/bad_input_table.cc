@@ -100,8 +100,9 @@ namespace
     // A developable ribbon built curved and stress free.
     {"curved_wunderlich_ribbon",
      valid_cantilever +
-       section("Geometry",
-               "  set Generator = arc\n  set Natural shape = initial geometry\n") +
+       section(
+         "Geometry",
+         "  set Generator = arc\n  set Natural shape = initial geometry\n") +
        section("Material",
                "  set Model = wunderlich ribbon\n"
                "  subsection wunderlich ribbon\n"
@@ -633,6 +634,60 @@ namespace
      "moment <junction> <x|y|z> [N m], position <vertex> <x|y|z> [m], "
      "reaction <vertex> <x|y|z> [N], rotation <junction> <ax>,<ay>,<az> "
      "[rad]"},
+    // Activation fields (doc/morphing.md) on the cantilever of length 1.
+    {"activation_past_the_rod",
+     with("Group all", "  set Natural curvature = 1, 0 on 0.5 to 1.5\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural curvature\", item \"1, 0 on 0.5 to 1.5\": "
+     "the region reaches s = 1.5, past the end of rod 0 (length 1)"},
+    {"activation_unknown_group",
+     with("Group x-beams", "  set Natural twist = 1\n"),
+     ".prm",
+     "",
+     1,
+     "subsection \"Group x-beams\": no rod is in group \"x-beams\"; the "
+     "groups of this geometry are \"all\""},
+    {"activation_not_finite",
+     with("Group all", "  set Natural curvature = 1/(s-0.5), 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural curvature\", item \"1/(s-0.5), 0\": the "
+     "value is inf at s = 0.5 of rod 0; give values finite on the whole "
+     "region"},
+    {"activation_values",
+     with("Group all", "  set Natural curvature = 1 on 0 to 0.5\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural curvature\", item \"1 on 0 to 0.5\": give 2 "
+     "values separated by ','"},
+    {"activation_region",
+     with("Group all", "  set Axial eigenstrain = 0.01 on middle\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Axial eigenstrain\", item \"0.01 on middle\": the "
+     "region after \"on\" should be \"all\", \"<s0> to <s1>\" or \"near "
+     "ends <d>\""},
+    {"activation_inextensible",
+     with("Material", "  set Inextensible = true\n") +
+       section("Group all", "  set Axial eigenstrain = 0.01\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Axial eigenstrain\": rod 0 is inextensible: an axial "
+     "eigenstrain cannot change its length"},
+    {"activation_expression",
+     with("Group all", "  set Natural twist = 2*q\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural twist\": \"2*q\" is not an expression of "
+     "s,L: Parsing Error at Column 1. The parser said: Unexpected token "
+     "\"q\" found at position 2."},
   };
 
   class BadInputTable : public ::testing::TestWithParam<BadInput>

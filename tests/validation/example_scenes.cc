@@ -57,6 +57,8 @@ namespace
             "  set Plot = false\nend\n";
     dealii::ParameterHandler prm;
     Scene::declare_parameters(prm);
+    // As rodnet-run reads it: its "Group <name>" and "Material <name>"
+    // subsections declared first.
     read_scene_text(prm, text.str(), name + ".prm", false);
     const Scene scene(prm, RODNET_SOURCE_DIR "/scenes");
     return run_scene(scene, "example_" + name, nullptr);

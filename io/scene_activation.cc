@@ -1,0 +1,72 @@
+#include <io/activation_fields.h>
+#include <io/scene.h>
+
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    /// The undeformed length of the polygon of rod @p rod of @p network,
+    /// and the length of its first segment.
+    std::pair<double, double>
+    polygon_lengths(const RodNetwork &network, const Rod &rod)
+    {
+      double length = 0., first = 0.;
+      for (unsigned int j = 0; j < rod.segments.size(); ++j)
+        {
+          const double l =
+            (network.vertex(rod.vertices[(j + 1) % rod.vertices.size()]) -
+             network.vertex(rod.vertices[j]))
+              .norm();
+          length += l;
+          if (j == 0)
+            first = l;
+        }
+      return {length, first};
+    }
+  } // namespace
+
+  bool
+  Scene::ramps_activation() const
+  {
+    for (const std::vector<ActivationItem> &items : rod_activation)
+      for (const ActivationItem &item : items)
+        if (item.ramped)
+          return true;
+    return false;
+  }
+
+  void
+  Scene::add_activation_fields(RodModel &model) const
+  {
+    const RodNetwork &network = model.network();
+    for (unsigned int r = 0; r < rod_activation.size(); ++r)
+      {
+        if (rod_activation[r].empty())
+          continue;
+        const auto [polygon, first] =
+          polygon_lengths(network, network.rods()[r]);
+        // Under a midpoint clamp the rod starts half its first segment in.
+        const double offset = midpoint_clamp ? 0.5 * first : 0.;
+        for (const ActivationItem &item : rod_activation[r])
+          try
+            {
+              model.add_activation(
+                r,
+                activation_field(item, polygon - offset, offset, rod_name(r)),
+                item.ramped);
+            }
+          catch (const std::invalid_argument &e)
+            {
+              const std::string what = e.what();
+              // The field's own messages name the entry already, the
+              // model's the rod.
+              throw std::invalid_argument(what.rfind("entry ", 0) == 0 ?
+                                            what :
+                                            "entry \"" + item.entry +
+                                              "\": " + what);
+            }
+      }
+  }
+} // namespace rodnet
