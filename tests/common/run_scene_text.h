@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rodnet::testing
@@ -27,6 +28,29 @@ namespace rodnet::testing
     read_scene_text(prm, prm_text, "scene", false);
     const Scene scene(prm);
     return run_scene(scene, output_directory, nullptr);
+  }
+
+  /// The shipped scene scenes/@p name with each "set <entry> = ..." line of
+  /// @p changes (entry, value) replaced; throws naming an entry the scene
+  /// does not set.
+  inline std::string
+  shipped_scene(const std::string                                      &name,
+                const std::vector<std::pair<std::string, std::string>> &changes)
+  {
+    std::ifstream     file(RODNET_SOURCE_DIR "/scenes/" + name);
+    std::stringstream scene;
+    scene << file.rdbuf();
+    std::string text = scene.str();
+    for (const auto &[entry, value] : changes)
+      {
+        const std::size_t start = text.find("set " + entry + " =");
+        if (start == std::string::npos)
+          throw std::invalid_argument("scenes/" + name + " sets no \"" + entry +
+                                      "\"");
+        const std::size_t end = text.find('\n', start);
+        text.replace(start, end - start, "set " + entry + " = " + value);
+      }
+    return text;
   }
 
   /// The column of probe @p name in @p summary's rows.

@@ -28,25 +28,6 @@ namespace
 
   const double critical_eigenstrain = M_PI * M_PI * 1e-4; // I / A = 1e-4
 
-  /// scenes/eigenstrain_column.prm with each "set <entry> = ..." line of
-  /// @p changes (entry, value) replaced.
-  std::string
-  column_scene(const std::vector<std::pair<std::string, std::string>> &changes)
-  {
-    std::ifstream     file(RODNET_SOURCE_DIR "/scenes/eigenstrain_column.prm");
-    std::stringstream scene;
-    scene << file.rdbuf();
-    std::string text = scene.str();
-    for (const auto &[entry, value] : changes)
-      {
-        const std::size_t start = text.find("set " + entry + " =");
-        EXPECT_NE(start, std::string::npos) << entry;
-        const std::size_t end = text.find('\n', start);
-        text.replace(start, end - start, "set " + entry + " = " + value);
-      }
-    return text;
-  }
-
   /// The row of @p summary at load factor @p lambda (landed on exactly).
   const std::vector<double> &
   row_at(const RunSummary &summary, const double lambda)
@@ -61,9 +42,10 @@ namespace
   {
     // At N = 100 / 200: bifurcation -8.2e-5 / -2e-5 off e_cr (N^-2); the
     // deflections within 1.1e-4 of the table at N = 100.
-    const RunSummary summary =
-      rodnet::testing::run_scene_text(column_scene({{"Segments", "200"}}),
-                                      "eigenstrain_column_output");
+    const RunSummary summary = rodnet::testing::run_scene_text(
+      rodnet::testing::shipped_scene("eigenstrain_column.prm",
+                                     {{"Segments", "200"}}),
+      "eigenstrain_column_output");
     ASSERT_TRUE(summary.failure.empty()) << summary.failure;
     const double e0 = 10 * critical_eigenstrain; // at load factor 1
     EXPECT_NEAR(summary.critical_load_factor * e0 / critical_eigenstrain,
@@ -102,16 +84,18 @@ namespace
     value << largest;
     // Buckling at load factor 1.4e-6: a first step far below it.
     const RunSummary summary = rodnet::testing::run_scene_text(
-      column_scene({{"EA", "1e6"},
-                    {"Axial eigenstrain", value.str()},
-                    {"Output load factors", outputs.str()},
-                    // (and two entries the scene leaves at their defaults)
-                    {"Load factor range",
-                     "-1e-3, 1\n    set Initial step = 1e-7\n"
-                     "    set Minimum step = 1e-9"},
-                    {"Probes",
-                     "w_mid: position mid y; x1: position 1 x; y1: "
-                     "position 1 y; thrust: reaction start x"}}),
+      rodnet::testing::shipped_scene(
+        "eigenstrain_column.prm",
+        {{"EA", "1e6"},
+         {"Axial eigenstrain", value.str()},
+         {"Output load factors", outputs.str()},
+         // (and two entries the scene leaves at their defaults)
+         {"Load factor range",
+          "-1e-3, 1\n    set Initial step = 1e-7\n"
+          "    set Minimum step = 1e-9"},
+         {"Probes",
+          "w_mid: position mid y; x1: position 1 x; y1: "
+          "position 1 y; thrust: reaction start x"}}),
       "eigenstrain_column_inextensible");
     ASSERT_TRUE(summary.failure.empty()) << summary.failure;
     using rodnet::testing::probe_column;

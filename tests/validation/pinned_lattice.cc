@@ -105,26 +105,6 @@ namespace
     return alpha;
   }
 
-  /// The scene @p name of scenes/ with each "set <entry> = ..." line of
-  /// @p changes (entry, value) replaced.
-  std::string
-  fig8_scene(const std::string                                      &name,
-             const std::vector<std::pair<std::string, std::string>> &changes)
-  {
-    std::ifstream     file(RODNET_SOURCE_DIR "/scenes/" + name);
-    std::stringstream scene;
-    scene << file.rdbuf();
-    std::string text = scene.str();
-    for (const auto &[entry, value] : changes)
-      {
-        const std::size_t start = text.find("set " + entry + " =");
-        EXPECT_NE(start, std::string::npos) << entry;
-        const std::size_t end = text.find('\n', start);
-        text.replace(start, end - start, "set " + entry + " = " + value);
-      }
-    return text;
-  }
-
   /// "t_i_j: rotation n_i_j 0,0,1" for every junction of @p cells x @p cells.
   std::string
   every_joint_rotation(const unsigned int cells)
@@ -171,11 +151,11 @@ namespace
   lattice_a_error(const unsigned int segments)
   {
     const RunSummary summary = rodnet::testing::run_scene_text(
-      fig8_scene("fig8_pinned_lattice_a.prm",
-                 {{"Cells", "4, 4"},
-                  {"Segments", std::to_string(segments)},
-                  {"Moments", "n_2_2: 0,0,1 0.1"},
-                  {"Probes", every_joint_rotation(4)}}),
+      rodnet::testing::shipped_scene("fig8_pinned_lattice_a.prm",
+                                     {{"Cells", "4, 4"},
+                                      {"Segments", std::to_string(segments)},
+                                      {"Moments", "n_2_2: 0,0,1 0.1"},
+                                      {"Probes", every_joint_rotation(4)}}),
       "pinned_lattice_a");
     EXPECT_TRUE(summary.failure.empty()) << summary.failure;
     double worst = 0;
@@ -234,8 +214,8 @@ namespace
     // critical eigenstrain and the continuation ends in one domain.)
     const unsigned int cells   = 11;
     const RunSummary   summary = rodnet::testing::run_scene_text(
-      fig8_scene("fig8_pinned_lattice_b.prm",
-                 {{"Probes", every_joint_rotation(cells)}}),
+      rodnet::testing::shipped_scene("fig8_pinned_lattice_b.prm",
+                                     {{"Probes", every_joint_rotation(cells)}}),
       "pinned_lattice_b");
     ASSERT_TRUE(summary.failure.empty()) << summary.failure;
     // A stable equilibrium: a wall through a junction column is not.
