@@ -68,8 +68,7 @@ namespace
   Footprint
   run_lattice(const unsigned int segments)
   {
-    std::ifstream     file(RODNET_SOURCE_DIR
-                       "/scenes/fig7_shrinking_lattice.prm");
+    std::ifstream file(RODNET_SOURCE_DIR "/scenes/fig7_shrinking_lattice.prm");
     std::stringstream scene;
     scene << file.rdbuf()
           << "subsection Geometry\n  set Cells = 2, 2\n  set Segments = "
@@ -89,8 +88,8 @@ namespace
       rodnet::testing::run_scene_text(scene.str(), "fig7_shrinking_lattice");
     EXPECT_TRUE(run.failure.empty()) << run.failure;
     EXPECT_NEAR(run.final_load_factor, 1., 1e-12);
-    const std::vector<double> &last = run.rows.back();
-    const auto value = [&](const std::string &name) {
+    const std::vector<double> &last  = run.rows.back();
+    const auto                 value = [&](const std::string &name) {
       return last[rodnet::testing::probe_column(run, name)];
     };
     return {(value("east") - value("west")) / (2 * L),
@@ -114,8 +113,8 @@ namespace
         const Footprint f = run_lattice(segments);
         std::cout << segments << " segments: width " << f.width_x << ", "
                   << f.width_y << ", sag " << f.sag_x_beam << ", "
-                  << f.sag_y_beam << ", corner z " << f.corner_z
-                  << ", energy " << f.energy << std::endl;
+                  << f.sag_y_beam << ", corner z " << f.corner_z << ", energy "
+                  << f.energy << std::endl;
         // Both families alike: the quarter turn about e_z maps the
         // x-beams' frames onto the y-beams'.
         EXPECT_NEAR(f.width_y, f.width_x, 1e-9) << segments;
@@ -128,8 +127,8 @@ namespace
         width_errors.push_back(std::abs(f.width_x - chord));
         sag_errors.push_back(std::abs(f.sag_x_beam - height));
       }
-    const double width_order = std::log(width_errors[1] / width_errors[2]) /
-                               std::log(3.),
+    const double width_order =
+                   std::log(width_errors[1] / width_errors[2]) / std::log(3.),
                  sag_order =
                    std::log(sag_errors[1] / sag_errors[2]) / std::log(3.);
     std::cout << "errors of the width: " << width_errors[0] << ", "
