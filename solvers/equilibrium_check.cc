@@ -117,6 +117,27 @@ namespace rodnet
           correction[d] -= mu[a] * border.solved[a][d];
       return correction;
     }
+
+    /// @p residual over @p loads, 0 where there are no loads.
+    double
+    out_of_balance(const double residual, const double loads)
+    {
+      return loads > 0 ? residual / loads : 0;
+    }
+
+    /// Says that the residual of @p result, @p ratio times its loads, does
+    /// not resolve them.
+    std::string
+    unresolved_loads_text(const JudgedResult &result, const double ratio)
+    {
+      std::ostringstream text;
+      text << "the residual (" << result.residual.force << " N, "
+           << result.residual.moment << " N m) is " << ratio
+           << " of the loads, which this model's rounding does not resolve "
+              "(the response to them is at the rounding of the positions; "
+              "stiffnesses and loads in other units may resolve them); ";
+      return text.str();
+    }
   } // namespace
 
   unsigned int
@@ -177,8 +198,14 @@ namespace rodnet
       {
         check.rounding_uncertainty = std::numeric_limits<double>::infinity();
       }
-    if (!(check.rounding_uncertainty <= uncertainty_limit))
+    // A residual at the floor but not below the loads: the loads are too
+    // small for this model's rounding, however small the correction.
+    const double unbalanced =
+      std::max(out_of_balance(result.residual.force, result.scale.force),
+               out_of_balance(result.residual.moment, result.scale.moment));
+    if (!(check.rounding_uncertainty <= uncertainty_limit) || unbalanced > 1e-3)
       check.rounding_warning =
+        (unbalanced > 1e-3 ? unresolved_loads_text(result, unbalanced) : "") +
         criterion.rounding_hint(tangent, result.noise, result.scale);
     return check;
   }
