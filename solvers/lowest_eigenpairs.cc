@@ -1,4 +1,5 @@
 #include <solvers/lowest_eigenpairs.h>
+#include <solvers/solver_failure.h>
 #include <solvers/stability.h>
 
 #include <Eigen/Eigenvalues>
@@ -156,9 +157,8 @@ namespace rodnet
               return pairs;
             }
           if (grown + b > max_columns)
-            throw std::runtime_error(
-              "the sparse eigen-solver did not converge in " +
-              std::to_string(grown) + " Lanczos vectors");
+            throw SolverFailure("the sparse eigen-solver did not converge in " +
+                                std::to_string(grown) + " Lanczos vectors");
         }
     }
 
@@ -288,7 +288,7 @@ namespace rodnet
           factorization =
             factorize(tangent, constraints, multipliers, sigma, pairs);
           if (factorization->inertia().zero > 0)
-            throw std::runtime_error(
+            throw SolverFailure(
               "the sparse eigen-solver cannot factorize the tangent");
           if (positive_definite(*factorization))
             return factorization;
@@ -310,8 +310,8 @@ namespace rodnet
           if (positive_definite(*factorization))
             return factorization;
         }
-      throw std::runtime_error("the sparse eigen-solver found no shift below "
-                               "the tangent's eigenvalues");
+      throw SolverFailure("the sparse eigen-solver found no shift below "
+                          "the tangent's eigenvalues");
     }
   } // namespace
 
@@ -335,7 +335,7 @@ namespace rodnet
       }
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(dense);
     if (solver.info() != Eigen::Success)
-      throw std::runtime_error("the dense eigenvalue solver did not converge");
+      throw SolverFailure("the dense eigenvalue solver did not converge");
     const Eigen::Index count = std::min<Eigen::Index>(k, dense.rows());
     Eigenpairs         pairs; // Eigen's eigenvalues increase
     append(pairs,
@@ -407,7 +407,7 @@ namespace rodnet
             return pairs;
           }
         if (attempt == 2)
-          throw std::runtime_error(
+          throw SolverFailure(
             "the sparse eigen-solver misses eigenvalues of multiplicity "
             "above " +
             std::to_string(block));

@@ -69,7 +69,7 @@ namespace rodnet
    *     the run is repeated with blocks twice as big.
    *
    * Throws std::invalid_argument if every DoF is constrained, and
-   * std::runtime_error with the reason where no shift can be factorized or
+   * SolverFailure with the reason where no shift can be factorized or
    * the iteration does not converge within 10 k + 100 Lanczos vectors
    * (memory: that many vectors of the free DoFs). The dense solver also
    * takes k of a quarter of the free DoFs or more.

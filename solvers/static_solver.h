@@ -4,9 +4,10 @@
 #include <core/rod_model.h>
 #include <solvers/equilibrium_check.h>
 #include <solvers/newton_solver.h>
-#include <solvers/tangent_factorization.h>
 #include <solvers/residual_criterion.h>
+#include <solvers/solver_failure.h>
 #include <solvers/strain_range.h>
+#include <solvers/tangent_factorization.h>
 
 #include <cmath>
 #include <functional>
@@ -16,14 +17,6 @@
 
 namespace rodnet
 {
-  /// Thrown when a load step cannot be completed even at the smallest
-  /// allowed step; earlier converged steps have already been reported.
-  class SolverFailure : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
   /**
    * Static equilibrium by load stepping: the load factor goes from 0 to 1
    * in equal steps, each solved by NewtonSolver from the previous
@@ -244,9 +237,9 @@ namespace rodnet
     /// Where the load path of run() stands between steps.
     struct LoadPath
     {
-      double       lambda = 0; ///< load factor of the last equilibrium
-      double       step   = 0; ///< length of the next attempt
-      unsigned int count  = 0; ///< converged steps
+      double       lambda          = 0; ///< load factor of the last equilibrium
+      double       step            = 0; ///< length of the next attempt
+      unsigned int count           = 0; ///< converged steps
       bool         previous_stable = true;
       /// The equilibrium before the last converged step.
       VectorType previous;
