@@ -28,7 +28,9 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -210,13 +212,13 @@ namespace
                                   std::to_string(bump);
     const std::string mesh = popup_mesh(segments, bump, directory);
     const RunSummary  run  = run_scene_text(
-      shipped_scene(
-        "fig9_popup.prm",
-        {{"Mesh file", mesh},
-           {"Picture field", "none"},
-           {"Probes",
-            "apex1: position @centre z; junction2: position @r1 z; "
-              "junction2_r4: position @r4 z; apex2: position 10:mid z"}}) +
+      shipped_scene("fig9_popup.prm",
+                    {{"Mesh file", mesh},
+                       {"Picture field", "none"},
+                       {"Probes",
+                        "apex1: position @centre z; junction2: position @r1 z; "
+                          "junction2_r4: position @r4 z; apex2: position 10:mid z; "
+                          "site: position @c1 x"}}) +
         "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
           "end\n",
       directory);
@@ -235,6 +237,11 @@ namespace
         result.apex1[i]     = row.at(probe_column(run, "apex1"));
         result.junction2[i] = row.at(probe_column(run, "junction2"));
         result.apex2[i]     = row.at(probe_column(run, "apex2"));
+        // The bonding site of c1, bonded at x = 1, follows the substrate
+        // to 1 - strain; its end vertex, half a segment beyond, rigidly.
+        EXPECT_NEAR(row.at(probe_column(run, "site")),
+                    1 - strains[i] + 0.5 / (segments - 0.5),
+                    1e-12);
         // The star's six-fold symmetry: opposite corners at one height.
         EXPECT_NEAR(row.at(probe_column(run, "junction2_r4")),
                     result.junction2[i],
