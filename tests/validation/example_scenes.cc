@@ -198,6 +198,7 @@ namespace
     "fig7_shrinking_lattice", // validation/fig7_shrinking_lattice
     "fig8_pinned_lattice_a",  // validation/pinned_lattice (4 x 4 cells)
     "fig8_pinned_lattice_b",  // validation/pinned_lattice (7 x 7 cells)
+    "fig9_popup",             // validation/popup_two_layer
     "gridshell",              // validation/gridshell
     "helical_spring",         // validation/helical_spring
     "hexagonal_truss",        // validation/hexagonal_truss
