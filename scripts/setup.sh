@@ -13,6 +13,7 @@ packages=(
   gnuplot-nox               # PNG plots of probes and benchmark charts
   libsuitesparse-dev        # KLU, the sparse LU of Newton's systems
   libpng-dev                # the tests read the pictures runs draw
+  python3-minimal           # writes the pop-up's Gmsh meshes (bench/fig9_popup_mesh.py)
 )
 # Callers add what only they need (scripts/fuzz.sh: clang and libFuzzer).
 packages+=("$@")
