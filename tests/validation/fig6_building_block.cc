@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -27,6 +28,16 @@ namespace
   using namespace rodnet;
 
   constexpr double kappa0 = 14.31, L = 1, a = L / 10, H = L / 6;
+
+  /// The stress-free Z's chord (X, Y): where the right strut moves from
+  /// the left one.
+  std::pair<double, double>
+  closed_form_chord()
+  {
+    const double kappa = kappa0 / L, theta = kappa * a;
+    return {2 * std::sin(theta) / kappa + (L - 2 * a) * std::cos(theta),
+            2 * (1 - std::cos(theta)) / kappa + (L - 2 * a) * std::sin(theta)};
+  }
 
   /// The footprint of the block at load factor 1: the bottom-right corner's
   /// position against the clamped bottom-left one's (x, y), the top-left
@@ -76,11 +87,7 @@ namespace
 
   TEST(Fig6BuildingBlock, FootprintIsTheZsChord)
   {
-    const double kappa = kappa0 / L, theta = kappa * a;
-    const double X =
-                   2 * std::sin(theta) / kappa + (L - 2 * a) * std::cos(theta),
-                 Y = 2 * (1 - std::cos(theta)) / kappa +
-                     (L - 2 * a) * std::sin(theta);
+    const auto [X, Y] = closed_form_chord();
     // 0.249872 and 0.912483: the block's width shrinks to a quarter.
     std::cout << "closed form: X " << X << ", Y " << Y << std::endl;
     std::vector<double> errors;
@@ -141,6 +148,9 @@ namespace
     EXPECT_NEAR(value("n_top_x"), 8 * block.right_x, 1e-8);
     EXPECT_NEAR(value("n_top_y"), 5 * L, 1e-8);
     EXPECT_LT(value("energy"), 1e-8);
+    // And the closed form, to the block's error at 60 segments (2.4e-3):
+    // the R's first column ('+') rises.
+    EXPECT_NEAR(value("r_top_y"), 5 * L + closed_form_chord().second, 3e-3);
   }
 
   TEST(Fig6BuildingBlock, SwitchedBlockIsTheMirrorImage)
