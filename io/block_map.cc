@@ -3,6 +3,7 @@
 #include <io/block_map.h>
 #include <io/scene_entries.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
