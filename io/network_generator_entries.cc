@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <core/network_generators.h>
+#include <io/block_map.h>
 #include <io/gmsh_network.h>
 #include <io/network_file.h>
 #include <io/network_generator_entries.h>
@@ -238,5 +239,6 @@ namespace rodnet
     registry.add<NetworkFileGenerator>("network file", "a node/beam list file");
     registry.add<GmshNetworkGenerator>("gmsh network",
                                        "a branched Gmsh line mesh");
+    registry.add<BlockMapGenerator>("block map", "blocks of a block map file");
   }
 } // namespace rodnet

@@ -6,8 +6,8 @@
 namespace rodnet
 {
   /// Registers the generators of rod networks with @p registry: frame,
-  /// windmill, square and hexagonal lattice, network file and gmsh
-  /// network.
+  /// windmill, square and hexagonal lattice, network file, gmsh
+  /// network and block map (io/block_map.h).
   void
   register_network_generators(GeneratorRegistry &registry);
 } // namespace rodnet

@@ -111,7 +111,8 @@ namespace rodnet
       "line mesh (one rod per physical tag); or a network of beams tied at "
       "junctions: the right-angle frame and the windmill of Lestringant & "
       "Kochmann (Fig. 3), a square or hexagonal lattice, a node/beam list "
-      "file, or a branched Gmsh line mesh (see doc/networks.md).");
+      "file, a branched Gmsh line mesh, or blocks of a block map (Fig. 6; "
+      "see doc/networks.md).");
     declare_rod_entries(prm);
     // An entry that several generators read is declared by each alike;
     // deal.II keeps the first declaration's place.

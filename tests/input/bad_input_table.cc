@@ -81,6 +81,21 @@ namespace
                                         data_folder + mesh + "\n");
   }
 
+  /// The cantilever's geometry replaced by the block map @p map of
+  /// data_folder, blocks of @p size (the map is refused before the supports
+  /// are read).
+  std::string
+  block_map(const std::string &map, const std::string &size)
+  {
+    return valid_cantilever + section("Geometry",
+                                      "  set Generator = block map\n"
+                                      "  set Block size = " +
+                                        size +
+                                        "\n"
+                                        "  set Block map file = " +
+                                        data_folder + map + "\n");
+  }
+
   const std::vector<BadInput> bad_inputs = {
     // Non-finite and absurd numbers, in every kind of entry.
     {"nan_force",
@@ -321,6 +336,36 @@ namespace
      "nodes \"b\" and \"c\" coincide at (1, 0, 0) (1e-10 apart, within "
      "1.41e-08 m): a joint is one node; let the beams that meet there name "
      "the same node"},
+    // Block maps (doc/networks.md, "Block maps").
+    {"block_map_unknown_character",
+     block_map("block_map_unknown.map", "1, 1"),
+     ".prm",
+     "",
+     1,
+     "block_map_unknown.map:3:2: unknown block 'x'; a block map knows '+' "
+     "(shrink-up), '-' (shrink-down), '.' (passive) and ' ' (no block)"},
+    {"block_map_without_block",
+     block_map("block_map_empty.map", "1, 1"),
+     ".prm",
+     "",
+     1,
+     "block_map_empty.map\" has no block; a map needs at least one '+', '-' "
+     "or '.'"},
+    {"block_map_in_pieces",
+     block_map("block_map_pieces.map", "1, 1"),
+     ".prm",
+     "",
+     1,
+     "block_map_pieces.map:3:1: this block is not joined to the block at line "
+     "1, column 1 (blocks join where they share a corner); a network in "
+     "pieces moves rigidly under one support"},
+    {"block_map_zero_size",
+     block_map("block_map_pieces.map", "1, 0"),
+     ".prm",
+     "",
+     1,
+     "entry \"Geometry/Block size\": a block's width and height must be "
+     "positive, got \"1, 0\""},
     {"output_without_directory",
      valid_cantilever,
      ".prm",

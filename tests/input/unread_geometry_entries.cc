@@ -54,7 +54,9 @@ namespace
     {"square lattice", ""},
     {"hexagonal lattice", ""},
     {"network file", "  set Network file = " + unread_data + "frame.net\n"},
-    {"gmsh network", "  set Mesh file = " + unread_data + "frame_v41.msh\n"}};
+    {"gmsh network", "  set Mesh file = " + unread_data + "frame_v41.msh\n"},
+    {"block map",
+     "  set Block map file = " RODNET_SOURCE_DIR "/scenes/fig6_block.map\n"}};
 
   TEST(UnreadGeometryEntries, NetworkGeneratorsRefuseADirector)
   {

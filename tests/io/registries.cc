@@ -91,7 +91,7 @@ namespace
     EXPECT_EQ(tree.find("Geometry")->find("Generator")->pattern,
               "[Selection straight|arc|ring|helix|polyline|gmsh|frame|"
               "windmill|square lattice|hexagonal lattice|network file|gmsh "
-              "network ]");
+              "network|block map ]");
     EXPECT_EQ(tree.find("Solver")->find("Method")->pattern,
               "[Selection newton|dynamic relaxation|time stepping|"
               "continuation ]");

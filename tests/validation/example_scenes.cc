@@ -195,6 +195,8 @@ namespace
   const std::set<std::string> tested_elsewhere = {
     "deep_arch",              // validation/continuation
     "eigenstrain_column",     // validation/eigenstrain_column
+    "fig6_building_block",    // validation/fig6_building_block
+    "fig6_tessellation",      // validation/fig6_building_block
     "fig7_shrinking_lattice", // validation/fig7_shrinking_lattice
     "fig8_pinned_lattice_a",  // validation/pinned_lattice (4 x 4 cells)
     "fig8_pinned_lattice_b",  // validation/pinned_lattice (7 x 7 cells)
