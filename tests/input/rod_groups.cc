@@ -63,7 +63,7 @@ namespace
   /// GJ = @p GJ and EA = 1e4 (its round-off floor, 1e4 eps per segment
   /// length, far below the loads).
   std::string
-  material(const std::string &title, const double EI, const double GJ)
+  group_material(const std::string &title, const double EI, const double GJ)
   {
     std::string text = rodnet::testing::direct_material(1e4, EI, EI, GJ);
     return "subsection " + title + text.substr(text.find('\n'));
@@ -106,7 +106,8 @@ namespace
     const double      EI_a = 2, GJ_a = 1.5, EI_b = 0.5, GJ_b = 0.1, P = 1e-4;
     const double      exact = P * (1 / (3 * EI_a) + 1 / (3 * EI_b) + 1 / GJ_a);
     const std::string groups =
-      material("Material", EI_a, GJ_a) + material("Material soft", EI_b, GJ_b) +
+      group_material("Material", EI_a, GJ_a) +
+      group_material("Material soft", EI_b, GJ_b) +
       "subsection Group second\n  set Material = soft\nend\n";
     const double w = tip_deflection(net, 40, P, groups);
     std::cout << "L frame: tip deflection " << w << ", Castigliano " << exact
@@ -115,9 +116,10 @@ namespace
     // Without its group the second beam takes Material: the answer moves
     // by far more than the tolerance.
     const double same = P * (2 / (3 * EI_a) + 1 / GJ_a);
-    EXPECT_NEAR(tip_deflection(net, 40, P, material("Material", EI_a, GJ_a)),
-                same,
-                1e-3 * same);
+    EXPECT_NEAR(
+      tip_deflection(net, 40, P, group_material("Material", EI_a, GJ_a)),
+      same,
+      1e-3 * same);
   }
 
   TEST(RodGroups, EachGroupTakesItsDirector)
@@ -196,14 +198,14 @@ namespace
        "groups of this geometry are \"x-beams\", \"y-beams\""},
       {"subsection Group x-beams\n  set Material = soft\nend\n"
        "subsection Group boundary\n  set Material = soft\nend\n" +
-         material("Material soft", 1, 1),
+         group_material("Material soft", 1, 1),
        "subsections \"Group boundary\" and \"Group x-beams\" both give beam 0 "
        "(n_0_0 to n_1_0) a material; a rod takes one"},
       {"subsection Group x-beams\n  set Material = sfot\nend\n" +
-         material("Material soft", 1, 1),
+         group_material("Material soft", 1, 1),
        "entry \"Group x-beams/Material\": the scene has no subsection "
        "\"Material sfot\"; it names \"soft\""},
-      {material("Material soft", 1, 1),
+      {group_material("Material soft", 1, 1),
        "subsection \"Material soft\": no rod takes this material"},
       {"subsection Group y-beams\n  set Director d1 = 0, 2, 0\nend\n",
        "entry \"Group y-beams/Director d1\": d1 is parallel to beam 6 (n_0_0 "
