@@ -620,6 +620,7 @@ namespace rodnet
         // starts: at the start time, or before the preload.
         const double time        = parameters.initial_time();
         const double load_factor = parameters.load_factor(time);
+        model->set_time(time);
         model->apply_boundary_values(u, load_factor);
         record(0, time, load_factor, u, nullptr);
         integrator.run(

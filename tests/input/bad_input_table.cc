@@ -688,6 +688,23 @@ namespace
      "entry \"Group all/Natural twist\": \"2*q\" is not an expression of "
      "s,L: Parsing Error at Column 1. The parser said: Unexpected token "
      "\"q\" found at position 2."},
+    {"activation_time_outside_time_stepping",
+     with("Group all", "  set Natural curvature = 1, 0 in time t\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural curvature\", item \"1, 0 in time t\": a "
+     "function of time drives a field in time stepping only; set "
+     "Solver/Method = time stepping, or drive it by the load factor "
+     "(\"ramped\")"},
+    {"activation_time_not_finite",
+     with("Group all", "  set Natural curvature = 1, 0 in time 1/(t - 0.5)\n") +
+       valid_time_stepping,
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural curvature\", item \"1, 0 in time 1/(t - "
+     "0.5)\": the function of time is inf at t = 0.5 s"},
   };
 
   class BadInputTable : public ::testing::TestWithParam<BadInput>
