@@ -110,12 +110,11 @@ namespace rodnet
                    std::abs(model.elastic_energy(u, load_factor)));
         if (vtu && step % scene.vtu_interval == 0)
           write_vtu(step, abscissa, u);
-        if (pictures && scene.picture.interval > 0 &&
-            step % scene.picture.interval == 0)
-          pictures->draw(picture_state(model, u),
-                         directory + "/picture-" +
-                           dealii::Utilities::int_to_string(step, 5) + ".png",
-                         picture_title(abscissa));
+        if (pictures)
+          pictures->add_frame(picture_state(model, u),
+                              step,
+                              directory,
+                              picture_title(abscissa));
         throw_if_stop_requested();
       }
 
@@ -150,9 +149,9 @@ namespace rodnet
         if (vtu_files > 0)
           summary.outputs.push_back("solution.pvd");
         if (pictures && last &&
-            pictures->draw(picture_state(model, last->second),
-                           output_directory + "/picture.png",
-                           picture_title(last->first)))
+            pictures->finish(picture_state(model, last->second),
+                             output_directory,
+                             picture_title(last->first)))
           summary.outputs.push_back("picture.png");
       }
 
