@@ -24,7 +24,8 @@
 //    half segment beside the node), add: piecewise circular arcs;
 //  - fields of their own functions of time in quasi-static time stepping,
 //    and two of them with a ramped one: at every step the arcs of their
-//    sum; a ramped curvature under continuation: the arc of lambda times
+//    sum; switched on slowly under Newmark's rule: near the quasi-static
+//    arc; a ramped curvature under continuation: the arc of lambda times
 //    it at lambda = 0.5 and 1.
 #include <common/run_scene_text.h>
 
