@@ -25,8 +25,9 @@
 //  - fields of their own functions of time in quasi-static time stepping,
 //    and two of them with a ramped one: at every step the arcs of their
 //    sum; switched on slowly under Newmark's rule: near the quasi-static
-//    arc; a ramped curvature under continuation: the arc of lambda times
-//    it at lambda = 0.5 and 1.
+//    arc; on a viscoelastic rod clamped at both ends: the stored energy of
+//    its relaxing Maxwell branch; a ramped curvature under continuation:
+//    the arc of lambda times it at lambda = 0.5 and 1.
 #include <common/run_scene_text.h>
 
 #include <Eigen/Dense>
@@ -311,6 +312,54 @@ namespace
                                       row[probe_column(run, "y")] - arc[1]));
     std::cout << "largest distance from the arc after T: " << largest << "\n";
     EXPECT_LT(largest, 2e-3);
+  }
+
+  TEST(ActivationFields, FunctionOfTimeRelaxesAViscoelasticRod)
+  {
+    // A standard linear solid rod (E1 = 1e6, E2 = 0.5 E1, relaxation time
+    // t_r = 0.3 s, circle of radius 0.01: EI = E1 pi r^4 / 4), clamped at
+    // both ends, under the natural curvature k0 t about d1 along it,
+    // quasi-static steps h = 0.05 s: it stays straight, so every hinge's
+    // bending strain is e = -k0 t, and its viscous strain alpha follows the
+    // backward-Euler step of t_r alpha' = e - alpha
+    // (materials/standard_linear_solid.h), alpha_n = (h e_n + t_r
+    // alpha_n-1) / (h + t_r). The stored energy of the 19 hinges (Voronoi
+    // lengths 0.05, L - 0.05 in all) is then
+    // (L - 0.05) / 2 EI [e^2 + (E2/E1) (e - alpha)^2]: the Maxwell branch
+    // relaxes as the field grows (measured: within 1e-9 relative).
+    const double k0 = 2, tr = 0.3, ratio = 0.5, h = 0.05, segment = 0.05;
+    const double EI = 1e6 * M_PI * std::pow(0.01, 4) / 4;
+    std::string  scene =
+      "subsection Geometry\n  set Director d1 = 0, 0, 1\n"
+      "  set Segments = 20\nend\n"
+      "subsection Material\n  set Model = standard linear solid\n"
+      "  subsection standard linear solid\n"
+      "    set Young's modulus E1 = 1e6\n    set Cross section = circle\n"
+      "    set Radius = 0.01\n    set Modulus ratio E2/E1 = 0.5\n"
+      "    set Relaxation time = 0.3\n  end\nend\n"
+      "subsection Group all\n  set Natural curvature = 2, 0 in time t\nend\n"
+      "subsection Supports\n  set Clamped ends = start, end\nend\n"
+      "subsection Solver\n  set Method = time stepping\n"
+      "  subsection Time stepping\n    set Integrator = quasi-static\n"
+      "    set Time step = 0.05\n    set End time = 1\n  end\nend\n"
+      "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+      "  set Probes = energy: energy; y: position mid y\nend\n";
+    const RunSummary run = run_scene_text(scene, "activation_viscoelastic");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_EQ(run.rows.size(), 21u);
+    double alpha = 0;
+    for (std::size_t n = 1; n < run.rows.size(); ++n)
+      {
+        const double t = run.rows[n][0], e = -k0 * t;
+        alpha = (h * e + tr * alpha) / (h + tr);
+        const double exact =
+          (1 - segment) / 2 * EI * (e * e + ratio * (e - alpha) * (e - alpha));
+        EXPECT_NEAR(run.rows[n][probe_column(run, "energy")],
+                    exact,
+                    1e-9 * exact)
+          << "t = " << t;
+        EXPECT_NEAR(run.rows[n][probe_column(run, "y")], 0, 1e-12);
+      }
   }
 
   TEST(ActivationFields, FieldsOfTwoFunctionsOfTimeAdd)
