@@ -148,6 +148,11 @@ namespace rodnet
           summary.outputs.push_back("probes.png");
         if (vtu_files > 0)
           summary.outputs.push_back("solution.pvd");
+        // The natural shape at the last step's load factor, which the
+        // activation fields a picture may show follow (a solver may have
+        // assembled at another since).
+        if (pictures && last)
+          model.elastic_energy(last->second, summary.final_load_factor);
         if (pictures && last &&
             pictures->finish(picture_state(model, last->second),
                              output_directory,

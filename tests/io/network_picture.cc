@@ -480,6 +480,37 @@ namespace
       << messages;
   }
 
+  TEST(NetworkPicture, ActivationFieldAtTheLastLoadFactor)
+  {
+    // A natural curvature 2 on [0.3, 0.6] of the cantilever (20 segments
+    // of 0.05: the region's ends on vertices), ramped: picture.png, at
+    // load factor 1, draws 2 on the region and 0 elsewhere.
+    const std::string dir = "network_picture_tests/activation";
+    fs::remove_all(dir);
+    const RunSummary run = run_scene_text(
+      bent_cantilever("activation_curvature_1") +
+        "subsection Group all\n  set Natural curvature = 2, 0 on 0.3 to "
+        "0.6\nend\n",
+      dir);
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    EXPECT_NEAR(largest_drawn_value(dir + "/picture.png.gp"), 2, 1e-12);
+    std::ifstream script(dir + "/picture.png.gp");
+    std::string   line;
+    while (std::getline(script, line) && line != "$deformed << EOD")
+      ;
+    std::size_t twos = 0, zeros = 0;
+    while (std::getline(script, line) && line != "EOD")
+      if (!line.empty())
+        {
+          double x, y, value;
+          std::istringstream(line) >> x >> y >> value;
+          twos += std::abs(value - 2) < 1e-12;
+          zeros += std::abs(value) < 1e-12;
+        }
+    EXPECT_GT(twos, 0u);
+    EXPECT_GT(zeros, 0u);
+  }
+
   TEST(PictureLabels, ReadableNamesWithUnits)
   {
     for (const auto &[name, unit, components, label] : std::vector<
