@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 
 namespace rodnet
 {
@@ -16,6 +17,25 @@ namespace rodnet
    * (Configuration::add_activation()).
    */
   using ActivationField = std::function<Eigen::Vector4d(double t0, double t1)>;
+
+  /**
+   * What scales an activation field (doc/morphing.md): nothing (fixed, at
+   * its full value throughout), the load factor (ramped: load stepping,
+   * continuation's parameter, time stepping's "Load factor"), or a function
+   * of time of its own (time stepping: RodModel::set_time()).
+   */
+  struct ActivationDrive
+  {
+    enum class Kind
+    {
+      fixed,
+      load_factor,
+      time
+    } kind = Kind::load_factor;
+    /// Kind::time: the factor at time t (s); it throws where it has none.
+    /// Fields driven by one object share their storage.
+    std::shared_ptr<const std::function<double(double)>> of_time;
+  };
 } // namespace rodnet
 
 #endif

@@ -37,7 +37,8 @@ namespace rodnet
    * reference, so reset_reference() leaves them valid. Activation fields
    * (add_activation()) add to them, to the junction elements' (zero
    * otherwise) and to the segments' axial eigenstrain, the ramped ones
-   * times the activation factor (follow_activation()).
+   * times the activation factor (follow_activation()), the others times
+   * their functions of time (set_activation_time()).
    */
   class Configuration
   {
@@ -149,15 +150,37 @@ namespace rodnet
      * segment, each segment's eigenstrain the mean over the segment. So a
      * field uniform over a rod gives what a material's natural shape gives,
      * and a field's total turn and stretch are kept exactly, wherever its
-     * region ends. @p ramped: scaled by the activation factor, else fixed.
+     * region ends. @p drive: held fixed, scaled by the activation factor
+     * or by its own function of time (set_activation_time()).
      */
     void
-    add_activation(unsigned int rod, const ActivationField &field, bool ramped);
+    add_activation(unsigned int           rod,
+                   const ActivationField &field,
+                   const ActivationDrive &drive);
 
     /// Puts the ramped activation fields at @p factor (the load factor);
     /// nothing without activation fields or if they are at it.
     void
     follow_activation(double factor);
+
+    /// Puts the fields driven by functions of time at time @p time (their
+    /// functions throw where they have no finite value).
+    void
+    set_activation_time(double time);
+
+    /// The factors of the fields driven by functions of time, one per
+    /// function, at the last set_activation_time() (empty if none).
+    std::vector<double>
+    activation_time_factors() const;
+
+    /**
+     * The densities (kappa_1, kappa_2, twist rate, axial eigenstrain) the
+     * activation fields give each segment (its active cell), their mean
+     * over it, at the factors of the last follow_activation() and
+     * set_activation_time(): empty without activation fields.
+     */
+    std::vector<Eigen::Vector4d>
+    segment_activation() const;
 
     /// Current director frame of the segment on cell @p cell.
     Quaternion
@@ -198,8 +221,21 @@ namespace rodnet
     closes_with_a_flip(const HingeStencil &h) const;
 
   private:
-    /// What activation fields add, fixed and ramped, and the sum at the
-    /// activation factor (add_activation()).
+    /// What the activation fields of one drive add: per hinge and junction
+    /// element their integrated strains, per cell (segment) the mean
+    /// densities, the last one its eigenstrain.
+    struct ActivationShare
+    {
+      ActivationDrive              drive;
+      std::vector<Vector3>         hinge, junction;
+      std::vector<Eigen::Vector4d> cell;
+      /// Its factor at the last follow_activation() and
+      /// set_activation_time().
+      double factor = 0.;
+    };
+
+    /// The shares of the activation fields, one per drive, and their sum
+    /// at the factors (add_activation()).
     struct Activation
     {
       bool
@@ -207,17 +243,26 @@ namespace rodnet
       {
         return segment_now.empty();
       }
-      std::vector<Vector3> hinge_fixed, hinge_ramped, junction_fixed,
-        junction_ramped, junction_now;
-      std::vector<double> segment_fixed, segment_ramped, segment_now;
+      std::vector<ActivationShare> shares;
+      std::vector<Vector3>         junction_now;
+      std::vector<double>          segment_now;
       /// The natural strains of the geometry alone, per hinge.
       std::vector<Vector3> hinge_geometric;
       /// Per rod, its hinges and its junction elements; per cell, its
       /// segment's place in its rod.
       std::vector<std::vector<unsigned int>> rod_hinges, rod_junctions;
       std::vector<unsigned int>              cell_position;
-      double                                 factor = 0.;
+      /// The load factor of the sums; NaN: to be summed again.
+      double factor = 0.;
     };
+
+    /// The share of @p drive, made if new.
+    ActivationShare &
+    activation_share(const ActivationDrive &drive);
+
+    /// Sums the shares at their factors into the natural strains.
+    void
+    sum_activation();
 
     /// Sizes the activation storage (first add_activation()).
     void

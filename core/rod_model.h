@@ -163,13 +163,29 @@ namespace rodnet
      * Adds the activation field @p field to rod @p rod
      * (Configuration::add_activation(): natural curvatures, twist and axial
      * eigenstrain along the rod), ramped with the load factor as the
-     * natural shape of ramp_natural_shape() is, or held fixed (before
-     * finalize()). Fields add. Throws std::invalid_argument naming the rod
-     * for an eigenstrain of an inextensible rod or any field of a
-     * developable ribbon.
+     * natural shape of ramp_natural_shape() is, held fixed, or scaled by
+     * its own function of time (set_time(); before finalize()). Fields
+     * add. Throws std::invalid_argument naming the rod for an eigenstrain
+     * of an inextensible rod or any field of a developable ribbon.
      */
     void
-    add_activation(unsigned int rod, const ActivationField &field, bool ramped);
+    add_activation(unsigned int           rod,
+                   const ActivationField &field,
+                   const ActivationDrive &drive);
+
+    /**
+     * The time (s) of the assemblies that follow, at which the activation
+     * fields driven by functions of time are evaluated (TimeIntegrator sets
+     * it); those fields are zero until it is set. Throws
+     * std::invalid_argument where such a function has no finite value.
+     */
+    void
+    set_time(double time);
+
+    /// The factors of the activation fields driven by functions of time,
+    /// one per function, at the last set_time() (empty if none).
+    std::vector<double>
+    activation_time_factors() const;
 
     /**
      * Holds the dead loads and the applied moments at their full value at

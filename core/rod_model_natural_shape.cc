@@ -1,5 +1,5 @@
 // RodModel: a natural shape ramped with the load factor, activation
-// fields.
+// fields and their time.
 #include <core/rod_model.h>
 
 #include <stdexcept>
@@ -40,7 +40,7 @@ namespace rodnet
   void
   RodModel::add_activation(const unsigned int     rod,
                            const ActivationField &field,
-                           const bool             ramped)
+                           const ActivationDrive &drive)
   {
     require_not_finalized("RodModel::add_activation on rod " +
                           std::to_string(rod));
@@ -48,7 +48,21 @@ namespace rodnet
       throw std::invalid_argument("add_activation: there is no rod " +
                                   std::to_string(rod) + " (the network has " +
                                   std::to_string(materials.size()) + ")");
-    configuration_->add_activation(rod, field, ramped);
+    configuration_->add_activation(rod, field, drive);
+  }
+
+
+  void
+  RodModel::set_time(const double time)
+  {
+    configuration_->set_activation_time(time);
+  }
+
+
+  std::vector<double>
+  RodModel::activation_time_factors() const
+  {
+    return configuration_->activation_time_factors();
   }
 
 

@@ -1,10 +1,11 @@
 // The fields of a RodModel state for output (VtuOutput): displacement and
-// twist on the model's DoFHandler, strains, directors, curvatures and
-// internal variables.
+// twist on the model's DoFHandler, strains, directors, curvatures,
+// activation fields and internal variables.
 #include <core/rod_model.h>
 #include <elements/stretch_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace rodnet
@@ -43,6 +44,28 @@ namespace rodnet
     {
       for (const auto &[name, values] : named)
         fields.push_back({name, 1, values.second, values.first, at_hinges});
+    }
+
+    /// Appends to @p fields the activation fields' densities per segment
+    /// (Configuration::segment_activation()), if any.
+    void
+    append_activation_fields(const std::vector<Eigen::Vector4d> &densities,
+                             std::vector<OutputFields::Field>   &fields)
+    {
+      if (densities.empty())
+        return;
+      const std::array<std::pair<const char *, const char *>, 4> names{
+        {{"activation_curvature_1", "1/m"},
+         {"activation_curvature_2", "1/m"},
+         {"activation_twist", "rad/m"},
+         {"activation_eigenstrain", "-"}}};
+      for (unsigned int k = 0; k < 4; ++k)
+        {
+          OutputFields::Field field{names[k].first, 1, {}, names[k].second};
+          for (const Eigen::Vector4d &density : densities)
+            field.values.push_back(density[k]);
+          fields.push_back(field);
+        }
     }
 
     /// The values of the field of the internal variable labelled @p label
@@ -156,6 +179,8 @@ namespace rodnet
     output.segment_fields = {strain, d1, d2};
     if (inextensibility != nullptr)
       output.segment_fields.push_back(axial_forces(u));
+    append_activation_fields(configuration.segment_activation(),
+                             output.segment_fields);
 
     // Integrated strains divided by the Voronoi length are the curvatures
     // and twist rate of the smooth rod (Korner et al. eq. 4.2). Vertices

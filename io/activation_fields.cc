@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <memory>
 #include <stdexcept>
 
 namespace rodnet
@@ -91,7 +93,56 @@ namespace rodnet
                   "<s1>\" or \"near ends <d>\"");
     }
 
-    /// The item @p text of @p entry: values, region, ramped or fixed.
+    /// The function of time @p expression of the item @p item, which
+    /// throws naming the item and the time where it is not finite.
+    std::shared_ptr<const std::function<double(double)>>
+    time_function(const ActivationItem &item, const std::string &expression)
+    {
+      const auto parsed =
+        parse_function<1>({expression}, expression, "t", item.entry);
+      const std::string context = item_context(item.entry, item.text);
+      return std::make_shared<const std::function<double(double)>>(
+        [parsed, context](const double t) {
+          const double value = parsed->value(dealii::Point<1>(t));
+          if (!std::isfinite(value))
+            throw std::invalid_argument(context + "the function of time is " +
+                                        number(value) + " at t = " + number(t) +
+                                        " s");
+          return value;
+        });
+    }
+
+    /// Reads the drive at the end of @p words ("fixed", "ramped", "in time
+    /// <expression>") into @p item and removes it from @p words.
+    void
+    read_drive(std::vector<std::string> &words, ActivationItem &item)
+    {
+      using Kind = ActivationDrive::Kind;
+      for (std::size_t i = 0; i + 1 < words.size(); ++i)
+        if (words[i] == "in" && words[i + 1] == "time")
+          {
+            std::string expression;
+            for (std::size_t k = i + 2; k < words.size(); ++k)
+              expression += (expression.empty() ? "" : " ") + words[k];
+            if (expression.empty())
+              throw std::invalid_argument(
+                item_context(item.entry, item.text) +
+                "give the function of time after \"in time\", e.g. \"in "
+                "time 1 - exp(-t/2)\"");
+            item.drive = {Kind::time, time_function(item, expression)};
+            words.resize(i);
+            return;
+          }
+      if (!words.empty() &&
+          (words.back() == "fixed" || words.back() == "ramped"))
+        {
+          item.drive.kind =
+            words.back() == "fixed" ? Kind::fixed : Kind::load_factor;
+          words.pop_back();
+        }
+    }
+
+    /// The item @p text of @p entry: values, region, drive.
     ActivationItem
     parse_item(const std::string     &entry_name,
                const ActivationEntry &entry,
@@ -103,12 +154,7 @@ namespace rodnet
       item.first_density = entry.first_density;
       std::vector<std::string> words =
         dealii::Utilities::split_string_list(text, ' ');
-      if (!words.empty() &&
-          (words.back() == "fixed" || words.back() == "ramped"))
-        {
-          item.ramped = words.back() == "ramped";
-          words.pop_back();
-        }
+      read_drive(words, item);
       const auto on = std::find(words.begin(), words.end(), "on");
       if (on != words.end())
         read_region(std::vector<std::string>(on + 1, words.end()), item);
@@ -124,7 +170,7 @@ namespace rodnet
              std::string("one value") :
              std::to_string(entry.n_densities) + " values separated by ','") +
           " (numbers or expressions of s and L), then optionally \"on "
-          "<region>\" and \"fixed\"");
+          "<region>\" and \"fixed\" or \"in time <expression of t>\"");
       item.values = parse_function<2>(components, values, "s,L", entry_name);
       return item;
     }

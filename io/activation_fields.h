@@ -15,9 +15,11 @@ namespace rodnet
    * One item of an activation entry of a group subsection
    * (doc/morphing.md, "Activation fields"): values, constants or muparser
    * expressions of the arc length s and the rod's length L, on a region of
-   * each rod of the group, ramped with the load factor or held fixed:
+   * each rod of the group, ramped with the load factor, held fixed, or
+   * scaled by an expression of the time t (time stepping):
    *
-   *   <values> [on all | on <s0> to <s1> | on near ends <d>] [fixed | ramped]
+   *   <values> [on all | on <s0> to <s1> | on near ends <d>]
+   *            [fixed | ramped | in time <expression of t>]
    */
   struct ActivationItem
   {
@@ -36,8 +38,10 @@ namespace rodnet
       near_ends ///< within @p start of either end
     } region     = Region::whole_rod;
     double start = 0., end = 0.;
-    /// Scaled by the load factor (the default) or held fixed.
-    bool ramped = true;
+    /// Scaled by the load factor (the default), held fixed, or scaled by
+    /// its function of time, which throws naming the entry, the item and
+    /// the time where it is not finite.
+    ActivationDrive drive;
   };
 
   /// An activation entry of the group subsections: its name, the first
@@ -57,9 +61,9 @@ namespace rodnet
    * The ';'-separated items of the entry @p entry of subsection
    * "Group <group>" with text @p text (empty: none). Throws
    * std::invalid_argument naming the entry and the item for a malformed
-   * item: a wrong number of values, an expression muparser cannot read, a
-   * region that is not one of the three forms, an empty interval or a
-   * distance not positive.
+   * item: a wrong number of values, an expression muparser cannot read
+   * (values or time function), a region that is not one of the three
+   * forms, an empty interval or a distance not positive.
    */
   std::vector<ActivationItem>
   parse_activation_items(const std::string     &group,

@@ -11,9 +11,11 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace rodnet
 {
@@ -261,33 +263,31 @@ namespace rodnet
       return text + ")\n";
     }
 
+    /// The line that opens and the line that closes the colour settings
+    /// of a script (with_colour_range() replaces what is between).
+    const std::string colour_begin = "# colour bar\n",
+                      colour_end   = "# end of colour bar\n";
+
     /**
-     * The colour settings of @p field: the palette, the colour bar's range
-     * and label. viridis; a field of at most 12 integers (rod, group,
-     * layer) in bands, one per value; one constant to 1e-9 (rounding)
-     * around its value.
+     * The colour settings of a field over @p range: the palette and the
+     * colour bar's range, between colour_begin and colour_end. viridis; a
+     * field of at most 12 integers (rod, group, layer) in bands, one per
+     * value; one constant to 1e-9 (rounding) around its value.
      */
     std::string
-    colour_settings(const PictureField &field)
+    colour_settings(const ColourRange &range)
     {
-      double low = INFINITY, high = -INFINITY;
-      bool   integers = true;
-      for (const double v : field.values)
-        if (std::isfinite(v))
-          {
-            low      = std::min(low, v);
-            high     = std::max(high, v);
-            integers = integers && v == std::round(v);
-          }
+      double low = range.low, high = range.high;
       if (!(low <= high))
         low = 0, high = 0;
-      const bool         bands = integers && high - low < 12;
+      const bool bands = range.integers && low == std::round(low) &&
+                         high == std::round(high) && high - low < 12;
       std::ostringstream text;
-      text << palette(
-        bands ?
-          std::make_optional(
-            std::make_pair(low, static_cast<unsigned int>(high - low + 1))) :
-          std::nullopt);
+      text << colour_begin
+           << palette(bands ? std::make_optional(std::make_pair(
+                                low,
+                                static_cast<unsigned int>(high - low + 1))) :
+                              std::nullopt);
       if (bands)
         {
           text << "set cbtics 1\n";
@@ -298,12 +298,25 @@ namespace rodnet
           const double half = low == 0 ? 1 : 0.1 * std::abs(low);
           low -= half, high += half;
         }
-      const std::string unit =
-        field.unit.empty() ? "" : " [" + field.unit + "]";
       text << "set cbrange [" << picture_number(low, 15) << ":"
            << picture_number(high, 15) << "]\n"
-           << "set cblabel " << gnuplot_quote(field.name + unit) << "\n";
+           << colour_end;
       return text.str();
+    }
+
+    /// The range of the finite values of @p field.
+    ColourRange
+    colour_range(const PictureField &field)
+    {
+      ColourRange range;
+      for (const double v : field.values)
+        if (std::isfinite(v))
+          {
+            range.low      = std::min(range.low, v);
+            range.high     = std::max(range.high, v);
+            range.integers = range.integers && v == std::round(v);
+          }
+      return range;
     }
 
     /// The line width of the deformed rods in pixels: 0.05 of the area
@@ -421,6 +434,32 @@ namespace rodnet
           picture_number(low) + " to " + picture_number(high));
       return angle;
     }
+
+    /// The range "<low>, <high>" of "Picture range" = @p text; none for
+    /// "auto"; throws naming the entry otherwise.
+    std::optional<std::pair<double, double>>
+    colour_bar_range(const std::string &text)
+    {
+      if (text == "auto")
+        return std::nullopt;
+      const std::vector<std::string> ends =
+        dealii::Utilities::split_string_list(text, ',');
+      double low = NAN, high = NAN;
+      if (ends.size() == 2)
+        {
+          char *rest_low = nullptr, *rest_high = nullptr;
+          low  = std::strtod(ends[0].c_str(), &rest_low);
+          high = std::strtod(ends[1].c_str(), &rest_high);
+          if (*rest_low != '\0' || *rest_high != '\0')
+            low = high = NAN;
+        }
+      if (!(std::isfinite(low) && std::isfinite(high) && low < high))
+        throw std::invalid_argument(
+          "entry \"Output/Picture range\": \"" + text +
+          "\" should read \"auto\" or \"<low>, <high>\", two finite numbers "
+          "with low < high");
+      return std::make_pair(low, high);
+    }
   } // namespace
 
 
@@ -444,8 +483,13 @@ namespace rodnet
     prm.declare_entry("Picture interval",
                       "0",
                       Integer(0),
-                      "Also draw picture-NNNNN.png at every n-th step; 0: "
-                      "none. [-]");
+                      "Also draw picture-NNNNN.png at every n-th step (at "
+                      "most 100: past it, every 2n-th...); 0: none. [-]");
+    prm.declare_entry("Picture range",
+                      "auto",
+                      Anything(),
+                      "The colour bar's range, \"<low>, <high>\", for every "
+                      "picture; auto: the field's range over them all. [-]");
   }
 
 
@@ -455,6 +499,7 @@ namespace rodnet
     field                  = prm.get("Picture field");
     enabled                = field != "none";
     interval               = prm.get_integer("Picture interval");
+    range                  = colour_bar_range(prm.get("Picture range"));
     const std::string view = prm.get("Picture view");
     if (view == "auto")
       return;
@@ -474,11 +519,17 @@ namespace rodnet
                          const PictureState   &state,
                          const PictureOptions &options,
                          const std::string    &png_path,
-                         const std::string    &title)
+                         const std::string    &title,
+                         ColourRange          *range)
   {
     const PictureField field =
       PictureFieldCatalogue(network, state.positions, state.fields)
         .select(options.field);
+    ColourRange drawn_range = colour_range(field);
+    if (range != nullptr)
+      *range = drawn_range;
+    if (options.range)
+      std::tie(drawn_range.low, drawn_range.high) = *options.range;
     std::vector<Vector3> undeformed;
     for (unsigned int v = 0; v < network.n_vertices(); ++v)
       undeformed.push_back(network.vertex(v));
@@ -501,7 +552,9 @@ namespace rodnet
            << picture_number(camera.azimuth + 0.0) << ", elevation "
            << picture_number(camera.elevation + 0.0)
            << " degrees; screen coordinates (m) from the frame's centre\n"
-           << layout_settings(frame, png_path, title) << colour_settings(field);
+           << layout_settings(frame, png_path, title)
+           << colour_settings(drawn_range) << "set cblabel "
+           << gnuplot_quote(field.label) << "\n";
     write_picture_data(script, rods, frame.centre());
     script << "plot $undeformed with lines linecolor rgb '#c8c8c8' linewidth "
            << picture_number(0.6 * width, 3)
@@ -512,48 +565,24 @@ namespace rodnet
   }
 
 
-  NetworkPictures::NetworkPictures(const RodNetwork     &network_,
-                                   const PictureState   &sample,
-                                   const PictureOptions &options_)
-      : network(network_)
-      , options(options_)
+  void
+  ColourRange::include(const ColourRange &other)
   {
-    try
-      {
-        PictureFieldCatalogue(network, sample.positions, sample.fields)
-          .select(options.field);
-      }
-    catch (const std::invalid_argument &e)
-      {
-        throw std::invalid_argument("entry \"Output/Picture field\": " +
-                                    std::string(e.what()));
-      }
+    low      = std::min(low, other.low);
+    high     = std::max(high, other.high);
+    integers = integers && other.integers;
   }
 
 
-  bool
-  NetworkPictures::draw(const PictureState &state,
-                        const std::string  &png_path,
-                        const std::string  &title)
+  std::string
+  with_colour_range(const std::string &script, const ColourRange &range)
   {
-    if (failed || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
-      return false;
-    std::string failure;
-    try
-      {
-        failure = draw_with_gnuplot(
-          network_picture_script(network, state, options, png_path, title),
-          png_path);
-      }
-    catch (const std::exception &e)
-      {
-        failure = e.what();
-      }
-    if (failure.empty())
-      return true;
-    failed = true;
-    std::cerr << "warning: no picture \"" << png_path << "\" (nor any later "
-              << "of this run): " << failure << std::endl;
-    return false;
+    const std::size_t begin = script.find(colour_begin),
+                      end   = script.find(colour_end);
+    if (begin == std::string::npos || end == std::string::npos)
+      throw std::invalid_argument(
+        "with_colour_range: the script has no colour bar settings");
+    return script.substr(0, begin) + colour_settings(range) +
+           script.substr(end + colour_end.size());
   }
 } // namespace rodnet

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 namespace rodnet
 {
@@ -19,6 +20,39 @@ namespace rodnet
       for (const unsigned int cell : network.rods()[r].segments)
         rod.values[cell] = r;
     return {rod};
+  }
+
+
+  std::string
+  picture_label(const std::string &name,
+                const std::string &unit,
+                const unsigned int components)
+  {
+    // Symbols, and whether the components are global (x, y, z).
+    static const std::vector<std::tuple<std::string, std::string, bool>>
+                      symbols{{"displacement", "u", true},
+              {"curvature", "kappa", false},
+              {"d1", "d1", true},
+              {"d2", "d2", true}};
+    const std::size_t bracket = name.find('[');
+    std::string       base    = name.substr(0, bracket);
+    bool              global  = true;
+    for (const auto &[field, symbol, axes] : symbols)
+      if (base == field)
+        {
+          base   = symbol;
+          global = axes;
+        }
+    std::replace(base.begin(), base.end(), '_', ' ');
+    std::string label = base;
+    if (bracket != std::string::npos)
+      {
+        const char k = name[bracket + 1];
+        label += std::string("_") + (global ? char('x' + (k - '1')) : k);
+      }
+    else if (components == 3)
+      label = "|" + base + "|";
+    return unit.empty() || unit == "-" ? label : label + " (" + unit + ")";
   }
 
 
@@ -98,6 +132,7 @@ namespace rodnet
     const OutputFields::Field &field = *source.field;
     PictureField               picked{name,
                         field.unit,
+                        picture_label(name, field.unit, field.components),
                         source.per_segment,
                         {},
                         field.interior_vertices_only};

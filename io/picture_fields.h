@@ -24,13 +24,30 @@ namespace rodnet
   struct PictureField
   {
     /// As named in a scene ("curvature", "curvature[1]", "rod").
-    std::string         name;
-    std::string         unit;
+    std::string name;
+    std::string unit;
+    /// As a colour bar names it, readable, with the unit: "|u| (m)",
+    /// "u_z (m)", "kappa_1 (1/m)", "axial strain" (picture_label()).
+    std::string         label;
     bool                per_segment = true;
     std::vector<double> values;
     /// OutputFields::Field::interior_vertices_only.
     bool interior_vertices_only = false;
   };
+
+  /**
+   * The colour bar's label of the field @p name ("displacement",
+   * "curvature[1]", "axial_strain") of @p components components and unit
+   * @p unit: its symbol where it has one (u, kappa), blanks for
+   * underscores, a vector's length as |.| and its component k as _x, _y,
+   * _z (global components: displacement, directors) or _k (the material
+   * frame's: curvature), then the unit in parentheses unless it is "-" or
+   * empty.
+   */
+  std::string
+  picture_label(const std::string &name,
+                const std::string &unit,
+                unsigned int       components);
 
   /**
    * The fields a picture of a state can be coloured by: "displacement"

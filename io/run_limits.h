@@ -20,6 +20,9 @@ namespace rodnet
     constexpr double max_time_steps = 1e6;
     /// VTU files of one run.
     constexpr unsigned int max_vtu_files = 10000;
+    /// picture-NNNNN.png of one run (NetworkPictures keeps fewer frames,
+    /// further apart, rather than more).
+    constexpr unsigned int max_picture_frames = 100;
   } // namespace run_limits
 } // namespace rodnet
 

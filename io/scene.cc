@@ -476,6 +476,7 @@ namespace rodnet
     solver.parse_parameters(prm);
     method = solution_method(prm.get("Method")).method;
     parse_time_stepping(prm);
+    check_activation_drives();
     prm.enter_subsection("Dynamic relaxation");
     relaxation.parse_parameters(prm);
     relaxation.n_steps = solver.n_steps;

@@ -271,6 +271,12 @@ namespace rodnet
     bool
     ramps_activation() const;
 
+    /// Throws naming the entry and the item for an activation field driven
+    /// by a function of time outside time stepping, or one not finite at
+    /// a time a step ends on.
+    void
+    check_activation_drives() const;
+
     /// The index in scene_materials of the material @p rod takes.
     unsigned int
     material_index(const RodSettings &rod) const;

@@ -110,12 +110,11 @@ namespace rodnet
                    std::abs(model.elastic_energy(u, load_factor)));
         if (vtu && step % scene.vtu_interval == 0)
           write_vtu(step, abscissa, u);
-        if (pictures && scene.picture.interval > 0 &&
-            step % scene.picture.interval == 0)
-          pictures->draw(picture_state(model, u),
-                         directory + "/picture-" +
-                           dealii::Utilities::int_to_string(step, 5) + ".png",
-                         picture_title(abscissa));
+        if (pictures)
+          pictures->add_frame(picture_state(model, u),
+                              step,
+                              directory,
+                              picture_title(abscissa));
         throw_if_stop_requested();
       }
 
@@ -149,10 +148,15 @@ namespace rodnet
           summary.outputs.push_back("probes.png");
         if (vtu_files > 0)
           summary.outputs.push_back("solution.pvd");
+        // The natural shape at the last step's load factor, which the
+        // activation fields a picture may show follow (a solver may have
+        // assembled at another since).
+        if (pictures && last)
+          model.elastic_energy(last->second, summary.final_load_factor);
         if (pictures && last &&
-            pictures->draw(picture_state(model, last->second),
-                           output_directory + "/picture.png",
-                           picture_title(last->first)))
+            pictures->finish(picture_state(model, last->second),
+                             output_directory,
+                             picture_title(last->first)))
           summary.outputs.push_back("picture.png");
       }
 
@@ -620,6 +624,7 @@ namespace rodnet
         // starts: at the start time, or before the preload.
         const double time        = parameters.initial_time();
         const double load_factor = parameters.load_factor(time);
+        model->set_time(time);
         model->apply_boundary_values(u, load_factor);
         record(0, time, load_factor, u, nullptr);
         integrator.run(

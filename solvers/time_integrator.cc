@@ -109,11 +109,13 @@ namespace rodnet
         // (load factor if(t < 0, 1, 0)) holds during the whole preload.
         const double h    = p.preload_time / p.preload_steps;
         const double from = p.initial_time();
+        model.set_time(from);
         model.apply_boundary_values(u, p.load_factor(from));
         advance(*preload_scheme, from, p.start_time - h, h, u, v, observer);
         v                = 0;
         last_step_length = 0;
       }
+    model.set_time(p.start_time);
     model.apply_boundary_values(u, p.load_factor(p.start_time));
     model.set_time_step(0);
     scheme->start(u, p.load_factor(p.start_time));
@@ -226,7 +228,8 @@ namespace rodnet
     // before it runs away. The reference restarts whenever the load moves.
     EnergyWatch watch;
     watch.on = scheme.dynamic() && parameters.energy_growth_limit > 0;
-    watch.reference_load = parameters.load_factor(from);
+    watch.reference_load       = parameters.load_factor(from);
+    watch.reference_activation = model.activation_time_factors();
     if (watch.on)
       {
         watch.reference =
@@ -250,11 +253,15 @@ namespace rodnet
     if (!watch.on)
       return;
     const double energy = info.kinetic_energy + info.potential_energy;
-    if (info.load_factor != watch.reference_load)
+    // Fields driven by time move the natural shape as loads do.
+    const std::vector<double> activation = model.activation_time_factors();
+    if (info.load_factor != watch.reference_load ||
+        activation != watch.reference_activation)
       {
-        watch.reference_load = info.load_factor;
-        watch.reference      = energy;
-        watch.scale          = std::abs(energy);
+        watch.reference_load       = info.load_factor;
+        watch.reference_activation = activation;
+        watch.reference            = energy;
+        watch.scale                = std::abs(energy);
       }
     watch.scale = std::max(watch.scale, info.kinetic_energy);
     if (energy - watch.reference > parameters.energy_growth_limit * watch.scale)
@@ -315,9 +322,11 @@ namespace rodnet
     // u_n + h v_n: the base of the mass term.
     VectorType base = u;
     base.add(h, v);
-    const StepStart start{
-      u, base, h, parameters.load_factor(scheme.load_time(time, end_time))};
-    VectorType x = predict(u, v, h, parameters.load_factor(end_time));
+    // The fields driven by time at the time the loads are taken at.
+    const double load_time = scheme.load_time(time, end_time);
+    model.set_time(load_time);
+    const StepStart start{u, base, h, parameters.load_factor(load_time)};
+    VectorType      x = predict(u, v, h, parameters.load_factor(end_time));
     solve_step(scheme, start, x, result);
     if (result.converged && !std::isfinite(x.l2_norm()))
       {
@@ -334,8 +343,10 @@ namespace rodnet
     // The commit first: it may throw, and then nothing has moved.
     model.commit_internal_variables(x);
     // Until the next step, evaluations see the converged state: the stored
-    // energy at the committed variables (a zero-length step).
+    // energy at the committed variables (a zero-length step), the fields
+    // at the step's end.
     model.set_time_step(0);
+    model.set_time(end_time);
     scheme.finish(start, x, v);
     // Rows without mass (junction quaternions) have no velocity.
     for (unsigned int i = 0; i < has_mass.size(); ++i)

@@ -5,10 +5,10 @@
 #include <core/rod_model.h>
 #include <solvers/integration_scheme.h>
 #include <solvers/newton_solver.h>
-#include <solvers/tangent_factorization.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/static_solver.h>
 #include <solvers/strain_range.h>
+#include <solvers/tangent_factorization.h>
 
 #include <cmath>
 #include <functional>
@@ -50,6 +50,10 @@ namespace rodnet
    * The tangent is c M + K (midpoint: 2 M / h^2 + K(m) / 2 plus the
    * derivative of the discrete-gradient correction, whose dense rank-one
    * part NewtonSolver handles by Sherman-Morrison).
+   *
+   * Activation fields driven by functions of time are evaluated at the
+   * time the loads are taken at (RodModel::set_time()), and at the step's
+   * end once it has converged.
    *
    * After every converged step the internal variables of history materials
    * are committed, the model's time step set to 0 (so that what the
@@ -219,8 +223,10 @@ namespace rodnet
     {
       bool   on             = false;
       double reference_load = 0;
-      double reference      = 0; ///< energy when the load last changed
-      double scale          = 0;
+      /// RodModel::activation_time_factors() when the load last changed.
+      std::vector<double> reference_activation;
+      double              reference = 0; ///< energy when the load last changed
+      double              scale     = 0;
     };
 
     /// Runs steps of @p scheme from @p from to @p to, nominally @p h long.

@@ -5,6 +5,7 @@
 #include <common/scene_text.h>
 #include <io/activation_fields.h>
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <string>
 
@@ -21,18 +22,29 @@ namespace
       "x-beams",
       curvature_entry,
       "min(s, 0.5), 2 on 0.1 to 0.4 fixed; 1, 0 on near ends 0.2;"
-      " 0, 3*s/L ramped");
-    ASSERT_EQ(items.size(), 3u);
+      " 0, 3*s/L ramped; 0, 5 on near ends 0.1 in time 1 - exp(-t/2)");
+    using Kind = ActivationDrive::Kind;
+    ASSERT_EQ(items.size(), 4u);
     EXPECT_EQ(items[0].entry, "Group x-beams/Natural curvature");
-    EXPECT_FALSE(items[0].ramped);
+    EXPECT_EQ(items[0].drive.kind, Kind::fixed);
     EXPECT_EQ(items[0].region, ActivationItem::Region::interval);
     EXPECT_EQ(items[0].start, 0.1);
     EXPECT_EQ(items[0].end, 0.4);
     EXPECT_EQ(items[1].region, ActivationItem::Region::near_ends);
     EXPECT_EQ(items[1].start, 0.2);
-    EXPECT_TRUE(items[1].ramped);
+    EXPECT_EQ(items[1].drive.kind, Kind::load_factor);
     EXPECT_EQ(items[2].region, ActivationItem::Region::whole_rod);
-    EXPECT_TRUE(items[2].ramped);
+    EXPECT_EQ(items[2].drive.kind, Kind::load_factor);
+    // The function of time, its blanks included, after the region.
+    EXPECT_EQ(items[3].region, ActivationItem::Region::near_ends);
+    EXPECT_EQ(items[3].start, 0.1);
+    ASSERT_EQ(items[3].drive.kind, Kind::time);
+    EXPECT_NEAR((*items[3].drive.of_time)(2.), 1 - std::exp(-1.), 1e-15);
+    EXPECT_THROW(
+      (*parse_activation_items("all", eigenstrain_entry, "0.01 in time log(t)")
+          .at(0)
+          .drive.of_time)(-1.),
+      std::invalid_argument);
   }
 
   TEST(ActivationEntries, IntegralsOverIntervals)

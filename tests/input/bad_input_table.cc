@@ -227,6 +227,13 @@ namespace
      1,
      "entry \"Output/Picture view\": in \"-60, 95\", the elevation \"95\" "
      "is not an angle in degrees from -90 to 90"},
+    {"picture_range_decreasing",
+     with("Output", "  set Picture range = 1, 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Output/Picture range\": \"1, 0\" should read \"auto\" or "
+     "\"<low>, <high>\", two finite numbers with low < high"},
     {"billion_segments",
      with("Geometry", "  set Segments = 1000000000\n"),
      ".prm",
@@ -733,6 +740,31 @@ namespace
      "entry \"Group all/Natural twist\": \"2*q\" is not an expression of "
      "s,L: Parsing Error at Column 1. The parser said: Unexpected token "
      "\"q\" found at position 2."},
+    {"activation_time_missing",
+     with("Group all", "  set Natural twist = 1 in time\n") +
+       valid_time_stepping,
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural twist\", item \"1 in time\": give the "
+     "function of time after \"in time\", e.g. \"in time 1 - exp(-t/2)\""},
+    {"activation_time_outside_time_stepping",
+     with("Group all", "  set Natural curvature = 1, 0 in time t\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural curvature\", item \"1, 0 in time t\": a "
+     "function of time drives a field in time stepping only; set "
+     "Solver/Method = time stepping, or drive it by the load factor "
+     "(\"ramped\")"},
+    {"activation_time_not_finite",
+     with("Group all", "  set Natural curvature = 1, 0 in time 1/(t - 0.5)\n") +
+       valid_time_stepping,
+     ".prm",
+     "",
+     1,
+     "entry \"Group all/Natural curvature\", item \"1, 0 in time 1/(t - "
+     "0.5)\": the function of time is inf at t = 0.5 s"},
   };
 
   class BadInputTable : public ::testing::TestWithParam<BadInput>

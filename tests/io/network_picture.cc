@@ -3,15 +3,20 @@
 // not blank, coloured across the whole colour bar by the field the scene
 // chose (two fields of opposite trend swap the colours of the rod's ends),
 // drawn without distortion (a ring stays round), at every n-th step on
-// request; without gnuplot the run succeeds and says so once. The PNGs are
+// request, all over one colour range, at most 100 of them; without
+// gnuplot the run succeeds and says so once; colour bars are labelled
+// with readable names and units. The PNGs are
 // decoded (libpng) and their pixels checked.
 #include <common/run_scene_text.h>
 #include <common/scene_text.h>
+#include <io/network_picture.h>
 #include <io/picture_camera.h>
+#include <io/picture_fields.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +24,7 @@
 #include <png.h>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 
@@ -355,6 +361,197 @@ namespace
          {"picture-00000.png", "picture-00002.png", "picture.png"})
       EXPECT_TRUE(fs::exists(dir + "/" + file)) << file;
     EXPECT_FALSE(fs::exists(dir + "/picture-00001.png"));
+  }
+
+  /// The line "set cbrange [...]" of the script @p path.
+  std::string
+  colour_bar_range(const std::string &path)
+  {
+    std::ifstream script(path);
+    std::string   line;
+    while (std::getline(script, line))
+      if (line.rfind("set cbrange", 0) == 0)
+        return line;
+    return "";
+  }
+
+  /// The largest value of the $deformed block of the script @p path.
+  double
+  largest_drawn_value(const std::string &path)
+  {
+    std::ifstream script(path);
+    std::string   line;
+    while (std::getline(script, line) && line != "$deformed << EOD")
+      ;
+    double largest = -INFINITY;
+    while (std::getline(script, line) && line != "EOD")
+      if (!line.empty())
+        {
+          double x, y, value;
+          std::istringstream(line) >> x >> y >> value;
+          largest = std::max(largest, value);
+        }
+    return largest;
+  }
+
+  TEST(NetworkPicture, FramesShareOneColourRange)
+  {
+    if (!gnuplot_on_path())
+      GTEST_SKIP() << "gnuplot is not on PATH";
+    // |u| of the bent cantilever at steps 0 (zero everywhere), 1 and 2: one
+    // bar from 0 to the largest |u| of any frame (the tip's at step 2) in
+    // every picture; step 0 drawn all in the bar's low colour (over its
+    // own range, a constant, it would sit in the bar's middle).
+    const std::string dir = "network_picture_tests/frames";
+    fs::remove_all(dir);
+    const RunSummary run = run_scene_text(
+      bent_cantilever("displacement", "newton", "  set Picture interval = 1\n"),
+      dir);
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    const double tip = largest_drawn_value(dir + "/picture.png.gp");
+    EXPECT_GT(tip, 0.3);
+    const std::string range = colour_bar_range(dir + "/picture.png.gp");
+    double            low = NAN, high = NAN;
+    ASSERT_EQ(std::sscanf(range.c_str(), "set cbrange [%lf:%lf]", &low, &high),
+              2)
+      << range;
+    EXPECT_EQ(low, 0.);
+    EXPECT_NEAR(high, tip, 1e-5 * tip);
+    for (const std::string file :
+         {"picture-00000.png", "picture-00001.png", "picture-00002.png"})
+      EXPECT_EQ(colour_bar_range(dir + "/" + file + ".gp"), range) << file;
+    const PictureContent first = content_of(Image(dir + "/picture-00000.png"));
+    ASSERT_GT(first.drawn.size(), 500u);
+    for (const auto &[xy, c] : first.drawn)
+      EXPECT_LT(distance(c, first.low), 60) << xy[0] << ", " << xy[1];
+  }
+
+  TEST(NetworkPicture, GivenRangeForEveryPicture)
+  {
+    if (!gnuplot_on_path())
+      GTEST_SKIP() << "gnuplot is not on PATH";
+    const std::string dir = "network_picture_tests/given_range";
+    fs::remove_all(dir);
+    const RunSummary run =
+      run_scene_text(bent_cantilever("displacement",
+                                     "newton",
+                                     "  set Picture interval = 1\n"
+                                     "  set Picture range = 0, 5\n"),
+                     dir);
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    for (const std::string file :
+         {"picture-00000.png", "picture-00002.png", "picture.png"})
+      EXPECT_EQ(colour_bar_range(dir + "/" + file + ".gp"), "set cbrange [0:5]")
+        << file;
+  }
+
+  TEST(NetworkPicture, FramesAreCappedAndSpanTheRun)
+  {
+    if (!gnuplot_on_path())
+      GTEST_SKIP() << "gnuplot is not on PATH";
+    // 250 steps, a picture asked for at each: past 100 frames every other
+    // one goes (twice, at steps 100 and 200), leaving every 4th step from
+    // 0 to 248, 63 pictures, and one warning that says so.
+    const std::string dir = "network_picture_tests/capped";
+    fs::remove_all(dir);
+    std::string scene =
+      bent_cantilever("rod", "newton", "  set Picture interval = 1\n");
+    scene.replace(scene.find("set Steps = 2"), 13, "set Steps = 250");
+    ::testing::internal::CaptureStderr();
+    const RunSummary  run      = run_scene_text(scene, dir);
+    const std::string messages = ::testing::internal::GetCapturedStderr();
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    std::vector<unsigned int> steps;
+    for (const auto &entry : fs::directory_iterator(dir))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("picture-", 0) == 0 && name.size() == 17 &&
+            name.substr(13) == ".png")
+          steps.push_back(std::stoul(name.substr(8, 5)));
+      }
+    std::sort(steps.begin(), steps.end());
+    ASSERT_EQ(steps.size(), 63u);
+    for (std::size_t k = 0; k < steps.size(); ++k)
+      EXPECT_EQ(steps[k], 4 * k);
+    EXPECT_FALSE(fs::exists(dir + "/picture-00002.png.gp"));
+    EXPECT_NE(messages.find("warning: picture-NNNNN.png drawn every 4 steps, "
+                            "not every 1: 63 pictures, at most 100"),
+              std::string::npos)
+      << messages;
+  }
+
+  TEST(NetworkPicture, ActivationFieldAtTheLastLoadFactor)
+  {
+    // A natural curvature 2 on [0.3, 0.6] of the cantilever (20 segments
+    // of 0.05: the region's ends on vertices), ramped: picture.png, at
+    // load factor 1, draws 2 on the region and 0 elsewhere.
+    const std::string dir = "network_picture_tests/activation";
+    fs::remove_all(dir);
+    const RunSummary run = run_scene_text(
+      bent_cantilever("activation_curvature_1") +
+        "subsection Group all\n  set Natural curvature = 2, 0 on 0.3 to "
+        "0.6\nend\n",
+      dir);
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    EXPECT_NEAR(largest_drawn_value(dir + "/picture.png.gp"), 2, 1e-12);
+    std::ifstream script(dir + "/picture.png.gp");
+    std::string   line;
+    while (std::getline(script, line) && line != "$deformed << EOD")
+      ;
+    std::size_t twos = 0, zeros = 0;
+    while (std::getline(script, line) && line != "EOD")
+      if (!line.empty())
+        {
+          double x, y, value;
+          std::istringstream(line) >> x >> y >> value;
+          twos += std::abs(value - 2) < 1e-12;
+          zeros += std::abs(value) < 1e-12;
+        }
+    EXPECT_GT(twos, 0u);
+    EXPECT_GT(zeros, 0u);
+  }
+
+  TEST(PictureLabels, ReadableNamesWithUnits)
+  {
+    for (const auto &[name, unit, components, label] : std::vector<
+           std::tuple<std::string, std::string, unsigned int, std::string>>{
+           {"displacement", "m", 3, "|u| (m)"},
+           {"displacement[3]", "m", 3, "u_z (m)"},
+           {"curvature[1]", "1/m", 3, "kappa_1 (1/m)"},
+           {"twist_rate", "rad/m", 1, "twist rate (rad/m)"},
+           {"axial_strain", "-", 1, "axial strain"},
+           {"d1[2]", "-", 3, "d1_y"},
+           {"rod", "-", 1, "rod"},
+           {"activation_curvature_1",
+            "1/m",
+            1,
+            "activation curvature 1 (1/m)"}})
+      EXPECT_EQ(picture_label(name, unit, components), label);
+    // Every field a run offers: no brackets, the unit in parentheses.
+    dealii::ParameterHandler prm;
+    Scene::declare_parameters(prm);
+    read_scene_text(prm,
+                    bent_cantilever("rod") +
+                      "subsection Group all\n  set Natural twist = 1\nend\n",
+                    "scene",
+                    false);
+    const Scene                     scene(prm);
+    const std::unique_ptr<RodModel> model = scene.build_model();
+    const PictureState state = picture_state(*model, model->create_vector());
+    const PictureFieldCatalogue catalogue(model->network(),
+                                          state.positions,
+                                          state.fields);
+    for (const std::string &name : catalogue.names())
+      {
+        const PictureField field = catalogue.select(name);
+        EXPECT_EQ(field.label.find_first_of("[]"), std::string::npos) << name;
+        if (field.unit != "-")
+          EXPECT_EQ(field.label.substr(field.label.size() - field.unit.size() -
+                                       2),
+                    "(" + field.unit + ")")
+            << name;
+      }
+    EXPECT_NO_THROW(catalogue.select("activation_twist"));
   }
 
   TEST(NetworkPicture, NoPictureWithoutPlotsOrWithFieldNone)

@@ -1,9 +1,11 @@
 // VtuOutput writes the deformed rod with its fields and a .pvd time series.
 // The .vtu files are decoded here (base64, zlib, 32-bit floats) and compared
-// with the state that was written.
+// with the state that was written, the activation fields of a scene with
+// the fields that were given.
 
 #include <deal.II/base/utilities.h>
 
+#include <common/run_scene_text.h>
 #include <core/dr_model.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
@@ -373,5 +375,72 @@ TEST(VtuOutput, UnusableDirectoryThrowsNamingIt)
   catch (const std::runtime_error &e)
     {
       EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+}
+
+/// The length of [s0, s1] within [a, b].
+double
+overlap(const double s0, const double s1, const double a, const double b)
+{
+  return std::max(0.0, std::min(s1, b) - std::max(s0, a));
+}
+
+TEST(VtuOutput, ActivationFieldsPerSegment)
+{
+  // A clamped rod of length 1 in 10 segments; the fields on parts of it,
+  // ends inside cells: curvature (2, 0.5) on [0.25, 0.6] and the twist rate
+  // 3 s ramped, the eigenstrain 0.01 on [0.1, 0.35] fixed. Each segment
+  // shows the field's mean over it: the value times the part of the
+  // segment within the region (a linear field: its value at the middle),
+  // the ramped ones at the load factor of the file, half of them in step 1
+  // of 2.
+  const std::string scene =
+    "subsection Geometry\n  set Segments = 10\n"
+    "  set Director d1 = 0, 0, 1\nend\n"
+    "subsection Material\n  subsection linear elastic\n"
+    "    set Stiffness input = direct\n    set EA = 1e4\n    set EI1 = 1\n"
+    "    set EI2 = 1\n    set GJ = 1\n  end\nend\n"
+    "subsection Group all\n"
+    "  set Natural curvature = 2, 0.5 on 0.25 to 0.6\n"
+    "  set Natural twist = 3*s/L\n"
+    "  set Axial eigenstrain = 0.01 on 0.1 to 0.35 fixed\nend\n"
+    "subsection Supports\n  set Clamped ends = start\nend\n"
+    "subsection Loads\n  set Steps = 2\nend\n"
+    "subsection Output\n  set Plot = false\nend\n";
+  const fs::path   dir = scratch("activation");
+  const RunSummary run = rodnet::testing::run_scene_text(scene, dir.string());
+  ASSERT_TRUE(run.failure.empty()) << run.failure;
+  for (const unsigned int step : {1u, 2u})
+    {
+      const double      lambda = 0.5 * step;
+      const std::string vtu =
+        read_text(dir / ("solution-0000" + std::to_string(step) + ".vtu"));
+      const std::vector<float> points = read_data_array(vtu, "");
+      const std::vector<float> u      = read_data_array(vtu, "displacement");
+      const std::vector<float> k1 =
+        read_data_array(vtu, "activation_curvature_1");
+      const std::vector<float> k2 =
+        read_data_array(vtu, "activation_curvature_2");
+      const std::vector<float> tau = read_data_array(vtu, "activation_twist");
+      const std::vector<float> eps =
+        read_data_array(vtu, "activation_eigenstrain");
+      ASSERT_EQ(k1.size(), 20u);
+      for (unsigned int cell = 0; cell < 10; ++cell)
+        {
+          // The segment's ends, undeformed, along x.
+          const double a  = points[6 * cell] - u[6 * cell],
+                       b  = points[6 * cell + 3] - u[6 * cell + 3];
+          const double s0 = std::min(a, b), s1 = std::max(a, b);
+          ASSERT_NEAR(s1 - s0, 0.1, 1e-6);
+          const double in_curved = overlap(s0, s1, 0.25, 0.6) / 0.1;
+          for (const unsigned int p : {2 * cell, 2 * cell + 1})
+            {
+              EXPECT_NEAR(k1[p], lambda * 2 * in_curved, 1e-5) << cell;
+              EXPECT_NEAR(k2[p], lambda * 0.5 * in_curved, 1e-5) << cell;
+              EXPECT_NEAR(tau[p], lambda * 3 * (s0 + s1) / 2, 1e-5) << cell;
+              EXPECT_NEAR(eps[p], 0.01 * overlap(s0, s1, 0.1, 0.35) / 0.1, 1e-7)
+                << cell;
+            }
+        }
     }
 }

@@ -21,7 +21,13 @@
 //    published bifurcation and deflections;
 //  - two items of one group, and the fields of two groups on a network's
 //    beam (its clamp a junction element, which takes the field over the
-//    half segment beside the node), add: piecewise circular arcs.
+//    half segment beside the node), add: piecewise circular arcs;
+//  - fields of their own functions of time in quasi-static time stepping,
+//    and two of them with a ramped one: at every step the arcs of their
+//    sum; switched on slowly under Newmark's rule: near the quasi-static
+//    arc; on a viscoelastic rod clamped at both ends: the stored energy of
+//    its relaxing Maxwell branch; a ramped curvature under continuation:
+//    the arc of lambda times it at lambda = 0.5 and 1.
 #include <common/run_scene_text.h>
 
 #include <Eigen/Dense>
@@ -213,6 +219,209 @@ namespace
                   1 + row[0] * row[0] * 0.01 * (0.71 - 0.23),
                   1e-12)
         << "t = " << row[0];
+  }
+
+  /// rod_scene() of @p segments segments in quasi-static time stepping
+  /// from 0 to @p end_time in steps of 0.25 s (@p solver: more entries of
+  /// the Time stepping subsection).
+  std::string
+  time_stepping_scene(const unsigned int segments,
+                      const std::string &groups,
+                      const double       end_time,
+                      const std::string &solver = "")
+  {
+    std::string scene = rod_scene(segments, groups);
+    scene.erase(scene.find("subsection Loads"), 37);
+    std::ostringstream s;
+    s << "subsection Solver\n  set Method = time stepping\n"
+         "  subsection Time stepping\n    set Integrator = quasi-static\n"
+         "    set Time step = 0.25\n    set End time = "
+      << end_time << "\n"
+      << solver << "  end\nend\n";
+    return scene + s.str();
+  }
+
+  TEST(ActivationFields, FunctionOfTimeBendsTheRodAtEveryStep)
+  {
+    // Curvature 2 f(t) on [7/30, 22/30], f(t) = 1 - exp(-t/2), of its own
+    // function of time while the load factor stays 0: quasi-statically the
+    // free end takes the straight-arc-straight shape of curvature 2 f(t) at
+    // every time (80 segments: 1.5e-5 of tip error at full curvature 2,
+    // NaturalCurvatureOnAnInterval).
+    const double       a = 7. / 30, b = 22. / 30;
+    std::ostringstream groups;
+    groups << std::setprecision(17)
+           << "subsection Group all\n  set Natural curvature = 2, 0 on " << a
+           << " to " << b << " in time 1 - exp(-t/2)\nend\n";
+    const RunSummary run = run_scene_text(
+      time_stepping_scene(80, groups.str(), 3., "    set Load factor = 0\n"),
+      "activation_of_time");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_EQ(run.rows.size(), 13u);
+    for (const std::vector<double> &row : run.rows)
+      {
+        const double                kappa = 2 * (1 - std::exp(-row[0] / 2));
+        const std::array<double, 2> exact =
+          curve_end({{a, 0.}, {b - a, kappa}, {1 - b, 0.}});
+        EXPECT_NEAR(row[probe_column(run, "x")], exact[0], 2e-5)
+          << "t = " << row[0];
+        EXPECT_NEAR(row[probe_column(run, "y")], exact[1], 2e-5)
+          << "t = " << row[0];
+      }
+  }
+
+  TEST(ActivationFields, FunctionOfTimeInDynamics)
+  {
+    // The same arc switched on smoothly over T = 5 s, f(t) = (1 -
+    // cos(pi t / T)) / 2, under Newmark's rule: steel-like rod of radius
+    // 0.01, E = 1e9, rho = 1000 (first period 2 pi / (1.875^2
+    // sqrt(EI / (rho A L^4))) = 0.36 s, far below T), so that inertia
+    // lags the quasi-static shape by about (pi / T)^2 / omega_1^2 = 1.3e-3
+    // of it. At every step from T on the tip is within 2e-3 of the arc of
+    // curvature 2 (the spatial error at 20 segments is 2.4e-4). The
+    // energy grows under the constant load factor while the field moves:
+    // no false alarm of instability.
+    const double       a = 7. / 30, b = 22. / 30;
+    std::ostringstream scene;
+    scene << std::setprecision(17)
+          << "subsection Geometry\n  set Director d1 = 0, 0, 1\n"
+             "  set Segments = 20\nend\n"
+             "subsection Material\n  set Density = 1000\n"
+             "  subsection linear elastic\n    set Young's modulus = 1e9\n"
+             "    set Cross section = circle\n    set Radius = 0.01\n"
+             "  end\nend\n"
+             "subsection Group all\n  set Natural curvature = 2, 0 on "
+          << a << " to " << b
+          << " in time if(t < 5, (1 - cos(pi*t/5))/2, 1)\nend\n"
+             "subsection Supports\n  set Clamped ends = start\nend\n"
+             "subsection Solver\n  set Method = time stepping\n"
+             "  subsection Time stepping\n    set Time step = 0.01\n"
+             "    set End time = 6\n  end\nend\n"
+             "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+             "  set Probes = x: position end x; y: position end y\nend\n";
+    const RunSummary run = run_scene_text(scene.str(), "activation_dynamics");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_NEAR(run.rows.back()[0], 6., 1e-9);
+    const std::array<double, 2> arc =
+      curve_end({{a, 0.}, {b - a, 2.}, {1 - b, 0.}});
+    double largest = 0;
+    for (const std::vector<double> &row : run.rows)
+      if (row[0] >= 5)
+        largest = std::max(largest,
+                           std::hypot(row[probe_column(run, "x")] - arc[0],
+                                      row[probe_column(run, "y")] - arc[1]));
+    std::cout << "largest distance from the arc after T: " << largest << "\n";
+    EXPECT_LT(largest, 2e-3);
+  }
+
+  TEST(ActivationFields, FunctionOfTimeRelaxesAViscoelasticRod)
+  {
+    // A standard linear solid rod (E1 = 1e6, E2 = 0.5 E1, relaxation time
+    // t_r = 0.3 s, circle of radius 0.01: EI = E1 pi r^4 / 4), clamped at
+    // both ends, under the natural curvature k0 t about d1 along it,
+    // quasi-static steps h = 0.05 s: it stays straight, so every hinge's
+    // bending strain is e = -k0 t, and its viscous strain alpha follows the
+    // backward-Euler step of t_r alpha' = e - alpha
+    // (materials/standard_linear_solid.h), alpha_n = (h e_n + t_r
+    // alpha_n-1) / (h + t_r). The stored energy of the 19 hinges (Voronoi
+    // lengths 0.05, L - 0.05 in all) is then
+    // (L - 0.05) / 2 EI [e^2 + (E2/E1) (e - alpha)^2]: the Maxwell branch
+    // relaxes as the field grows (measured: within 1e-9 relative).
+    const double k0 = 2, tr = 0.3, ratio = 0.5, h = 0.05, segment = 0.05;
+    const double EI = 1e6 * M_PI * std::pow(0.01, 4) / 4;
+    std::string  scene =
+      "subsection Geometry\n  set Director d1 = 0, 0, 1\n"
+      "  set Segments = 20\nend\n"
+      "subsection Material\n  set Model = standard linear solid\n"
+      "  subsection standard linear solid\n"
+      "    set Young's modulus E1 = 1e6\n    set Cross section = circle\n"
+      "    set Radius = 0.01\n    set Modulus ratio E2/E1 = 0.5\n"
+      "    set Relaxation time = 0.3\n  end\nend\n"
+      "subsection Group all\n  set Natural curvature = 2, 0 in time t\nend\n"
+      "subsection Supports\n  set Clamped ends = start, end\nend\n"
+      "subsection Solver\n  set Method = time stepping\n"
+      "  subsection Time stepping\n    set Integrator = quasi-static\n"
+      "    set Time step = 0.05\n    set End time = 1\n  end\nend\n"
+      "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+      "  set Probes = energy: energy; y: position mid y\nend\n";
+    const RunSummary run = run_scene_text(scene, "activation_viscoelastic");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_EQ(run.rows.size(), 21u);
+    double alpha = 0;
+    for (std::size_t n = 1; n < run.rows.size(); ++n)
+      {
+        const double t = run.rows[n][0], e = -k0 * t;
+        alpha = (h * e + tr * alpha) / (h + tr);
+        const double exact =
+          (1 - segment) / 2 * EI * (e * e + ratio * (e - alpha) * (e - alpha));
+        EXPECT_NEAR(run.rows[n][probe_column(run, "energy")],
+                    exact,
+                    1e-9 * exact)
+          << "t = " << t;
+        EXPECT_NEAR(run.rows[n][probe_column(run, "y")], 0, 1e-12);
+      }
+  }
+
+  TEST(ActivationFields, FieldsOfTwoFunctionsOfTimeAdd)
+  {
+    // 2 t on [0.2, 0.6] and 1 - t on [0.4, 0.8]: the arcs 2 t, 1 + t,
+    // 1 - t; with a third field ramped by the load factor t^2 on
+    // [0.2, 0.4], 2 t + 3 t^2 on the first (320 segments, region ends on
+    // vertices; measured at t = 1: 7.6e-5 at 80 segments, 4.8e-6 at 320).
+    const RunSummary run = run_scene_text(
+      time_stepping_scene(320,
+                          "subsection Group all\n  set Natural curvature = "
+                          "2, 0 on 0.2 to 0.6 in time t; 1, 0 on 0.4 to 0.8 "
+                          "in time 1 - t; 3, 0 on 0.2 to 0.4\nend\n",
+                          1.,
+                          "    set Load factor = t^2\n"),
+      "activation_of_two_times");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    ASSERT_EQ(run.rows.size(), 5u);
+    // Row 0 is the initial state, straight, not an equilibrium.
+    for (std::size_t i = 1; i < run.rows.size(); ++i)
+      {
+        const std::vector<double>  &row   = run.rows[i];
+        const double                t     = row[0];
+        const std::array<double, 2> exact = curve_end({{0.2, 0.},
+                                                       {0.2, 2 * t + 3 * t * t},
+                                                       {0.2, 1 + t},
+                                                       {0.2, 1 - t},
+                                                       {0.2, 0.}});
+        EXPECT_NEAR(row[probe_column(run, "x")], exact[0], 1e-5) << "t = " << t;
+        EXPECT_NEAR(row[probe_column(run, "y")], exact[1], 1e-5) << "t = " << t;
+      }
+  }
+
+  TEST(ActivationFields, ContinuationRampsTheCurvature)
+  {
+    // Ramped fields follow the load factor, continuation's parameter: the
+    // free end reaches the arc of curvature 2 lambda at lambda = 0.5 (an
+    // output point) and 1 (the end of the range); 320 segments (1.3e-5 of
+    // tip error at 80).
+    std::string scene =
+      rod_scene(320,
+                "subsection Group all\n  set Natural curvature = 2, 0 on "
+                "0.2 to 0.6\nend\n"
+                "subsection Solver\n  set Method = continuation\n"
+                "  subsection Continuation\n"
+                "    set Load factor range = -0.1, 1\n"
+                "    set Output load factors = 0.5\n  end\nend\n");
+    scene.erase(scene.find("subsection Loads"), 37);
+    const RunSummary run = run_scene_text(scene, "activation_continuation");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    for (const double lambda : {0.5, 1.})
+      {
+        const auto row =
+          std::find_if(run.rows.begin(), run.rows.end(), [&](const auto &r) {
+            return std::abs(r[0] - lambda) < 1e-12;
+          });
+        ASSERT_NE(row, run.rows.end()) << lambda;
+        const std::array<double, 2> exact =
+          curve_end({{0.2, 0.}, {0.4, 2 * lambda}, {0.4, 0.}});
+        EXPECT_NEAR((*row)[probe_column(run, "x")], exact[0], 2e-6) << lambda;
+        EXPECT_NEAR((*row)[probe_column(run, "y")], exact[1], 2e-6) << lambda;
+      }
   }
 
   TEST(ActivationFields, ClothoidOfAnExpression)
