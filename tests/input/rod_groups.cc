@@ -3,6 +3,7 @@
 // a director d1 and a number of segments, checked against beam theory;
 // a scene names as many materials as it needs; what cannot be meant is
 // refused naming the subsection.
+#include <common/group_counts.h>
 #include <common/scene_text.h>
 #include <core/network_generators.h>
 #include <io/scene_file.h>
@@ -16,17 +17,8 @@
 namespace
 {
   using namespace rodnet;
+  using rodnet::testing::count_in;
   using rodnet::testing::run_scene_text;
-
-  /// How many beams of @p graph are in group @p group.
-  unsigned int
-  count_in(const RodGraph &graph, const std::string &group)
-  {
-    unsigned int n = 0;
-    for (const RodGraph::Beam &beam : graph.beams)
-      n += std::count(beam.groups.begin(), beam.groups.end(), group);
-    return n;
-  }
 
   TEST(RodGroups, LatticesTagTheirBeams)
   {

@@ -2,6 +2,7 @@
 // network of the blocks of a text map against counts by hand, the groups
 // of the beams blocks of different kinds share, and the refusals, each
 // naming the file and the line and column.
+#include <common/group_counts.h>
 #include <io/block_map.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 namespace
 {
   using namespace rodnet;
+  using rodnet::testing::count_in;
 
   /// Writes @p text to the file @p name; returns @p name.
   std::string
@@ -20,16 +22,6 @@ namespace
   {
     std::ofstream(name) << text;
     return name;
-  }
-
-  /// How many beams of @p graph are in group @p group.
-  unsigned int
-  count_in(const RodGraph &graph, const std::string &group)
-  {
-    unsigned int n = 0;
-    for (const RodGraph::Beam &beam : graph.beams)
-      n += std::count(beam.groups.begin(), beam.groups.end(), group);
-    return n;
   }
 
   /// The groups of the beam from node @p from to node @p to.
