@@ -5,18 +5,22 @@
 # shrinkage of the footprint, 1 - (x extent) / (4 L), against kappa0 for
 # SEGMENTS per beam, with the closed form 1 - 4 sin(kappa0 / 4) / kappa0 of
 # the stress-free lattice (each beam in its natural shape). Prints a
-# markdown table of the shrinkage, the DoFs and the median wall time of
-# REPEATS whole rodnet-run processes (one core, no VTU, no plot) at the
-# paper's kappa0 = 5.745 and 30 segments per beam; draws the curve into PNG
-# and keeps that run's picture (Picture field = curvature[2]) as PICTURE.
+# markdown table of the shrinkage; at the paper's kappa0 = 5.745, for each
+# mesh, the DoFs, the median wall time of REPEATS whole rodnet-run processes
+# (one core, no VTU, no plot) and the error against the closed form (the
+# accuracy against cost, drawn into COST_PNG); draws the curve into PNG and
+# keeps the run at 30 segments per beam's picture (Picture field =
+# curvature[2]) as PICTURE.
 #
 # Usage: bench/fig7_shrinkage.sh [RODNET_RUN] [REPEATS (5)] [PNG] [PICTURE]
+#          [COST_PNG]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 run=${1:-$root/build/release/rodnet-run}
 repeats=${2:-5}
 png=${3:-$root/doc/fig7_shrinkage.png}
 picture=${4:-$root/doc/fig7_lattice.png}
+cost_png=${5:-$root/doc/fig7_accuracy_cost.png}
 kappas="0 1 2 2.815 3.5 4.5 5.745"
 segments_list="10 20 30 60"
 work=$(mktemp -d)
@@ -59,17 +63,44 @@ for k in $kappas; do
   echo "$k $exact$values" >> "$work/curve.dat"
 done
 
-scene 5.745 30 false > "$work/paper.prm"
-times=()
-for ((r = 0; r < repeats; ++r)); do
-  times+=("$(seconds "$run" "$work/paper.prm" --output "$work/out")")
+# At kappa0 = 5.745: the cost of each mesh against its error.
+exact=$(awk 'BEGIN { printf "%.9f", 1 - 4 * sin(5.745 / 4) / 5.745 }')
+echo
+echo "| segments per beam | DoFs | wall time s (median of $repeats) | shrinkage | error |"
+echo "|---|---|---|---|---|"
+: > "$work/cost.dat"
+for n in $segments_list; do
+  scene 5.745 "$n" false > "$work/paper.prm"
+  times=()
+  for ((r = 0; r < repeats; ++r)); do
+    times+=("$(seconds "$run" "$work/paper.prm" --output "$work/out")")
+  done
+  dofs=$(sed -n 's/.*rod(s), .*, \([0-9]*\) DoFs.*/\1/p' "$work/log" | head -1)
+  s=$(shrinkage "$work/out")
+  t=$(echo "${times[*]}" | median)
+  error=$(awk -v s="$s" -v e="$exact" 'BEGIN { d = s - e; printf "%.3e", d < 0 ? -d : d }')
+  echo "| $n | $dofs | $t | $s | $error |"
+  echo "$n $t $error $dofs" >> "$work/cost.dat"
 done
 scene 5.745 30 true > "$work/picture.prm"
 "$run" "$work/picture.prm" --output "$work/pic" > "$work/run.log" 2>&1
 cp "$work/pic/picture.png" "$picture"
-dofs=$(sed -n 's/.*rod(s), .*, \([0-9]*\) DoFs.*/\1/p' "$work/run.log" | head -1)
-echo
-echo "kappa0 = 5.745, 30 segments per beam: $dofs DoFs, $(echo "${times[*]}" | median) s (median of $repeats)"
+
+gnuplot <<END
+set terminal pngcairo size 640,440 font ",10"
+set output "$cost_png"
+set title "Fig. 7 (4 x 4 cells, kappa_0 = 5.745): accuracy against cost"
+set xlabel "wall time (s), one core, whole rodnet-run process"
+set ylabel "|shrinkage - closed form|"
+set logscale xy
+set format y "10^{%L}"
+set grid
+set key off
+set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1
+plot "$work/cost.dat" using 2:3 with linespoints pt 7 lw 1.5 lc rgb "#2ca02c", \
+     "$work/cost.dat" using 2:3:(sprintf("%d per beam, %d DoFs", \$1, \$4)) \
+       with labels left offset 1,0.6
+END
 
 gnuplot <<END
 set terminal pngcairo size 640,440 font ",10"
