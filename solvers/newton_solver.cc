@@ -6,6 +6,7 @@
 #include <NOX.H>
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
+#include <Teuchos_oblackholestream.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -83,11 +84,22 @@ namespace rodnet
       auto list = Teuchos::rcp(new Teuchos::ParameterList);
       list->set("Nonlinear Solver", "Line Search Based");
       Teuchos::ParameterList &printing = list->sublist("Printing");
-      // RODNET_NOX_DEBUG in the environment prints NOX's iteration history.
-      printing.set("Output Information",
-                   std::getenv("RODNET_NOX_DEBUG") != nullptr ?
-                     NOX::Utils::OuterIteration + NOX::Utils::Error :
-                     NOX::Utils::Error);
+      // NOX says nothing: its failures (a residual it cannot compute, a
+      // line search that gives up) come back as an unconverged result that
+      // the solvers report in their own words; some of its messages ignore
+      // the print types, so its streams go nowhere. RODNET_NOX_DEBUG in the
+      // environment prints NOX's iteration history and errors.
+      if (std::getenv("RODNET_NOX_DEBUG") != nullptr)
+        printing.set("Output Information",
+                     NOX::Utils::OuterIteration + NOX::Utils::Error);
+      else
+        {
+          const Teuchos::RCP<std::ostream> nowhere =
+            Teuchos::rcp(new Teuchos::oblackholestream);
+          printing.set("Output Information", 0);
+          printing.set("Output Stream", nowhere);
+          printing.set("Error Stream", nowhere);
+        }
       Teuchos::ParameterList &search = list->sublist("Line Search");
       search.set("Method", nox_line_search_name(parameters.line_search));
       if (parameters.line_search == "energy")
@@ -192,11 +204,11 @@ namespace rodnet
     if (parameters.needs_potential() && (!problem.energy || problem.rank_one))
       {
         Result result;
-        result.failure = (parameters.line_search == "energy" ?
-                            "the energy line search" :
-                            "the trust region") +
-                         std::string(" needs the potential of the problem, "
-                                     "which this solve does not have");
+        result.failure =
+          (parameters.line_search == "energy" ? "the energy line search" :
+                                                "the trust region") +
+          std::string(" needs the potential of the problem, "
+                      "which this solve does not have");
         result.residual_norm = NAN;
         return result;
       }
