@@ -1,6 +1,8 @@
 #include <solvers/epetra_entries.h>
 #include <solvers/klu_factorization.h>
+#include <solvers/saddle_point_order.h>
 
+#include <algorithm>
 #include <klu.h>
 #include <stdexcept>
 #include <vector>
@@ -16,6 +18,16 @@ namespace rodnet
     /// entry at least this fraction of its column's largest, rows scaled by
     /// their largest entry, is the pivot.
     constexpr double diagonal_pivot_tolerance = 1e-8;
+
+    /// KLU's pivot tolerance on a matrix with zero diagonal entries, ordered
+    /// by saddle_point_order(): there the rows eliminated before a
+    /// multiplier include the directions only its constraint stiffens,
+    /// whose diagonal may be tiny, and a pivot of 1e-8 of its column grew
+    /// the entries by 3e11 and left 2e-5 of the right-hand side in a solve
+    /// (the pop-up of Figs. 9-10, 3276 DoFs); partial pivoting at 0.1
+    /// left 5e-12 there, and the order keeps its exchanges local
+    /// (doc/performance.md, "Figs. 9-10").
+    constexpr double saddle_point_pivot_tolerance = 0.1;
 
     /**
      * KLU on the compressed rows of the tangent, read as the compressed
@@ -40,11 +52,6 @@ namespace rodnet
         klu_defaults(&common);
         common.tol   = diagonal_pivot_tolerance;
         common.scale = 2; // rows by their largest entry, KLU's default
-        symbolic = klu_analyze(n(), offsets.data(), columns.data(), &common);
-        if (symbolic == nullptr)
-          throw std::runtime_error(
-            "KLU could not analyse the tangent's pattern (status " +
-            std::to_string(common.status) + ")");
       }
 
       ~SuiteSparseKlu() override
@@ -65,6 +72,8 @@ namespace rodnet
                        [&](int, int, const double value) {
                          values[k++] = value;
                        });
+        if (symbolic == nullptr)
+          analyse();
         klu_free_numeric(&numeric, &common);
         numeric = klu_factor(offsets.data(),
                              columns.data(),
@@ -100,6 +109,42 @@ namespace rodnet
       }
 
     private:
+      /**
+       * KLU's analysis of the pattern, on the first values: KLU's own order
+       * (make_klu_factorization()) where no diagonal entry is zero, else
+       * saddle_point_order(), which puts the zero-diagonal rows (the
+       * multipliers) after the rows they couple, and partial pivoting with
+       * saddle_point_pivot_tolerance.
+       */
+      void
+      analyse()
+      {
+        std::vector<bool> zero_diagonal(n(), true);
+        for (int row = 0; row < n(); ++row)
+          for (int k = offsets[row]; k < offsets[row + 1]; ++k)
+            if (columns[k] == row && values[k] != 0.0)
+              zero_diagonal[row] = false;
+        if (std::find(zero_diagonal.begin(), zero_diagonal.end(), true) ==
+            zero_diagonal.end())
+          symbolic = klu_analyze(n(), offsets.data(), columns.data(), &common);
+        else
+          {
+            common.tol = saddle_point_pivot_tolerance;
+            std::vector<int> order =
+              saddle_point_order(offsets, columns, zero_diagonal);
+            symbolic = klu_analyze_given(n(),
+                                         offsets.data(),
+                                         columns.data(),
+                                         order.data(),
+                                         order.data(),
+                                         &common);
+          }
+        if (symbolic == nullptr)
+          throw std::runtime_error(
+            "KLU could not analyse the tangent's pattern (status " +
+            std::to_string(common.status) + ")");
+      }
+
       int
       n() const
       {
