@@ -16,10 +16,11 @@ namespace rodnet
    * entries from 1e4 to 6e5 DoFs. Where a diagonal entry is zero there (the
    * multipliers of inextensible rods) the order is saddle_point_order()'s,
    * which puts each such row after the rows it couples, with partial
-   * pivoting: on the KKT tangents of the pop-up of Figs. 9-10 at 3276 DoFs,
-   * where AMD's order filled 5 to 32 times the entries, this one fills
-   * 1.75 to 1.94 times, and the solves leave no more of the right-hand side
-   * (doc/performance.md, "Figs. 9-10").
+   * pivoting and one step of iterative refinement: on the KKT tangents of the
+   * pop-up of Figs. 9-10 at 3276 DoFs, where AMD's order filled 5 to 32 times
+   * the entries, this one fills 1.7 to 2.0 times, and its solves leave less
+   * of the right-hand side, but for one nearly singular tangent (condition
+   * 4e17: 2.8e-5 against 1.5e-5) (doc/performance.md, "Figs. 9-10").
    *
    * The order holds only while the pivots stay on the diagonal. KLU's
    * threshold partial pivoting takes a column's diagonal entry unless it is

@@ -8,8 +8,8 @@ namespace rodnet
   /**
    * A fill-reducing elimination order for a matrix with zero diagonal
    * entries, such as the KKT tangent of inextensible rods (the Lagrange
-   * multipliers' rows, families/inextensibility_family.h), for an LU that
-   * keeps its pivots on the diagonal.
+   * multipliers' rows, families/inextensibility_family.h), for a sparse LU
+   * (KLU, solvers/klu_factorization.h).
    *
    * AMD (Amestoy, Davis & Duff 1996) on the symmetric pattern of K + K^T
    * sees a multiplier as a row of a few entries and eliminates it early,
@@ -20,7 +20,8 @@ namespace rodnet
    * fill its elimination brings), and each zero-diagonal row follows the
    * last of the rows it couples. Its pivot is then the Schur complement
    * -G K_xx^-1 G^T of its constraint, nonzero where the constraint is
-   * independent, and the fill stays that of the order.
+   * independent, and the row exchanges of partial pivoting stay among the
+   * rows of a few neighbouring segments, near the fill of the order.
    *
    * @p offsets and @p columns are the compressed rows of the matrix's
    * pattern (n + 1 and offsets[n] entries); @p zero_diagonal marks the rows
