@@ -182,6 +182,33 @@ TEST(TangentFactorization, AKeptFactorizationServesTheSamePatternOnly)
 
 namespace
 {
+  /// The finalized model of a welded square lattice of @p cells x @p cells
+  /// cells of side @p side, @p segments per beam, of @p stiffness
+  /// (@p inextensible rods or not), pinned at its four corners.
+  std::unique_ptr<RodModel>
+  pinned_square_lattice(const unsigned int  cells,
+                        const double        side,
+                        const unsigned int  segments,
+                        const RodStiffness &stiffness,
+                        const bool          inextensible)
+  {
+    BuiltNetwork built =
+      build_rod_network(network_generators::square_lattice(cells, cells, side),
+                        segments,
+                        "simple");
+    for (unsigned int rod = 0; rod < built.network->rods().size(); ++rod)
+      built.network->set_inextensible(rod, inextensible);
+    auto model =
+      rodnet::testing::elastic_model(std::move(built.network), stiffness);
+    for (const unsigned int node :
+         {0u, cells, cells * (cells + 1), (cells + 1) * (cells + 1) - 1})
+      model->fix_components("corner",
+                            built.node_vertex[node],
+                            {{true, true, true}});
+    model->finalize();
+    return model;
+  }
+
   /**
    * A welded square lattice of 30 x 30 cells of side 0.1 (10 segments per
    * beam, EA = 1e5, EI1 = 400, EI2 = 100, GJ = 67: the lattice of issue 33;
@@ -201,18 +228,8 @@ namespace
 
     RolledLattice()
     {
-      BuiltNetwork built = build_rod_network(
-        network_generators::square_lattice(cells, cells, side),
-        10,
-        "simple");
-      model = rodnet::testing::elastic_model(std::move(built.network),
-                                             {1e5, 400, 100, 67});
-      for (const unsigned int node :
-           {0u, cells, cells * (cells + 1), (cells + 1) * (cells + 1) - 1})
-        model->fix_components("corner",
-                              built.node_vertex[node],
-                              {{true, true, true}});
-      model->finalize();
+      model =
+        pinned_square_lattice(cells, side, 10, {1e5, 400, 100, 67}, false);
       model->initialize_matrix(tangent);
     }
 
@@ -346,20 +363,7 @@ namespace
 
     InextensibleLattice()
     {
-      BuiltNetwork built =
-        build_rod_network(network_generators::square_lattice(cells, cells, 1),
-                          40,
-                          "simple");
-      for (unsigned int rod = 0; rod < built.network->rods().size(); ++rod)
-        built.network->set_inextensible(rod);
-      model = rodnet::testing::elastic_model(std::move(built.network),
-                                             {1e4, 1, 0.01, 0.04});
-      for (const unsigned int node :
-           {0u, cells, cells * (cells + 1), (cells + 1) * (cells + 1) - 1})
-        model->fix_components("corner",
-                              built.node_vertex[node],
-                              {{true, true, true}});
-      model->finalize();
+      model = pinned_square_lattice(cells, 1, 40, {1e4, 1, 0.01, 0.04}, true);
       model->initialize_matrix(tangent);
       VectorType u = model->create_vector();
       for (unsigned int i = 0; i < u.size(); ++i)
