@@ -87,7 +87,7 @@ namespace rodnet
     std::vector<int> order(n);
     for (int row = 0; row < n; ++row)
       order[row] = row;
-    std::stable_sort(order.begin(), order.end(), [&](const int a, int b) {
+    std::stable_sort(order.begin(), order.end(), [&](const int a, const int b) {
       return place[a] < place[b];
     });
     return order;
