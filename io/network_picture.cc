@@ -368,18 +368,20 @@ namespace rodnet
       script << "EOD\n";
     }
 
+    /// The margins around a picture's drawing area in pixels: 40 above for
+    /// the title, 150 at its right for the colour bar or the legend.
+    constexpr double left = 20, right = 150, bottom = 20, top = 40;
+
     /**
      * The terminal and layout: the drawing area of @p frame's size with
-     * 20 pixels around it, 40 above for the title and 150 at its right
-     * for the colour bar, which spans 80 % of its height; no axes. The
-     * coordinates are those from the frame's centre.
+     * the margins around it, the colour bar spanning 80 % of its height;
+     * no axes. The coordinates are those from the frame's centre.
      */
     std::string
     layout_settings(const PictureFrame &frame,
                     const std::string  &png_path,
                     const std::string  &title)
     {
-      const double left = 20, right = 150, bottom = 20, top = 40;
       const double width  = frame.width + left + right;
       const double height = frame.height + bottom + top;
       const int    font   = std::max(10, int(std::lround(frame.width / 90.)));
@@ -407,6 +409,86 @@ namespace rodnet
            << left / width << ", screen " << 1 - 0.5 * top / height
            << " left\n";
       return text.str();
+    }
+
+    /// The colours of the categories of a field ("group"), in order: Okabe
+    /// and Ito's palette, told apart by the colour-blind, none of them
+    /// grey; and the neutral grey of the rods in no category.
+    constexpr std::array<const char *, max_picture_groups> category_colours = {
+      {"#0072b2",
+       "#d55e00",
+       "#009e73",
+       "#cc79a7",
+       "#e69f00",
+       "#56b4e9",
+       "#f0e442"}};
+    constexpr const char *no_category_colour = "#808080";
+
+    /**
+     * The settings that draw a field of the categories @p categories: no
+     * colour bar, the legend in its place (top left of the right margin
+     * of @p frame, titled @p heading) and the function category_colour(k)
+     * that gives the colour of category k (the data's third column; -1:
+     * none) as gnuplot's "linecolor rgb variable" reads it.
+     */
+    std::string
+    category_settings(const PictureFrame             &frame,
+                      const std::vector<std::string> &categories,
+                      const std::string              &heading)
+    {
+      if (categories.size() > category_colours.size())
+        throw std::invalid_argument(
+          "network_picture_script: " + std::to_string(categories.size()) +
+          " categories, more than the palette's colours");
+      const double       width  = frame.width + left + right;
+      const double       height = frame.height + bottom + top;
+      std::ostringstream text;
+      text << "unset colorbox\n"
+           << "set key at screen " << (left + frame.width + 10) / width
+           << ", screen " << (bottom + 0.9 * frame.height) / height
+           << " left top Left reverse samplen 2 noautotitle title "
+           << gnuplot_quote(heading) << "\n"
+           << "category_colour(k) = ";
+      // "#rrggbb" as the number 0xrrggbb.
+      const auto number = [](const char *colour) {
+        return "0x" + std::string(colour).substr(1);
+      };
+      for (std::size_t k = 0; k < categories.size(); ++k)
+        text << "k == " << k << " ? " << number(category_colours[k]) << " : ";
+      text << number(no_category_colour) << "\n";
+      return text.str();
+    }
+
+    /// Gives the pieces of @p rods in no category (NaN, which would break
+    /// their lines) the value -1; returns whether there are any.
+    bool
+    mark_no_category(std::vector<DrawnRod> &rods)
+    {
+      bool any = false;
+      for (DrawnRod &rod : rods)
+        for (double &value : rod.values)
+          if (!std::isfinite(value))
+            value = -1, any = true;
+      return any;
+    }
+
+    /// The legend's entries of @p categories, and of none where
+    /// @p with_none (a rod in no category), as clauses of the plot command.
+    std::string
+    category_legend(const std::vector<std::string> &categories,
+                    const bool                      with_none,
+                    const double                    width)
+    {
+      std::string clauses;
+      for (std::size_t k = 0; k <= categories.size(); ++k)
+        if (k < categories.size() || with_none)
+          clauses +=
+            ", \\\n     keyentry with lines linecolor rgb '" +
+            std::string(k < categories.size() ? category_colours[k] :
+                                                no_category_colour) +
+            "' linewidth " + picture_number(width, 3) + " title " +
+            gnuplot_quote(k < categories.size() ? categories[k] : "(other)");
+      return clauses;
     }
 
     /// The angle @p text, the @p name of "Picture view" = @p view, in
@@ -471,9 +553,9 @@ namespace rodnet
                       "displacement",
                       Anything(),
                       "Colours the deformed rods of picture.png: "
-                      "displacement, rod (index), a field of the VTU files "
-                      "(curvature, axial_strain, ...; name[k]: component "
-                      "k), or none (no picture). [-]");
+                      "displacement, rod (index), group, a field of the VTU "
+                      "files (curvature, axial_strain, ...; name[k]: "
+                      "component k), or none (no picture). [-]");
     prm.declare_entry("Picture view",
                       "auto",
                       Anything(),
@@ -490,16 +572,23 @@ namespace rodnet
                       Anything(),
                       "The colour bar's range, \"<low>, <high>\", for every "
                       "picture; auto: the field's range over them all. [-]");
+    prm.declare_entry("Picture groups",
+                      "",
+                      Anything(),
+                      "For field group: the groups to colour (\"layer1, "
+                      "layer2\"); a rod shows the first it is in. [-]");
   }
 
 
   void
   PictureOptions::parse_entries(dealii::ParameterHandler &prm)
   {
-    field                  = prm.get("Picture field");
-    enabled                = field != "none";
-    interval               = prm.get_integer("Picture interval");
-    range                  = colour_bar_range(prm.get("Picture range"));
+    field    = prm.get("Picture field");
+    enabled  = field != "none";
+    interval = prm.get_integer("Picture interval");
+    range    = colour_bar_range(prm.get("Picture range"));
+    groups.names =
+      dealii::Utilities::split_string_list(prm.get("Picture groups"), ',');
     const std::string view = prm.get("Picture view");
     if (view == "auto")
       return;
@@ -522,9 +611,11 @@ namespace rodnet
                          const std::string    &title,
                          ColourRange          *range)
   {
-    const PictureField field =
-      PictureFieldCatalogue(network, state.positions, state.fields)
-        .select(options.field);
+    const PictureField field = PictureFieldCatalogue(network,
+                                                     state.positions,
+                                                     state.fields,
+                                                     options.groups)
+                                 .select(options.field);
     ColourRange drawn_range = colour_range(field);
     if (range != nullptr)
       *range = drawn_range;
@@ -546,6 +637,7 @@ namespace rodnet
         thin_out(rod.undeformed, nullptr, 1.5 / frame.scale);
         thin_out(rod.deformed, &rod.values, 1.5 / frame.scale);
       }
+    const bool with_none = !field.categories.empty() && mark_no_category(rods);
 
     std::ostringstream script;
     script << "# rodnet picture: azimuth "
@@ -553,15 +645,35 @@ namespace rodnet
            << picture_number(camera.elevation + 0.0)
            << " degrees; screen coordinates (m) from the frame's centre\n"
            << layout_settings(frame, png_path, title)
-           << colour_settings(drawn_range) << "set cblabel "
-           << gnuplot_quote(field.label) << "\n";
+           << colour_settings(drawn_range);
+    if (field.categories.empty())
+      script << "set cblabel " << gnuplot_quote(field.label) << "\n";
+    else
+      script << category_settings(frame, field.categories, field.label);
     write_picture_data(script, rods, frame.centre());
     script << "plot $undeformed with lines linecolor rgb '#c8c8c8' linewidth "
            << picture_number(0.6 * width, 3)
-           << ", \\\n     $deformed using 1:2:3 with lines linecolor palette "
-              "linewidth "
-           << picture_number(width, 3) << "\n";
+           << ", \\\n     $deformed using 1:2:"
+           << (field.categories.empty() ?
+                 "3 with lines linecolor palette" :
+                 "(category_colour($3)) with lines linecolor rgb variable")
+           << " linewidth " << picture_number(width, 3)
+           << (field.categories.empty() ?
+                 "" :
+                 category_legend(field.categories, with_none, width))
+           << "\n";
     return script.str();
+  }
+
+
+  void
+  PictureOptions::resolve_groups(
+    const std::vector<std::vector<std::string>> &rod_groups)
+  {
+    if (field == "group")
+      groups = picture_groups(groups.names, rod_groups);
+    else
+      groups = {};
   }
 
 

@@ -6,6 +6,7 @@
 #include <core/model.h>
 #include <core/output_fields.h>
 #include <core/rod_network.h>
+#include <io/picture_fields.h>
 
 #include <cmath>
 #include <optional>
@@ -35,9 +36,13 @@ namespace rodnet
     /// Pixels of the longer side of the drawing (the kept script's
     /// "set terminal" line redraws it larger).
     unsigned int size = 1000;
+    /// The groups of field "group": as parse_entries() reads "Picture
+    /// groups", names only; resolve_groups() gives each rod its group.
+    PictureGroups groups;
 
     /// Declares the entries "Picture field", "Picture view", "Picture
-    /// interval" and "Picture range" in the current subsection (Output).
+    /// interval", "Picture range" and "Picture groups" in the current
+    /// subsection (Output).
     static void
     declare_entries(dealii::ParameterHandler &prm);
 
@@ -47,6 +52,12 @@ namespace rodnet
     /// increasing numbers.
     void
     parse_entries(dealii::ParameterHandler &prm);
+
+    /// Where the field is "group", the groups read by parse_entries() for
+    /// rods in the groups @p rod_groups (picture_groups(), which throws
+    /// naming the entry "Output/Picture groups"); otherwise none.
+    void
+    resolve_groups(const std::vector<std::vector<std::string>> &rod_groups);
   };
 
   /// The range of a picture's colour bar: its ends, and whether the field
@@ -98,7 +109,9 @@ namespace rodnet
    * deformed ones coloured by the field @p options.field (viridis; an
    * integer field of a few values in bands) with a colour bar labelled
    * with the field's name and unit (picture_label()), over the range
-   * @p options.range or else the field's own, @p title at the top left;
+   * @p options.range or else the field's own; a field of categories
+   * ("group") in distinct colours, with a legend of their names instead
+   * of the colour bar; @p title at the top left;
    * @p range, if given, receives the field's own range. Lines are
    * the thinner the more rods the picture holds, so that a dense lattice
    * stays readable; rods are drawn from the farthest to the nearest.

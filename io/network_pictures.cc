@@ -27,7 +27,10 @@ namespace rodnet
   {
     try
       {
-        PictureFieldCatalogue(network, sample.positions, sample.fields)
+        PictureFieldCatalogue(network,
+                              sample.positions,
+                              sample.fields,
+                              options.groups)
           .select(options.field);
       }
     catch (const std::invalid_argument &e)

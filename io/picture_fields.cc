@@ -8,18 +8,72 @@
 
 namespace rodnet
 {
-  std::vector<OutputFields::Field>
-  network_fields(const RodNetwork &network)
+  PictureGroups
+  picture_groups(const std::vector<std::string>              &listed,
+                 const std::vector<std::vector<std::string>> &rod_groups)
   {
-    OutputFields::Field rod{"rod",
-                            1,
-                            std::vector<double>(
-                              network.triangulation().n_active_cells()),
-                            "-"};
+    const std::string entry = "entry \"Output/Picture groups\": ";
+    // "all" holds every rod (io/rod_groups.h).
+    std::vector<std::string> known{"all"};
+    for (const std::vector<std::string> &groups : rod_groups)
+      for (const std::string &group : groups)
+        if (std::find(known.begin(), known.end(), group) == known.end())
+          known.push_back(group);
+    if (listed.empty())
+      throw std::invalid_argument(
+        entry +
+        "Picture field = group colours the rods by the groups this "
+        "entry lists; the groups of this geometry are " +
+        quoted_list(known));
+    if (listed.size() > max_picture_groups)
+      throw std::invalid_argument(
+        entry + std::to_string(listed.size()) + " groups, more than the " +
+        std::to_string(max_picture_groups) + " colours a picture tells apart");
+    for (std::size_t g = 0; g < listed.size(); ++g)
+      if (std::find(known.begin(), known.end(), listed[g]) == known.end())
+        throw std::invalid_argument(
+          entry + "no rod is in group \"" + listed[g] +
+          "\"; the groups of this geometry are " +
+          quoted_list(nearest_names(known, listed[g], 8)));
+      else if (std::count(listed.begin(), listed.end(), listed[g]) > 1)
+        throw std::invalid_argument(entry + "the group \"" + listed[g] +
+                                    "\" is listed twice");
+    PictureGroups picture{listed, std::vector<int>(rod_groups.size(), -1)};
+    for (std::size_t r = 0; r < rod_groups.size(); ++r)
+      for (std::size_t g = 0; g < listed.size() && picture.rod_group[r] < 0;
+           ++g)
+        if (listed[g] == "all" ||
+            std::find(rod_groups[r].begin(), rod_groups[r].end(), listed[g]) !=
+              rod_groups[r].end())
+          picture.rod_group[r] = g;
+    return picture;
+  }
+
+
+  std::vector<OutputFields::Field>
+  network_fields(const RodNetwork &network, const PictureGroups &groups)
+  {
+    const unsigned int  n_segments = network.triangulation().n_active_cells();
+    OutputFields::Field rod{"rod", 1, std::vector<double>(n_segments), "-"};
+    OutputFields::Field group{"group",
+                              1,
+                              std::vector<double>(n_segments, NAN),
+                              "-"};
+    if (!groups.names.empty() &&
+        groups.rod_group.size() != network.rods().size())
+      throw std::invalid_argument(
+        "network_fields: groups of " + std::to_string(groups.rod_group.size()) +
+        " rods for a network of " + std::to_string(network.rods().size()));
     for (unsigned int r = 0; r < network.rods().size(); ++r)
       for (const unsigned int cell : network.rods()[r].segments)
-        rod.values[cell] = r;
-    return {rod};
+        {
+          rod.values[cell] = r;
+          if (!groups.names.empty() && groups.rod_group[r] >= 0)
+            group.values[cell] = groups.rod_group[r];
+        }
+    if (groups.names.empty())
+      return {rod};
+    return {rod, group};
   }
 
 
@@ -59,9 +113,11 @@ namespace rodnet
   PictureFieldCatalogue::PictureFieldCatalogue(
     const RodNetwork           &network,
     const std::vector<Vector3> &deformed,
-    const OutputFields         &fields)
+    const OutputFields         &fields,
+    const PictureGroups        &groups)
       : displacement{"displacement", 3, {}, "m"}
-      , network_field_list(network_fields(network))
+      , network_field_list(network_fields(network, groups))
+      , group_names(groups.names)
   {
     if (deformed.size() != network.n_vertices())
       throw std::invalid_argument("PictureFieldCatalogue: positions of " +
@@ -135,7 +191,10 @@ namespace rodnet
                         picture_label(name, field.unit, field.components),
                         source.per_segment,
                         {},
-                        field.interior_vertices_only};
+                        field.interior_vertices_only,
+                        {}};
+    if (name == "group")
+      picked.categories = group_names;
     for (std::size_t i = 0; i < field.values.size(); i += field.components)
       {
         const double *value = &field.values[i];

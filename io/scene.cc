@@ -501,6 +501,7 @@ namespace rodnet
     mode_shapes      = prm.get_integer("Mode shapes");
     picture.parse_entries(prm);
     prm.leave_subsection();
+    picture.resolve_groups(groups_of_rods());
     if (mode_shapes > 0 && method != SolutionMethod::newton &&
         method != SolutionMethod::continuation)
       throw std::invalid_argument(

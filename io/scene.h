@@ -256,6 +256,11 @@ namespace rodnet
     std::string
     rod_name(unsigned int r) const;
 
+    /// The groups of every rod (RodGraph::Beam::groups: beam b is rod b);
+    /// none for rods that are not a network's beams.
+    std::vector<std::vector<std::string>>
+    groups_of_rods() const;
+
     /**
      * Adds the activation fields of the groups (rod_activation) to
      * @p model, each rod's arc length from its start (after the half

@@ -30,11 +30,7 @@ namespace rodnet
           settings.push_back(parse_rod_group(prm, *name));
           prm.leave_subsection();
         }
-    // build_rod_network() makes beam b rod b.
-    std::vector<std::vector<std::string>> groups(graph ? graph->beams.size() :
-                                                         rod_points.size());
-    for (std::size_t b = 0; graph && b < graph->beams.size(); ++b)
-      groups[b] = graph->beams[b].groups;
+    const std::vector<std::vector<std::string>> groups = groups_of_rods();
     const auto describe = [this](const unsigned int r) { return rod_name(r); };
     const std::vector<RodSettings> rods =
       resolve_rod_groups(groups, settings, describe);
@@ -60,6 +56,17 @@ namespace rodnet
           *name_in_title(scene_materials[m].subsection,
                          material_subsection_prefix) +
           "\") or remove it");
+  }
+
+  std::vector<std::vector<std::string>>
+  Scene::groups_of_rods() const
+  {
+    // build_rod_network() makes beam b rod b.
+    std::vector<std::vector<std::string>> groups(graph ? graph->beams.size() :
+                                                         rod_points.size());
+    for (std::size_t b = 0; graph && b < graph->beams.size(); ++b)
+      groups[b] = graph->beams[b].groups;
+    return groups;
   }
 
   std::string

@@ -234,6 +234,14 @@ namespace
      1,
      "entry \"Output/Picture range\": \"1, 0\" should read \"auto\" or "
      "\"<low>, <high>\", two finite numbers with low < high"},
+    {"picture_group_unknown",
+     with("Output",
+          "  set Picture field = group\n  set Picture groups = layer1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Output/Picture groups\": no rod is in group \"layer1\"; the "
+     "groups of this geometry are \"all\""},
     {"billion_segments",
      with("Geometry", "  set Segments = 1000000000\n"),
      ".prm",

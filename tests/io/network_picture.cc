@@ -5,7 +5,8 @@
 // drawn without distortion (a ring stays round), at every n-th step on
 // request, all over one colour range, at most 100 of them; without
 // gnuplot the run succeeds and says so once; colour bars are labelled
-// with readable names and units. The PNGs are
+// with readable names and units; rod groups in their colours with a legend
+// naming them, rods of no listed group in grey. The PNGs are
 // decoded (libpng) and their pixels checked.
 #include <common/run_scene_text.h>
 #include <common/scene_text.h>
@@ -22,6 +23,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <png.h>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -271,6 +273,162 @@ namespace
     EXPECT_GT(high, 500u);
     EXPECT_EQ(between, 0u);
     EXPECT_GT(distance(content.low, content.high), 200);
+  }
+
+  /// A picture's legend: (colour, name) of every entry.
+  using Legend = std::vector<std::pair<Rgb, std::string>>;
+
+  /// The legend entries of the script @p path: (colour, name) of every
+  /// "keyentry ... rgb '#rrggbb' ... title 'name'" line.
+  Legend
+  legend_of(const std::string &path)
+  {
+    Legend        legend;
+    std::ifstream script(path);
+    for (std::string line; std::getline(script, line);)
+      {
+        const std::size_t key   = line.find("keyentry"),
+                          rgb   = line.find("rgb '#"),
+                          title = line.find("title '");
+        if (key == std::string::npos || rgb == std::string::npos ||
+            title == std::string::npos)
+          continue;
+        const long colour = std::stol(line.substr(rgb + 6, 6), nullptr, 16);
+        const std::string name = line.substr(title + 7);
+        legend.push_back(
+          {{{int(colour >> 16), int(colour >> 8 & 0xff), int(colour & 0xff)}},
+           name.substr(0, name.find('\''))});
+      }
+    return legend;
+  }
+
+  /// The pixels (column, row) of the drawing of @p image, left of the
+  /// legend's margin (150 pixels), within @p tolerance of @p colour.
+  std::vector<std::array<unsigned int, 2>>
+  pixels_near(const Image &image, const Rgb &colour, const double tolerance)
+  {
+    std::vector<std::array<unsigned int, 2>> pixels;
+    for (unsigned int x = 0; x + 150 < image.width; ++x)
+      for (unsigned int y = 0; y < image.height; ++y)
+        if (distance(image.at(x, y), colour) < tolerance)
+          pixels.push_back({{x, y}});
+    return pixels;
+  }
+
+  /// A 2 x 2 square lattice of side 1 in the xy-plane, clamped at n_0_0
+  /// and pushed out of its plane a little at n_2_2, seen from above, its
+  /// picture coloured by "group" with Picture groups = @p groups.
+  std::string
+  lattice_by_groups(const std::string &groups)
+  {
+    return "subsection Geometry\n  set Generator = square lattice\n"
+           "  set Cells = 2, 2\n  set Beam length = 1\n  set Segments = 4\n"
+           "end\n" +
+           direct_material("100") +
+           "subsection Supports\n  set Clamped ends = @n_0_0\nend\n"
+           "subsection Loads\n  set Point forces = @n_2_2: 0, 0, 1e-3\nend\n"
+           "subsection Output\n  set Write VTU = false\n"
+           "  set Picture field = group\n  set Picture view = -90, 90\n"
+           "  set Picture groups = " +
+           groups + "\nend\n";
+  }
+
+  /// The names of @p legend's entries, in order.
+  std::vector<std::string>
+  names_of(const Legend &legend)
+  {
+    std::vector<std::string> names;
+    for (const auto &entry : legend)
+      names.push_back(entry.second);
+    return names;
+  }
+
+  /// Runs lattice_by_groups(@p groups) into network_picture_tests/@p name:
+  /// its picture and the legend of its script.
+  std::pair<Image, Legend>
+  lattice_picture(const std::string &groups, const std::string &name)
+  {
+    Image image = picture_of_run(lattice_by_groups(groups), name);
+    return {std::move(image),
+            legend_of("network_picture_tests/" + name + "/picture.png.gp")};
+  }
+
+  TEST(NetworkPicture, GroupsInTheirColoursWithALegend)
+  {
+    if (!gnuplot_on_path())
+      GTEST_SKIP() << "gnuplot is not on PATH";
+    // Seen from above, the x-beams are the horizontal lines of the
+    // picture, the y-beams the vertical ones: each group in the colour its
+    // legend entry gives it, two colours far apart, and no colour bar.
+    const auto [image, legend] = lattice_picture("x-beams, y-beams", "groups");
+    ASSERT_EQ(names_of(legend),
+              (std::vector<std::string>{"x-beams", "y-beams"}));
+    EXPECT_GT(distance(legend[0].first, legend[1].first), 150);
+    // The rows and columns each group's pixels cover.
+    for (unsigned int g = 0; g < 2; ++g)
+      {
+        const auto             pixels = pixels_near(image, legend[g].first, 30);
+        std::set<unsigned int> rows, columns;
+        for (const auto &[x, y] : pixels)
+          rows.insert(y), columns.insert(x);
+        EXPECT_GT(pixels.size(), 1000u) << legend[g].second;
+        // Three lines, some 3 pixels wide, over most of the drawing:
+        // x-beams (g = 0) horizontal, y-beams vertical.
+        EXPECT_LT((g == 0 ? rows : columns).size(), 30u) << legend[g].second;
+        EXPECT_GT((g == 0 ? columns : rows).size(), 300u) << legend[g].second;
+      }
+  }
+
+  TEST(NetworkPicture, RodsOfNoListedGroupInGrey)
+  {
+    if (!gnuplot_on_path())
+      GTEST_SKIP() << "gnuplot is not on PATH";
+    // Only the boundary listed: the interior beams (the middle row and
+    // column) are grey and the legend says so.
+    const auto [image, legend] = lattice_picture("boundary", "groups_other");
+    ASSERT_EQ(names_of(legend),
+              (std::vector<std::string>{"boundary", "(other)"}));
+    EXPECT_LT(saturation(legend[1].first), 8);
+    // Eight boundary beams, four interior ones.
+    EXPECT_GT(pixels_near(image, legend[0].first, 30).size(), 2000u);
+    EXPECT_GT(pixels_near(image, legend[1].first, 20).size(), 1000u);
+  }
+
+  TEST(PictureGroups, FirstListedGroupOfEachRod)
+  {
+    // The list's order settles a rod in two listed groups; a rod in none
+    // shows none (-1); "all" holds every rod.
+    const std::vector<std::vector<std::string>> rods{{"x-beams", "boundary"},
+                                                     {"y-beams", "interior"},
+                                                     {"y-beams", "boundary"},
+                                                     {"struts"}};
+    EXPECT_EQ(picture_groups({"y-beams", "boundary"}, rods).rod_group,
+              (std::vector<int>{1, 0, 0, -1}));
+    EXPECT_EQ(picture_groups({"boundary", "y-beams"}, rods).rod_group,
+              (std::vector<int>{0, 1, 0, -1}));
+    EXPECT_EQ(picture_groups({"interior", "all"}, rods).rod_group,
+              (std::vector<int>{1, 0, 1, 1}));
+    for (const auto &[listed, fragment] :
+         std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{}, "colours the rods by the groups this entry lists"},
+           {{"x-beam"},
+            "no rod is in group \"x-beam\"; the groups of this geometry are "
+            "\"x-beams\""},
+           {{"boundary", "boundary"}, "\"boundary\" is listed twice"},
+           {{"1", "2", "3", "4", "5", "6", "7", "8"},
+            "8 groups, more than the 7 colours"}})
+      try
+        {
+          picture_groups(listed, rods);
+          ADD_FAILURE() << fragment << ": no error";
+        }
+      catch (const std::invalid_argument &e)
+        {
+          const std::string message = e.what();
+          EXPECT_EQ(message.find("entry \"Output/Picture groups\": "), 0u)
+            << message;
+          EXPECT_NE(message.find(fragment), std::string::npos) << message;
+        }
   }
 
   TEST(NetworkPicture, RodEndsTakeTheirNeighboursCurvature)
