@@ -3,6 +3,7 @@
 
 #include <base/registry.h>
 #include <core/model.h>
+#include <core/motion.h>
 
 #include <memory>
 #include <string>
@@ -14,17 +15,20 @@ namespace rodnet
    * state vector: the model (its network, supports and capabilities), the
    * load factor, the lowest eigenvalue of the tangent where the solver
    * computed it, and the state's positions, energy, reactions and junction
-   * rotations. ProbedStateOf<State> is the one implementation.
+   * rotations; in dynamic time stepping also its Motion (energies and
+   * momenta). ProbedStateOf<State> is the one implementation.
    */
   class ProbedState
   {
   public:
     ProbedState(const ModelBase &model,
                 const double     load_factor,
-                const double     lowest_eigenvalue)
+                const double     lowest_eigenvalue,
+                const Motion    *motion = nullptr)
         : model(model)
         , load_factor(load_factor)
         , lowest_eigenvalue(lowest_eigenvalue)
+        , motion(motion)
     {
     }
 
@@ -54,6 +58,9 @@ namespace rodnet
     const double     load_factor;
     /// NaN where the solver did not compute it.
     const double lowest_eigenvalue;
+    /// Energies and momenta with the velocities of dynamic time stepping;
+    /// null elsewhere (Scene::probes() refuses the probes that read it).
+    const Motion *const motion;
   };
 
   /// ProbedState of a Model<State> at the state @p u.
@@ -64,8 +71,9 @@ namespace rodnet
     ProbedStateOf(const Model<State> &model,
                   const State        &u,
                   const double        load_factor,
-                  const double        lowest_eigenvalue)
-        : ProbedState(model, load_factor, lowest_eigenvalue)
+                  const double        lowest_eigenvalue,
+                  const Motion       *motion = nullptr)
+        : ProbedState(model, load_factor, lowest_eigenvalue, motion)
         , state_model(model)
         , u(u)
     {
@@ -169,6 +177,14 @@ namespace rodnet
     /// solver then computes at every recorded state.
     virtual bool
     needs_lowest_eigenvalue() const
+    {
+      return false;
+    }
+
+    /// Whether value() reads ProbedState::motion, which only dynamic time
+    /// stepping provides.
+    virtual bool
+    needs_motion() const
     {
       return false;
     }

@@ -54,6 +54,20 @@ namespace rodnet
       words.name    = probe_name(item, words.context, probes);
       std::istringstream stream(item.substr(item.find(':') + 1));
       stream >> words.kind >> words.first >> words.second >> words.extra;
+      // A kind of two words ("kinetic energy", "linear momentum").
+      const std::string two_words = words.kind + " " + words.first;
+      if (probe_kind_registry().contains(two_words))
+        {
+          std::string rest;
+          stream >> rest;
+          words = {words.name,
+                   words.entry,
+                   words.context,
+                   two_words,
+                   words.second,
+                   words.extra,
+                   rest};
+        }
       return words;
     }
   } // namespace
@@ -96,6 +110,15 @@ namespace rodnet
       if (probe->needs_lowest_eigenvalue())
         return true;
     return false;
+  }
+
+  const Probe *
+  first_motion_probe(const ProbeList &probes)
+  {
+    for (const auto &probe : probes)
+      if (probe->needs_motion())
+        return probe.get();
+    return nullptr;
   }
 
   void

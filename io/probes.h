@@ -37,6 +37,10 @@ namespace rodnet
   bool
   needs_lowest_eigenvalue(const ProbeList &probes);
 
+  /// The first of @p probes that reads the Motion of the state, or null.
+  const Probe *
+  first_motion_probe(const ProbeList &probes);
+
   /**
    * Makes @p values continuous from @p previous, the values of the step
    * before (empty for the first step, when every reference is 0): each
@@ -49,7 +53,8 @@ namespace rodnet
 
   /**
    * Values of @p probes at the converged state @p u of @p model at
-   * @p load_factor; @p lowest_eigenvalue is what eigenvalue probes read.
+   * @p load_factor; @p lowest_eigenvalue is what eigenvalue probes read,
+   * @p motion what the energy and momentum probes of dynamics read.
    */
   template <class State>
   std::vector<double>
@@ -57,9 +62,14 @@ namespace rodnet
                   const Model<State> &model,
                   const State        &u,
                   const double        load_factor,
-                  const double        lowest_eigenvalue = std::nan(""))
+                  const double        lowest_eigenvalue = std::nan(""),
+                  const Motion       *motion            = nullptr)
   {
-    const ProbedStateOf<State> state(model, u, load_factor, lowest_eigenvalue);
+    const ProbedStateOf<State> state(model,
+                                     u,
+                                     load_factor,
+                                     lowest_eigenvalue,
+                                     motion);
     std::vector<double>        values;
     for (const auto &probe : probes)
       values.push_back(probe->value(state));

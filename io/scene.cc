@@ -1002,6 +1002,16 @@ namespace rodnet
   ProbeList
   Scene::probes(const ModelBase &model) const
   {
-    return parse_probes(probe_text, model, "Output/Probes");
+    ProbeList probes = parse_probes(probe_text, model, "Output/Probes");
+    // Only a dynamic integrator has velocities and a mass matrix.
+    const Probe *motion = first_motion_probe(probes);
+    if (motion != nullptr &&
+        !(method == SolutionMethod::time_stepping && time_stepping.dynamic()))
+      throw std::invalid_argument(
+        "entry \"Output/Probes\", probe \"" + motion->name() +
+        "\": energies and momenta of the motion need dynamic time stepping "
+        "(Solver/Method = time stepping with an Integrator other than "
+        "quasi-static)");
+    return probes;
   }
 } // namespace rodnet

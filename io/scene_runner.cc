@@ -596,10 +596,12 @@ namespace rodnet
              << " s" << std::endl;
 
       // The initial state (step 0) is not checked: NaN in its columns.
-      const auto record = [&](const unsigned int              step,
+      const bool motion_probes = first_motion_probe(probes) != nullptr;
+      const auto record        = [&](const unsigned int              step,
                               const double                    time,
                               const double                    load_factor,
                               const VectorType               &u,
+                              const VectorType               &v,
                               const TimeIntegrator::StepInfo *info) {
         std::vector<double> values(checks.size(), std::nan(""));
         if (info != nullptr)
@@ -610,10 +612,20 @@ namespace rodnet
             if (!dynamic)
               values.front() = info->stable;
           }
+        // Scene::probes() allows motion probes in dynamic runs only.
+        const Motion motion =
+          motion_probes ?
+                   motion_of(*model, integrator.mass_matrix(), u, v, load_factor) :
+                   Motion();
         recorder.record(step,
                         time,
                         load_factor,
-                        evaluate_probes(probes, *model, u, load_factor),
+                        evaluate_probes(probes,
+                                        *model,
+                                        u,
+                                        load_factor,
+                                        std::nan(""),
+                                        &motion),
                         u,
                         values);
       };
@@ -626,15 +638,19 @@ namespace rodnet
         const double load_factor = parameters.load_factor(time);
         model->set_time(time);
         model->apply_boundary_values(u, load_factor);
-        record(0, time, load_factor, u, nullptr);
-        integrator.run(
-          u,
-          v,
-          [&](const TimeIntegrator::StepInfo &info,
-              const VectorType               &state,
-              const VectorType &) {
-            record(info.step, info.time, info.load_factor, state, &info);
-          });
+        record(0, time, load_factor, u, v, nullptr);
+        integrator.run(u,
+                       v,
+                       [&](const TimeIntegrator::StepInfo &info,
+                           const VectorType               &state,
+                           const VectorType               &velocity) {
+                         record(info.step,
+                                info.time,
+                                info.load_factor,
+                                state,
+                                velocity,
+                                &info);
+                       });
       });
       // The preload's rows stay in probes.csv; the plot shows the motion,
       // whose time scale is usually far shorter.

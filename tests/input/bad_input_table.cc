@@ -689,11 +689,27 @@ namespace
      ".prm",
      "",
      1,
-     "unknown probe kind \"angle\"; known: distance <vertex> <vertex> [m], "
-     "eigenvalue [mixed], energy [J], "
+     "unknown probe kind \"angle\"; known: angular momentum <x|y|z> "
+     "[N m s], distance <vertex> <vertex> [m], eigenvalue [mixed], energy "
+     "[J], kinetic energy [J], linear momentum <x|y|z> [N s], "
      "moment <junction> <x|y|z> [N m], position <vertex> <x|y|z> [m], "
-     "reaction <vertex> <x|y|z> [N], rotation <junction> <ax>,<ay>,<az> "
-     "[rad]"},
+     "potential energy [J], reaction <vertex> <x|y|z> [N], rotation "
+     "<junction> <ax>,<ay>,<az> [rad], total energy [J]"},
+    {"unknown_momentum_component",
+     with("Output", "  set Probes = p: linear momentum w\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Output/Probes\", probe \"p: linear momentum w\": component "
+     "\"w\" is not x, y or z"},
+    {"motion_probe_in_statics",
+     with("Output", "  set Probes = E: kinetic energy\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Output/Probes\", probe \"E\": energies and momenta of the "
+     "motion need dynamic time stepping (Solver/Method = time stepping with "
+     "an Integrator other than quasi-static)"},
     // Activation fields (doc/morphing.md) on the cantilever of length 1.
     {"activation_past_the_rod",
      with("Group all", "  set Natural curvature = 1, 0 on 0.5 to 1.5\n"),

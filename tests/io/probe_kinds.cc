@@ -160,8 +160,18 @@ namespace
               std::string::npos);
     EXPECT_NE(message("a: angle end")
                 .find("unknown probe kind \"angle\"; "
-                      "known: distance <vertex> "
-                      "<vertex> [m], eigenvalue"),
+                      "known: angular momentum <x|y|z> [N m s], distance "
+                      "<vertex> <vertex> [m], eigenvalue"),
               std::string::npos);
+    // Kinds of two words (io/motion_probes.cc).
+    EXPECT_EQ(message("k: kinetic energy 3"),
+              "entry \"Output/Probes\", probe \"k: kinetic energy 3\": "
+              "expected \"kinetic energy\"");
+    EXPECT_EQ(message("p: linear momentum"),
+              "entry \"Output/Probes\", probe \"p: linear momentum\": "
+              "expected \"linear momentum <x|y|z>\"");
+    EXPECT_EQ(message("L: angular momentum x y"),
+              "entry \"Output/Probes\", probe \"L: angular momentum x y\": "
+              "expected \"angular momentum <x|y|z>\"");
   }
 } // namespace

@@ -1,0 +1,42 @@
+#ifndef RODNET_CORE_MOTION_H
+#define RODNET_CORE_MOTION_H
+
+#include <core/rod_model.h>
+
+namespace rodnet
+{
+  /**
+   * Energies and momenta of a RodModel in motion, at the state (u, v) of a
+   * dynamic time integrator: what the probes "kinetic energy", "potential
+   * energy", "total energy", "linear momentum" and "angular momentum" read
+   * (doc/dynamics.md, "Energy and momenta").
+   */
+  struct Motion
+  {
+    /// 1/2 v.Mv.
+    double kinetic_energy = 0;
+    /// Pi(u, lambda): stored energy minus the work of the dead loads at the
+    /// load factor lambda (RodModel::assemble()).
+    double potential_energy = 0;
+    /// Sum over the position DoFs of M v.
+    Vector3 linear_momentum = Vector3::Zero();
+    /// Sum over the vertices of x_i x (M v)_i, about the origin; the
+    /// twist DoFs' spin is left out (doc/dynamics.md).
+    Vector3 angular_momentum = Vector3::Zero();
+  };
+
+  /**
+   * The Motion of @p model at the displacement @p u and velocity @p v,
+   * with the unconstrained mass matrix @p mass (assemble_mass_matrix())
+   * and the load factor @p load_factor. Throws std::invalid_argument if
+   * the sizes of @p v and @p mass differ.
+   */
+  Motion
+  motion_of(const RodModel   &model,
+            const MatrixType &mass,
+            const VectorType &u,
+            const VectorType &v,
+            double            load_factor);
+} // namespace rodnet
+
+#endif
