@@ -243,16 +243,14 @@ namespace rodnet
                       "0, 0, 0",
                       vector_pattern(),
                       "Gravitational acceleration; the weight per length of "
-                      "a rod is its mass per length times this: rho A of its "
-                      "material (Density, cross-section) or \"Mass per "
-                      "length\"; refused where neither is given. [m/s^2]");
+                      "a rod is its material's \"Mass per length\" (or "
+                      "rho A) times this. [m/s^2]");
     prm.declare_entry("Mass per length",
                       "0",
                       Double(0),
-                      "Mass per unit undeformed length, for gravity, of the "
-                      "rods whose material gives no Density and section "
-                      "(where it does, the two must agree); 0: not "
-                      "given. [kg/m]");
+                      "The \"Mass per length\" of the materials that give "
+                      "none and no Density and section (where one does, the "
+                      "two must agree); 0: not given. [kg/m]");
     prm.declare_entry("Ramped natural shape",
                       "",
                       Anything(),
@@ -424,12 +422,11 @@ namespace rodnet
     mass_per_length   = prm.get_double("Mass per length");
     natural_shape_ramp =
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
-    fixed_loads                        = prm.get_bool("Fixed loads");
-    const bool ramped_shape_or_support = natural_shape_ramp ||
-                                         ramps_activation() ||
-                                         !prescribed_displacements.empty() ||
-                                         !prescribed_rotations.empty() ||
-                                         substrate.moves();
+    fixed_loads = prm.get_bool("Fixed loads");
+    const bool ramped_shape_or_support =
+      natural_shape_ramp || ramps_activation() ||
+      !prescribed_displacements.empty() || !prescribed_rotations.empty() ||
+      substrate.moves();
     if (fixed_loads && !ramped_shape_or_support)
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
@@ -564,32 +561,6 @@ namespace rodnet
         " a run may write; set the interval to " +
         number(std::ceil(planned_steps() / (max_vtu_files - 1))) +
         " or more, or \"Write VTU = false\"");
-  }
-
-  std::vector<RodInertia>
-  Scene::inertia() const
-  {
-    const std::string      &integrator = time_stepping.integrator;
-    std::vector<RodInertia> result;
-    for (const unsigned int g : rod_material)
-      {
-        const SceneMaterial &group = scene_materials[g];
-        if (!(group.density > 0))
-          throw std::invalid_argument(
-            "entry \"" + group.subsection +
-            "/Density\": time stepping with the " + integrator +
-            " integrator needs the density of every material in use (0 means "
-            "not given)");
-        if (!group.section)
-          throw std::invalid_argument(
-            "entry \"" + group.subsection + "/" + group.model +
-            "/Stiffness input\": time stepping with the " + integrator +
-            " integrator takes the inertia rho A and rho (I1 + I2) from the "
-            "cross-section, which \"direct\" rigidities do not give; use "
-            "\"section\"");
-        result.push_back(rod_inertia(*group.section, group.density));
-      }
-    return result;
   }
 
   std::vector<std::array<double, 2>>
@@ -960,22 +931,9 @@ namespace rodnet
   double
   Scene::mass_per_length_of(const SceneMaterial &group) const
   {
+    if (const std::optional<double> rho_A = rod_mass_per_length(group))
+      return *rho_A;
     const std::string density_entry = "\"" + group.subsection + "/Density\"";
-    if (group.density > 0 && group.section)
-      {
-        const double rho_A = group.density * group.section->area;
-        if (mass_per_length > 0 &&
-            std::abs(mass_per_length - rho_A) > 1e-6 * rho_A)
-          throw std::invalid_argument(
-            "entry \"Loads/Mass per length\": " + number(mass_per_length) +
-            " kg/m differs from the " + number(rho_A) + " kg/m of " +
-            density_entry +
-            " times the section's area, which gravity would weigh as well; "
-            "give one of them (Mass per length = 0 takes rho A)");
-        return rho_A;
-      }
-    if (mass_per_length > 0)
-      return mass_per_length;
     if (group.density > 0)
       throw std::invalid_argument(
         "entry \"Loads/Gravity\": the weight of the rods of \"" +

@@ -108,12 +108,14 @@ namespace rodnet
     probes(const ModelBase &model) const;
 
     /**
-     * The inertia of every rod of build_model(), rod by rod: rho A and
-     * rho (I1 + I2) from the "Density" and the cross-section of the rod's
-     * material group (the groups of build_model()). Throws
-     * std::invalid_argument naming the subsection and entry where a group
-     * in use has no density or gives its rigidities directly (then there
-     * is no section to take A and I from).
+     * The inertia of every rod of build_model(), rod by rod, from its
+     * material group (the groups of build_model()): the group's "Mass per
+     * length" and "Twist inertia per length" where given, else rho A and
+     * rho (I1 + I2) of its "Density" and cross-section; the mass per length
+     * falls back on Loads/Mass per length. Throws std::invalid_argument
+     * naming the entry where a group in use has neither (e.g. a density
+     * with rigidities given directly: no section to take A and I from), or
+     * where two of them differ.
      */
     std::vector<RodInertia>
     inertia() const;
@@ -177,6 +179,10 @@ namespace rodnet
       std::string model;
       /// kg/m^3; 0 when not given.
       double density = 0;
+      /// "Mass per length" rho A (kg/m); 0 when not given.
+      double mass_per_length = 0;
+      /// "Twist inertia per length" (kg m); 0 when not given.
+      double twist_inertia_per_length = 0;
       /// Whether the rods keep their segments' lengths (Rod::inextensible).
       bool inextensible = false;
       /// Empty where the rigidities are given directly.
@@ -395,13 +401,26 @@ namespace rodnet
 
     /**
      * The mass per length that gravity weighs of the rods of material
-     * group @p group: rho A where the group gives a Density and a
-     * cross-section, otherwise Loads/Mass per length. Throws
-     * std::invalid_argument naming the entries where both are given and
-     * differ (by more than 1e-6 relative) and where neither is.
+     * group @p group (rod_mass_per_length()). Throws
+     * std::invalid_argument naming the entries where two are given and
+     * differ (by more than 1e-6 relative) and where none is.
      */
     double
     mass_per_length_of(const SceneMaterial &group) const;
+
+    /**
+     * The mass per length of the rods of @p group, for gravity and time
+     * stepping alike: the group's "Mass per length", else Density times the
+     * section's area, else Loads/Mass per length; empty where none is
+     * given. Throws std::invalid_argument naming the entry where two that
+     * are given differ by more than 1e-6 relative.
+     */
+    std::optional<double>
+    rod_mass_per_length(const SceneMaterial &group) const;
+
+    /// The inertia of the rods of @p group for time stepping (inertia()).
+    RodInertia
+    inertia_of(const SceneMaterial &group) const;
 
     /// mass_per_length_of() the group of every rod of build_network(),
     /// rod by rod.

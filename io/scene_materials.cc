@@ -7,6 +7,7 @@
 #include <io/scene_entries.h>
 #include <materials/rod_material.h>
 
+#include <cmath>
 #include <regex>
 #include <set>
 
@@ -55,10 +56,21 @@ namespace rodnet
         "Density",
         "0",
         dealii::Patterns::Double(0),
-        "Mass density rho, with the cross-section of \"Stiffness input = "
-        "section\": the weight rho A g per length under Loads/Gravity, and "
-        "for time stepping rho A per length and rho (I1 + I2) of twist "
-        "inertia; 0: not given. [kg/m^3]");
+        "Mass density rho; with the cross-section of \"Stiffness input = "
+        "section\" the default of the two entries below; 0: not given. "
+        "[kg/m^3]");
+      prm.declare_entry("Mass per length",
+                        "0",
+                        dealii::Patterns::Double(0),
+                        "rho A, weighed by Loads/Gravity and accelerated in "
+                        "time stepping; 0: Density times the section's "
+                        "area. [kg/m]");
+      prm.declare_entry("Twist inertia per length",
+                        "0",
+                        dealii::Patterns::Double(0),
+                        "Mass moment of the section about the centreline, "
+                        "for time stepping (rho J for a circle); 0: Density "
+                        "times I1 + I2. [kg m]");
       prm.declare_entry(
         "Inextensible",
         "false",
@@ -120,10 +132,12 @@ namespace rodnet
                         const std::string        &title)
   {
     SceneMaterial g;
-    g.subsection   = title;
-    g.model        = prm.get("Model");
-    g.density      = prm.get_double("Density");
-    g.inextensible = prm.get_bool("Inextensible");
+    g.subsection               = title;
+    g.model                    = prm.get("Model");
+    g.density                  = prm.get_double("Density");
+    g.mass_per_length          = prm.get_double("Mass per length");
+    g.twist_inertia_per_length = prm.get_double("Twist inertia per length");
+    g.inextensible             = prm.get_bool("Inextensible");
     if (!sets_an_entry(*entries.find(g.subsection)->find(g.model)))
       throw std::invalid_argument(
         "subsection \"" + g.subsection + "/" + g.model +
@@ -183,5 +197,120 @@ namespace rodnet
       (names.empty() ?
          std::string("; it names none") :
          "; it names " + quoted_list(nearest_names(names, rod.material, 8))));
+  }
+
+  // The inertia of the material groups: stated per group ("Mass per
+  // length", "Twist inertia per length"), independently of the stiffness,
+  // or derived from the group's Density and cross-section (doc/dynamics.md,
+  // "Stating the inertia").
+  namespace
+  {
+    using scene_entries::number;
+
+    /// Whether @p a and @p b differ by more than 1e-6 relative to @p b.
+    bool
+    differ_relatively(const double a, const double b)
+    {
+      return std::abs(a - b) > 1e-6 * b;
+    }
+
+    /**
+     * The value @p stated in the entry @p entry of the material subsection
+     * @p subsection (0: not given), else @p density times the property
+     * @p of_section of the section (empty without a density or a section).
+     * Throws naming the entry where both are given and differ: one of them
+     * would be silently ignored.
+     */
+    std::optional<double>
+    stated_or_derived(const double                stated,
+                      const double                density,
+                      const std::optional<double> of_section,
+                      const std::string          &subsection,
+                      const std::string          &entry,
+                      const std::string          &unit,
+                      const std::string          &property)
+    {
+      std::optional<double> derived;
+      if (density > 0 && of_section)
+        derived = density * *of_section;
+      if (stated > 0 && derived && differ_relatively(stated, *derived))
+        throw std::invalid_argument(
+          "entry \"" + subsection + "/" + entry + "\": " + number(stated) +
+          " " + unit + " differs from the " + number(*derived) + " " + unit +
+          " of \"" + subsection + "/Density\" times the section's " + property +
+          "; give one of them");
+      if (stated > 0)
+        return stated;
+      return derived;
+    }
+  } // namespace
+
+  std::optional<double>
+  Scene::rod_mass_per_length(const SceneMaterial &group) const
+  {
+    const std::optional<double> own =
+      stated_or_derived(group.mass_per_length,
+                        group.density,
+                        group.section ?
+                          std::optional<double>(group.section->area) :
+                          std::nullopt,
+                        group.subsection,
+                        "Mass per length",
+                        "kg/m",
+                        "area");
+    if (!own)
+      return mass_per_length > 0 ? std::optional<double>(mass_per_length) :
+                                   std::nullopt;
+    if (mass_per_length > 0 && differ_relatively(mass_per_length, *own))
+      throw std::invalid_argument(
+        "entry \"Loads/Mass per length\": " + number(mass_per_length) +
+        " kg/m differs from the " + number(*own) + " kg/m of \"" +
+        group.subsection +
+        (group.mass_per_length > 0 ? "/Mass per length\"" :
+                                     "/Density\" times the section's area") +
+        ", which gravity would weigh as well; give one of them (Mass per "
+        "length = 0 takes rho A)");
+    return own;
+  }
+
+  RodInertia
+  Scene::inertia_of(const SceneMaterial &group) const
+  {
+    const std::string needs = "\": time stepping with the " +
+                              time_stepping.integrator + " integrator needs ";
+    const std::string or_density =
+      " of the rods of \"" + group.subsection + "\": give it, or \"" +
+      group.subsection +
+      "/Density\" with a cross-section (\"Stiffness input = section\")";
+    const std::optional<double> rho_A = rod_mass_per_length(group);
+    if (!rho_A)
+      throw std::invalid_argument("entry \"" + group.subsection +
+                                  "/Mass per length" + needs +
+                                  "the mass per length rho A" + or_density);
+    const std::optional<double> rho_I =
+      stated_or_derived(group.twist_inertia_per_length,
+                        group.density,
+                        group.section ?
+                          std::optional<double>(group.section->I1 +
+                                                group.section->I2) :
+                          std::nullopt,
+                        group.subsection,
+                        "Twist inertia per length",
+                        "kg m",
+                        "I1 + I2");
+    if (!rho_I)
+      throw std::invalid_argument("entry \"" + group.subsection +
+                                  "/Twist inertia per length" + needs +
+                                  "the twist inertia per length" + or_density);
+    return {*rho_A, *rho_I};
+  }
+
+  std::vector<RodInertia>
+  Scene::inertia() const
+  {
+    std::vector<RodInertia> result;
+    for (const unsigned int g : rod_material)
+      result.push_back(inertia_of(scene_materials[g]));
+    return result;
   }
 } // namespace rodnet

@@ -96,7 +96,7 @@ namespace rodnet
                                   number(p.start_time) + " s");
     if (!p.dynamic())
       return;
-    // Throws for a material group without density or section.
+    // Throws for a material group in use without its inertia.
     inertia();
     if (p.integrator == "midpoint")
       for (const unsigned int g : rod_material)

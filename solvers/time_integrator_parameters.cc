@@ -22,7 +22,7 @@ namespace rodnet
     prm.declare_entry("Integrator",
                       "newmark",
                       Selection(names),
-                      help + "All but quasi-static need a Density in every "
+                      help + "All but quasi-static need the inertia of every "
                              "material subsection in use. [-]");
     // No lower bound in the pattern: a bad step is reported by the
     // scene with what is wrong, rather than as a pattern mismatch.

@@ -66,6 +66,12 @@ namespace
             "    set Time step = 0.1\n"
             "  end\n");
 
+  const std::string midpoint_integrator =
+    section("Solver",
+            "  subsection Time stepping\n"
+            "    set Integrator = midpoint\n"
+            "  end\n");
+
   const std::string data_folder = RODNET_SOURCE_DIR "/tests/input/data/";
 
   /// The cantilever's geometry replaced by the rods of the Gmsh mesh
@@ -470,6 +476,49 @@ namespace
      1,
      "entry \"Loads/Mass per length\": 1 kg/m differs from the 2.46615 kg/m "
      "of \"Material/Density\" times the section's area"},
+    // Time stepping with rigidities given directly: the inertia is stated.
+    {"dynamics_without_mass_per_length",
+     valid_cantilever + valid_time_stepping + midpoint_integrator,
+     ".prm",
+     "",
+     1,
+     "entry \"Material/Mass per length\": time stepping with the midpoint "
+     "integrator needs the mass per length rho A of the rods of "
+     "\"Material\": give it, or \"Material/Density\" with a cross-section "
+     "(\"Stiffness input = section\")"},
+    {"dynamics_without_twist_inertia",
+     valid_cantilever + valid_time_stepping + midpoint_integrator +
+       section("Material", "  set Mass per length = 1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Material/Twist inertia per length\": time stepping with the "
+     "midpoint integrator needs the twist inertia per length of the rods of "
+     "\"Material\""},
+    {"negative_mass_per_length",
+     with("Material", "  set Mass per length = -1\n"),
+     ".prm",
+     "",
+     1,
+     "The entry value -1 for the entry named Mass per length does not match "
+     "the given pattern: [Double 0...MAX_DOUBLE (inclusive)]"},
+    {"mass_per_length_contradicts_material_density",
+     valid_cantilever + valid_time_stepping + midpoint_integrator +
+       section("Material",
+               "  set Density = 7850\n"
+               "  set Mass per length = 1\n"
+               "  subsection linear elastic\n"
+               "    set Stiffness input = section\n"
+               "    set Young's modulus = 2.1e11\n"
+               "    set Cross section = circle\n"
+               "    set Radius = 0.01\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Material/Mass per length\": 1 kg/m differs from the 2.46615 "
+     "kg/m of \"Material/Density\" times the section's area; give one of "
+     "them"},
     // An entry that the generator does not read would look as if it acted.
     {"lattice_director",
      with("Geometry",

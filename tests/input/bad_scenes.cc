@@ -234,12 +234,13 @@ namespace
                        clamped_rod + viscoelastic_material("0", "") +
                          time_stepping("    set Integrator = newmark\n"
                                        "    set Time step = 0.01\n"),
-                       "entry \"Material/Density\"");
+                       "entry \"Material/Mass per length\"");
   }
 
   TEST(BadScene, DynamicRunNeedsSection)
   {
-    // Direct rigidities give no area or second moments for the inertia.
+    // Direct rigidities give no area or second moments: a density alone
+    // gives no inertia, the mass per length is to be stated.
     expect_input_error(
       "no_section",
       clamped_rod +
@@ -251,7 +252,9 @@ namespace
                               "    set GJ = 1\n") +
         time_stepping("    set Integrator = backward euler\n"
                       "    set Time step = 0.01\n"),
-      "entry \"Material/standard linear solid/Stiffness input\"");
+      "entry \"Material/Mass per length\": time stepping with the backward "
+      "euler integrator needs the mass per length rho A of the rods of "
+      "\"Material\": give it, or \"Material/Density\" with a cross-section");
   }
 
   TEST(BadScene, MidpointRuleRefusesViscoelasticMaterial)

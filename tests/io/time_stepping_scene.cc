@@ -115,6 +115,50 @@ namespace
       EXPECT_NEAR(i.mass_per_length, 1000 * M_PI * 1e-4, 1e-12);
   }
 
+  TEST(TimeSteppingScene, InertiaStatedPerMaterialGroup)
+  {
+    // Rods 0, 1: "Material", rigidities given directly, inertia stated;
+    // rods 2, 3: "Material thick", its Density and section with the mass
+    // per length stated as well (they agree: 500 pi 4e-4).
+    const std::string direct =
+      "  subsection linear elastic\n    set Stiffness input = direct\n"
+      "    set EA = 1e4\n    set EI1 = 1\n    set EI2 = 1\n    set GJ = 1\n"
+      "  end\n";
+    const Scene scene =
+      parse_scene("subsection Geometry\n  set Generator = square lattice\n"
+                  "  set Cells = 1, 1\n  set Segments = 2\nend\n"
+                  "subsection Material\n  set Mass per length = 3\n"
+                  "  set Twist inertia per length = 0.25\n" +
+                  direct +
+                  "end\n"
+                  "subsection Group y-beams\n  set Material = thick\nend\n"
+                  "subsection Material thick\n"
+                  "  set Mass per length = 0.62831853071795865\n" +
+                  elastic_circle("0.02", "500") + "end\n");
+    const std::vector<RodInertia> inertia = scene.inertia();
+    ASSERT_EQ(inertia.size(), 4u);
+    for (const unsigned int rod : {0u, 1u})
+      {
+        EXPECT_EQ(inertia[rod].mass_per_length, 3);
+        EXPECT_EQ(inertia[rod].rotational_inertia_per_length, 0.25);
+      }
+    for (const unsigned int rod : {2u, 3u})
+      {
+        EXPECT_NEAR(inertia[rod].mass_per_length, 500 * M_PI * 4e-4, 1e-6);
+        EXPECT_NEAR(inertia[rod].rotational_inertia_per_length,
+                    500 * M_PI * 16e-8 / 2,
+                    1e-16);
+      }
+
+    // Loads/Mass per length is the same quantity, for the materials that
+    // give none; the twist inertia has no such fallback.
+    const Scene loads = parse_scene(
+      "subsection Material\n  set Twist inertia per length = 0.5\n" + direct +
+      "end\nsubsection Loads\n  set Mass per length = 7\nend\n");
+    EXPECT_EQ(loads.inertia().at(0).mass_per_length, 7);
+    EXPECT_EQ(loads.inertia().at(0).rotational_inertia_per_length, 0.5);
+  }
+
   TEST(TimeSteppingScene, InitialFieldsAtTheVertices)
   {
     const Scene scene =
