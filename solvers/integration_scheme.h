@@ -19,8 +19,9 @@ namespace rodnet
     /// Rows with a nonzero mass diagonal.
     const std::vector<bool> &has_mass;
     /// The damping matrix C, empty (m() == 0) without damping.
-    const MatrixType &damping;             ///< unconstrained
-    const MatrixType &constrained_damping; ///< fixed rows and columns zero
+    const MatrixType &damping; ///< unconstrained
+    /// Fixed rows and columns zero but the tangent's diagonal there.
+    const MatrixType &constrained_damping;
   };
 
   /// The velocity at which a scheme's damping force C v acts, in terms of

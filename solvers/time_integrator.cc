@@ -151,7 +151,10 @@ namespace rodnet
         model.initialize_matrix(target);
         if (p.rayleigh_stiffness != 0)
           {
-            model.assemble(u, load_factor, nullptr, &tangent, c);
+            // The condensed tangent in both: the clamps' constraints tie
+            // DoFs (the midpoint clamp), which only condensation carries
+            // into the free rows (the mass matrix is condensed as well).
+            model.assemble(u, load_factor, nullptr, &tangent, true);
             target.add(p.rayleigh_stiffness, tangent);
           }
         if (p.rayleigh_mass != 0)

@@ -349,8 +349,9 @@ namespace rodnet
     static constexpr unsigned int noise_interval    = 20;
     MatrixType                    mass; ///< unconstrained
     MatrixType constrained_mass;        ///< fixed rows and columns zero
-    /// The damping matrix C (empty without damping), unconstrained and
-    /// with fixed rows and columns zero.
+    /// The damping matrix C (empty without damping), for the residual and
+    /// for the tangent (fixed rows and columns zero but K_0's diagonal);
+    /// both condense the clamps' constraints, as the mass matrix does.
     MatrixType damping, constrained_damping;
     /// The drag matrix (lumped, c per length on the positions), kept to
     /// form C at the start of a run; unconstrained and constrained.
