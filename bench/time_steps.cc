@@ -29,7 +29,6 @@
 
 #include "options.h"
 #include "timing.h"
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -86,78 +85,6 @@ namespace
         samples.push_back(bench::now() - start);
       }
     return bench::statistics(samples);
-  }
-
-  /**
-   * First mode of the discrete cantilever: omega_1 and its shape as a DoF
-   * vector, from K phi = omega^2 M phi on the free DoFs (dense: N = 50 has
-   * about 200). Starting from this shape the tip moves in one mode only,
-   * so that its zero crossings measure the period without the shifts of
-   * higher modes, whose phase errors differ with the step.
-   */
-  std::pair<double, VectorType>
-  first_mode(const RodModel &model)
-  {
-    MatrixType stiffness, mass;
-    model.initialize_matrix(stiffness);
-    model.assemble(model.create_vector(), 0.0, nullptr, &stiffness, true);
-    assemble_mass_matrix(model, {swing_inertia}, MassKind::consistent, mass);
-    std::vector<unsigned int> free;
-    for (unsigned int i = 0; i < stiffness.m(); ++i)
-      if (!model.constraints().is_constrained(i))
-        free.push_back(i);
-    Eigen::MatrixXd k(free.size(), free.size()), m(free.size(), free.size());
-    for (unsigned int i = 0; i < free.size(); ++i)
-      for (unsigned int j = 0; j < free.size(); ++j)
-        {
-          k(i, j) = stiffness.el(free[i], free[j]);
-          m(i, j) = mass.el(free[i], free[j]);
-        }
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(k, m);
-    VectorType shape = model.create_vector();
-    for (unsigned int i = 0; i < free.size(); ++i)
-      shape[free[i]] = modes.eigenvectors()(i, 0);
-    return {std::sqrt(modes.eigenvalues()[0]), shape};
-  }
-
-  /// Free vibration of @p model from @p amplitude times @p shape, at rest,
-  /// with @p method in steps @p h to @p end_time: the tip deflection.
-  SwingHistory
-  free_vibration(RodModel          &model,
-                 const VectorType  &shape,
-                 const double       amplitude,
-                 const std::string &method,
-                 const double       h,
-                 const double       end_time)
-  {
-    TimeIntegrator::Parameters p;
-    p.integrator         = method;
-    p.time_step          = h;
-    p.end_time           = end_time;
-    p.load_factor        = [](double) { return 0.0; };
-    p.relative_tolerance = 1e-11;
-    TimeIntegrator     integrator(model, {swing_inertia}, p);
-    const unsigned int tip = model.network().rods()[0].vertices.back();
-    VectorType         u = shape, v = model.create_vector();
-    u *= amplitude;
-    SwingHistory history;
-    try
-      {
-        integrator.run(u,
-                       v,
-                       [&](const TimeIntegrator::StepInfo &info,
-                           const VectorType               &x,
-                           const VectorType &) {
-                         history.time.push_back(info.time);
-                         history.tip.push_back(
-                           model.configuration().position(x, tip)[2]);
-                       });
-      }
-    catch (const SolverFailure &e)
-      {
-        history.failure = e.what();
-      }
-    return history;
   }
 
   void

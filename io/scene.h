@@ -325,6 +325,11 @@ namespace rodnet
     void
     check_time_stepping() const;
 
+    /// Throws std::invalid_argument naming the entry for a negative
+    /// damping coefficient, or damping in a quasi-static run.
+    void
+    check_damping() const;
+
     /// The steps a run takes if none is cut: load steps, or time steps
     /// with the preload steps.
     double

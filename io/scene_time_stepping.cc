@@ -94,6 +94,7 @@ namespace rodnet
       throw std::invalid_argument(entry + "End time\": " + number(p.end_time) +
                                   " s lies before the start time " +
                                   number(p.start_time) + " s");
+    check_damping();
     if (!p.dynamic())
       return;
     // Throws for a material group in use without its inertia.
@@ -114,6 +115,28 @@ namespace rodnet
               "\" does not have (it has internal variables); use newmark or "
               "backward euler");
         }
+  }
+
+  void
+  Scene::check_damping() const
+  {
+    const TimeIntegrator::Parameters &p = time_stepping;
+    const std::string entry = "entry \"" + time_stepping_section + "/";
+    if (p.rayleigh_mass < 0 || p.rayleigh_stiffness < 0)
+      throw std::invalid_argument(
+        entry + "Rayleigh damping\": alpha = " + number(p.rayleigh_mass) +
+        " and beta = " + number(p.rayleigh_stiffness) +
+        " must not be negative (a negative damping feeds energy in)");
+    if (p.viscous_drag < 0)
+      throw std::invalid_argument(
+        entry + "Viscous drag per length\": " + number(p.viscous_drag) +
+        " N s/m^2 must not be negative");
+    if (p.damped() && !p.dynamic())
+      throw std::invalid_argument(
+        entry +
+        "Integrator\": damping acts on velocities, which a quasi-static "
+        "run does not have; set backward euler, newmark or midpoint, or "
+        "the damping to 0");
   }
 
   void

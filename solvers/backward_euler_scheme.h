@@ -6,7 +6,8 @@
 namespace rodnet
 {
   /// Backward Euler, first order and dissipative:
-  /// M (u - u_n - h v_n) / h^2 + grad Pi(u, lambda_{n+1}) = 0,
+  /// M (u - u_n - h v_n) / h^2 + C (u - u_n) / h + grad Pi(u, lambda_{n+1})
+  /// = 0,
   /// v_{n+1} = (u - u_n) / h.
   class BackwardEulerScheme : public IntegrationScheme
   {

@@ -18,6 +18,7 @@ namespace rodnet
       system.model.assemble(y, step.load_factor, nullptr, &k, true);
       if (c != 0)
         k.add(c, system.constrained_mass);
+      add_damping_tangent(step.h, k);
     };
   }
 
@@ -40,13 +41,60 @@ namespace rodnet
     const VectorType *extra = extra_inertial_force();
     const double      energy =
       0.5 * c * (difference * product) - (extra != nullptr ? *extra * y : 0.0);
-    if (r == nullptr)
-      return energy;
-    r->add(c, product);
-    if (extra != nullptr)
-      r->add(-1.0, *extra);
-    system.model.constraints().set_zero(*r);
-    return energy;
+    if (r != nullptr)
+      {
+        r->add(c, product);
+        if (extra != nullptr)
+          r->add(-1.0, *extra);
+      }
+    const double dissipation = add_damping(step, y, r);
+    if (r != nullptr)
+      system.model.constraints().set_zero(*r);
+    return energy + dissipation;
+  }
+
+  double
+  IntegrationScheme::add_damping(const StepStart  &step,
+                                 const VectorType &y,
+                                 VectorType       *r)
+  {
+    if (system.damping.m() == 0)
+      return 0;
+    if (damped_velocity.size() != y.size())
+      {
+        damped_velocity.reinit(y);
+        damping_force.reinit(y);
+      }
+    // The force C v at v = a d - b v_n, d = y - u_n, is the gradient of
+    // a/2 d.C d - b y.C v_n: the scheme's Rayleigh dissipation function
+    // over the step, which keeps the step a minimization.
+    const auto [a, b] = damping_velocity(step.h);
+    damped_velocity   = y;
+    damped_velocity -= step.u;
+    system.damping.vmult(damping_force, damped_velocity);
+    double potential = 0.5 * a * (damped_velocity * damping_force);
+    damping_force *= a;
+    if (b != 0)
+      {
+        // v_n = (base - u_n) / h.
+        damped_velocity = step.base;
+        damped_velocity -= step.u;
+        damped_velocity *= b / step.h;
+        VectorType start_force(damped_velocity);
+        system.damping.vmult(start_force, damped_velocity);
+        potential -= y * start_force;
+        damping_force -= start_force;
+      }
+    if (r != nullptr)
+      r->add(1.0, damping_force);
+    return potential;
+  }
+
+  void
+  IntegrationScheme::add_damping_tangent(const double h, MatrixType &k) const
+  {
+    if (system.damping.m() != 0)
+      k.add(damping_velocity(h).a, system.constrained_damping);
   }
 
   void

@@ -18,6 +18,18 @@ namespace rodnet
     const MatrixType &constrained_mass; ///< fixed rows and columns zero
     /// Rows with a nonzero mass diagonal.
     const std::vector<bool> &has_mass;
+    /// The damping matrix C, empty (m() == 0) without damping.
+    const MatrixType &damping; ///< unconstrained
+    /// Fixed rows and columns zero but the tangent's diagonal there.
+    const MatrixType &constrained_damping;
+  };
+
+  /// The velocity at which a scheme's damping force C v acts, in terms of
+  /// the step's unknown u: v = a (u - u_n) - b v_n.
+  struct DampingVelocity
+  {
+    double a;
+    double b;
   };
 
   /// One step of length h from the state (u_n, v_n).
@@ -101,11 +113,26 @@ namespace rodnet
     virtual double
     mass_coefficient(double h) const = 0;
 
-    /// Called once before the first step from @p u at @p load_factor.
+    /**
+     * The velocity of the damping force C v of a step of length @p h: the
+     * velocity of the step's equation of motion (backward Euler:
+     * (u - u_n)/h; Newmark: v_{n+1} = 2 (u - u_n)/h - v_n; midpoint:
+     * (v_n + v_{n+1})/2 = (u - u_n)/h, which makes the energy fall by
+     * exactly the dissipated work h vbar.C vbar).
+     */
+    virtual DampingVelocity
+    damping_velocity(const double h) const
+    {
+      return {1 / h, 0};
+    }
+
+    /// Called once before the first step from @p u, @p v at
+    /// @p load_factor.
     virtual void
-    start(const VectorType &u, const double load_factor)
+    start(const VectorType &u, const VectorType &v, const double load_factor)
     {
       (void)u;
+      (void)v;
       (void)load_factor;
     }
 
@@ -135,6 +162,19 @@ namespace rodnet
     double
     add_inertia(const StepStart &step, const VectorType &y, VectorType *r);
 
+    /**
+     * The damping force C v of damping_velocity() at @p y added to @p r
+     * (if not null; its fixed rows are left to the caller), and its
+     * potential a/2 (y - u_n).C(y - u_n) - b y.C v_n. Nothing without
+     * damping.
+     */
+    double
+    add_damping(const StepStart &step, const VectorType &y, VectorType *r);
+
+    /// The damping's tangent a C added to @p k (constrained).
+    void
+    add_damping_tangent(double h, MatrixType &k) const;
+
     /// A force the scheme adds to the residual of its mass term, or null.
     virtual const VectorType *
     extra_inertial_force() const
@@ -155,8 +195,8 @@ namespace rodnet
                           VectorType       &v);
 
     const StepSystem &system;
-    /// Scratch: x - base and M (x - base).
-    VectorType difference, product;
+    /// Scratch: x - base and M (x - base); the damping velocity and C v.
+    VectorType difference, product, damped_velocity, damping_force;
   };
 } // namespace rodnet
 

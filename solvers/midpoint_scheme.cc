@@ -27,10 +27,11 @@ namespace rodnet
     problem.tangent = [this, &step](const VectorType &y, MatrixType &k) {
       tangent(step, y, k);
     };
-    problem.rank_one = [this](const VectorType &, VectorType &a, VectorType &b) {
-      a = rank_one_a;
-      b = rank_one_b;
-    };
+    problem.rank_one =
+      [this](const VectorType &, VectorType &a, VectorType &b) {
+        a = rank_one_a;
+        b = rank_one_b;
+      };
   }
 
   void
@@ -103,6 +104,7 @@ namespace rodnet
     k *= 0.5;
     k.vmult(product, difference);
     k.add(mass_coefficient(step.h) + coefficient, system.constrained_mass);
+    add_damping_tangent(step.h, k);
 
     rank_one_b = gradient_y;
     rank_one_b -= gradient_m;

@@ -11,11 +11,14 @@ namespace rodnet
    * The implicit midpoint rule with Gonzalez's discrete gradient, second
    * order, conserving 1/2 v.Mv + Pi of elastic rods to the Newton
    * tolerance:
-   *   2 M (u - u_n - h v_n) / h^2 + gradbar Pi(u_n, u; lambda_{n+1/2}) = 0,
+   *   2 M (u - u_n - h v_n) / h^2 + C (u - u_n) / h
+   *     + gradbar Pi(u_n, u; lambda_{n+1/2}) = 0,
    *   gradbar = grad Pi(m) + (Pi(u) - Pi(u_n) - grad Pi(m).d) M d / d.Md,
    *   m = (u_n + u) / 2, d = u - u_n (free DoFs), v_{n+1} = 2 d / h - v_n.
    * Its tangent has a dense rank-one part, which NewtonSolver handles by
-   * Sherman-Morrison. Needs a stored energy.
+   * Sherman-Morrison. Needs a stored energy. The damping acts at the
+   * midpoint velocity (u - u_n)/h: the energy falls by exactly h vbar.C vbar
+   * per step, the work of the damping force.
    */
   class MidpointScheme : public IntegrationScheme
   {

@@ -5,12 +5,17 @@ namespace rodnet
   NewmarkScheme::NewmarkScheme(const StepSystem &system)
       : IntegrationScheme(system)
       , inertial_force(system.model.create_vector())
-  {}
+  {
+  }
 
   void
-  NewmarkScheme::start(const VectorType &u, const double load_factor)
+  NewmarkScheme::start(const VectorType &u,
+                       const VectorType &v,
+                       const double      load_factor)
   {
     system.model.assemble(u, load_factor, &inertial_force, nullptr, true);
+    if (system.damping.m() != 0)
+      system.damping.vmult_add(inertial_force, v);
     inertial_force *= -1.0;
     for (unsigned int i = 0; i < system.has_mass.size(); ++i)
       if (!system.has_mass[i])

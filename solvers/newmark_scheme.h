@@ -9,7 +9,8 @@ namespace rodnet
    * Newmark's average acceleration (beta = 1/4, gamma = 1/2) in trapezoidal
    * form, second order without numerical dissipation, with the inertial
    * force p = M a carried from step to step:
-   *   4 M (u - u_n - h v_n) / h^2 - p_n + grad Pi(u, lambda_{n+1}) = 0,
+   *   4 M (u - u_n - h v_n) / h^2 - p_n + C v_{n+1}
+   *     + grad Pi(u, lambda_{n+1}) = 0,
    *   p_{n+1} = 4 M (u - u_n - h v_n) / h^2 - p_n,
    *   v_{n+1} = 2 (u - u_n) / h - v_n.
    */
@@ -36,10 +37,20 @@ namespace rodnet
       return 4 / (h * h);
     }
 
-    /// p_0 = M a_0 = lambda f - grad W: the out-of-balance force of the
-    /// start, on the rows that carry mass.
+    /// Damping at the end of the step: C v_{n+1}, v_{n+1} = 2 (u - u_n)/h
+    /// - v_n, as the trapezoidal rule's equation of motion at t_{n+1}.
+    DampingVelocity
+    damping_velocity(const double h) const override
+    {
+      return {2 / h, 1};
+    }
+
+    /// p_0 = M a_0 = lambda f - grad W - C v_0: the out-of-balance force
+    /// of the start, on the rows that carry mass.
     void
-    start(const VectorType &u, double load_factor) override;
+    start(const VectorType &u,
+          const VectorType &v,
+          double            load_factor) override;
 
     void
     finish(const StepStart &step, const VectorType &x, VectorType &v) override;

@@ -25,6 +25,27 @@ namespace rodnet
       s << t;
       return s.str();
     }
+
+    /// Throws std::invalid_argument for a damping coefficient of @p p that
+    /// is negative or not finite, or not zero without inertia.
+    void
+    check_damping(const TimeIntegrator::Parameters &p,
+                  const IntegrationScheme          &scheme)
+    {
+      const std::pair<const char *, double> coefficients[] = {
+        {"Rayleigh mass coefficient", p.rayleigh_mass},
+        {"Rayleigh stiffness coefficient", p.rayleigh_stiffness},
+        {"viscous drag per length", p.viscous_drag}};
+      for (const auto &[name, value] : coefficients)
+        if (!(value >= 0) || !std::isfinite(value))
+          throw std::invalid_argument(
+            std::string("time stepping: the ") + name +
+            " must be finite and not negative, got " + time_string(value));
+      if (p.damped() && !scheme.dynamic())
+        throw std::invalid_argument(
+          "time stepping: damping acts on velocities, which the " +
+          scheme.name() + " integrator does not have; use a dynamic one");
+    }
   } // namespace
 
   TimeIntegrator::TimeIntegrator(RodModel                      &model,
@@ -76,6 +97,7 @@ namespace rodnet
         p.newton.line_search +
         " globalization needs; use newmark, backward euler or quasi-static, "
         "or another line search");
+    check_damping(p, *scheme);
     model.initialize_matrix(tangent);
     last_increment = model.create_vector();
     if (!scheme->dynamic())
@@ -90,6 +112,56 @@ namespace rodnet
     has_mass.resize(mass.m());
     for (unsigned int i = 0; i < mass.m(); ++i)
       has_mass[i] = mass.diag_element(i) != 0.0;
+    if (p.viscous_drag > 0)
+      {
+        // A force -c v per length on the positions, lumped with each
+        // vertex's Voronoi length: the lumped "mass" of density c / A.
+        const std::vector<RodInertia> drag_per_length(inertia.size(),
+                                                      {p.viscous_drag, 0});
+        assemble_mass_matrix(model,
+                             drag_per_length,
+                             MassKind::lumped,
+                             drag,
+                             false);
+        assemble_mass_matrix(model,
+                             drag_per_length,
+                             MassKind::lumped,
+                             constrained_drag,
+                             true);
+      }
+  }
+
+  void
+  TimeIntegrator::assemble_damping(const VectorType &u,
+                                   const double      load_factor)
+  {
+    const Parameters &p = parameters;
+    if (!scheme->dynamic() || !p.damped())
+      return;
+    // Rayleigh damping C = alpha M + beta K_0 (Chopra, Dynamics of
+    // Structures, section 11.4) with K_0 the tangent at the start of the
+    // run, assembled once: a constant, symmetric C keeps the damping force
+    // linear in the velocity, so that the midpoint rule's energy falls by
+    // exactly h vbar.C vbar and the modal damping ratio of mode omega is
+    // alpha / (2 omega) + beta omega / 2 (doc/dynamics.md, "Damping").
+    const bool constrained[] = {false, true};
+    for (const bool c : constrained)
+      {
+        MatrixType &target = c ? constrained_damping : damping;
+        model.initialize_matrix(target);
+        if (p.rayleigh_stiffness != 0)
+          {
+            // The condensed tangent in both: the clamps' constraints tie
+            // DoFs (the midpoint clamp), which only condensation carries
+            // into the free rows (the mass matrix is condensed as well).
+            model.assemble(u, load_factor, nullptr, &tangent, true);
+            target.add(p.rayleigh_stiffness, tangent);
+          }
+        if (p.rayleigh_mass != 0)
+          target.add(p.rayleigh_mass, c ? constrained_mass : mass);
+        if (p.viscous_drag != 0)
+          target.add(1.0, c ? constrained_drag : drag);
+      }
   }
 
   void
@@ -118,7 +190,8 @@ namespace rodnet
     model.set_time(p.start_time);
     model.apply_boundary_values(u, p.load_factor(p.start_time));
     model.set_time_step(0);
-    scheme->start(u, p.load_factor(p.start_time));
+    assemble_damping(u, p.load_factor(p.start_time));
+    scheme->start(u, v, p.load_factor(p.start_time));
     advance(*scheme, p.start_time, p.end_time, p.time_step, u, v, observer);
   }
 
@@ -247,9 +320,9 @@ namespace rodnet
   {
     if (!std::isfinite(info.potential_energy) ||
         !std::isfinite(info.kinetic_energy))
-      throw SolverFailure("time stepping (" + scheme.name() +
-                          "): the energy is not finite at t = " +
-                          time_string(info.time) + " s");
+      throw SolverFailure(
+        "time stepping (" + scheme.name() +
+        "): the energy is not finite at t = " + time_string(info.time) + " s");
     if (!watch.on)
       return;
     const double energy = info.kinetic_energy + info.potential_energy;
@@ -265,12 +338,13 @@ namespace rodnet
       }
     watch.scale = std::max(watch.scale, info.kinetic_energy);
     if (energy - watch.reference > parameters.energy_growth_limit * watch.scale)
-      throw SolverFailure(
-        "time stepping (" + scheme.name() + "): unstable at t = " +
-        time_string(info.time) + " s, the energy grew from " +
-        time_string(watch.reference) + " to " + time_string(energy) +
-        " J under a constant load; take a smaller time step" +
-        scheme.instability_advice());
+      throw SolverFailure("time stepping (" + scheme.name() +
+                          "): unstable at t = " + time_string(info.time) +
+                          " s, the energy grew from " +
+                          time_string(watch.reference) + " to " +
+                          time_string(energy) +
+                          " J under a constant load; take a smaller time step" +
+                          scheme.instability_advice());
   }
 
   void
@@ -411,7 +485,7 @@ namespace rodnet
         const double        force =
           std::max({loads.force, predicted.force, predicted.moment / length});
         const ResidualParts scale{force, force * length};
-        ResidualParts tolerance =
+        ResidualParts       tolerance =
           ResidualCriterion::tolerance(scale,
                                        noise.floor,
                                        parameters.relative_tolerance);

@@ -128,6 +128,26 @@ namespace rodnet
       double energy_growth_limit = 0.01;
       /// Progress line on the log every this many steps (0: none).
       unsigned int progress_interval = 100;
+      /**
+       * Rayleigh damping C = rayleigh_mass M + rayleigh_stiffness K_0 (1/s
+       * and s), K_0 the tangent at the state the dynamic run starts from,
+       * and viscous drag: a force -viscous_drag v (N s/m^2) per undeformed
+       * length on the positions, lumped per vertex with its Voronoi length.
+       * Each scheme adds C v at its own velocity (IntegrationScheme::
+       * damping_velocity(), doc/dynamics.md "Damping"). Not negative; 0:
+       * none.
+       */
+      double rayleigh_mass      = 0;
+      double rayleigh_stiffness = 0;
+      double viscous_drag       = 0;
+
+      /// Whether any damping coefficient is nonzero.
+      bool
+      damped() const
+      {
+        return rayleigh_mass != 0 || rayleigh_stiffness != 0 ||
+               viscous_drag != 0;
+      }
 
       /// Declares the entries of these parameters ("Integrator", the times,
       /// "Load factor", the preload, "Mass", "Progress interval", "Energy
@@ -189,8 +209,10 @@ namespace rodnet
      * @p inertia holds one RodInertia per rod (may be empty for
      * quasi-static runs). Throws std::invalid_argument for a time step that
      * is not positive and finite, an end time before the start, missing
-     * inertia for a dynamic integrator, or the midpoint rule with a
-     * history-dependent material. The model must be finalized.
+     * inertia for a dynamic integrator, the midpoint rule with a
+     * history-dependent material, or a damping coefficient that is negative
+     * or not finite, or not zero in a quasi-static run. The model must be
+     * finalized.
      */
     TimeIntegrator(RodModel                      &model,
                    const std::vector<RodInertia> &inertia,
@@ -269,6 +291,11 @@ namespace rodnet
                VectorType        &x,
                JudgedResult      &result);
 
+    /// C = alpha M + beta K(@p u) + drag at the start of a dynamic run at
+    /// @p load_factor (nothing without damping).
+    void
+    assemble_damping(const VectorType &u, double load_factor);
+
     /// After a failed step from @p time of @p length: the halved attempt,
     /// or SolverFailure below min_step_fraction of @p h.
     double
@@ -322,12 +349,24 @@ namespace rodnet
     static constexpr unsigned int noise_interval    = 20;
     MatrixType                    mass; ///< unconstrained
     MatrixType constrained_mass;        ///< fixed rows and columns zero
+    /// The damping matrix C (empty without damping), for the residual and
+    /// for the tangent (fixed rows and columns zero but K_0's diagonal);
+    /// both condense the clamps' constraints, as the mass matrix does.
+    MatrixType damping, constrained_damping;
+    /// The drag matrix (lumped, c per length on the positions), kept to
+    /// form C at the start of a run; unconstrained and constrained.
+    MatrixType drag, constrained_drag;
     MatrixType tangent;
     /// The tangent's factorization, kept across Newton solves.
     TangentFactorizationCache factorizations;
     /// Rows with a nonzero mass diagonal.
     std::vector<bool> has_mass;
-    StepSystem        system{model, mass, constrained_mass, has_mass};
+    StepSystem        system{model,
+                      mass,
+                      constrained_mass,
+                      has_mass,
+                      damping,
+                      constrained_damping};
     /// The scheme of Parameters::integrator, and the quasi-static one of
     /// the preload.
     std::unique_ptr<IntegrationScheme> scheme, preload_scheme;

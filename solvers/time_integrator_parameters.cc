@@ -1,4 +1,5 @@
 #include <deal.II/base/patterns.h>
+#include <deal.II/base/utilities.h>
 
 #include <solvers/integration_scheme_registry.h>
 #include <solvers/time_integrator.h>
@@ -76,6 +77,17 @@ namespace rodnet
       "factor, the total energy grows by more than this fraction of its "
       "value (or of the largest kinetic energy since the load last "
       "changed); 0 switches the check off. [-]");
+    prm.declare_entry("Rayleigh damping",
+                      "0, 0",
+                      dealii::Patterns::List(Double(), 2, 2, ","),
+                      "alpha, beta of C = alpha M + beta K (K at the start): "
+                      "damping ratio alpha/(2 omega) + beta omega/2. [1/s, "
+                      "s]");
+    prm.declare_entry("Viscous drag per length",
+                      "0",
+                      Double(),
+                      "Force -c v per length on the positions (as alpha = "
+                      "c/(rho A)). [N s/m^2]");
   }
 
   void
@@ -92,5 +104,10 @@ namespace rodnet
       prm.get("Mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
     progress_interval   = prm.get_integer("Progress interval");
     energy_growth_limit = prm.get_double("Energy growth limit");
+    const std::vector<std::string> rayleigh =
+      dealii::Utilities::split_string_list(prm.get("Rayleigh damping"), ',');
+    rayleigh_mass      = dealii::Utilities::string_to_double(rayleigh[0]);
+    rayleigh_stiffness = dealii::Utilities::string_to_double(rayleigh[1]);
+    viscous_drag       = prm.get_double("Viscous drag per length");
   }
 } // namespace rodnet

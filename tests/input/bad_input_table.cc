@@ -211,6 +211,41 @@ namespace
      1,
      "entry \"Solver/Time stepping/Time step\": 1e-09 s from 0 to 1 s are "
      "1e+09 time steps, more than the 1e+06"},
+    {"negative_rayleigh_damping",
+     valid_cantilever + valid_time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Integrator = newmark\n"
+               "    set Rayleigh damping = 0.1, -0.01\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Solver/Time stepping/Rayleigh damping\": alpha = 0.1 and "
+     "beta = -0.01 must not be negative"},
+    {"negative_viscous_drag",
+     valid_cantilever + valid_time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Integrator = newmark\n"
+               "    set Viscous drag per length = -2\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Solver/Time stepping/Viscous drag per length\": -2 N s/m^2 "
+     "must not be negative"},
+    {"damping_in_quasi_static_run",
+     valid_cantilever + valid_time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Rayleigh damping = 0.1, 0\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Solver/Time stepping/Integrator\": damping acts on "
+     "velocities, which a quasi-static run does not have"},
     {"too_many_vtu_files",
      with("Loads", "  set Steps = 50000\n") +
        section("Output", "  set Write VTU = true\n"),

@@ -26,6 +26,8 @@ namespace
     double mass_coefficient_h2;
     /// Where in the step (0 start, 1 end) the loads act.
     double load_fraction;
+    /// The damping velocity a (u - u_n) - b v_n: a h and b.
+    double damping_ah, damping_b;
   };
 
   class IntegrationSchemes : public ::testing::Test
@@ -36,9 +38,47 @@ namespace
                                   RodStiffness{1, 1, 1, 1}),
                                 2,
                                 Vector3::Zero());
-    MatrixType        mass, constrained_mass;
+    MatrixType        mass, constrained_mass, damping, constrained_damping;
     std::vector<bool> has_mass;
-    StepSystem        system{*model, mass, constrained_mass, has_mass};
+    StepSystem        system{*model,
+                      mass,
+                      constrained_mass,
+                      has_mass,
+                      damping,
+                      constrained_damping};
+
+    /// The potential of scheme @p name at @p y has the residual as its
+    /// gradient (central differences along @p direction).
+    void
+    check_potential(const std::string &name,
+                    const StepStart   &step,
+                    const VectorType  &v,
+                    const VectorType  &y,
+                    const VectorType  &direction)
+    {
+      const auto scheme = integration_scheme_registry().create(name, system);
+      ASSERT_TRUE(scheme->has_incremental_potential()) << name;
+      scheme->start(step.u, v, 1.0);
+      NewtonSolver::Problem problem;
+      scheme->set_up(step, problem);
+      ASSERT_TRUE(problem.energy) << name;
+      VectorType r = model->create_vector();
+      problem.residual(y, r);
+      VectorType r_with_energy = model->create_vector();
+      problem.energy(y, &r_with_energy);
+      r_with_energy -= r;
+      EXPECT_EQ(r_with_energy.linfty_norm(), 0.0) << name;
+
+      const double eps     = 1e-6;
+      VectorType   shifted = y;
+      shifted.add(eps, direction);
+      const double plus = problem.energy(shifted, nullptr);
+      shifted.add(-2 * eps, direction);
+      const double minus      = problem.energy(shifted, nullptr);
+      const double difference = (plus - minus) / (2 * eps);
+      const double slope      = r * direction;
+      EXPECT_NEAR(difference, slope, 1e-7 * std::abs(slope)) << name;
+    }
   };
 
   TEST_F(IntegrationSchemes, UnknownNameListsTheKnownOnes)
@@ -69,10 +109,10 @@ namespace
   TEST_F(IntegrationSchemes, EveryIntegratorHasItsScheme)
   {
     const double h = 0.125, start = 1.5;
-    for (const Expected &e : {Expected{"quasi-static", false, 0, 1},
-                              Expected{"backward euler", true, 1, 1},
-                              Expected{"newmark", true, 4, 1},
-                              Expected{"midpoint", true, 2, 0.5}})
+    for (const Expected &e : {Expected{"quasi-static", false, 0, 1, 1, 0},
+                              Expected{"backward euler", true, 1, 1, 1, 0},
+                              Expected{"newmark", true, 4, 1, 2, 1},
+                              Expected{"midpoint", true, 2, 0.5, 1, 0}})
       {
         const std::string &name = e.integrator;
         const auto scheme = integration_scheme_registry().create(name, system);
@@ -88,14 +128,18 @@ namespace
           << name;
         EXPECT_EQ(scheme->needs_stored_energy(), e.integrator == "midpoint")
           << name;
+        EXPECT_NEAR(scheme->damping_velocity(h).a * h, e.damping_ah, 1e-15)
+          << name;
+        EXPECT_EQ(scheme->damping_velocity(h).b, e.damping_b) << name;
       }
   }
 
   // The incremental potential each scheme gives the energy line search
   // (Problem::energy) has the step's residual as its gradient: central
   // differences along a direction of the free DoFs, at a bent state of a
-  // bar with mass, against residual . direction. The midpoint rule has
-  // none (its Jacobian is not symmetric) and says so.
+  // bar with mass, against residual . direction, without damping and with
+  // C = 0.7 M (the dissipation potential a/2 |u - u_n|_C^2 - b u.C v_n).
+  // The midpoint rule has none (its Jacobian is not symmetric) and says so.
   TEST_F(IntegrationSchemes, IncrementalPotentialHasTheResidualAsGradient)
   {
     const std::vector<RodInertia> inertia{{2.0, 1e-3}};
@@ -120,32 +164,22 @@ namespace
     model->apply_boundary_values(y, 1.0);
     model->constraints().set_zero(direction);
     const StepStart step{u, base, 0.05, 1.0};
+    VectorType      v = base;
+    v -= u;
+    v /= step.h;
 
-    for (const std::string name : {"quasi-static", "backward euler", "newmark"})
-      {
-        const auto scheme = integration_scheme_registry().create(name, system);
-        ASSERT_TRUE(scheme->has_incremental_potential()) << name;
-        scheme->start(u, 1.0);
-        NewtonSolver::Problem problem;
-        scheme->set_up(step, problem);
-        ASSERT_TRUE(problem.energy) << name;
-        VectorType r = model->create_vector();
-        problem.residual(y, r);
-        VectorType r_with_energy = model->create_vector();
-        problem.energy(y, &r_with_energy);
-        r_with_energy -= r;
-        EXPECT_EQ(r_with_energy.linfty_norm(), 0.0) << name;
-
-        const double eps     = 1e-6;
-        VectorType   shifted = y;
-        shifted.add(eps, direction);
-        const double plus = problem.energy(shifted, nullptr);
-        shifted.add(-2 * eps, direction);
-        const double minus      = problem.energy(shifted, nullptr);
-        const double difference = (plus - minus) / (2 * eps);
-        const double slope      = r * direction;
-        EXPECT_NEAR(difference, slope, 1e-7 * std::abs(slope)) << name;
-      }
+    for (const bool damped : {false, true})
+      for (const std::string name :
+           {"quasi-static", "backward euler", "newmark"})
+        {
+          if (damped)
+            for (MatrixType *c : {&damping, &constrained_damping})
+              {
+                model->initialize_matrix(*c);
+                c->add(0.7, c == &damping ? mass : constrained_mass);
+              }
+          check_potential(name, step, v, y, direction);
+        }
     const auto midpoint =
       integration_scheme_registry().create("midpoint", system);
     EXPECT_FALSE(midpoint->has_incremental_potential());
