@@ -248,9 +248,8 @@ namespace rodnet
     prm.declare_entry("Mass per length",
                       "0",
                       Double(0),
-                      "The \"Mass per length\" of the materials that give "
-                      "none and no Density and section (where one does, the "
-                      "two must agree); 0: not given. [kg/m]");
+                      "The \"Mass per length\" of materials giving none "
+                      "(one given must agree); 0: not given. [kg/m]");
     prm.declare_entry("Ramped natural shape",
                       "",
                       Anything(),

@@ -56,9 +56,8 @@ namespace rodnet
         "Density",
         "0",
         dealii::Patterns::Double(0),
-        "Mass density rho; with the cross-section of \"Stiffness input = "
-        "section\" the default of the two entries below; 0: not given. "
-        "[kg/m^3]");
+        "Mass density rho: with a section, the default of the two entries "
+        "below; 0: not given. [kg/m^3]");
       prm.declare_entry("Mass per length",
                         "0",
                         dealii::Patterns::Double(0),

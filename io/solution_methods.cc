@@ -47,25 +47,22 @@ namespace rodnet
     static const std::vector<SolutionMethodEntry> methods = {
       {"newton",
        SolutionMethod::newton,
-       "discrete elastic rods and junction elements, Newton per load step "
-       "(Trilinos NOX).",
+       "load steps solved by Newton (NOX).",
        StaticSolver::Parameters::declare_parameters},
       {"dynamic relaxation",
        SolutionMethod::dynamic_relaxation,
-       "the bending-active beam element (position, normal and rotation per "
-       "node) relaxed by explicit pseudo-dynamics with kinetic damping; see "
-       "doc/dynamic_relaxation.md for which to pick.",
+       "the bending-active beam element, explicit with kinetic damping "
+       "(doc/dynamic_relaxation.md).",
        declare_dynamic_relaxation},
       {"time stepping",
        SolutionMethod::time_stepping,
-       "the discrete rods in time, with inertia or quasi-statically, for "
-       "vibrations and viscoelastic materials (subsection Time stepping; "
-       "the Newton entries of Solver apply to every time step).",
+       "inertia or creep in time (subsection Time stepping; Newton's entries "
+       "apply to each step).",
        declare_time_stepping},
       {"continuation",
        SolutionMethod::continuation,
-       "the discrete rods along their equilibrium path in the load factor, "
-       "through limit points and bifurcations (subsection Continuation).",
+       "the equilibrium path through limit points and bifurcations "
+       "(subsection Continuation).",
        declare_continuation}};
     return methods;
   }
