@@ -71,29 +71,19 @@ namespace rodnet
     };
 
     /**
-     * Holds @p model under its load (a quasi-static preload), releases it
-     * at t = 0 and integrates with @p method to @p end_time in steps @p h.
-     * A SolverFailure ends the history early with its message.
+     * Runs @p integrator on @p model from @p u at rest and records the tip's
+     * z, the time and the total energy of every step at t >= 0 (the preload
+     * steps, before the release, are left out). A SolverFailure ends the
+     * history early with its message.
      */
     inline SwingHistory
-    released_swing(RodModel          &model,
-                   const std::string &method,
-                   const double       h,
-                   const double       end_time,
-                   std::ostream      *log = nullptr)
+    record_swing(const RodModel &model,
+                 TimeIntegrator &integrator,
+                 VectorType     &u)
     {
-      TimeIntegrator::Parameters p;
-      p.integrator         = method;
-      p.time_step          = h;
-      p.end_time           = end_time;
-      p.preload_time       = 1;
-      p.preload_steps      = 4;
-      p.load_factor        = [](const double t) { return t < 0 ? 1.0 : 0.0; };
-      p.relative_tolerance = 1e-11;
-      TimeIntegrator     integrator(model, {swing_inertia}, p, log);
       const unsigned int tip = model.network().rods()[0].vertices.back();
+      VectorType         v   = model.create_vector();
       SwingHistory       history;
-      VectorType         u = model.create_vector(), v = model.create_vector();
       try
         {
           integrator.run(u,
@@ -115,6 +105,31 @@ namespace rodnet
           history.failure = e.what();
         }
       return history;
+    }
+
+    /**
+     * Holds @p model under its load (a quasi-static preload), releases it
+     * at t = 0 and integrates with @p method to @p end_time in steps @p h.
+     * A SolverFailure ends the history early with its message.
+     */
+    inline SwingHistory
+    released_swing(RodModel          &model,
+                   const std::string &method,
+                   const double       h,
+                   const double       end_time,
+                   std::ostream      *log = nullptr)
+    {
+      TimeIntegrator::Parameters p;
+      p.integrator         = method;
+      p.time_step          = h;
+      p.end_time           = end_time;
+      p.preload_time       = 1;
+      p.preload_steps      = 4;
+      p.load_factor        = [](const double t) { return t < 0 ? 1.0 : 0.0; };
+      p.relative_tolerance = 1e-11;
+      TimeIntegrator integrator(model, {swing_inertia}, p, log);
+      VectorType     u = model.create_vector();
+      return record_swing(model, integrator, u);
     }
 
     /// Period from the zero crossings of the tip deflection (linear
@@ -199,30 +214,10 @@ namespace rodnet
       p.relative_tolerance = 1e-11;
       if (adjust)
         adjust(p);
-      TimeIntegrator     integrator(model, {swing_inertia}, p);
-      const unsigned int tip = model.network().rods()[0].vertices.back();
-      VectorType         u = shape, v = model.create_vector();
+      TimeIntegrator integrator(model, {swing_inertia}, p);
+      VectorType     u = shape;
       u *= amplitude;
-      SwingHistory history;
-      try
-        {
-          integrator.run(u,
-                         v,
-                         [&](const TimeIntegrator::StepInfo &info,
-                             const VectorType               &x,
-                             const VectorType &) {
-                           history.time.push_back(info.time);
-                           history.tip.push_back(
-                             model.configuration().position(x, tip)[2]);
-                           history.energy.push_back(info.kinetic_energy +
-                                                    info.potential_energy);
-                         });
-        }
-      catch (const SolverFailure &e)
-        {
-          history.failure = e.what();
-        }
-      return history;
+      return record_swing(model, integrator, u);
     }
 
   } // namespace testing
