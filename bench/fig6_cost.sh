@@ -84,19 +84,5 @@ cp "$work/fig6_tessellation/picture.png" "$tessellation_picture"
 
 # The error against the wall time, each point labelled with its mesh and
 # DoFs; the block's error falls at second order in the segment length.
-gnuplot <<END
-set terminal pngcairo size 640,440 font ",10"
-set output "$png"
-set title "Fig. 6 (a): the building block against the stress-free Z"
-set xlabel "wall time (s), one core, whole rodnet-run process"
-set ylabel "|(X, Y) - closed form| / L"
-set logscale x
-set logscale y
-set format y "10^{%L}"
-set grid
-set key off
-set offsets graph 0.05, graph 0.2, graph 0.1, graph 0.1
-plot "$work/table.dat" using 2:3 with linespoints pt 5 lw 1.5 lc rgb "#2ca02c", \
-     "$work/table.dat" using 2:3:(sprintf("%d per beam, %d DoFs", \$1, \$4)) \
-       with labels left offset 1,0.6
-END
+plot_accuracy_cost "$png" "Fig. 6 (a): the building block against the stress-free Z" \
+  "|(X, Y) - closed form| / L" "$work/table.dat"

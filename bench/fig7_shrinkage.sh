@@ -86,21 +86,8 @@ scene 5.745 30 true > "$work/picture.prm"
 "$run" "$work/picture.prm" --output "$work/pic" > "$work/run.log" 2>&1
 cp "$work/pic/picture.png" "$picture"
 
-gnuplot <<END
-set terminal pngcairo size 640,440 font ",10"
-set output "$cost_png"
-set title "Fig. 7 (4 x 4 cells, kappa_0 = 5.745): accuracy against cost"
-set xlabel "wall time (s), one core, whole rodnet-run process"
-set ylabel "|shrinkage - closed form|"
-set logscale xy
-set format y "10^{%L}"
-set grid
-set key off
-set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1
-plot "$work/cost.dat" using 2:3 with linespoints pt 7 lw 1.5 lc rgb "#2ca02c", \
-     "$work/cost.dat" using 2:3:(sprintf("%d per beam, %d DoFs", \$1, \$4)) \
-       with labels left offset 1,0.6
-END
+plot_accuracy_cost "$cost_png" "Fig. 7 (4 x 4 cells, kappa_0 = 5.745): accuracy against cost" \
+  "|shrinkage - closed form|" "$work/cost.dat"
 
 gnuplot <<END
 set terminal pngcairo size 640,440 font ",10"

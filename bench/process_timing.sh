@@ -24,3 +24,24 @@ in_turn() {
   done
   echo "$(echo "${ta[*]}" | median) $(echo "${tb[*]}" | median)"
 }
+
+# plot_accuracy_cost PNG TITLE YLABEL DATA: the error (column 3 of DATA)
+# against the wall time (column 2) on log axes, each point labelled with
+# its segments per beam (column 1) and DoFs (column 4).
+plot_accuracy_cost() {
+  gnuplot <<END
+set terminal pngcairo size 640,440 font ",10"
+set output "$1"
+set title "$2"
+set xlabel "wall time (s), one core, whole rodnet-run process"
+set ylabel "$3"
+set logscale xy
+set format y "10^{%L}"
+set grid
+set key off
+set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1
+plot "$4" using 2:3 with linespoints pt 7 lw 1.5 lc rgb "#2ca02c", \
+     "$4" using 2:3:(sprintf("%d per beam, %d DoFs", \$1, \$4)) \
+       with labels left offset 1,0.6
+END
+}
