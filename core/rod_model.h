@@ -784,6 +784,21 @@ namespace rodnet
     OutputFields::Field
     axial_forces(const VectorType &u) const;
 
+    /// The axial strain and the directors d1, d2 of every segment at @p u
+    /// (output_fields()).
+    std::vector<OutputFields::Field>
+    segment_strain_fields(const VectorType &u) const;
+
+    /// The curvature and twist rate at every hinge's vertex at @p u
+    /// (output_fields()).
+    std::vector<OutputFields::Field>
+    hinge_strain_fields(const VectorType &u) const;
+
+    /// Appends the committed internal variables of history-dependent
+    /// materials to @p output, one field per name (output_fields()).
+    void
+    append_internal_variable_fields(OutputFields &output) const;
+
     /// Fixes the multipliers of inextensible segments whose ends are both
     /// held and adds the inextensibility family for the others.
     /// The force vector of @p dead_loads at load factor 1 (finalize()).

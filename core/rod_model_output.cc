@@ -134,26 +134,10 @@ namespace rodnet
   }
 
 
-  OutputFields
-  RodModel::output_fields(const VectorType &u) const
+  std::vector<OutputFields::Field>
+  RodModel::segment_strain_fields(const VectorType &u) const
   {
-    const Configuration &configuration = *configuration_;
-    const unsigned int   n_vertices    = network_->n_vertices();
-    const unsigned int   n_cells = network_->triangulation().n_active_cells();
-
-    // The displacement and the twist are the model's finite element field.
-    OutputFields output;
-    using dealii::DataComponentInterpretation::component_is_part_of_vector;
-    using dealii::DataComponentInterpretation::component_is_scalar;
-    output.solution = OutputFields::FiniteElementField{
-      &layout_->dof_handler(),
-      field_values(u),
-      {"displacement", "displacement", "displacement", "twist"},
-      {component_is_part_of_vector,
-       component_is_part_of_vector,
-       component_is_part_of_vector,
-       component_is_scalar}};
-
+    const unsigned int  n_cells = network_->triangulation().n_active_cells();
     OutputFields::Field strain{"axial_strain",
                                1,
                                std::vector<double>(n_cells),
@@ -163,28 +147,30 @@ namespace rodnet
     StretchStrain       stretch;
     for (const SegmentStencil &segment : layout_->segments())
       {
-        evaluate_stretch(configuration.segment_dofs(u, segment),
-                         configuration.rest_length(segment.cell),
+        evaluate_stretch(configuration_->segment_dofs(u, segment),
+                         configuration_->rest_length(segment.cell),
                          stretch,
                          false);
         strain.values[segment.cell] = stretch.strain;
         const Matrix3 frame =
-          configuration.director_frame(u, segment.cell).toRotationMatrix();
+          configuration_->director_frame(u, segment.cell).toRotationMatrix();
         for (unsigned int c = 0; c < 3; ++c)
           {
             d1.values[3 * segment.cell + c] = frame(c, 0);
             d2.values[3 * segment.cell + c] = frame(c, 1);
           }
       }
-    output.segment_fields = {strain, d1, d2};
-    if (inextensibility != nullptr)
-      output.segment_fields.push_back(axial_forces(u));
-    append_activation_fields(configuration.segment_activation(),
-                             output.segment_fields);
+    return {strain, d1, d2};
+  }
 
+
+  std::vector<OutputFields::Field>
+  RodModel::hinge_strain_fields(const VectorType &u) const
+  {
     // Integrated strains divided by the Voronoi length are the curvatures
     // and twist rate of the smooth rod (Korner et al. eq. 4.2). Vertices
     // without a hinge (rod ends) keep zero.
+    const unsigned int  n_vertices = network_->n_vertices();
     OutputFields::Field curvature{"curvature",
                                   3,
                                   std::vector<double>(3 * n_vertices),
@@ -199,52 +185,86 @@ namespace rodnet
     for (unsigned int h = 0; h < hinges.size(); ++h)
       {
         const Vector3 kappa =
-          kernels[hinges[h].rod]->strains(configuration.hinge_dofs(u,
-                                                                   hinges[h]),
-                                          configuration.hinge_reference(h)) /
-          configuration.voronoi_length(h);
+          kernels[hinges[h].rod]->strains(configuration_->hinge_dofs(u,
+                                                                     hinges[h]),
+                                          configuration_->hinge_reference(h)) /
+          configuration_->voronoi_length(h);
         const unsigned int vertex        = hinges[h].vertices[1];
         curvature.values[3 * vertex + 0] = kappa[0];
         curvature.values[3 * vertex + 1] = kappa[1];
         twist_rate.values[vertex]        = kappa[2];
       }
-    output.vertex_fields = {curvature, twist_rate};
+    return {curvature, twist_rate};
+  }
 
-    // Internal variables of history-dependent materials, one field per
-    // name: hinge variables at the hinge's vertex, segment ones per cell,
-    // zero where a rod's material has no such variable. (Junction elements
+
+  void
+  RodModel::append_internal_variable_fields(OutputFields &output) const
+  {
+    // Hinge variables at the hinge's vertex, segment ones per cell, zero
+    // where a rod's material has no such variable. (Junction elements
     // share their vertex with several rods and are not drawn.)
+    if (history.empty())
+      return;
     using Owner = InternalVariables::Owner;
     std::map<std::string, std::pair<std::string, std::vector<double>>>
-      vertex_history, cell_history;
-    for (unsigned int h = 0; !history.empty() && h < hinges.size(); ++h)
+                vertex_history, cell_history;
+    const auto &hinges = layout_->hinges();
+    for (unsigned int h = 0; h < hinges.size(); ++h)
       {
         const auto names =
           materials[hinges[h].rod]->hinge_internal_variable_names();
         for (unsigned int m = 0; m < names.size(); ++m)
-          internal_variable_field(vertex_history,
-                                  names[m],
-                                  n_vertices)[hinges[h].vertices[1]] =
+          internal_variable_field(
+            vertex_history,
+            names[m],
+            network_->n_vertices())[hinges[h].vertices[1]] =
             history.block(Owner::hinge, h)[m];
       }
     // The segment stencils skip the segments of inextensible rods.
     const auto  &segments = layout_->segments();
     unsigned int stencil  = 0;
-    for (unsigned int c = 0; !history.empty() && c < segments.size(); ++c)
+    for (const SegmentStencil &segment : segments)
       {
-        if (layout_->has_multiplier(segments[c].cell))
+        if (layout_->has_multiplier(segment.cell))
           continue;
         const auto names =
-          materials[segments[c].rod]->segment_internal_variable_names();
+          materials[segment.rod]->segment_internal_variable_names();
         for (unsigned int m = 0; m < names.size(); ++m)
-          internal_variable_field(cell_history,
-                                  names[m],
-                                  n_cells)[segments[c].cell] =
+          internal_variable_field(
+            cell_history,
+            names[m],
+            network_->triangulation().n_active_cells())[segment.cell] =
             history.block(Owner::segment, stencil)[m];
         ++stencil;
       }
     append_scalar_fields(vertex_history, output.vertex_fields, true);
     append_scalar_fields(cell_history, output.segment_fields);
+  }
+
+
+  OutputFields
+  RodModel::output_fields(const VectorType &u) const
+  {
+    // The displacement and the twist are the model's finite element field.
+    OutputFields output;
+    using dealii::DataComponentInterpretation::component_is_part_of_vector;
+    using dealii::DataComponentInterpretation::component_is_scalar;
+    output.solution = OutputFields::FiniteElementField{
+      &layout_->dof_handler(),
+      field_values(u),
+      {"displacement", "displacement", "displacement", "twist"},
+      {component_is_part_of_vector,
+       component_is_part_of_vector,
+       component_is_part_of_vector,
+       component_is_scalar}};
+    output.segment_fields = segment_strain_fields(u);
+    if (inextensibility != nullptr)
+      output.segment_fields.push_back(axial_forces(u));
+    append_activation_fields(configuration_->segment_activation(),
+                             output.segment_fields);
+    output.vertex_fields = hinge_strain_fields(u);
+    append_internal_variable_fields(output);
     return output;
   }
 } // namespace rodnet
