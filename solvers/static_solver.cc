@@ -20,6 +20,12 @@ namespace rodnet
 {
   namespace
   {
+    /// The residual, relative to the loads and reactions at the solution,
+    /// within which the state a far start's Newton reached is accepted
+    /// when the scene's tolerance cannot be reached from it (solve_at()):
+    /// far below the loads, though not at the scene's tolerance.
+    constexpr double far_start_relative_tolerance = 1e-4;
+
     /// Adds to the diagonal of @p tangent at each of the twist DoFs
     /// @p twists its own value (1 where that is 0): a spring as stiff as
     /// the twist's row, which fixes the twist in a Newton step along a
@@ -138,6 +144,19 @@ namespace rodnet
     // on from the solution. The noise is measured at the start, and again
     // where Newton stalls (ResidualCriterion::stall_aware_test()).
     unsigned int iterations = 0;
+    // A far start's first round meets a tolerance inflated by the start's
+    // out-of-balance. Its state is kept as a fallback if it is within
+    // far_start_relative_tolerance of the loads at the solution, and the
+    // tighter rounds go on from it: near a bifurcation, where the tangent
+    // is nearly singular, they can fail where the fallback is an
+    // equilibrium to that tolerance (the elastica's branch switch).
+    std::optional<std::pair<VectorType, JudgedResult>> fallback;
+    const auto failed = [&]() {
+      if (!fallback)
+        return outcome;
+      u = fallback->first;
+      return fallback->second;
+    };
     for (unsigned int round = 0; round < 3; ++round)
       {
         tolerance = ResidualCriterion::tolerance(scale,
@@ -155,7 +174,7 @@ namespace rodnet
           {
             outcome.failure +=
               "; " + ResidualCriterion::describe(reached, tolerance);
-            return outcome;
+            return failed();
           }
         try
           {
@@ -166,25 +185,32 @@ namespace rodnet
           {
             outcome.converged = false;
             outcome.failure   = e.what();
-            return outcome;
+            return failed();
           }
+        outcome.scale = scale;
+        outcome.rounding_limited =
+          ResidualCriterion::inconclusive(noise.floor,
+                                          scale,
+                                          parameters.rounding_floor_limit);
         const ResidualParts judged =
           ResidualCriterion::tolerance(scale,
                                        noise.floor,
                                        parameters.relative_tolerance);
-        if (far_start || ResidualCriterion::within(reached, judged))
-          {
-            outcome.scale = scale;
-            outcome.rounding_limited =
-              ResidualCriterion::inconclusive(noise.floor,
-                                              scale,
-                                              parameters.rounding_floor_limit);
-            return outcome;
-          }
+        if (ResidualCriterion::within(reached, judged))
+          return outcome;
+        if (far_start && !fallback &&
+            ResidualCriterion::within(
+              reached,
+              ResidualCriterion::tolerance(scale,
+                                           noise.floor,
+                                           std::max(far_start_relative_tolerance,
+                                                    parameters
+                                                      .relative_tolerance))))
+          fallback.emplace(u, outcome);
       }
     outcome.converged = false;
     outcome.failure   = "the reactions kept changing the tolerance";
-    return outcome;
+    return failed();
   }
 
   bool
