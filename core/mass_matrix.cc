@@ -79,20 +79,19 @@ namespace rodnet
           // rotation of the cross-sections about the tangent at the
           // twist rate (doc/theory.md).
           const unsigned int component = fe.system_to_component_index(i).first;
-          const double       density =
-            component < 3 ? rod.mass_per_length :
-                            rod.rotational_inertia_per_length;
-          const double rotary =
+          const double       density   = component < 3 ?
+                                           rod.mass_per_length :
+                                           rod.rotational_inertia_per_length;
+          const double       rotary =
             component < 3 ? rod.rotary_inertia_per_length : 0.0;
           for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
             if (fe.system_to_component_index(j).first == component)
               for (const unsigned int q : fe_values.quadrature_point_indices())
-                cell_mass(i, j) +=
-                  (density * fe_values.shape_value(i, q) *
-                     fe_values.shape_value(j, q) +
-                   rotary * fe_values.shape_grad(i, q) *
-                     fe_values.shape_grad(j, q)) *
-                  fe_values.JxW(q);
+                cell_mass(i, j) += (density * fe_values.shape_value(i, q) *
+                                      fe_values.shape_value(j, q) +
+                                    rotary * fe_values.shape_grad(i, q) *
+                                      fe_values.shape_grad(j, q)) *
+                                   fe_values.JxW(q);
         }
     }
   } // namespace

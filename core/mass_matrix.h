@@ -54,9 +54,9 @@ namespace rodnet
    * carry rho A l0 as chosen by @p kind plus the rotary inertia of its
    * sections, rho I_b / l0 [[1, -1], [-1, 1]] per position component for
    * either kind (so a lumped M is diagonal only where rho I_b = 0), and its
-   * twist DoF carries rho (I1 + I2) l0: deal.II's FEValues integrate it cell by cell on the
-   * model's DoFHandler (each cell's material_id names its rod), and the
-   * junction constraints condense the rod ends at a junction onto its
+   * twist DoF carries rho (I1 + I2) l0: deal.II's FEValues integrate it cell by
+   * cell on the model's DoFHandler (each cell's material_id names its rod), and
+   * the junction constraints condense the rod ends at a junction onto its
    * vertex, which collects the mass of every adjacent segment once. The
    * constrained position DoFs of those ends and the quaternion DoFs of
    * junctions carry no inertia (Lestringant & Kochmann section 2.5: none on

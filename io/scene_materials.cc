@@ -56,8 +56,8 @@ namespace rodnet
         {
           used = 0;
         }
-      const bool whole = used > 0 && text.find_first_not_of(" \t", used) ==
-                                       std::string::npos;
+      const bool whole =
+        used > 0 && text.find_first_not_of(" \t", used) == std::string::npos;
       if (!whole || !std::isfinite(value) || value < 0)
         throw std::invalid_argument(
           "entry \"" + title + "/Rotary inertia per length\": \"" + text +
@@ -166,13 +166,13 @@ namespace rodnet
                         const std::string        &title)
   {
     SceneMaterial g;
-    g.subsection               = title;
-    g.model                    = prm.get("Model");
-    g.density                  = prm.get_double("Density");
-    g.mass_per_length          = prm.get_double("Mass per length");
-    g.twist_inertia_per_length = prm.get_double("Twist inertia per length");
+    g.subsection                = title;
+    g.model                     = prm.get("Model");
+    g.density                   = prm.get_double("Density");
+    g.mass_per_length           = prm.get_double("Mass per length");
+    g.twist_inertia_per_length  = prm.get_double("Twist inertia per length");
     g.rotary_inertia_per_length = rotary_inertia_entry(prm, title);
-    g.inextensible             = prm.get_bool("Inextensible");
+    g.inextensible              = prm.get_bool("Inextensible");
     if (!sets_an_entry(*entries.find(g.subsection)->find(g.model)))
       throw std::invalid_argument(
         "subsection \"" + g.subsection + "/" + g.model +
