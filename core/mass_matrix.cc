@@ -1,7 +1,8 @@
 // Mass matrix of a rod network for implicit dynamics (Lestringant &
 // Kochmann section 2.5, following Lestringant, Audoly & Kochmann 2020):
-// translational inertia of the vertex positions, consistent or lumped, and
-// the rotational inertia of each segment's twist about its tangent.
+// translational inertia of the vertex positions, consistent or lumped, the
+// rotary inertia of the sections about their bending axes, and the
+// rotational inertia of each segment's twist about its tangent.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
@@ -50,6 +51,47 @@ namespace rodnet
           require_inertia(inertia[r].rotational_inertia_per_length,
                           "rotational inertia per length (kg m)",
                           r);
+          require_inertia(inertia[r].rotary_inertia_per_length,
+                          "rotary inertia per length (kg m)",
+                          r);
+        }
+    }
+
+    /**
+     * The inertia of one segment (the cell of @p fe_values) in @p cell_mass:
+     * rho A N_i N_j on the positions by the quadrature of @p fe_values,
+     * rho (I1 + I2) on the twist, and the rotary inertia
+     * rho I_b N_i' N_j' on the positions, the kinetic energy
+     * rho I_b l0 / 2 |(xdot_{j+1} - xdot_j) / l0|^2 of the sections turning
+     * with the chord (doc/theory.md, "Rotary inertia"). N' is constant on a
+     * segment, so any rule with weights summing to l0 integrates it exactly.
+     */
+    void
+    segment_mass(const dealii::FEValues<1, 3> &fe_values,
+                 const RodInertia             &rod,
+                 dealii::FullMatrix<double>   &cell_mass)
+    {
+      const dealii::FiniteElement<1, 3> &fe = fe_values.get_fe();
+      cell_mass                             = 0;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          // Positions carry rho A; the twist carries rho (I1 + I2), the
+          // rotation of the cross-sections about the tangent at the
+          // twist rate (doc/theory.md).
+          const unsigned int component = fe.system_to_component_index(i).first;
+          const double       density   = component < 3 ?
+                                           rod.mass_per_length :
+                                           rod.rotational_inertia_per_length;
+          const double       rotary =
+            component < 3 ? rod.rotary_inertia_per_length : 0.0;
+          for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+            if (fe.system_to_component_index(j).first == component)
+              for (const unsigned int q : fe_values.quadrature_point_indices())
+                cell_mass(i, j) += (density * fe_values.shape_value(i, q) *
+                                      fe_values.shape_value(j, q) +
+                                    rotary * fe_values.shape_grad(i, q) *
+                                      fe_values.shape_grad(j, q)) *
+                                   fe_values.JxW(q);
         }
     }
   } // namespace
@@ -58,7 +100,9 @@ namespace rodnet
   rod_inertia(const CrossSection &section, const double density)
   {
     require_positive(density, "rod inertia: the density");
-    return {density * section.area, density * (section.I1 + section.I2)};
+    return {density * section.area,
+            density * (section.I1 + section.I2),
+            density * (section.I1 + section.I2) / 2};
   }
 
   void
@@ -87,6 +131,7 @@ namespace rodnet
     dealii::FEValues<1, 3> fe_values(fe,
                                      quadrature,
                                      dealii::update_values |
+                                       dealii::update_gradients |
                                        dealii::update_JxW_values);
 
     // The junction copies condense onto their junction vertices (every
@@ -102,24 +147,7 @@ namespace rodnet
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
-        const RodInertia &rod = inertia[cell->material_id()];
-        cell_mass             = 0;
-        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          {
-            // Positions carry rho A; the twist carries rho (I1 + I2), the
-            // rotation of the cross-sections about the tangent at the
-            // twist rate (doc/theory.md).
-            const unsigned int component = fe.system_to_component_index(i).first;
-            const double       density =
-              component < 3 ? rod.mass_per_length :
-                              rod.rotational_inertia_per_length;
-            for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
-              if (fe.system_to_component_index(j).first == component)
-                for (unsigned int q = 0; q < quadrature.size(); ++q)
-                  cell_mass(i, j) += density * fe_values.shape_value(i, q) *
-                                     fe_values.shape_value(j, q) *
-                                     fe_values.JxW(q);
-          }
+        segment_mass(fe_values, inertia[cell->material_id()], cell_mass);
         cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(cell_mass, dofs, mass);
       }

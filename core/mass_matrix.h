@@ -16,14 +16,18 @@ namespace rodnet
     /// rho (I1 + I2) (kg m): polar moment of inertia of the cross-section
     /// about the centreline, the inertia of the twist.
     double rotational_inertia_per_length;
+    /// rho I_b (kg m), I_b = (I1 + I2) / 2: rotary inertia of the
+    /// cross-section about its bending axes (Rayleigh beam); 0 leaves it out
+    /// (Euler-Bernoulli rod).
+    double rotary_inertia_per_length = 0;
   };
 
   /**
    * The inertia of a rod of density @p density (kg/m^3) and cross-section
-   * @p section: rho A and rho (I1 + I2). Note that I1 + I2 is the polar
-   * second moment, not the torsion constant J of the section (they agree
-   * for a circle only). Throws std::invalid_argument for a density that is
-   * not positive and finite.
+   * @p section: rho A, rho (I1 + I2) and the rotary rho (I1 + I2) / 2.
+   * Note that I1 + I2 is the polar second moment, not the torsion constant
+   * J of the section (they agree for a circle only). Throws
+   * std::invalid_argument for a density that is not positive and finite.
    */
   RodInertia
   rod_inertia(const CrossSection &section, double density);
@@ -47,10 +51,12 @@ namespace rodnet
    * sparsity pattern, so that it can be added to a tangent of the model.
    *
    * Per segment of undeformed length l0, the positions of its two vertices
-   * carry rho A l0 as chosen by @p kind, and its twist DoF carries
-   * rho (I1 + I2) l0: deal.II's FEValues integrate it cell by cell on the
-   * model's DoFHandler (each cell's material_id names its rod), and the
-   * junction constraints condense the rod ends at a junction onto its
+   * carry rho A l0 as chosen by @p kind plus the rotary inertia of its
+   * sections, rho I_b / l0 [[1, -1], [-1, 1]] per position component for
+   * either kind (so a lumped M is diagonal only where rho I_b = 0), and its
+   * twist DoF carries rho (I1 + I2) l0: deal.II's FEValues integrate it cell by
+   * cell on the model's DoFHandler (each cell's material_id names its rod), and
+   * the junction constraints condense the rod ends at a junction onto its
    * vertex, which collects the mass of every adjacent segment once. The
    * constrained position DoFs of those ends and the quaternion DoFs of
    * junctions carry no inertia (Lestringant & Kochmann section 2.5: none on
@@ -62,8 +68,8 @@ namespace rodnet
    * keeps K's diagonal on fixed rows and a zero Newton increment there.
    * Without, M is the mass of the free structure.
    *
-   * Throws std::invalid_argument naming the rod for a mass or rotational
-   * inertia per length that is negative or not finite, and where the
+   * Throws std::invalid_argument naming the rod for a mass, rotational or
+   * rotary inertia per length that is negative or not finite, and where the
    * number of inertias is not the number of rods; std::logic_error before
    * RodModel::finalize().
    */

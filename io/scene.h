@@ -112,7 +112,9 @@ namespace rodnet
      * material group (the groups of build_model()): the group's "Mass per
      * length" and "Twist inertia per length" where given, else rho A and
      * rho (I1 + I2) of its "Density" and cross-section; the mass per length
-     * falls back on Loads/Mass per length. Throws std::invalid_argument
+     * falls back on Loads/Mass per length. The rotary inertia is the
+     * group's "Rotary inertia per length", by default half the twist
+     * inertia. Throws std::invalid_argument
      * naming the entry where a group in use has neither (e.g. a density
      * with rigidities given directly: no section to take A and I from), or
      * where two of them differ.
@@ -183,6 +185,9 @@ namespace rodnet
       double mass_per_length = 0;
       /// "Twist inertia per length" (kg m); 0 when not given.
       double twist_inertia_per_length = 0;
+      /// "Rotary inertia per length" (kg m); empty for "auto" (half the
+      /// twist inertia per length).
+      std::optional<double> rotary_inertia_per_length;
       /// Whether the rods keep their segments' lengths (Rod::inextensible).
       bool inextensible = false;
       /// Empty where the rigidities are given directly.

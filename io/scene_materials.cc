@@ -36,6 +36,36 @@ namespace rodnet
           "\", \"set Material = <name>\" (doc/networks.md)");
     }
 
+    /// "Rotary inertia per length" of the material subsection @p title:
+    /// empty for "auto", else a number that must be finite and not negative
+    /// (refused naming the entry).
+    std::optional<double>
+    rotary_inertia_entry(const dealii::ParameterHandler &prm,
+                         const std::string              &title)
+    {
+      const std::string text = prm.get("Rotary inertia per length");
+      if (text == "auto")
+        return std::nullopt;
+      double      value = -1;
+      std::size_t used  = 0;
+      try
+        {
+          value = std::stod(text, &used);
+        }
+      catch (const std::exception &)
+        {
+          used = 0;
+        }
+      const bool whole =
+        used > 0 && text.find_first_not_of(" \t", used) == std::string::npos;
+      if (!whole || !std::isfinite(value) || value < 0)
+        throw std::invalid_argument(
+          "entry \"" + title + "/Rotary inertia per length\": \"" + text +
+          "\" is not a rotary inertia: give a finite number >= 0 (kg m; 0 "
+          "for none) or auto (half the twist inertia per length)");
+      return value;
+    }
+
     /// True if an entry below @p section holds other than its default.
     bool
     sets_an_entry(const EntryNode &section)
@@ -70,6 +100,11 @@ namespace rodnet
                         "Mass moment of the section about the centreline, "
                         "for time stepping (rho J for a circle); 0: Density "
                         "times I1 + I2. [kg m]");
+      prm.declare_entry("Rotary inertia per length",
+                        "auto",
+                        dealii::Patterns::Anything(),
+                        "rho (I1 + I2) / 2 of the sections about their bending "
+                        "axes; auto: half the twist inertia; 0: none. [kg m]");
       prm.declare_entry(
         "Inextensible",
         "false",
@@ -131,12 +166,13 @@ namespace rodnet
                         const std::string        &title)
   {
     SceneMaterial g;
-    g.subsection               = title;
-    g.model                    = prm.get("Model");
-    g.density                  = prm.get_double("Density");
-    g.mass_per_length          = prm.get_double("Mass per length");
-    g.twist_inertia_per_length = prm.get_double("Twist inertia per length");
-    g.inextensible             = prm.get_bool("Inextensible");
+    g.subsection                = title;
+    g.model                     = prm.get("Model");
+    g.density                   = prm.get_double("Density");
+    g.mass_per_length           = prm.get_double("Mass per length");
+    g.twist_inertia_per_length  = prm.get_double("Twist inertia per length");
+    g.rotary_inertia_per_length = rotary_inertia_entry(prm, title);
+    g.inextensible              = prm.get_bool("Inextensible");
     if (!sets_an_entry(*entries.find(g.subsection)->find(g.model)))
       throw std::invalid_argument(
         "subsection \"" + g.subsection + "/" + g.model +
@@ -301,7 +337,11 @@ namespace rodnet
       throw std::invalid_argument("entry \"" + group.subsection +
                                   "/Twist inertia per length" + needs +
                                   "the twist inertia per length" + or_density);
-    return {*rho_A, *rho_I};
+    // The rotary inertia rho (I1 + I2) / 2 about either bending axis
+    // (doc/theory.md, "Rotary inertia"), unless stated.
+    return {*rho_A,
+            *rho_I,
+            group.rotary_inertia_per_length.value_or(*rho_I / 2)};
   }
 
   std::vector<RodInertia>

@@ -2,7 +2,9 @@
 // from the geometry alone: translations of single rods and welded networks
 // (shared junction vertices counted once), rotation about the axis of a
 // straight rod (twist inertia) and about a perpendicular axis (exact for
-// the consistent mass, the trapezoidal rule for the lumped one); the
+// the consistent mass, the trapezoidal rule for the lumped one; the rotary
+// inertia of the sections exact for both), the rotary inertia's quadratic
+// form on a welded network; the
 // eigenvalues of one segment, lumping as row sums, symmetry, zero rows of
 // quaternion DoFs, the constrained variant and the errors; and the spin of
 // the director frames that the twist inertia approximates.
@@ -193,14 +195,15 @@ namespace
 
   // Turning a straight rod of length L about a perpendicular axis through
   // its midpoint at the rate Omega: the continuum gives
-  // T = 1/2 rho A L^3 / 12 Omega^2, which the consistent mass (linear
-  // shape functions, exact for the linear velocity field) reproduces; the
+  // T = 1/2 (rho A L^3 / 12 + rho I_b L) Omega^2, the sections turning at
+  // Omega about a bending axis. The consistent mass (linear shape
+  // functions, exact for the linear velocity field) reproduces it; the
   // lumped mass integrates r^2 by the trapezoidal rule, whose error for
-  // segments of length h is L h^2 / 6. The twist rate is zero (the
-  // rotation axis is normal to the tangent).
+  // segments of length h is L h^2 / 6. The rotary part is exact for both.
+  // The twist rate is zero (the rotation axis is normal to the tangent).
   TEST_P(MassMatrixTest, RotationAboutPerpendicularAxis)
   {
-    const double       L = 2.0, Omega = 0.7, rhoA = 1.7;
+    const double       L = 2.0, Omega = 0.7, rhoA = 1.7, rhoIb = 0.09;
     const unsigned int n     = 5;
     const double       h     = L / n;
     const auto         model = single_rod(
@@ -215,12 +218,58 @@ namespace
       }
     v.compress(dealii::VectorOperation::insert);
     const double T =
-      kinetic_energy(mass_of(*model, {{rhoA, 5.0}}, GetParam()), v);
+      kinetic_energy(mass_of(*model, {{rhoA, 5.0, rhoIb}}, GetParam()), v);
     const double second_moment = GetParam() == MassKind::consistent ?
                                    L * L * L / 12 :
                                    L * L * L / 12 + L * h * h / 6;
-    const double exact         = 0.5 * rhoA * second_moment * Omega * Omega;
+    const double exact =
+      0.5 * (rhoA * second_moment + rhoIb * L) * Omega * Omega;
+    std::cout << "kinetic energy " << T << ", exact " << exact
+              << ", of which rotary " << 0.5 * rhoIb * L * Omega * Omega
+              << std::endl;
     EXPECT_NEAR(T, exact, 1e-13 * exact);
+  }
+
+  // The rotary inertia on the windmill (four rods welded at the hub): for a
+  // random velocity of the vertices, what it adds to 1/2 v^T M v is the sum
+  // over segments of rho I_b / (2 l0) |v_b - v_a|^2, l0 from the vertices'
+  // positions, the hub's segments counted on its one vertex; the same for
+  // both kinds.
+  TEST_P(MassMatrixTest, RotaryInertiaIsChordRateQuadraticForm)
+  {
+    const auto model = network_model(network_generators::windmill(2.0), 3);
+    std::vector<RodInertia> with_rotary = graded_inertia(*model);
+    for (unsigned int r = 0; r < with_rotary.size(); ++r)
+      with_rotary[r].rotary_inertia_per_length = 0.05 * (1.0 + r);
+    std::mt19937                           random(5);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    const RodNetwork                      &network = model->network();
+    VectorType                             v       = model->create_vector();
+    for (unsigned int i = 0; i < network.n_vertices(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        v[model->layout().vertex_dof(i, c)] = uniform(random);
+    v.compress(dealii::VectorOperation::insert);
+    // The rod ends at the hub move with it.
+    model->layout().junction_constraints().distribute(v);
+    std::vector<Vector3> velocity(network.n_vertices());
+    for (unsigned int i = 0; i < network.n_vertices(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        velocity[i][c] = v[model->layout().vertex_dof(i, c)];
+
+    double exact = 0;
+    for (const SegmentStencil &s : model->layout().segments())
+      {
+        const unsigned int a = s.vertices[0], b = s.vertices[1];
+        const double       l0 = (network.vertex(b) - network.vertex(a)).norm();
+        const double rho_Ib   = with_rotary[s.rod].rotary_inertia_per_length;
+        exact += rho_Ib / (2 * l0) * (velocity[b] - velocity[a]).squaredNorm();
+      }
+    const double rotary =
+      kinetic_energy(mass_of(*model, with_rotary, GetParam()), v) -
+      kinetic_energy(mass_of(*model, graded_inertia(*model), GetParam()), v);
+    std::cout << "rotary kinetic energy " << rotary << ", exact " << exact
+              << std::endl;
+    EXPECT_NEAR(rotary, exact, 1e-12 * exact);
   }
 
   INSTANTIATE_TEST_SUITE_P(Kinds,
@@ -231,24 +280,25 @@ namespace
 
   // One segment: three decoupled copies of rho A l0 / 6 [[2, 1], [1, 2]]
   // (eigenvalues rho A l0 / 6 and rho A l0 / 2) for the consistent mass,
-  // rho A l0 / 2 six times for the lumped one, and rho (I1 + I2) l0.
+  // rho A l0 / 2 six times for the lumped one, and rho (I1 + I2) l0. The
+  // rotary inertia adds 2 rho I_b / l0 to the relative motion of the ends.
   TEST(MassMatrix, OneSegmentEigenvalues)
   {
-    const double l0 = 0.8, rhoA = 2.5, rhoJ = 0.3;
-    const auto   model = single_rod(
+    const double l0 = 0.8, rhoA = 2.5, rhoJ = 0.3, rhoIb = 0.04;
+    const double relative = 2 * rhoIb / l0;
+    const auto   model    = single_rod(
       {Vector3(0.1, 0.2, 0.3),
-         Vector3(0.1, 0.2, 0.3) + l0 * Vector3(2, -1, 2).normalized()});
+            Vector3(0.1, 0.2, 0.3) + l0 * Vector3(2, -1, 2).normalized()});
     ASSERT_EQ(model->layout().n_dofs(), 7u);
     for (const MassKind kind : {MassKind::consistent, MassKind::lumped})
       {
-        const Eigen::MatrixXd m = dense(mass_of(*model, {{rhoA, rhoJ}}, kind));
-        Eigen::VectorXd       expected(7);
-        if (kind == MassKind::consistent)
-          expected << rhoA * l0 / 6, rhoA * l0 / 6, rhoA * l0 / 6,
-            rhoA * l0 / 2, rhoA * l0 / 2, rhoA * l0 / 2, rhoJ * l0;
-        else
-          expected << rhoA * l0 / 2, rhoA * l0 / 2, rhoA * l0 / 2,
-            rhoA * l0 / 2, rhoA * l0 / 2, rhoA * l0 / 2, rhoJ * l0;
+        const Eigen::MatrixXd m =
+          dense(mass_of(*model, {{rhoA, rhoJ, rhoIb}}, kind));
+        const double ends =
+          kind == MassKind::consistent ? rhoA * l0 / 6 : rhoA * l0 / 2;
+        Eigen::VectorXd expected(7);
+        expected << ends + relative, ends + relative, ends + relative,
+          rhoA * l0 / 2, rhoA * l0 / 2, rhoA * l0 / 2, rhoJ * l0;
         std::sort(expected.data(), expected.data() + expected.size());
         const Eigen::VectorXd eigenvalues =
           Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m).eigenvalues();
@@ -408,6 +458,10 @@ namespace
     EXPECT_NEAR(inertia.rotational_inertia_per_length,
                 rho * M_PI * std::pow(r, 4) / 2,
                 1e-18);
+    // rho I of a circle about a diameter.
+    EXPECT_NEAR(inertia.rotary_inertia_per_length,
+                rho * M_PI * std::pow(r, 4) / 4,
+                1e-18);
   }
 
   /// Runs @p f and returns the message of the @p Exception it throws
@@ -445,6 +499,8 @@ namespace
            {{{1, 1}, {1, nan}}, "rod 1 has rotational inertia per length"},
            {{{inf, 1}, {1, 1}}, "rod 0 has mass per length"},
            {{{1, -0.5}, {1, 1}}, "rod 0 has rotational inertia per length"},
+           {{{1, 1}, {1, 1, -2}}, "rod 1 has rotary inertia per length"},
+           {{{1, 1, nan}, {1, 1}}, "rod 0 has rotary inertia per length"},
            {{{1, 1}}, "no inertia for rod 1"},
            {{{1, 1}, {1, 1}, {1, 1}},
             "inertia given for rod 2, which does not exist"}})

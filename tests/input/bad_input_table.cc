@@ -537,6 +537,29 @@ namespace
      1,
      "The entry value -1 for the entry named Mass per length does not match "
      "the given pattern: [Double 0...MAX_DOUBLE (inclusive)]"},
+    // The rotary inertia: "auto" or a finite number >= 0, in our words.
+    {"negative_rotary_inertia",
+     with("Material", "  set Rotary inertia per length = -1e-3\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Material/Rotary inertia per length\": \"-1e-3\" is not a "
+     "rotary inertia: give a finite number >= 0 (kg m; 0 for none) or auto "
+     "(half the twist inertia per length)"},
+    {"rotary_inertia_not_a_number",
+     with("Material", "  set Rotary inertia per length = half\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Material/Rotary inertia per length\": \"half\" is not a "
+     "rotary inertia"},
+    {"infinite_rotary_inertia",
+     with("Material", "  set Rotary inertia per length = inf\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Material/Rotary inertia per length\": in \"inf\", \"inf\" "
+     "is not a finite number; every number of a scene must be finite"},
     {"mass_per_length_contradicts_material_density",
      valid_cantilever + valid_time_stepping + midpoint_integrator +
        section("Material",

@@ -92,12 +92,16 @@ namespace
                                     elastic_circle("0.02", "500") + "end\n");
     const std::vector<RodInertia> inertia = scene.inertia();
     ASSERT_EQ(inertia.size(), 4u);
-    // rho pi r^2 and rho (I1 + I2) = rho pi r^4 / 2.
+    // rho pi r^2, rho (I1 + I2) = rho pi r^4 / 2 and the rotary rho I =
+    // rho pi r^4 / 4.
     for (const unsigned int rod : {0u, 1u})
       {
         EXPECT_NEAR(inertia[rod].mass_per_length, 1000 * M_PI * 1e-4, 1e-12);
         EXPECT_NEAR(inertia[rod].rotational_inertia_per_length,
                     1000 * M_PI * 1e-8 / 2,
+                    1e-16);
+        EXPECT_NEAR(inertia[rod].rotary_inertia_per_length,
+                    1000 * M_PI * 1e-8 / 4,
                     1e-16);
       }
     for (const unsigned int rod : {2u, 3u})
@@ -105,6 +109,9 @@ namespace
         EXPECT_NEAR(inertia[rod].mass_per_length, 500 * M_PI * 4e-4, 1e-12);
         EXPECT_NEAR(inertia[rod].rotational_inertia_per_length,
                     500 * M_PI * 16e-8 / 2,
+                    1e-16);
+        EXPECT_NEAR(inertia[rod].rotary_inertia_per_length,
+                    500 * M_PI * 16e-8 / 4,
                     1e-16);
       }
 
@@ -119,7 +126,9 @@ namespace
   {
     // Rods 0, 1: "Material", rigidities given directly, inertia stated;
     // rods 2, 3: "Material thick", its Density and section with the mass
-    // per length stated as well (they agree: 500 pi 4e-4).
+    // per length stated as well (they agree: 500 pi 4e-4) and no rotary
+    // inertia (0: Euler-Bernoulli), whereas "Material" takes the default,
+    // half its stated twist inertia.
     const std::string direct =
       "  subsection linear elastic\n    set Stiffness input = direct\n"
       "    set EA = 1e4\n    set EI1 = 1\n    set EI2 = 1\n    set GJ = 1\n"
@@ -133,7 +142,8 @@ namespace
                   "end\n"
                   "subsection Group y-beams\n  set Material = thick\nend\n"
                   "subsection Material thick\n"
-                  "  set Mass per length = 0.62831853071795865\n" +
+                  "  set Mass per length = 0.62831853071795865\n"
+                  "  set Rotary inertia per length = 0\n" +
                   elastic_circle("0.02", "500") + "end\n");
     const std::vector<RodInertia> inertia = scene.inertia();
     ASSERT_EQ(inertia.size(), 4u);
@@ -141,6 +151,7 @@ namespace
       {
         EXPECT_EQ(inertia[rod].mass_per_length, 3);
         EXPECT_EQ(inertia[rod].rotational_inertia_per_length, 0.25);
+        EXPECT_EQ(inertia[rod].rotary_inertia_per_length, 0.125);
       }
     for (const unsigned int rod : {2u, 3u})
       {
@@ -148,6 +159,7 @@ namespace
         EXPECT_NEAR(inertia[rod].rotational_inertia_per_length,
                     500 * M_PI * 16e-8 / 2,
                     1e-16);
+        EXPECT_EQ(inertia[rod].rotary_inertia_per_length, 0);
       }
 
     // Loads/Mass per length is the same quantity, for the materials that
