@@ -53,10 +53,12 @@ namespace
     unsigned int steps_per_period = 20;
     double       amplitude        = 1e-4;
     double       tolerance        = 0; ///< 0: the scene's default
-    std::string  studies          = "cost,period";
-    std::string  cells            = "10,20,35";
-    std::string  period_cells     = "10,35";
-    std::string  integrators      = "backward euler,newmark,midpoint";
+    /// TimeIntegrator::Parameters::modified_newton (0: full Newton).
+    bool        modified_newton = true;
+    std::string studies         = "cost,period";
+    std::string cells           = "10,20,35";
+    std::string period_cells    = "10,35";
+    std::string integrators     = "backward euler,newmark,midpoint";
 
     std::vector<bench::Option>
     command_line()
@@ -67,6 +69,7 @@ namespace
               bench::number("--steps-per-period", steps_per_period, 2),
               bench::real("--amplitude", amplitude),
               bench::real("--tolerance", tolerance),
+              bench::flag("--modified-newton", modified_newton),
               bench::text("--study", studies),
               bench::text("--cells", cells),
               bench::text("--period-cells", period_cells),
@@ -243,7 +246,7 @@ namespace
 
   /// Free vibration of the lattice of @p scene from @p u0 at rest with
   /// @p integrator, steps @p h to @p end_time, Newton to the relative
-  /// @p tolerance (0: the scene's).
+  /// --tolerance (0: the scene's) and --modified-newton of @p options.
   Run
   free_vibration(const Scene       &scene,
                  const Mode        &mode,
@@ -251,7 +254,7 @@ namespace
                  const std::string &integrator,
                  const double       h,
                  const double       end_time,
-                 const double       tolerance)
+                 const Options     &options)
   {
     const auto                 model = scene.build_model();
     TimeIntegrator::Parameters p     = scene.time_stepping;
@@ -260,8 +263,9 @@ namespace
     p.end_time                       = end_time;
     p.load_factor                    = [](double) { return 0.0; };
     p.progress_interval              = 0;
-    if (tolerance > 0)
-      p.relative_tolerance = tolerance;
+    p.modified_newton                = options.modified_newton;
+    if (options.tolerance > 0)
+      p.relative_tolerance = options.tolerance;
     MatrixType mass;
     assemble_mass_matrix(*model, scene.inertia(), p.mass, mass, true);
     VectorType modal_force = model->create_vector();
@@ -334,7 +338,7 @@ namespace
                                            integrator,
                                            h,
                                            (options.steps + 2.5) * h,
-                                           options.tolerance);
+                                           options);
             const std::vector<double> steady(run.step_time.begin() + 2,
                                              run.step_time.end());
             const bench::Statistics   step = bench::statistics(steady);
@@ -400,7 +404,7 @@ namespace
                                      integrator,
                                      h,
                                      2.5 * period,
-                                     options.tolerance);
+                                     options);
                 walls.push_back(run.wall / 2.5);
               }
             const double measured = zero_crossing_period(run);
