@@ -56,15 +56,6 @@ namespace
     }
   };
 
-  /// @p x as "1.234e-05", for tables and CSV.
-  std::string
-  scientific(const double x)
-  {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.3e", x);
-    return text;
-  }
-
   std::shared_ptr<const RodMaterial>
   elastic()
   {
@@ -122,12 +113,13 @@ namespace
           // report: an empty CSV field and "-".
           const double      measured = zero_crossing_period(h);
           const std::string error =
-            h.failure.empty() ? scientific(std::abs(measured / period - 1)) :
-                                "";
+            h.failure.empty() ?
+              bench::scientific(std::abs(measured / period - 1)) :
+              "";
           csv << method << ',' << n << ',' << period / n << ','
-              << (h.failure.empty() ? scientific(measured) : "") << ',' << error
-              << ',' << time.median << ',' << time.min << ',' << time.max
-              << '\n';
+              << (h.failure.empty() ? bench::scientific(measured) : "") << ','
+              << error << ',' << time.median << ',' << time.min << ','
+              << time.max << '\n';
           std::printf("  %-15s %4u steps/period: period error %s, %.3f s "
                       "(%.3f-%.3f)%s%s\n",
                       method.c_str(),
@@ -238,7 +230,7 @@ namespace
             ++halved;
           // No step recorded: no drift to report (an empty CSV field).
           const std::string drift =
-            h.energy.empty() ? "" : scientific(energy_drift(h));
+            h.energy.empty() ? "" : bench::scientific(energy_drift(h));
           const double reached = h.time.empty() ? 0 : h.time.back();
           csv << method << ',' << n << ',' << T / n << ',' << h.failure.empty()
               << ',' << h.time.size() << ',' << drift << ',' << reached << ",\""

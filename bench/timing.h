@@ -76,6 +76,15 @@ namespace rodnet
       return text;
     }
 
+    /// @p x as "1.234e-05", for tables and CSV.
+    inline std::string
+    scientific(const double x)
+    {
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.3e", x);
+      return text;
+    }
+
     /// "1.23e-03 (1.20e-03-1.25e-03)" for a time in seconds.
     inline std::string
     format_time(const Statistics &time)

@@ -108,6 +108,14 @@ namespace rodnet
       std::function<void(const VectorType &x, VectorType &a, VectorType &b)>
         rank_one;
       /**
+       * Modified Newton: every iteration of a solve uses the Jacobian (and
+       * its factorization) of the solve's first iterate, one assembly and
+       * one factorization per solve. It converges linearly, at the rate of
+       * the Jacobian's change over the solve: for the small corrections of
+       * a time step from a good predictor, as fast as the tolerance needs.
+       */
+      bool reuse_first_jacobian = false;
+      /**
        * Optional convergence test in place of |residual|_2 <= tolerance:
        * called with every iterate, the initial guess included, and its
        * residual; returns whether the iterate is converged. StaticSolver

@@ -172,6 +172,14 @@ namespace rodnet
   {
     if (isJacobian())
       return Ok;
+    if (shared->problem.reuse_first_jacobian && shared->owner != nullptr)
+      {
+        // Modified Newton: the tangent and factorization of the first
+        // iterate stand for this one's.
+        shared->owner  = this;
+        jacobian_valid = true;
+        return Ok;
+      }
     shared->owner      = this;
     shared->factorized = false;
     try

@@ -401,7 +401,21 @@ namespace rodnet
     model.set_time(load_time);
     const StepStart start{u, base, h, parameters.load_factor(load_time)};
     VectorType      x = predict(u, v, h, parameters.load_factor(end_time));
-    solve_step(scheme, start, x, result);
+    const bool      modified = parameters.modified_newton && scheme.dynamic();
+    if (modified)
+      {
+        // One factorization per step where the tangent barely changes
+        // over it; full Newton where that is not enough.
+        const VectorType predicted = x;
+        solve_step(scheme, start, x, result, true);
+        if (!result.converged)
+          {
+            x      = predicted;
+            result = JudgedResult();
+          }
+      }
+    if (!modified || !result.converged)
+      solve_step(scheme, start, x, result);
     if (result.converged && !std::isfinite(x.l2_norm()))
       {
         result.converged = false;
@@ -459,13 +473,15 @@ namespace rodnet
   TimeIntegrator::solve_step(IntegrationScheme &scheme,
                              const StepStart   &start,
                              VectorType        &x,
-                             JudgedResult      &result)
+                             JudgedResult      &result,
+                             const bool         modified)
   {
     try
       {
         model.set_time_step(start.h);
         NewtonSolver::Problem problem;
         scheme.set_up(start, problem);
+        problem.reuse_first_jacobian = modified;
         // The noise follows the slowly changing shape: measured every
         // noise_interval steps (and after a failed step) rather than at
         // every one of thousands.

@@ -116,6 +116,13 @@ namespace rodnet
       double rounding_floor_limit       = 1e-3;
       double rounding_uncertainty_limit = 1e-6;
       double rounding_failure_limit     = 1e-3;
+      /**
+       * Dynamic steps solve by modified Newton
+       * (NewtonSolver::Problem::reuse_first_jacobian): one tangent
+       * assembly and factorization per step, the predictor's; a step that
+       * fails so is solved again by full Newton before it is halved.
+       */
+      bool modified_newton = true;
       /// Strains past these get a warning (StrainMonitor).
       StrainLimits             strain_limits;
       NewtonSolver::Parameters newton;
@@ -284,12 +291,14 @@ namespace rodnet
             double            end_load_factor) const;
 
     /// Newton for the step @p start of @p scheme from @p x, judged by the
-    /// criterion of statics; a throw becomes a failed @p result.
+    /// criterion of statics (by modified Newton if @p modified); a throw
+    /// becomes a failed @p result.
     void
     solve_step(IntegrationScheme &scheme,
                const StepStart   &start,
                VectorType        &x,
-               JudgedResult      &result);
+               JudgedResult      &result,
+               bool               modified = false);
 
     /// C = alpha M + beta K(@p u) + drag at the start of a dynamic run at
     /// @p load_factor (nothing without damping).

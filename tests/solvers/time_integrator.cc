@@ -2,17 +2,18 @@
 // stress relaxation of a standard-linear-solid bar held at a prescribed
 // elongation against E(t) = E1 + E2 exp(-t / t_r) (within the first-order
 // error of the backward-Euler update), Newton with a dense rank-one
-// Jacobian part,
+// Jacobian part, modified Newton (one tangent per solve),
 // the parameter checks, and a failed run that reports its last state
 // instead of NaN.
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <common/cantilever_swing.h>
+#include <common/held_bar.h>
 #include <core/mass_matrix.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
-#include <common/held_bar.h>
 #include <solvers/time_integrator.h>
 
 #include <cmath>
@@ -110,12 +111,94 @@ namespace
     EXPECT_GT(inexact.iterations, 1u);
   }
 
+  // f(y)_i = (2 + i) y_i + y_i^3 / 20 - c_i, Jacobian diag(2 + i +
+  // 3 y_i^2 / 20): modified Newton assembles the tangent once, at the first
+  // iterate, converges linearly (more iterations than Newton) to the same
+  // root; full Newton assembles it at every iterate.
+  TEST(NewtonSolver, ModifiedNewtonAssemblesTheTangentOnce)
+  {
+    const unsigned int             n   = 5;
+    const dealii::IndexSet         all = dealii::complete_index_set(n);
+    VectorType                     x(all, MPI_COMM_WORLD), newton = x;
+    dealii::DynamicSparsityPattern pattern(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      pattern.add(i, i);
+    MatrixType tangent;
+    tangent.reinit(pattern);
+    unsigned int          tangents = 0;
+    NewtonSolver::Problem problem;
+    problem.residual = [&](const VectorType &y, VectorType &r) {
+      for (unsigned int i = 0; i < n; ++i)
+        r[i] = (2.0 + i) * y[i] + std::pow(y[i], 3) / 20 - std::sin(1.0 + i);
+      r.compress(dealii::VectorOperation::insert);
+    };
+    problem.tangent = [&](const VectorType &y, MatrixType &k) {
+      ++tangents;
+      for (unsigned int i = 0; i < n; ++i)
+        k.set(i, i, 2.0 + i + 3 * y[i] * y[i] / 20);
+      k.compress(dealii::VectorOperation::insert);
+    };
+    NewtonSolver::Parameters parameters;
+    parameters.tolerance = 1e-13;
+    const auto full = NewtonSolver(parameters).solve(problem, newton, tangent);
+    ASSERT_TRUE(full.converged);
+    EXPECT_EQ(tangents, full.iterations);
+
+    tangents                     = 0;
+    problem.reuse_first_jacobian = true;
+    const auto chord = NewtonSolver(parameters).solve(problem, x, tangent);
+    ASSERT_TRUE(chord.converged);
+    EXPECT_EQ(tangents, 1u);
+    EXPECT_GT(chord.iterations, full.iterations);
+    x -= newton;
+    EXPECT_LT(x.linfty_norm(), 1e-12);
+  }
+
+  // Modified Newton solves every step to the same tolerance as full
+  // Newton: the cantilever of cantilever_swing.h (N = 20) in its first
+  // mode, tip at 0.01 L, one period in 40 steps, follows the same path.
+  TEST(TimeIntegrator, ModifiedNewtonStepsAsFullNewton)
+  {
+    const auto elastic =
+      std::make_shared<LinearElasticRod>(rodnet::testing::swing_stiffness);
+    auto model                = rodnet::testing::cantilever(20, elastic, 0);
+    const auto [omega, shape] = rodnet::testing::first_mode(*model);
+    const double amplitude    = 0.01 / shape[model->layout().vertex_dof(20, 2)];
+    const double period       = 2 * M_PI / omega;
+    for (const std::string method : {"newmark", "midpoint", "backward euler"})
+      {
+        rodnet::testing::SwingHistory runs[2];
+        for (const bool modified : {false, true})
+          {
+            auto rod = rodnet::testing::cantilever(20, elastic, 0);
+            runs[modified] =
+              rodnet::testing::free_vibration(*rod,
+                                              shape,
+                                              amplitude,
+                                              method,
+                                              period / 40,
+                                              period,
+                                              [&](
+                                                TimeIntegrator::Parameters &p) {
+                                                p.modified_newton = modified;
+                                              });
+            ASSERT_TRUE(runs[modified].failure.empty()) << method;
+          }
+        ASSERT_EQ(runs[0].tip.size(), runs[1].tip.size());
+        double difference = 0;
+        for (std::size_t k = 0; k < runs[0].tip.size(); ++k)
+          difference =
+            std::max(difference, std::abs(runs[1].tip[k] - runs[0].tip[k]));
+        EXPECT_LT(difference, 1e-9) << method; // of a 0.01 m amplitude
+      }
+  }
+
   TEST(TimeIntegrator, RejectsBadParameters)
   {
     auto model =
       held_bar(std::make_shared<LinearElasticRod>(RodStiffness{1, 1, 1, 1}),
-          4,
-          Vector3::Zero());
+               4,
+               Vector3::Zero());
     const std::vector<RodInertia> inertia{{1, 1e-3}};
     TimeIntegrator::Parameters    p;
     p.end_time = 1;
@@ -159,10 +242,10 @@ namespace
   // (finite).
   TEST(TimeIntegrator, FailureKeepsLastConvergedState)
   {
-    auto                       model = held_bar(std::make_shared<LinearElasticRod>(
-                       RodStiffness{1e6, 1e-3, 1e-3, 1e-3}),
-                     8,
-                     Vector3(0, 1, 0));
+    auto model = held_bar(std::make_shared<LinearElasticRod>(
+                            RodStiffness{1e6, 1e-3, 1e-3, 1e-3}),
+                          8,
+                          Vector3(0, 1, 0));
     TimeIntegrator::Parameters p;
     p.integrator            = "newmark";
     p.time_step             = 1e-3;
