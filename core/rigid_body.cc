@@ -15,8 +15,8 @@ namespace rodnet
                          const char      *what)
     {
       if (!(value >= 0) || !std::isfinite(value))
-        throw std::invalid_argument("rigid body " + body.where + ": the " +
-                                    what + " is " + std::to_string(value) +
+        throw std::invalid_argument(body.where + ": the " + what + " is " +
+                                    std::to_string(value) +
                                     "; it must be finite and not negative");
     }
 
@@ -27,7 +27,7 @@ namespace rodnet
                       const RigidBody   &body,
                       const unsigned int v)
     {
-      const std::string where = "rigid body " + body.where + ": ";
+      const std::string where = body.where + ": ";
       if (v >= network.n_vertices())
         throw std::invalid_argument(where + "vertex " + std::to_string(v) +
                                     " does not exist");
@@ -77,16 +77,16 @@ namespace rodnet
     require_not_negative(body, body.offset, "offset (m)");
     if (body.mass == 0 && body.axial_inertia == 0 &&
         body.transverse_inertia == 0)
-      throw std::invalid_argument("rigid body " + body.where +
+      throw std::invalid_argument(body.where +
                                   ": it has neither mass nor rotary inertia");
     if (const auto *v = std::get_if<unsigned int>(&body.attachment))
       return check_vertex_body(network, body, *v);
     const RodEnd &end = std::get<RodEnd>(body.attachment);
     if (end.rod >= network.rods().size())
-      throw std::invalid_argument("rigid body " + body.where + ": rod " +
+      throw std::invalid_argument(body.where + ": rod " +
                                   std::to_string(end.rod) + " does not exist");
     if (network.rods()[end.rod].closed)
-      throw std::invalid_argument("rigid body " + body.where + ": rod " +
+      throw std::invalid_argument(body.where + ": rod " +
                                   std::to_string(end.rod) +
                                   " is closed and has no end");
   }

@@ -37,8 +37,8 @@ namespace rodnet
    */
   struct RigidBody
   {
-    /// Where the body comes from, for messages: "entry \"Loads/Rigid
-    /// bodies\": \"end\"".
+    /// What messages call the body, e.g. "rigid body \"hub\"" or, from a
+    /// scene, "entry \"Loads/Rigid bodies\": \"end\"".
     std::string where;
     /// The free rod end it is welded to, or the vertex it sits at.
     std::variant<RodEnd, unsigned int> attachment;
