@@ -56,14 +56,24 @@ namespace rodnet
     }
   } // namespace
 
-  std::pair<unsigned int, double>
-  end_segment(const RodNetwork &network, const RodEnd &end)
+  EndKinematics
+  end_kinematics(const RodNetwork &network,
+                 const RodEnd     &end,
+                 const double      offset)
   {
     const Rod         &rod = network.rods().at(end.rod);
-    const unsigned int e   = network.end_vertex(end);
-    const unsigned int p =
-      end.at_start ? rod.vertices[1] : rod.vertices[rod.vertices.size() - 2];
-    return {p, (network.vertex(e) - network.vertex(p)).norm()};
+    const unsigned int n   = rod.segments.size();
+    EndKinematics      e;
+    e.vertices = {end.at_start ? rod.vertices[0] : rod.vertices[n],
+                  end.at_start ? rod.vertices[1] : rod.vertices[n - 1]};
+    e.segments = {end.at_start ? rod.segments.front() : rod.segments.back()};
+    // t = (x_e - x_p) / l, x_c = x_e + c t, the spin the end segment's.
+    const double l =
+      (network.vertex(e.vertices[0]) - network.vertex(e.vertices[1])).norm();
+    e.tangent = {1 / l, -1 / l};
+    e.centre  = {1 + offset / l, -offset / l};
+    e.spin    = {1};
+    return e;
   }
 
   void
@@ -99,14 +109,13 @@ namespace rodnet
     const Vector3 weight = body.mass * gravity;
     if (const auto *v = std::get_if<unsigned int>(&body.attachment))
       return {{*v, weight}};
-    // The centre x_c = (1 + c/l) x_e - (c/l) x_p: the potential -m g.x_c
-    // is that of these two forces.
-    const RodEnd &end      = std::get<RodEnd>(body.attachment);
-    const auto [before, l] = end_segment(network, end);
-    const double ratio     = body.offset / l;
-    if (ratio == 0)
-      return {{network.end_vertex(end), weight}};
-    return {{network.end_vertex(end), (1 + ratio) * weight},
-            {before, -ratio * weight}};
+    // -m g . x_c with x_c = sum_i centre_i x_i: a force per vertex.
+    const EndKinematics e =
+      end_kinematics(network, std::get<RodEnd>(body.attachment), body.offset);
+    std::vector<std::pair<unsigned int, Vector3>> forces;
+    for (unsigned int i = 0; i < e.vertices.size(); ++i)
+      if (e.centre[i] != 0)
+        forces.emplace_back(e.vertices[i], e.centre[i] * weight);
+    return forces;
   }
 } // namespace rodnet

@@ -24,12 +24,11 @@ namespace rodnet
    *   omega = 2 vdot at v = 0, so 1/2 j |omega|^2 = 1/2 (4 j) |vdot|^2, the
    *   block 4 j I_3 on v;
    * - welded to a free rod end (attachment: the RodEnd): its centre on the
-   *   end segment's tangent at @p offset c beyond the end vertex x_e,
-   *   x_c = x_e + (c / l)(x_e - x_p) with x_p the vertex before it and l
-   *   the end segment's undeformed length; an inertia axisymmetric about the
-   *   tangent, J_t on the end segment's twist rate and J_p on the rate of
-   *   the tangent, |xdot_e - xdot_p|^2 / l^2. Both are exact while the end
-   *   segment keeps its length.
+   *   end tangent t at @p offset c beyond the end vertex x_e, x_c = x_e +
+   *   c t, t the end segment's (EndKinematics); an
+   *   inertia axisymmetric about the tangent, J_t on the spin rate about
+   *   it and J_p on the rate of the tangent, |tdot|^2. Both are exact
+   *   while the end segments keep their lengths.
    *
    * A general inertia tensor, or a centre off the axis, makes the kinetic
    * energy depend on the body's orientation, which a constant M cannot
@@ -65,17 +64,36 @@ namespace rodnet
   void
   check_rigid_body(const RodNetwork &network, const RigidBody &body);
 
-  /// The vertex before the free rod end @p end (the end segment's other
-  /// vertex) and the end segment's undeformed length.
-  std::pair<unsigned int, double>
-  end_segment(const RodNetwork &network, const RodEnd &end);
+  /**
+   * How a body welded to the free rod end @p end moves with the DoFs, all
+   * linear in them: its centre x_c = sum_i centre_i x_i at @p offset beyond
+   * the end on the end segment's tangent t = sum_i tangent_i x_i =
+   * (x_e - x_p) / l, and its spin about t, sum_k spin_k phidot_k: the end
+   * segment's twist rate. The end segment's tangent and twist belong to
+   * its midpoint, l/2 inside the end: the rotary inertia and the offset
+   * converge at first order in l (doc/dynamics.md, "Rigid bodies").
+   */
+  struct EndKinematics
+  {
+    /// The end vertex and the one before it.
+    std::vector<unsigned int> vertices;
+    std::vector<double>       centre, tangent;
+    /// The active cell of the end segment.
+    std::vector<unsigned int> segments;
+    std::vector<double>       spin;
+  };
+
+  /// The EndKinematics of the free rod end @p end of @p network with the
+  /// centre at @p offset beyond it.
+  EndKinematics
+  end_kinematics(const RodNetwork &network, const RodEnd &end, double offset);
 
   /**
    * The weight m g of @p body under the gravitational acceleration
    * @p gravity, acting at its centre, as point forces (vertex, force): at
-   * its vertex, or at a rod end split as x_c is, (1 + c/l) m g at the end
-   * vertex and -(c/l) m g at the one before it (the same moment about the
-   * end while the end segment keeps its length).
+   * its vertex, or at a rod end split as x_c is (EndKinematics::centre:
+   * the same moment about the end while the end segments keep their
+   * lengths).
    */
   std::vector<std::pair<unsigned int, Vector3>>
   rigid_body_weight(const RodNetwork &network,

@@ -35,9 +35,9 @@ namespace rodnet
       constraints.distribute_local_to_global(block, dofs, mass);
     }
 
-    /// The block of a body welded to a free rod end: the centre
-    /// x_c = a x_e - b x_p, the tangent rate (xdot_e - xdot_p) / l, the
-    /// end segment's twist rate.
+    /// The block of a body welded to a free rod end: m on its centre,
+    /// J_p on the rate of its tangent, J_t on its spin (EndKinematics),
+    /// each the outer product of the weights.
     void
     add_end_body(const RodModel                          &model,
                  const RigidBody                         &body,
@@ -45,30 +45,25 @@ namespace rodnet
                  const dealii::AffineConstraints<double> &constraints,
                  MatrixType                              &mass)
     {
-      const RodNetwork &network          = model.network();
-      const auto [before, l]             = end_segment(network, end);
-      const Rod                    &rod  = network.rods()[end.rod];
-      const double                  b    = body.offset / l;
-      const double                  a    = 1 + b;
-      const double                  spin = body.transverse_inertia / (l * l);
-      const double                  ee   = body.mass * a * a + spin;
-      const double                  ep   = -body.mass * a * b - spin;
-      const double                  pp   = body.mass * b * b + spin;
+      const EndKinematics e = end_kinematics(model.network(), end, body.offset);
+      const unsigned int  n = e.vertices.size();
       std::vector<global_dof_index> dofs;
-      for (const unsigned int v : {network.end_vertex(end), before})
+      for (const unsigned int v : e.vertices)
         for (unsigned int c = 0; c < 3; ++c)
           dofs.push_back(model.layout().vertex_dof(v, c));
-      dofs.push_back(model.layout().twist_dof(
-        end.at_start ? rod.segments.front() : rod.segments.back()));
-      dealii::FullMatrix<double> block(7, 7);
-      for (unsigned int c = 0; c < 3; ++c)
-        {
-          block(c, c)         = ee;
-          block(c, 3 + c)     = ep;
-          block(3 + c, c)     = ep;
-          block(3 + c, 3 + c) = pp;
-        }
-      block(6, 6) = body.axial_inertia;
+      for (const unsigned int cell : e.segments)
+        dofs.push_back(model.layout().twist_dof(cell));
+      dealii::FullMatrix<double> block(dofs.size(), dofs.size());
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            block(3 * i + c, 3 * k + c) =
+              body.mass * e.centre[i] * e.centre[k] +
+              body.transverse_inertia * e.tangent[i] * e.tangent[k];
+      for (unsigned int i = 0; i < e.spin.size(); ++i)
+        for (unsigned int k = 0; k < e.spin.size(); ++k)
+          block(3 * n + i, 3 * n + k) =
+            body.axial_inertia * e.spin[i] * e.spin[k];
       constraints.distribute_local_to_global(block, dofs, mass);
     }
   } // namespace

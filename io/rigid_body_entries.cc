@@ -48,8 +48,11 @@ namespace rodnet
     {
       const auto values = dealii::Utilities::split_string_list(text, ',');
       if (values.size() > 2 || values.empty())
-        throw std::invalid_argument(item.where + ": the inertia \"" + text +
-                                    "\" should be <j> or <J_t>,<J_p>");
+        throw std::invalid_argument(
+          item.where + ": the inertia \"" + text +
+          "\" should be <j> (isotropic) or <J_t>,<J_p> (axisymmetric about a "
+          "rod end's tangent); a general inertia tensor makes the mass "
+          "matrix depend on the body's orientation and is not represented");
       item.axial_inertia      = positive(values.front(), "inertia", item);
       item.transverse_inertia = positive(values.back(), "inertia", item);
       item.axisymmetric       = values.size() == 2;
@@ -115,8 +118,12 @@ namespace rodnet
   {
     if (item.axial_inertia == 0)
       return std::nullopt;
+    // At a free rod end an isotropic inertia without offset turns with a
+    // handle: its ghost segment has the tangent at the end itself, where
+    // the end segment's sits l/2 inside (second against first order).
     const unsigned int v = select_vertex(network, item.place, item.entry);
-    if (network.junction_at(v) || free_rod_end(network, v))
+    if (network.junction_at(v) ||
+        (free_rod_end(network, v) && (item.axisymmetric || item.offset > 0)))
       return std::nullopt;
     return v;
   }
@@ -145,9 +152,9 @@ namespace rodnet
             network.describe_vertex(v);
         throw std::invalid_argument(
           item.where + ": " + at + " is no free rod end, and " +
-          (item.offset > 0 ? "an offset" : "two inertias J_t,J_p") +
-          " need the end's tangent to align with; give the isotropic "
-          "\"inertia <j>\" alone there");
+          (item.offset > 0 ? "an offset needs" : "two inertias J_t,J_p need") +
+          " the end's tangent to align with; give the isotropic \"inertia "
+          "<j>\" alone there");
       }
     if (const auto junction = network.junction_at(v))
       body.attachment = network.junctions()[*junction].vertex;

@@ -44,9 +44,10 @@ namespace rodnet
 
   /**
    * The vertex of @p item in @p network where the body's rotary inertia
-   * needs a rotation handle: a vertex inside a rod (or of a closed rod)
-   * that is in no junction; none for a body without rotary inertia, at a
-   * junction or at a free rod end. Throws as select_vertex().
+   * needs a rotation handle: a vertex in no junction, inside a rod, or a
+   * free rod end where the inertia is isotropic and there is no offset;
+   * none for a body without rotary inertia or at a junction. Throws as
+   * select_vertex().
    */
   std::optional<unsigned int>
   rigid_body_handle_vertex(const RodNetwork    &network,
@@ -54,8 +55,9 @@ namespace rodnet
 
   /**
    * The body of @p item on @p network: at a junction (a network junction or
-   * a rotation handle), on its vertex and rotation; at a free rod end,
-   * welded to the end segment; elsewhere at the vertex. Throws
+   * a rotation handle, rigid_body_handle_vertex()), on its vertex and
+   * rotation; at a free rod end without one, welded to the end segment;
+   * elsewhere at the vertex. Throws
    * std::invalid_argument naming the item for an offset or two inertias
    * where there is no free rod end (no tangent to align them with), and
    * as select_vertex().

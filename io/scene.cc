@@ -724,7 +724,8 @@ namespace rodnet
         }
     // A rotary inertia turns with a junction's rotation.
     for (const RigidBodyItem &item : rigid_body_items)
-      if (const auto v = rigid_body_handle_vertex(network, item))
+      if (const auto v = rigid_body_handle_vertex(network, item);
+          v && clamped.count(*v) == 0)
         network.add_rotation_handle(item.place[0] == '@' ?
                                       item.place.substr(1) :
                                       item.place,

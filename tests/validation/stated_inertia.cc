@@ -7,13 +7,8 @@
 // the first three modes, with the observed convergence in the number of
 // segments; bending: the Euler-Bernoulli cantilever,
 // omega_1 = 1.8751^2 sqrt(EI / (rho A L^4)).
-#include <deal.II/base/parameter_handler.h>
+#include <common/natural_frequencies.h>
 
-#include <core/mass_matrix.h>
-#include <io/scene.h>
-#include <io/scene_file.h>
-
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <iostream>
@@ -23,6 +18,7 @@
 namespace
 {
   using namespace rodnet;
+  using rodnet::testing::natural_frequencies;
 
   /// Rigidities and inertia per length of the rod, each stated directly.
   struct RodData
@@ -50,45 +46,6 @@ namespace
          "  subsection Time stepping\n    set Integrator = midpoint\n"
          "    set Time step = 0.01\n  end\nend\n";
     return s.str();
-  }
-
-  /// The entries of @p matrix on the DoFs that @p constraints leave free.
-  Eigen::MatrixXd
-  free_block(const MatrixType                        &matrix,
-             const dealii::AffineConstraints<double> &constraints)
-  {
-    std::vector<int> index(matrix.m(), -1);
-    int              n = 0;
-    for (unsigned int i = 0; i < matrix.m(); ++i)
-      if (!constraints.is_constrained(i))
-        index[i] = n++;
-    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
-    for (unsigned int i = 0; i < matrix.m(); ++i)
-      if (index[i] >= 0)
-        for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-          if (index[e->column()] >= 0)
-            dense(index[i], index[e->column()]) = e->value();
-    return dense;
-  }
-
-  /// The natural frequencies omega (increasing) of the scene @p text.
-  Eigen::VectorXd
-  natural_frequencies(const std::string &text)
-  {
-    dealii::ParameterHandler prm;
-    Scene::declare_parameters(prm);
-    read_scene_text(prm, text, "scene", false);
-    const Scene scene(prm);
-    const auto  model = scene.build_model();
-    MatrixType  tangent, mass;
-    model->initialize_matrix(tangent);
-    model->assemble(model->create_vector(), 0., nullptr, &tangent);
-    assemble_mass_matrix(*model, scene.inertia(), MassKind::consistent, mass);
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      free_block(tangent, model->constraints()),
-      free_block(mass, model->constraints()),
-      Eigen::EigenvaluesOnly);
-    return solver.eigenvalues().cwiseSqrt();
   }
 
   // GJ = 1 and rho J = 1 (a circle with that rho J would have GJ / (rho J)
