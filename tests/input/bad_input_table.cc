@@ -563,6 +563,13 @@ namespace
      1,
      "entry \"Loads/Rigid bodies\": \"end\": the mass \"-1\" must be a "
      "positive number"},
+    {"rigid_body_mass_not_finite",
+     with("Loads", "  set Rigid bodies = end: mass inf\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": in \"end: mass inf\", \"inf\" is not a "
+     "finite number; every number of a scene must be finite"},
     {"rigid_body_zero_inertia",
      with("Loads", "  set Rigid bodies = end: mass 1 inertia 0\n"),
      ".prm",
