@@ -9,6 +9,7 @@
 
 #include <core/mass_matrix.h>
 #include <core/require_positive.h>
+#include <core/rigid_body_mass.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -151,6 +152,7 @@ namespace rodnet
         cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(cell_mass, dofs, mass);
       }
+    add_rigid_body_mass(model, constraints, mass);
     mass.compress(dealii::VectorOperation::add);
 
     // deal.II keeps constrained rows invertible with a diagonal entry; here

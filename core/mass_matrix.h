@@ -60,7 +60,9 @@ namespace rodnet
    * vertex, which collects the mass of every adjacent segment once. The
    * constrained position DoFs of those ends and the quaternion DoFs of
    * junctions carry no inertia (Lestringant & Kochmann section 2.5: none on
-   * the ghost segments), so their rows are zero.
+   * the ghost segments), so their rows are zero, but for the model's rigid
+   * bodies (RodModel::rigid_bodies(), add_rigid_body_mass()): point masses,
+   * a junction's isotropic rotary inertia, bodies welded to rod ends.
    *
    * With @p apply_constraints, the rows and columns of the DoFs that the
    * model's constraints() fix are zero as well, their diagonal included:

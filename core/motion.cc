@@ -1,6 +1,9 @@
 // Energies and momenta of a rod network in motion, for probes.
 #include <core/mass_matrix.h>
 #include <core/motion.h>
+#include <elements/junction_moment.h>
+
+#include <set>
 
 namespace rodnet
 {
@@ -14,19 +17,38 @@ namespace rodnet
     Motion motion;
     motion.kinetic_energy   = kinetic_energy(mass, v);
     motion.potential_energy = model.assemble(u, load_factor, nullptr, nullptr);
-    // p = M v: on a vertex's position rows the momentum of the vertex
-    // (junction ends are condensed onto their junction's vertex, whose
-    // rows carry the mass of every adjacent segment).
+    // p = M v: on a vertex's position rows the momentum of the vertex.
+    // The rod ends at a junction share its vertex's DoFs, whose rows carry
+    // the mass of every adjacent segment: each DoF is counted once.
     VectorType momentum(v);
     mass.vmult(momentum, v);
+    std::set<global_dof_index> counted;
     for (unsigned int i = 0; i < model.network().n_vertices(); ++i)
       {
+        if (!counted.insert(model.layout().vertex_dof(i, 0)).second)
+          continue;
         Vector3 p;
         for (unsigned int c = 0; c < 3; ++c)
           p[c] = momentum[model.layout().vertex_dof(i, c)];
         motion.linear_momentum += p;
         motion.angular_momentum += model.position(u, i).cross(p);
       }
+    // A junction's rotation: the momentum conjugate to its quaternion
+    // increment q is a covector on q, turned into the angular momentum as
+    // a gradient into a moment (p.qdot = L.omega): at q = (1, 0), where the
+    // integrator leaves it after every step, half its vector part (a
+    // rigid body's j omega, with omega = 2 adot).
+    for (unsigned int j = 0; j < model.network().junctions().size(); ++j)
+      if (model.layout().has_rotation_dofs(j))
+        {
+          Eigen::Vector4d q, p;
+          for (unsigned int c = 0; c < 4; ++c)
+            {
+              q[c] = (c == 0) + u[model.layout().rotation_dof(j, c)];
+              p[c] = momentum[model.layout().rotation_dof(j, c)];
+            }
+          motion.angular_momentum += spatial_moment(q, p);
+        }
     return motion;
   }
 } // namespace rodnet

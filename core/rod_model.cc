@@ -112,6 +112,14 @@ namespace rodnet
   }
 
   void
+  RodModel::add_rigid_body(const RigidBody &body)
+  {
+    require_not_finalized("RodModel::add_rigid_body " + body.where);
+    check_rigid_body(*network_, body);
+    bodies.push_back(body);
+  }
+
+  void
   RodModel::add_distributed_force(const unsigned int rod,
                                   const Vector3     &force_per_length)
   {

@@ -17,6 +17,7 @@
 #include <core/internal_variables.h>
 #include <core/model.h>
 #include <core/model_state.h>
+#include <core/rigid_body.h>
 #include <core/rod_network.h>
 #include <core/scatter_positions.h>
 #include <core/stencil_coloring.h>
@@ -257,6 +258,23 @@ namespace rodnet
     void
     prescribe_rotation(unsigned int junction, const Quaternion &rotation);
     /// @}
+
+    /**
+     * Attaches the rigid body @p body (before finalize()): its inertia
+     * enters the mass matrix (assemble_mass_matrix(), add_rigid_body_mass());
+     * its weight is a load like any other (rigid_body_weight()). Throws
+     * std::invalid_argument naming the body for what check_rigid_body()
+     * refuses.
+     */
+    void
+    add_rigid_body(const RigidBody &body);
+
+    /// The rigid bodies attached (add_rigid_body()).
+    const std::vector<RigidBody> &
+    rigid_bodies() const
+    {
+      return bodies;
+    }
 
     /**
      * Adds @p family to the energy (before finalize()): an elastic
@@ -758,6 +776,7 @@ namespace rodnet
     std::vector<bool>                 fixed_dof_mask;
     dealii::AffineConstraints<double> no_constraints;
     DeadLoads                         loads;
+    std::vector<RigidBody>            bodies;
     struct AxisLoad
     {
       unsigned int junction;

@@ -112,8 +112,10 @@ namespace rodnet
       return shortest;
     }
 
+    /// @p x to three significant digits, for messages (a name of its own:
+    /// unity batches put this file beside users of scene_entries::number).
     std::string
-    number(const double x)
+    three_digits(const double x)
     {
       std::ostringstream text;
       text << std::setprecision(3) << x;
@@ -138,8 +140,8 @@ namespace rodnet
               "mesh \"" + path + "\": element " + std::to_string(line.tag) +
               " joins nodes " + std::to_string(a) + " and " +
               std::to_string(b) + ", which coincide (" +
-              number((mesh.nodes.at(a) - mesh.nodes.at(b)).norm()) +
-              " apart, within " + number(mesh.merge_tolerance) +
+              three_digits((mesh.nodes.at(a) - mesh.nodes.at(b)).norm()) +
+              " apart, within " + three_digits(mesh.merge_tolerance) +
               " m): a line element of zero length; remove it");
         }
       for (const auto &[merged, kept] : kept_of)
@@ -181,11 +183,11 @@ namespace rodnet
           "mesh \"" + path + "\": nodes " +
           std::to_string(std::min(tags[a], tags[b])) + " and " +
           std::to_string(std::max(tags[a], tags[b])) + " are " +
-          number(distance) + " m apart: too far to be merged (within " +
-          number(tolerance) +
+          three_digits(distance) + " m apart: too far to be merged (within " +
+          three_digits(tolerance) +
           " m) and too close to be distinct (less than 1e-3 times the "
           "shortest line element, " +
-          number(shortest) +
+          three_digits(shortest) +
           " m); write them as one node if they are one joint (Gmsh: "
           "Coherence Mesh), or move them apart");
       });
@@ -214,8 +216,8 @@ namespace rodnet
       return "";
     std::ostringstream text;
     text << "mesh \"" << path << "\": merged coincident nodes (within "
-         << number(mesh.merge_tolerance) << " m, "
-         << number(coincident_node_tolerance)
+         << three_digits(mesh.merge_tolerance) << " m, "
+         << three_digits(coincident_node_tolerance)
          << " of the diagonal of the mesh's bounding box):";
     for (std::size_t s = 0; s < std::min(n_named, mesh.merged_nodes.size());
          ++s)

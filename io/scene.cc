@@ -250,6 +250,12 @@ namespace rodnet
                       Double(0),
                       "The \"Mass per length\" of materials giving none "
                       "(one given must agree); 0: not given. [kg/m]");
+    prm.declare_entry("Rigid bodies",
+                      "",
+                      Anything(),
+                      "\"<vertex>: mass <m> [inertia <j>|<J_t>,<J_p>] "
+                      "[offset <c>]; ...\" (doc/dynamics.md). [kg, kg m^2, "
+                      "m]");
     prm.declare_entry("Ramped natural shape",
                       "",
                       Anything(),
@@ -419,6 +425,10 @@ namespace rodnet
     distributed_force = get_vector(prm, "Distributed force");
     gravity           = get_vector(prm, "Gravity");
     mass_per_length   = prm.get_double("Mass per length");
+    for (const auto &[place, text] :
+         split_items(prm.get("Rigid bodies"), "Loads/Rigid bodies"))
+      rigid_body_items.push_back(
+        parse_rigid_body_item(place, text, "Loads/Rigid bodies"));
     natural_shape_ramp =
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
     fixed_loads = prm.get_bool("Fixed loads");
@@ -626,6 +636,8 @@ namespace rodnet
     for (const RequestedFamily &family : family_requests)
       model->add_element_family(family.request->create(*model));
     model->apply(supports_and_loads(model->network()));
+    for (const RigidBodyItem &item : rigid_body_items)
+      model->add_rigid_body(place_rigid_body(model->network(), item));
     if (natural_shape_ramp)
       ramp_natural_shape(*model);
     add_activation_fields(*model);
@@ -710,6 +722,14 @@ namespace rodnet
             network.add_rotation_handle(name[0] == '@' ? name.substr(1) : name,
                                         target.vertex);
         }
+    // A rotary inertia turns with a junction's rotation.
+    for (const RigidBodyItem &item : rigid_body_items)
+      if (const auto v = rigid_body_handle_vertex(network, item);
+          v && clamped.count(*v) == 0)
+        network.add_rotation_handle(item.place[0] == '@' ?
+                                      item.place.substr(1) :
+                                      item.place,
+                                    *v);
   }
 
   std::unique_ptr<DrModel>
@@ -925,6 +945,12 @@ namespace rodnet
         if (q.norm() > 0)
           spec.distributed_forces.push_back({r, q});
       }
+    // The bodies' weight acts at their centres (rigid_body_weight()).
+    if (gravity.norm() > 0)
+      for (const RigidBodyItem &item : rigid_body_items)
+        for (const auto &[vertex, force] :
+             rigid_body_weight(net, place_rigid_body(net, item), gravity))
+          spec.point_forces.push_back({vertex, force, LoadRamp::ramped});
   }
 
   double

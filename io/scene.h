@@ -14,6 +14,7 @@
 #include <io/probes.h>
 #include <io/problem_size.h>
 #include <io/read_notes.h>
+#include <io/rigid_body_entries.h>
 #include <io/rod_groups.h>
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
@@ -381,7 +382,8 @@ namespace rodnet
     void
     ramp_natural_shape(RodModel &model) const;
     /// Rotation handles (RodNetwork::add_rotation_handle()) at the free
-    /// vertices that moments and prescribed rotations name.
+    /// vertices that moments and prescribed rotations name, and where a
+    /// rigid body's rotary inertia needs one (rigid_body_handle_vertex()).
     void
     add_rotation_handles(RodNetwork &network) const;
 
@@ -405,7 +407,8 @@ namespace rodnet
     add_position_supports(const RodNetwork &network,
                           SupportsAndLoads &spec) const;
 
-    /// Point forces, distributed forces and the weight into @p spec.
+    /// Point forces, distributed forces and the weight (of the rods and
+    /// the rigid bodies) into @p spec.
     void
     add_forces(const RodNetwork &network, SupportsAndLoads &spec) const;
 
@@ -462,6 +465,9 @@ namespace rodnet
     Vector3 distributed_force, gravity;
     /// Loads/Mass per length; 0 when not given.
     double mass_per_length;
+    /// Loads/Rigid bodies, as written (placed on a network by
+    /// place_rigid_body()).
+    std::vector<RigidBodyItem> rigid_body_items;
     /// Under gravity: the mass per length of every rod (masses_per_length());
     /// empty without gravity.
     std::vector<double> rod_masses;

@@ -577,6 +577,75 @@ namespace
      "entry \"Material/Mass per length\": 1 kg/m differs from the 2.46615 "
      "kg/m of \"Material/Density\" times the section's area; give one of "
      "them"},
+    // Rigid bodies: positive numbers, a known place, and what a constant
+    // mass matrix can represent (doc/dynamics.md, "Rigid bodies").
+    {"rigid_body_negative_mass",
+     with("Loads", "  set Rigid bodies = end: mass -1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the mass \"-1\" must be a "
+     "positive number"},
+    {"rigid_body_mass_not_finite",
+     with("Loads", "  set Rigid bodies = end: mass inf\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": in \"end: mass inf\", \"inf\" is not a "
+     "finite number; every number of a scene must be finite"},
+    {"rigid_body_zero_inertia",
+     with("Loads", "  set Rigid bodies = end: mass 1 inertia 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the inertia \"0\" must be a "
+     "positive number"},
+    {"rigid_body_zero_offset",
+     with("Loads", "  set Rigid bodies = end: mass 1 offset 0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the offset \"0\" must be a "
+     "positive number (the centre lies beyond the rod end; leave the offset "
+     "out for a centre at the end)"},
+    {"rigid_body_without_mass",
+     with("Loads", "  set Rigid bodies = end: inertia 1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the body has no mass; write "
+     "\"<place>: mass <m> [inertia <j> | inertia <J_t>,<J_p>] [offset "
+     "<c>]\""},
+    {"rigid_body_unknown_word",
+     with("Loads", "  set Rigid bodies = end: mass 1 spin 2\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": \"spin\" is none of mass, "
+     "inertia, offset"},
+    {"rigid_body_inertia_tensor",
+     with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,2,3\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the inertia \"1,2,3\" should "
+     "be <j> (isotropic) or <J_t>,<J_p> (axisymmetric about a rod end's "
+     "tangent); a general inertia tensor makes the mass matrix depend on the "
+     "body's orientation and is not represented"},
+    {"rigid_body_unknown_place",
+     with("Loads", "  set Rigid bodies = tip: mass 1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"tip\" names no vertex"},
+    {"rigid_body_offset_inside_rod",
+     with("Loads", "  set Rigid bodies = mid: mass 1 offset 0.1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"mid\": vertex 5 of rod 0 is no free "
+     "rod end, and an offset needs the end's tangent to align with; give "
+     "the isotropic \"inertia <j>\" alone there"},
     // An entry that the generator does not read would look as if it acted.
     {"lattice_director",
      with("Geometry",

@@ -1,0 +1,163 @@
+// The scene entry "Loads/Rigid bodies": its items and where they sit on a
+// network (doc/dynamics.md, "Rigid bodies").
+#include <deal.II/base/utilities.h>
+
+#include <io/rigid_body_entries.h>
+#include <io/vertex_selector.h>
+
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace rodnet
+{
+  namespace
+  {
+    const std::string syntax = "\"<place>: mass <m> [inertia <j> | inertia "
+                               "<J_t>,<J_p>] [offset <c>]\"";
+
+    /// The positive finite number @p text, the value of @p word of @p item.
+    double
+    positive(const std::string   &text,
+             const std::string   &word,
+             const RigidBodyItem &item)
+    {
+      std::size_t used  = 0;
+      double      value = std::nan("");
+      try
+        {
+          value = std::stod(text, &used);
+        }
+      catch (const std::exception &)
+        {
+        }
+      if (used != text.size() || !(value > 0) || !std::isfinite(value))
+        throw std::invalid_argument(
+          item.where + ": the " + word + " \"" + text +
+          "\" must be a positive number" +
+          (word == "offset" ? " (the centre lies beyond the rod end; leave "
+                              "the offset out for a centre at the end)" :
+                              ""));
+      return value;
+    }
+
+    /// "<J_t>,<J_p>" or "<j>" into @p item.
+    void
+    read_inertia(const std::string &text, RigidBodyItem &item)
+    {
+      const auto values = dealii::Utilities::split_string_list(text, ',');
+      if (values.size() > 2 || values.empty())
+        throw std::invalid_argument(
+          item.where + ": the inertia \"" + text +
+          "\" should be <j> (isotropic) or <J_t>,<J_p> (axisymmetric about a "
+          "rod end's tangent); a general inertia tensor makes the mass "
+          "matrix depend on the body's orientation and is not represented");
+      item.axial_inertia      = positive(values.front(), "inertia", item);
+      item.transverse_inertia = positive(values.back(), "inertia", item);
+      item.axisymmetric       = values.size() == 2;
+    }
+
+    /// The free end of an open rod at vertex @p v, where no junction is.
+    std::optional<RodEnd>
+    free_rod_end(const RodNetwork &network, const unsigned int v)
+    {
+      if (network.junction_at(v))
+        return std::nullopt;
+      for (unsigned int r = 0; r < network.rods().size(); ++r)
+        {
+          const Rod &rod = network.rods()[r];
+          if (!rod.closed &&
+              (v == rod.vertices.front() || v == rod.vertices.back()))
+            return RodEnd{r, v == rod.vertices.front()};
+        }
+      return std::nullopt;
+    }
+  } // namespace
+
+  RigidBodyItem
+  parse_rigid_body_item(const std::string &place,
+                        const std::string &text,
+                        const std::string &entry)
+  {
+    RigidBodyItem item;
+    item.place = place;
+    item.entry = entry;
+    item.where = "entry \"" + entry + "\": \"" + place + "\"";
+    std::istringstream    words(text);
+    std::string           word, value;
+    std::set<std::string> given;
+    while (words >> word)
+      {
+        if (word != "mass" && word != "inertia" && word != "offset")
+          throw std::invalid_argument(item.where + ": \"" + word +
+                                      "\" is none of mass, inertia, offset; "
+                                      "write " +
+                                      syntax);
+        const bool repeated = !given.insert(word).second;
+        if (repeated || !(words >> value))
+          throw std::invalid_argument(
+            item.where + ": \"" + word + "\" " +
+            (repeated ? "is given twice" : "has no value") + "; write " +
+            syntax);
+        if (word == "mass")
+          item.mass = positive(value, word, item);
+        else if (word == "offset")
+          item.offset = positive(value, word, item);
+        else
+          read_inertia(value, item);
+      }
+    if (item.mass == 0)
+      throw std::invalid_argument(item.where +
+                                  ": the body has no mass; write " + syntax);
+    return item;
+  }
+
+  std::optional<unsigned int>
+  rigid_body_handle_vertex(const RodNetwork &network, const RigidBodyItem &item)
+  {
+    if (item.axial_inertia == 0)
+      return std::nullopt;
+    // At a free rod end an isotropic inertia without offset turns with a
+    // handle: its ghost segment has the tangent at the end itself, where
+    // the end segment's sits l/2 inside (second against first order).
+    const unsigned int v = select_vertex(network, item.place, item.entry);
+    if (network.junction_at(v) ||
+        (free_rod_end(network, v) && (item.axisymmetric || item.offset > 0)))
+      return std::nullopt;
+    return v;
+  }
+
+  RigidBody
+  place_rigid_body(const RodNetwork &network, const RigidBodyItem &item)
+  {
+    RigidBody          body{item.where,
+                   select_vertex(network, item.place, item.entry),
+                   item.mass,
+                   item.axial_inertia,
+                   item.transverse_inertia,
+                   item.offset};
+    const unsigned int v = std::get<unsigned int>(body.attachment);
+    if (const std::optional<RodEnd> end = free_rod_end(network, v))
+      {
+        body.attachment = *end;
+        return body;
+      }
+    if (item.offset > 0 || item.axisymmetric)
+      {
+        const auto        junction = network.junction_at(v);
+        const std::string at =
+          junction ?
+            "the junction \"" + network.junctions()[*junction].name + "\"" :
+            network.describe_vertex(v);
+        throw std::invalid_argument(
+          item.where + ": " + at + " is no free rod end, and " +
+          (item.offset > 0 ? "an offset needs" : "two inertias J_t,J_p need") +
+          " the end's tangent to align with; give the isotropic \"inertia "
+          "<j>\" alone there");
+      }
+    if (const auto junction = network.junction_at(v))
+      body.attachment = network.junctions()[*junction].vertex;
+    return body;
+  }
+} // namespace rodnet

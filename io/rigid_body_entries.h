@@ -1,0 +1,69 @@
+#ifndef RODNET_IO_RIGID_BODY_ENTRIES_H
+#define RODNET_IO_RIGID_BODY_ENTRIES_H
+
+#include <core/rigid_body.h>
+
+#include <optional>
+#include <string>
+
+namespace rodnet
+{
+  /**
+   * One item of the scene entry "Loads/Rigid bodies" as written,
+   * "<place>: mass <m> [inertia <j> | inertia <J_t>,<J_p>] [offset <c>]"
+   * (doc/dynamics.md, "Rigid bodies"), before it is placed on a network.
+   */
+  struct RigidBodyItem
+  {
+    /// The vertex as the supports take it: [rod:]start|end|mid|<index>,
+    /// @<name>.
+    std::string place;
+    /// The scene entry, "Loads/Rigid bodies".
+    std::string entry;
+    /// "entry \"<entry>\": \"<place>\"", what messages call it.
+    std::string where;
+    double      mass = 0;
+    /// J_t and J_p (kg m^2); both j for "inertia <j>", 0 without.
+    double axial_inertia = 0, transverse_inertia = 0;
+    /// Whether two inertias were given (an axisymmetric body).
+    bool axisymmetric = false;
+    /// c (m), 0 without.
+    double offset = 0;
+  };
+
+  /**
+   * Reads the item @p place: @p text of entry @p entry. Throws
+   * std::invalid_argument naming the entry and the item for a word that is
+   * not mass, inertia or offset, one given twice, a missing mass, and a
+   * value that is not a positive finite number.
+   */
+  RigidBodyItem
+  parse_rigid_body_item(const std::string &place,
+                        const std::string &text,
+                        const std::string &entry);
+
+  /**
+   * The vertex of @p item in @p network where the body's rotary inertia
+   * needs a rotation handle: a vertex in no junction, inside a rod, or a
+   * free rod end where the inertia is isotropic and there is no offset;
+   * none for a body without rotary inertia or at a junction. Throws as
+   * select_vertex().
+   */
+  std::optional<unsigned int>
+  rigid_body_handle_vertex(const RodNetwork    &network,
+                           const RigidBodyItem &item);
+
+  /**
+   * The body of @p item on @p network: at a junction (a network junction or
+   * a rotation handle, rigid_body_handle_vertex()), on its vertex and
+   * rotation; at a free rod end without one, welded to the end segment;
+   * elsewhere at the vertex. Throws
+   * std::invalid_argument naming the item for an offset or two inertias
+   * where there is no free rod end (no tangent to align them with), and
+   * as select_vertex().
+   */
+  RigidBody
+  place_rigid_body(const RodNetwork &network, const RigidBodyItem &item);
+} // namespace rodnet
+
+#endif
