@@ -42,6 +42,7 @@ namespace
            "\n  set Segments = 4\nend\n"
            "subsection Material\n  set Mass per length = 2\n"
            "  set Twist inertia per length = 1e-3\n"
+           "  set Rotary inertia per length = 0\n"
            "  subsection linear elastic\n    set Stiffness input = direct\n"
            "    set EA = 1e3\n    set EI1 = 1\n    set EI2 = 1\n"
            "    set GJ = 1\n  end\nend\n"

@@ -30,7 +30,8 @@ namespace
     double EA, GJ, rho_J;
   };
 
-  /// The material subsection of @p s with EI = rho A = 1.
+  /// The material subsection of @p s with EI = rho A = 1 and no rotary
+  /// inertia of the sections: the references are Euler-Bernoulli beams.
   std::string
   material(const Shaft &s)
   {
@@ -38,6 +39,7 @@ namespace
     t.precision(17);
     t << "subsection Material\n  set Mass per length = 1\n"
       << "  set Twist inertia per length = " << s.rho_J
+      << "\n  set Rotary inertia per length = 0"
       << "\n  subsection linear elastic\n    set Stiffness input = direct\n"
       << "    set EA = " << s.EA << "\n    set EI1 = 1\n    set EI2 = 1\n"
       << "    set GJ = " << s.GJ << "\n  end\nend\n";
