@@ -2,6 +2,8 @@
 #include <core/mass_matrix.h>
 #include <core/motion.h>
 
+#include <vector>
+
 namespace rodnet
 {
   Motion
@@ -16,16 +18,35 @@ namespace rodnet
     motion.potential_energy = model.assemble(u, load_factor, nullptr, nullptr);
     // p = M v: on a vertex's position rows the momentum of the vertex
     // (junction ends are condensed onto their junction's vertex, whose
-    // rows carry the mass of every adjacent segment).
+    // rows carry the mass of every adjacent segment). The ends' vertices
+    // name the junction vertex's DoFs (DofLayout::vertex_dof()): each DoF
+    // is counted once.
     VectorType momentum(v);
     mass.vmult(momentum, v);
+    std::vector<bool> counted(v.size(), false);
     for (unsigned int i = 0; i < model.network().n_vertices(); ++i)
       {
+        const global_dof_index first = model.layout().vertex_dof(i, 0);
+        if (counted[first])
+          continue;
+        counted[first] = true;
         Vector3 p;
         for (unsigned int c = 0; c < 3; ++c)
           p[c] = momentum[model.layout().vertex_dof(i, c)];
         motion.linear_momentum += p;
         motion.angular_momentum += model.position(u, i).cross(p);
+      }
+    // The spin of the sections about their centrelines: the twist rows of
+    // M v are rho (I1 + I2) l0 theta', the angular momentum of a segment
+    // about its unit tangent e (doc/dynamics.md, "Momenta under the
+    // midpoint rule": with it the midpoint rule keeps the sum better than
+    // the centreline's part).
+    for (const SegmentStencil &segment : model.layout().segments())
+      {
+        const Vector3 e = model.position(u, segment.vertices[1]) -
+                          model.position(u, segment.vertices[0]);
+        motion.angular_momentum +=
+          momentum[model.layout().twist_dof(segment.cell)] * e.normalized();
       }
     return motion;
   }

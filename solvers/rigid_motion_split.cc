@@ -18,14 +18,26 @@ namespace rodnet
     /// for them would only amplify rounding.
     constexpr double dropped_rotation = 1e-12;
 
-    /// alpha = G^+ b, G scaled to unit diagonal first (the centreline
-    /// rotations and the frame turns have masses of very different size).
+    /**
+     * alpha = G^+ b, G scaled to unit diagonal first (the centreline
+     * rotations and the frame turns have masses of very different size).
+     * A column whose diagonal is below dropped_rotation of the trace of its
+     * block (rotations, turns) is no motion but rounding (the rotation of
+     * a straight rod about its line, 1e-36 of it in
+     * tests/validation/free_flight.cc): scaled up it would be an arbitrary
+     * direction, and removing f along it would remove a share of the
+     * translation too.
+     */
     Vector6
     scaled_pseudo_solve(const Matrix6 &gram, const Vector6 &b)
     {
-      Vector6 scale;
+      const double traces[2] = {gram.diagonal().head<3>().sum(),
+                                gram.diagonal().tail<3>().sum()};
+      Vector6      scale;
       for (int i = 0; i < 6; ++i)
-        scale[i] = gram(i, i) > 0 ? 1 / std::sqrt(gram(i, i)) : 0.0;
+        scale[i] = gram(i, i) > dropped_rotation * traces[i / 3] ?
+                     1 / std::sqrt(gram(i, i)) :
+                     0.0;
       const Matrix6 scaled = scale.asDiagonal() * gram * scale.asDiagonal();
       const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(scaled);
       const double largest = eigen.eigenvalues().maxCoeff();
