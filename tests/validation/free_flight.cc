@@ -1,11 +1,11 @@
 // Free flight of an unsupported right-angle frame after an impulse, under
 // the midpoint rule with the momentum-free discrete gradient
-// (doc/dynamics.md, "Momenta under the midpoint rule"). The frame is that
-// of Simo & Vu-Quoc's right-angle cantilever (CMAME 66, 1988), without its
-// clamp: two legs of L = 10 welded at a right angle, EA = 1e6,
-// EI1 = EI2 = GJ = 1e3, rho A = 1, twist inertia rho J = 20. A force at
-// the tip and a moment at the corner act with a triangular time history
-// (0 -> 1 -> 0 over 0 <= t <= 2), then the frame flies free, tumbling.
+// (doc/dynamics.md, "Momenta under the midpoint rule"). The frame
+// (tests/common/free_frame.h) is that of Simo & Vu-Quoc's right-angle
+// cantilever (CMAME 66, 1988) without its clamp, with the twist inertia of
+// a slender section: a force at the tip and a moment at the corner act
+// with a triangular time history (0 -> 1 -> 0 over 0 <= t <= 2), then the
+// frame flies free, tumbling.
 // References, independent of the code: the impulse of the force (the
 // midpoint rule samples the loads at mid-step, exact for a load factor
 // linear within each step), conservation of momenta and energy after the
@@ -26,59 +26,13 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <memory>
+#include <tests/common/free_frame.h>
 #include <vector>
 
 namespace
 {
   using namespace rodnet;
-
-  const double       L = 10;
-  const RodStiffness frame_stiffness{1e6, 1e3, 1e3, 1e3};
-  /// rho A = 1 and the twist inertia of the same slender section,
-  /// rho (I1 + I2) = 2 rho A I / A = 2 rho A EI / EA = 2e-3.
-  const RodInertia frame_inertia{1, 2e-3};
-  const Vector3    tip_force(0, 0, 40);
-  const Vector3    moment_axis   = Vector3(1, 1, 0).normalized();
-  const double     corner_moment = 200;
-  const double     pulse_end     = 2;
-  /// The pulse's load factor: its integral over time is 1.
-  double
-  triangle(const double t)
-  {
-    return t <= 0 ? 0.0 : t < 1 ? t : t < pulse_end ? pulse_end - t : 0.0;
-  }
-
-  struct FreeFrame
-  {
-    std::unique_ptr<RodModel> model;
-    unsigned int              corner, tip;
-  };
-
-  /// The frame without its clamp, @p n segments per leg, loaded at load
-  /// factor 1 by tip_force at its tip and corner_moment about moment_axis
-  /// at its corner.
-  FreeFrame
-  free_frame(const unsigned int n)
-  {
-    RodGraph graph = network_generators::right_angle_frame(L);
-    graph.nodes[graph.node_index("clamp")].kind.reset();
-    BuiltNetwork       built  = build_rod_network(graph, n, "simple");
-    const unsigned int n_rods = built.network->rods().size();
-    FreeFrame          frame;
-    frame.model = std::make_unique<RodModel>(
-      std::move(built.network),
-      std::vector<std::shared_ptr<const RodMaterial>>(
-        n_rods,
-        std::make_shared<LinearElasticRod>(frame_stiffness)));
-    frame.corner = built.node_vertex[graph.node_index("corner")];
-    frame.tip    = built.node_vertex[graph.node_index("tip")];
-    frame.model->add_point_force(frame.tip, tip_force);
-    frame.model->add_moment(built.node_junction[graph.node_index("corner")],
-                            moment_axis,
-                            corner_moment);
-    frame.model->finalize();
-    return frame;
-  }
+  using namespace rodnet::testing;
 
   /// What a converged step of the flight shows.
   struct FlightState
@@ -121,7 +75,7 @@ namespace
     p.integrator         = "midpoint";
     p.time_step          = h;
     p.end_time           = end_time;
-    p.load_factor        = triangle;
+    p.load_factor        = triangle_pulse;
     p.relative_tolerance = 1e-10;
     p.progress_interval  = 0;
     TimeIntegrator           integrator(model,
@@ -172,16 +126,16 @@ namespace
     double sampled = 0, largest_p = 0;
     for (const FlightState &s : flight)
       {
-        sampled += s.step * triangle(s.time - s.step / 2);
+        sampled += s.step * triangle_pulse(s.time - s.step / 2);
         largest_p =
-          std::max(largest_p, (s.momentum - tip_force * sampled).norm());
+          std::max(largest_p, (s.momentum - frame_tip_force * sampled).norm());
       }
     EXPECT_NEAR(sampled, 1, 1e-14);
-    EXPECT_LT(largest_p, 1e-12 * tip_force.norm() * flight.size() / 100);
+    EXPECT_LT(largest_p, 1e-12 * frame_tip_force.norm() * flight.size() / 100);
 
     // From the end of the pulse on: energy and angular momentum.
     std::size_t after = 0;
-    while (flight[after].time < pulse_end - 1e-9)
+    while (flight[after].time < frame_pulse_end - 1e-9)
       ++after;
     const FlightState &start   = flight[after];
     const Vector3      L0      = start.angular_momentum;
