@@ -8,7 +8,8 @@
 // solver's message. Wall time of each run (one run: the map is about
 // accuracy, not speed).
 //
-// Usage: frame_stability_map [--end 6] [--reference-step 0.0025]. Writes
+// Usage: frame_stability_map [--end 6] [--reference-step 0.0025]
+// [--threads 1]. Writes
 // frame_stability_map.csv into the current directory; chart: gnuplot -e
 // "csv='frame_stability_map.csv'; out='doc/frame_stability_map.png'"
 // bench/frame_stability_map.gp.
@@ -31,13 +32,15 @@ namespace
 
   struct Options
   {
-    double end            = 6;
-    double reference_step = 0.0025;
+    unsigned int threads        = 1;
+    double       end            = 6;
+    double       reference_step = 0.0025;
 
     std::vector<bench::Option>
     command_line()
     {
-      return {bench::real("--end", end),
+      return {bench::number("--threads", threads, 1),
+              bench::real("--end", end),
               bench::real("--reference-step", reference_step)};
     }
   };
@@ -105,33 +108,41 @@ namespace
       e = std::max(e, (run.samples[k] - reference.samples[k]).norm());
     return e / frame_leg;
   }
+
+  void
+  map_integrators(const Options &options)
+  {
+    const Run reference = fly("midpoint", options.reference_step, options.end);
+    const Run half = fly("midpoint", options.reference_step / 2, options.end);
+    std::printf("reference: midpoint, h = %g, its difference to h/2: %.3e\n",
+                options.reference_step,
+                error(reference, half));
+    std::ofstream csv("frame_stability_map.csv");
+    csv << "integrator,h,error,reached,seconds,stopped\n";
+    for (const std::string integrator :
+         {"backward euler", "newmark", "midpoint"})
+      for (const double h : {0.2, 0.1, 0.05, 0.02, 0.01, 0.005})
+        {
+          const Run  run     = fly(integrator, h, options.end);
+          const bool stopped = !run.failure.empty();
+          std::printf("%-14s h = %-6g error %.3e  %s%s\n",
+                      integrator.c_str(),
+                      h,
+                      error(run, reference),
+                      stopped ? "stopped: " : "",
+                      run.failure.c_str());
+          csv << '"' << integrator << "\"," << h << ',' << error(run, reference)
+              << ',' << run.reached << ',' << run.seconds << ','
+              << (stopped ? 1 : 0) << '\n';
+        }
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  Options options;
-  bench::parse(argc, argv, options.command_line());
-  const Run reference = fly("midpoint", options.reference_step, options.end);
-  const Run half = fly("midpoint", options.reference_step / 2, options.end);
-  std::printf("reference: midpoint, h = %g, its difference to h/2: %.3e\n",
-              options.reference_step,
-              error(reference, half));
-  std::ofstream csv("frame_stability_map.csv");
-  csv << "integrator,h,error,reached,seconds,stopped\n";
-  for (const std::string integrator : {"backward euler", "newmark", "midpoint"})
-    for (const double h : {0.2, 0.1, 0.05, 0.02, 0.01, 0.005})
-      {
-        const Run  run     = fly(integrator, h, options.end);
-        const bool stopped = !run.failure.empty();
-        std::printf("%-14s h = %-6g error %.3e  %s%s\n",
-                    integrator.c_str(),
-                    h,
-                    error(run, reference),
-                    stopped ? "stopped: " : "",
-                    run.failure.c_str());
-        csv << '"' << integrator << "\"," << h << ',' << error(run, reference)
-            << ',' << run.reached << ',' << run.seconds << ','
-            << (stopped ? 1 : 0) << '\n';
-      }
+  return bench::run_benchmark("frame_stability_map",
+                              argc,
+                              argv,
+                              map_integrators);
 }

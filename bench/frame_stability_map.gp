@@ -13,7 +13,7 @@ set logscale xy
 set format x "10^{%L}"
 set format y "10^{%L}"
 set grid
-set key top left
+set key bottom right
 set xlabel "time step h (s)"
 set ylabel "largest tip error / L, t = 1 ... 6 s"
 set title "Free-flying frame: accuracy and failures of the integrators"
