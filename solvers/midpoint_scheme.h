@@ -99,8 +99,7 @@ namespace rodnet
      * d_f.M d_f, else w = M d_f: a step that is a rigid motion but for
      * rounding (a free translation: 1e-32) has no deformation to carry
      * the correction, and c = change / (w.d) would divide rounding by
-     * rounding. The free frame of tests/validation/free_flight.cc, in
-     * tumbling flight, never comes below 1e-6.
+     * rounding.
      */
     static constexpr double rigid_step_limit = 1e-12;
 
