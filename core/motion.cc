@@ -3,7 +3,7 @@
 #include <core/motion.h>
 #include <elements/junction_moment.h>
 
-#include <set>
+#include <vector>
 
 namespace rodnet
 {
@@ -17,21 +17,37 @@ namespace rodnet
     Motion motion;
     motion.kinetic_energy   = kinetic_energy(mass, v);
     motion.potential_energy = model.assemble(u, load_factor, nullptr, nullptr);
-    // p = M v: on a vertex's position rows the momentum of the vertex.
-    // The rod ends at a junction share its vertex's DoFs, whose rows carry
-    // the mass of every adjacent segment: each DoF is counted once.
+    // p = M v: on a vertex's position rows the momentum of the vertex
+    // (junction ends are condensed onto their junction's vertex, whose
+    // rows carry the mass of every adjacent segment). The ends' vertices
+    // name the junction vertex's DoFs (DofLayout::vertex_dof()): each DoF
+    // is counted once.
     VectorType momentum(v);
     mass.vmult(momentum, v);
-    std::set<global_dof_index> counted;
+    std::vector<bool> counted(v.size(), false);
     for (unsigned int i = 0; i < model.network().n_vertices(); ++i)
       {
-        if (!counted.insert(model.layout().vertex_dof(i, 0)).second)
+        const global_dof_index first = model.layout().vertex_dof(i, 0);
+        if (counted[first])
           continue;
+        counted[first] = true;
         Vector3 p;
         for (unsigned int c = 0; c < 3; ++c)
           p[c] = momentum[model.layout().vertex_dof(i, c)];
         motion.linear_momentum += p;
         motion.angular_momentum += model.position(u, i).cross(p);
+      }
+    // The spin of the sections about their centrelines: the twist rows of
+    // M v are rho (I1 + I2) l0 theta', the angular momentum of a segment
+    // about its unit tangent e (doc/dynamics.md, "Momenta under the
+    // midpoint rule": with it the midpoint rule keeps the sum better than
+    // the centreline's part).
+    for (const SegmentStencil &segment : model.layout().segments())
+      {
+        const Vector3 e = model.position(u, segment.vertices[1]) -
+                          model.position(u, segment.vertices[0]);
+        motion.angular_momentum +=
+          momentum[model.layout().twist_dof(segment.cell)] * e.normalized();
       }
     // A junction's rotation: the momentum conjugate to its quaternion
     // increment q is a covector on q, turned into the angular momentum as

@@ -20,9 +20,10 @@ namespace rodnet
     double potential_energy = 0;
     /// Sum over the position DoFs of M v.
     Vector3 linear_momentum = Vector3::Zero();
-    /// Sum over the vertices of x_i x (M v)_i, about the origin, and the
-    /// spin of the junctions' rotations (a hub's j omega); the twist DoFs'
-    /// spin is left out (doc/dynamics.md).
+    /// Sum over the vertices of x_i x (M v)_i, about the origin, plus the
+    /// spin of the sections, sum over the segments of (M v)_twist e, e the
+    /// unit tangent, and the spin of the junctions' rotations (a hub's
+    /// j omega; doc/dynamics.md).
     Vector3 angular_momentum = Vector3::Zero();
   };
 

@@ -9,6 +9,46 @@
 
 namespace rodnet
 {
+  std::vector<unsigned int>
+  rod_parts(const RodNetwork &network)
+  {
+    std::vector<unsigned int> parent(network.rods().size());
+    std::iota(parent.begin(), parent.end(), 0);
+    const auto root = [&](unsigned int r) {
+      while (parent[r] != r)
+        r = parent[r] = parent[parent[r]];
+      return r;
+    };
+    for (const Junction &j : network.junctions())
+      for (const RodEnd &end : j.ends)
+        parent[root(end.rod)] = root(j.ends.front().rod);
+    std::vector<unsigned int> part(parent.size());
+    for (unsigned int r = 0; r < parent.size(); ++r)
+      part[r] = root(r);
+    return part;
+  }
+
+  unsigned int
+  rod_of(const RodNetwork      &network,
+         const DofRoles        &roles,
+         const global_dof_index d)
+  {
+    switch (roles.kind(d))
+      {
+        case DofRoles::Kind::position:
+          return roles.vertex_place(roles.owner(d)).first;
+        case DofRoles::Kind::twist:
+          return roles.cell_place(roles.owner(d)).first;
+        default:
+          {
+            // A handle inside a rod has no ends: the rod it sits in.
+            const Junction &junction = network.junctions()[roles.owner(d)];
+            return junction.ends.empty() ? junction.interior->rod :
+                                           junction.ends.front().rod;
+          }
+      }
+  }
+
   namespace
   {
     using Kind = DofRoles::Kind;
@@ -35,26 +75,6 @@ namespace rodnet
     /// turned against gravity its weight times its length against the
     /// strain energy of its tension.
     constexpr double symmetry_tolerance = 1e-4;
-
-    /// Connected parts: the rods joined through junctions, by union-find.
-    std::vector<unsigned int>
-    rod_parts(const RodNetwork &network)
-    {
-      std::vector<unsigned int> parent(network.rods().size());
-      std::iota(parent.begin(), parent.end(), 0);
-      const auto root = [&](unsigned int r) {
-        while (parent[r] != r)
-          r = parent[r] = parent[parent[r]];
-        return r;
-      };
-      for (const Junction &j : network.junctions())
-        for (const RodEnd &end : j.ends)
-          parent[root(end.rod)] = root(j.ends.front().rod);
-      std::vector<unsigned int> part(parent.size());
-      for (unsigned int r = 0; r < parent.size(); ++r)
-        part[r] = root(r);
-      return part;
-    }
 
     /// The upper triangle R of a QR factorization of the stacked rows,
     /// kept width x width however many rows come in, so that the small
@@ -297,29 +317,6 @@ namespace rodnet
     {
       return kind != Kind::inert && kind != Kind::multiplier &&
              kind != Kind::shape;
-    }
-
-    /// The rod of a DoF that is not inert: that of its vertex, its segment
-    /// or (quaternions) the first rod end at its junction.
-    unsigned int
-    rod_of(const RodNetwork      &network,
-           const DofRoles        &roles,
-           const global_dof_index d)
-    {
-      switch (roles.kind(d))
-        {
-          case Kind::position:
-            return roles.vertex_place(roles.owner(d)).first;
-          case Kind::twist:
-            return roles.cell_place(roles.owner(d)).first;
-          default:
-            {
-              // A handle inside a rod has no ends: the rod it sits in.
-              const Junction &junction = network.junctions()[roles.owner(d)];
-              return junction.ends.empty() ? junction.interior->rod :
-                                             junction.ends.front().rod;
-            }
-        }
     }
 
     /// The factor between the row of DoF @p d (rigid_change()) and its

@@ -2,12 +2,27 @@
 #define RODNET_SOLVERS_FREE_MOTIONS_H
 
 #include <core/rod_model.h>
+#include <solvers/dof_roles.h>
 
 #include <string>
 #include <vector>
 
 namespace rodnet
 {
+  /**
+   * The connected parts of @p network, rods joined through junctions: for
+   * every rod, the index of one rod of its part (the same for the whole
+   * part), by union-find.
+   */
+  std::vector<unsigned int>
+  rod_parts(const RodNetwork &network);
+
+  /// The rod of DoF @p d (not inert) of @p roles: that of its vertex, its
+  /// segment or (quaternions) the first rod end at its junction, or the rod
+  /// a handle inside a rod sits in.
+  unsigned int
+  rod_of(const RodNetwork &network, const DofRoles &roles, global_dof_index d);
+
   /**
    * The rigid motions of @p model at the state @p u that neither a support
    * nor the energy stops: for every connected part of the network (rods

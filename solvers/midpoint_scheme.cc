@@ -4,11 +4,13 @@ namespace rodnet
 {
   MidpointScheme::MidpointScheme(const StepSystem &system)
       : IntegrationScheme(system)
+      , rigid_split(system.model, system.mass)
   {
     point = system.model.create_vector();
     for (VectorType *v : {&gradient_m,
                           &gradient_y,
                           &mass_difference,
+                          &direction,
                           &rank_one_a,
                           &rank_one_b,
                           &difference,
@@ -48,20 +50,33 @@ namespace rodnet
                                    const VectorType &gradient,
                                    const double      energy)
   {
-    // The discrete gradient in the metric of the mass matrix:
-    // gradbar = grad Pi(m) + c M d_f, c = [Pi(u) - Pi(u_n) -
-    // grad Pi(m).d] / (d_f.M d_f). Any metric keeps gradbar.d =
-    // Pi(u) - Pi(u_n); the mass puts the correction where the inertia is,
-    // instead of loading the stiff, nearly massless twist DoFs as much as
-    // the positions (which made Newton stall at coarse steps), and never on
-    // massless quaternion rows.
+    // The discrete gradient gradbar = grad Pi(m) + c w, c = [Pi(u) -
+    // Pi(u_n) - grad Pi(m).d] / (w.d), keeps gradbar.d = Pi(u) - Pi(u_n)
+    // for any w with w.d != 0. w = M d_def, d_def the part of d_f that is
+    // M-orthogonal to the rigid motions of the free parts at m
+    // (RigidMotionSplit): the correction puts no resultant and no moment
+    // on a free body, so the momenta change only by grad Pi(m), as in the
+    // plain midpoint rule; and, as M d_f did, it acts where the inertia is,
+    // never on massless quaternion rows, and w.d = |d_def|_M^2 > 0.
     difference = y;
     difference -= step.u;
     const double change = energy - start_energy - (gradient * difference);
     system.model.constraints().set_zero(difference);
     system.mass.vmult(mass_difference, difference);
     system.model.constraints().set_zero(mass_difference);
-    const double norm2 = difference * mass_difference;
+    const double full = difference * mass_difference;
+    direction         = mass_difference;
+    rigid_split.remove_rigid_part(point, direction);
+    system.model.constraints().set_zero(direction);
+    double norm2 = difference * direction;
+    // A step that is a rigid motion to within rigid_step_limit of its
+    // mass norm (a body in free translation or spin) has no deformation to
+    // carry the correction: then w = M d_f, as Gonzalez's mass metric.
+    if (!(norm2 > rigid_step_limit * full))
+      {
+        direction = mass_difference;
+        norm2     = full;
+      }
     return std::make_pair(norm2 > 0 ? change / norm2 : 0.0, norm2);
   }
 
@@ -78,7 +93,7 @@ namespace rodnet
     const double energy = model.assemble(y, step.load_factor, nullptr, nullptr);
     const double coefficient = correction_terms(step, y, r, energy).first;
     model.constraints().set_zero(r);
-    r.add(coefficient, mass_difference);
+    r.add(coefficient, direction);
     add_inertia(step, y, &r);
   }
 
@@ -87,11 +102,21 @@ namespace rodnet
                           const VectorType &y,
                           MatrixType       &k)
   {
-    // The exact Jacobian: the derivative of the correction c M d_f is
-    // c M (sparse) plus the dense M d_f (grad c)^T, with
-    //   grad c = [grad Pi(u) - grad Pi(m) - K(m) d / 2 - 2 c M d_f]
-    //            / (d_f.M d_f)
-    // (free rows), which NewtonSolver takes as a rank-one term.
+    // The Jacobian of the correction c w, w = M P d (P the M-orthogonal
+    // projection off the rigid motions at m): c M P plus the dense
+    // w (grad c)^T, with
+    //   grad c = [grad Pi(u) - grad Pi(m) - K(m) d / 2 - 2 c w] / (w.d)
+    // (free rows; grad (w.d) = 2 M P d = 2 w), which NewtonSolver takes as
+    // a rank-one term. Without free parts P = I and c M is exact. With
+    // them c M P is dense (its low-rank part -c M R (R^T M R)^+ R^T M) and
+    // is left out whole, as is the change of the rigid motions R with m:
+    // terms of the size of c (the error of the midpoint quadrature of
+    // grad Pi along d, over |d_def|_M^2) against 2 M / h^2. Leaving out
+    // c M as well keeps t^T J = 2 t^T M / h^2 for a translation t, the
+    // exact derivative of the resultant of the residual, which is affine
+    // in u (t^T grad Pi is minus the loads, t^T w = 0): every Newton step
+    // then solves the momentum balance to round-off, not only to the
+    // Newton tolerance.
     set_midpoint(step, y);
     RodModel &model = system.model;
     model.assemble(point, step.load_factor, &gradient_m, nullptr, false);
@@ -103,15 +128,17 @@ namespace rodnet
     model.assemble(point, step.load_factor, nullptr, &k, true);
     k *= 0.5;
     k.vmult(product, difference);
-    k.add(mass_coefficient(step.h) + coefficient, system.constrained_mass);
+    k.add(mass_coefficient(step.h) +
+            (rigid_split.has_free_parts() ? 0.0 : coefficient),
+          system.constrained_mass);
     add_damping_tangent(step.h, k);
 
     rank_one_b = gradient_y;
     rank_one_b -= gradient_m;
     rank_one_b -= product;
-    rank_one_b.add(-2 * coefficient, mass_difference);
+    rank_one_b.add(-2 * coefficient, direction);
     model.constraints().set_zero(rank_one_b);
     rank_one_b *= norm2 > 0 ? 1 / norm2 : 0.0;
-    rank_one_a = mass_difference;
+    rank_one_a = direction;
   }
 } // namespace rodnet

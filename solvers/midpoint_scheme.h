@@ -2,6 +2,7 @@
 #define RODNET_SOLVERS_MIDPOINT_SCHEME_H
 
 #include <solvers/integration_scheme.h>
+#include <solvers/rigid_motion_split.h>
 
 #include <utility>
 
@@ -13,8 +14,12 @@ namespace rodnet
    * tolerance:
    *   2 M (u - u_n - h v_n) / h^2 + C (u - u_n) / h
    *     + gradbar Pi(u_n, u; lambda_{n+1/2}) = 0,
-   *   gradbar = grad Pi(m) + (Pi(u) - Pi(u_n) - grad Pi(m).d) M d / d.Md,
-   *   m = (u_n + u) / 2, d = u - u_n (free DoFs), v_{n+1} = 2 d / h - v_n.
+   *   gradbar = grad Pi(m) + (Pi(u) - Pi(u_n) - grad Pi(m).d) w / w.d,
+   *   m = (u_n + u) / 2, d = u - u_n (free DoFs), v_{n+1} = 2 d / h - v_n,
+   * w = M d_def, d_def the part of d M-orthogonal to the rigid motions of
+   * the unsupported parts at m (RigidMotionSplit), so that the correction
+   * has no resultant or moment: a free body keeps its linear momentum to
+   * round-off (doc/dynamics.md). A nearly rigid step takes w = M d.
    * Its tangent has a dense rank-one part, which NewtonSolver handles by
    * Sherman-Morrison. Needs a stored energy. The damping acts at the
    * midpoint velocity (u - u_n)/h: the energy falls by exactly h vbar.C vbar
@@ -79,19 +84,30 @@ namespace rodnet
     void
     set_midpoint(const StepStart &step, const VectorType &y);
 
-    /// The correction coefficient and d_f.M d_f at @p y, from the
-    /// @p gradient at the midpoint and the @p energy at @p y; leaves d_f
-    /// in difference and M d_f in mass_difference.
+    /// The correction coefficient and w.d at @p y, from the @p gradient at
+    /// the midpoint and the @p energy at @p y; leaves d_f in difference,
+    /// M d_f in mass_difference and the correction's direction w in
+    /// direction.
     std::pair<double, double>
     correction_terms(const StepStart  &step,
                      const VectorType &y,
                      const VectorType &gradient,
                      double            energy);
 
+    /**
+     * w = M d_def is used where w.d = |d_def|_M^2 exceeds this fraction of
+     * d_f.M d_f, else w = M d_f: a step that is a rigid motion but for
+     * rounding (a free translation: 1e-32) has no deformation to carry
+     * the correction, and c = change / (w.d) would divide rounding by
+     * rounding.
+     */
+    static constexpr double rigid_step_limit = 1e-12;
+
     /// Pi(u_n) of the step.
-    double     start_energy = 0;
-    VectorType point, gradient_m, gradient_y, mass_difference;
-    VectorType rank_one_a, rank_one_b;
+    double           start_energy = 0;
+    RigidMotionSplit rigid_split;
+    VectorType       point, gradient_m, gradient_y, mass_difference, direction;
+    VectorType       rank_one_a, rank_one_b;
   };
 } // namespace rodnet
 
