@@ -202,14 +202,15 @@ namespace rodnet
       "",
       Anything(),
       "Rotations reached at load factor 1 and ramped with it: \"<where>: "
-      "<ax>,<ay>,<az> <angle>; ...\" (angle in degrees about the axis), "
-      "where is a clamped end (turned about its end vertex), a junction "
-      "or any vertex (a rotation handle there, its position free). [deg]");
+      "<ax>,<ay>,<az> <angle> [in time <f(t)>]; ...\" (degrees; in time "
+      "stepping angle x f(t)), where is a clamped end (turned about its end "
+      "vertex), a junction or any vertex (a rotation handle there). [deg]");
     prm.declare_entry("Prescribed displacements",
                       "",
                       Anything(),
                       "Displacements reached at load factor 1 and ramped "
-                      "with it: \"<vertex>: x=<dx> y=<dy>; ...\". [m]");
+                      "with it: \"<vertex>: x=<dx> y=<dy> [in time <f(t)>]; "
+                      "...\" (in time stepping: values x f(t)). [m]");
     prm.leave_subsection();
   }
 

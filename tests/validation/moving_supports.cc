@@ -17,10 +17,12 @@
 #include <solvers/time_integrator.h>
 
 #include <cmath>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <tests/common/cantilever_modes.h>
 #include <tests/common/cantilever_swing.h>
+#include <tests/common/run_scene_text.h>
 #include <tests/common/spin_up.h>
 #include <vector>
 
@@ -194,6 +196,38 @@ namespace
               << "; the linear model differs by " << off_linear << std::endl;
     EXPECT_LT(during, 0.02);
     EXPECT_GT(off_linear, 0.5);
+  }
+
+  // scenes/spin_up.prm (N = 20, Newmark, h = 0.01 s, to 11.5 s), read and
+  // run as rodnet-run does ("Prescribed rotations = start: 0,0,1 180 in
+  // time theta(t)/pi"): its tip deflection in the hub's frame within 2% of
+  // the reduced model with stiffening (hub radius l/2, l = L / 19.5).
+  TEST(MovingSupports, SpinUpScene)
+  {
+    using namespace spin_up;
+    std::ifstream     file(RODNET_SOURCE_DIR "/scenes/spin_up.prm");
+    std::stringstream text;
+    text << file.rdbuf()
+         << "\nsubsection Output\n  set Plot = false\nend\n"
+            "subsection Solver\n  subsection Time stepping\n"
+            "    set Progress interval = 0\n  end\nend\n";
+    const RunSummary run = run_scene_text(text.str(), "spin_up_scene");
+    ASSERT_TRUE(run.failure.empty()) << run.failure;
+    const std::size_t x = probe_column(run, "tip_x"),
+                      y = probe_column(run, "tip_y");
+    const double      r = 0.5 * L / 19.5;
+    std::vector<double> time, tip;
+    for (const std::vector<double> &row : run.rows)
+      {
+        const double a = theta(row[0]);
+        time.push_back(row[0]);
+        tip.push_back(-std::sin(a) * (row[x] + r) + std::cos(a) * row[y]);
+      }
+    const double error = relative_difference(
+      time, tip, reduced_tip_deflection(time, r, true), 0, 11.6);
+    std::cout << "scenes/spin_up.prm: against the stiffened reduced model "
+              << error << std::endl;
+    EXPECT_LT(error, 0.02);
   }
 
   // A cantilever whose clamp turns about e_z by 216 degrees within one step
