@@ -780,6 +780,11 @@ namespace rodnet
                        unsigned int        v,
                        const SupportFactor &factor) const;
 
+    /// "0 m and 0.1 m at load factor 1", or each value with what scales
+    /// it where a function of time scales one: for messages.
+    static std::string
+    held_values(const Hold &a, const Hold &b);
+
     /// Throws std::invalid_argument where another support holds the inner
     /// vertex of a clamp where the clamp does not move it.
     void

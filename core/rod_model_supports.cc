@@ -336,6 +336,16 @@ namespace rodnet
     }
   } // namespace
 
+  std::string
+  RodModel::held_values(const Hold &a, const Hold &b)
+  {
+    if (!a.in_time.given() && !b.in_time.given())
+      return number(a.value) + " m and " + number(b.value) +
+             " m at load factor 1";
+    return held_value(a.value, a.in_time) + " and " +
+           held_value(b.value, b.in_time);
+  }
+
   void
   RodModel::resolve_position_holds()
   {
@@ -362,9 +372,7 @@ namespace rodnet
                 " and " + in_quotes(support_list[h->second.support].name) +
                 " hold " + component_names[set->component] + " of " +
                 network_->describe_vertex(set->vertex) +
-                " at different values, " +
-                held_value(set->value, set->in_time) + " and " +
-                held_value(h->second.value, h->second.in_time) +
+                " at different values, " + held_values(*set, h->second) +
                 "; a position may be held twice only at the same value");
             if (set == nullptr)
               set = &h->second;

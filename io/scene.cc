@@ -208,9 +208,9 @@ namespace rodnet
     prm.declare_entry("Prescribed displacements",
                       "",
                       Anything(),
-                      "Displacements reached at load factor 1 and ramped "
-                      "with it: \"<vertex>: x=<dx> y=<dy> [in time <f(t)>]; "
-                      "...\" (in time stepping: values x f(t)). [m]");
+                      "Displacements at load factor 1, ramped with it (or "
+                      "x f(t)): \"<vertex>: x=<dx> y=<dy> [in time <f(t)>]; "
+                      "...\". [m]");
     prm.leave_subsection();
   }
 
