@@ -31,8 +31,8 @@ namespace rodnet
               if (!std::isfinite(value))
                 throw std::invalid_argument(
                   context + "the function of time is " +
-                  scene_entries::number(value) + " at t = " +
-                  scene_entries::number(t) + " s");
+                  scene_entries::number(value) +
+                  " at t = " + scene_entries::number(t) + " s");
               return value;
             });
           return {expression, f};

@@ -20,7 +20,8 @@ namespace rodnet
       value(const double x) const
       {
         const double b = beta * x;
-        return std::cosh(b) - std::cos(b) - sigma * (std::sinh(b) - std::sin(b));
+        return std::cosh(b) - std::cos(b) -
+               sigma * (std::sinh(b) - std::sin(b));
       }
 
       double
@@ -36,7 +37,8 @@ namespace rodnet
       {
         const double b = beta * x;
         return beta * beta *
-               (std::cosh(b) + std::cos(b) - sigma * (std::sinh(b) + std::sin(b)));
+               (std::cosh(b) + std::cos(b) -
+                sigma * (std::sinh(b) + std::sin(b)));
       }
     };
 
@@ -45,11 +47,11 @@ namespace rodnet
     inline std::vector<CantileverMode>
     cantilever_modes(const unsigned int n, const double length)
     {
-      const double roots[] = {1.8751040687119611,
-                              4.6940911329741745,
-                              7.8547574382376126,
-                              10.995540734875467,
-                              14.137168391046471};
+      const double                roots[] = {1.8751040687119611,
+                                             4.6940911329741745,
+                                             7.8547574382376126,
+                                             10.995540734875467,
+                                             14.137168391046471};
       std::vector<CantileverMode> modes;
       for (unsigned int k = 0; k < n && k < 5; ++k)
         {

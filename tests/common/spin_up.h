@@ -27,10 +27,10 @@
 #include <solvers/time_integrator.h>
 
 #include <Eigen/Dense>
-#include <tests/common/cantilever_modes.h>
 #include <cmath>
 #include <memory>
 #include <string>
+#include <tests/common/cantilever_modes.h>
 #include <vector>
 
 namespace rodnet
@@ -40,8 +40,7 @@ namespace rodnet
     namespace spin_up
     {
       inline constexpr double L = 10, rho_A = 1.2, EI = 1.4e4, EA = 2.8e7,
-                              GJ = 1.4e4, rho_J = 1.2e-3, omega_s = 6,
-                              T_s = 15;
+                              GJ = 1.4e4, rho_J = 1.2e-3, omega_s = 6, T_s = 15;
 
       /// The prescribed hub angle (rad) and its first two derivatives.
       inline double
@@ -57,9 +56,10 @@ namespace rodnet
       inline double
       theta_dot(const double t)
       {
-        return t < T_s ? omega_s / T_s *
-                           (t - T_s / (2 * M_PI) * std::sin(2 * M_PI * t / T_s)) :
-                         omega_s;
+        return t < T_s ?
+                 omega_s / T_s *
+                   (t - T_s / (2 * M_PI) * std::sin(2 * M_PI * t / T_s)) :
+                 omega_s;
       }
 
       inline double
@@ -89,11 +89,11 @@ namespace rodnet
                              const double               dt      = 2e-4)
       {
         const std::vector<CantileverMode> modes = cantilever_modes(n_modes, L);
-        const unsigned int      n     = modes.size();
+        const unsigned int                n     = modes.size();
         // Galerkin matrices by composite Simpson on 4000 intervals.
         Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(n, n), stiffness = mass,
-                        tension = mass;
-        Eigen::VectorXd   load = Eigen::VectorXd::Zero(n);
+                        tension      = mass;
+        Eigen::VectorXd    load      = Eigen::VectorXd::Zero(n);
         const unsigned int intervals = 4000;
         for (unsigned int q = 0; q <= intervals; ++q)
           {
@@ -108,8 +108,8 @@ namespace rodnet
                   {
                     mass(i, j) +=
                       w * rho_A * modes[i].value(x) * modes[j].value(x);
-                    stiffness(i, j) += w * EI * modes[i].curvature(x) *
-                                       modes[j].curvature(x);
+                    stiffness(i, j) +=
+                      w * EI * modes[i].curvature(x) * modes[j].curvature(x);
                     tension(i, j) +=
                       w * t1 * modes[i].slope(x) * modes[j].slope(x);
                   }
@@ -195,10 +195,10 @@ namespace rodnet
         p.end_time           = end_time;
         p.load_factor        = [](double) { return 0.0; };
         p.relative_tolerance = 1e-10;
-        TimeIntegrator     integrator(model, {{rho_A, rho_J}}, p);
-        const auto        &vertices = model.network().rods()[0].vertices;
-        const Vector3      pivot    = model.network().vertex(vertices[0]);
-        RodHistory         history;
+        TimeIntegrator integrator(model, {{rho_A, rho_J}}, p);
+        const auto    &vertices = model.network().rods()[0].vertices;
+        const Vector3  pivot    = model.network().vertex(vertices[0]);
+        RodHistory     history;
         history.hub_radius = 0.5 * L / (n - 0.5);
         VectorType u = model.create_vector(), v = model.create_vector();
         try

@@ -51,7 +51,7 @@ namespace
     for (const CantileverMode &mode : cantilever_modes(5, 1.0))
       {
         // Gamma = int phi / int phi^2 by composite Simpson.
-        double integral = 0, norm = 0;
+        double             integral = 0, norm = 0;
         const unsigned int n = 2000;
         for (unsigned int q = 0; q <= n; ++q)
           {
@@ -62,10 +62,9 @@ namespace
             norm += weight * mode.value(x) * mode.value(x);
           }
         const double omega = mode.beta * mode.beta;
-        const double q_n   = integral / norm * A * Omega /
-                           (omega * omega - Omega * Omega) *
-                           (Omega * std::sin(Omega * t) -
-                            omega * std::sin(omega * t));
+        const double q_n =
+          integral / norm * A * Omega / (omega * omega - Omega * Omega) *
+          (Omega * std::sin(Omega * t) - omega * std::sin(omega * t));
         w += mode.value(1.0) * q_n;
       }
     return w;
@@ -105,22 +104,21 @@ namespace
     VectorType         u = model.create_vector(), v = model.create_vector();
     double             error = 0, scale = 0, velocity_error = 0;
     const auto         base_dof = model.layout().vertex_dof(0, 2);
-    integrator.run(u,
-                   v,
-                   [&](const TimeIntegrator::StepInfo &info,
-                       const VectorType               &x,
-                       const VectorType               &velocity) {
-                     velocity_error =
-                       std::max(velocity_error,
-                                std::abs(velocity[base_dof] / (A * Omega) -
-                                         std::cos(Omega * info.time)));
-                     const double reference = modal_tip(info.time);
-                     error =
-                       std::max(error,
-                                std::abs(model.configuration().position(x, tip)[2] -
-                                         reference));
-                     scale = std::max(scale, std::abs(reference));
-                   });
+    integrator.run(
+      u,
+      v,
+      [&](const TimeIntegrator::StepInfo &info,
+          const VectorType               &x,
+          const VectorType               &velocity) {
+        velocity_error         = std::max(velocity_error,
+                                  std::abs(velocity[base_dof] / (A * Omega) -
+                                           std::cos(Omega * info.time)));
+        const double reference = modal_tip(info.time);
+        error                  = std::max(error,
+                         std::abs(model.configuration().position(x, tip)[2] -
+                                  reference));
+        scale                  = std::max(scale, std::abs(reference));
+      });
     return {error / scale, velocity_error};
   }
 
@@ -213,9 +211,9 @@ namespace
             "    set Progress interval = 0\n  end\nend\n";
     const RunSummary run = run_scene_text(text.str(), "spin_up_scene");
     ASSERT_TRUE(run.failure.empty()) << run.failure;
-    const std::size_t x = probe_column(run, "tip_x"),
-                      y = probe_column(run, "tip_y");
-    const double      r = 0.5 * L / 19.5;
+    const std::size_t x   = probe_column(run, "tip_x"),
+                      y   = probe_column(run, "tip_y");
+    const double        r = 0.5 * L / 19.5;
     std::vector<double> time, tip;
     for (const std::vector<double> &row : run.rows)
       {
@@ -223,8 +221,12 @@ namespace
         time.push_back(row[0]);
         tip.push_back(-std::sin(a) * (row[x] + r) + std::cos(a) * row[y]);
       }
-    const double error = relative_difference(
-      time, tip, reduced_tip_deflection(time, r, true), 0, 11.6);
+    const double error =
+      relative_difference(time,
+                          tip,
+                          reduced_tip_deflection(time, r, true),
+                          0,
+                          11.6);
     std::cout << "scenes/spin_up.prm: against the stiffened reduced model "
               << error << std::endl;
     EXPECT_LT(error, 0.02);
@@ -251,7 +253,8 @@ namespace
         model.rotate_clamp("clamp",
                            Vector3::UnitZ(),
                            1.2 * M_PI,
-                           time_function("t", [](const double t) { return t; }));
+                           time_function("t",
+                                         [](const double t) { return t; }));
         model.finalize();
         TimeIntegrator::Parameters p;
         p.integrator        = "quasi-static";
@@ -283,17 +286,14 @@ namespace
                        v,
                        [&](const TimeIntegrator::StepInfo &info,
                            const VectorType &,
-                           const VectorType &) {
-                         times.push_back(info.time);
-                       });
+                           const VectorType &) { times.push_back(info.time); });
         EXPECT_EQ(times, std::vector<double>({0.5, 1.0}));
         // The clamp's inner vertex, at l from its end vertex, turned by
         // the full 216 degrees about it.
-        const Vector3 pivot = model.network().vertex(vertices[0]);
-        const Vector3 turned =
-          rotation_about(Vector3::UnitZ(), 1.2 * M_PI) *
-            (model.network().vertex(vertices[1]) - pivot) +
-          pivot;
+        const Vector3 pivot  = model.network().vertex(vertices[0]);
+        const Vector3 turned = rotation_about(Vector3::UnitZ(), 1.2 * M_PI) *
+                                 (model.network().vertex(vertices[1]) - pivot) +
+                               pivot;
         const double error =
           (model.configuration().position(u, vertices[1]) - turned).norm();
         std::cout << "clamp off the turn by " << error << " m" << std::endl;
