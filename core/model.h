@@ -68,6 +68,24 @@ namespace rodnet
                    const std::array<bool, 3> &mask,
                    const Vector3             &displacement) = 0;
 
+    /// As fix_components(), the displacement scaled by the function of time
+    /// @p in_time instead of the load factor (time stepping). Refused with
+    /// std::invalid_argument naming the support by a model without time.
+    virtual void
+    move_components(const std::string         &name,
+                    unsigned int               vertex,
+                    const std::array<bool, 3> &mask,
+                    const Vector3             &displacement,
+                    const TimeFunction        &in_time)
+    {
+      (void)vertex;
+      (void)mask;
+      (void)displacement;
+      throw std::invalid_argument(
+        "support \"" + name + "\" moves in time (" + in_time.expression +
+        "), which only time stepping of a rod model can follow");
+    }
+
     /// Prescribed rotations and moments (after the clamps, which they may
     /// turn or refuse).
     virtual void
@@ -100,7 +118,10 @@ namespace rodnet
           clamp_junction(clamp.name, std::get<unsigned int>(clamp.target));
       add_rotational_loads(spec.rotations, spec.moments);
       for (const auto &f : spec.fixed_components)
-        fix_components(f.name, f.vertex, f.mask, f.displacement);
+        if (f.in_time.given())
+          move_components(f.name, f.vertex, f.mask, f.displacement, f.in_time);
+        else
+          fix_components(f.name, f.vertex, f.mask, f.displacement);
       for (const auto &f : spec.point_forces)
         if (f.ramp == LoadRamp::held)
           add_held_point_force(f.vertex, f.force);

@@ -111,9 +111,13 @@ namespace rodnet
 
     /// Turns the clamp called @p name (clamp_end()), and every other clamp
     /// of the same rod end, rigidly about its end vertex by @p angle (rad)
-    /// about the unit @p axis at load factor 1, ramped with the load factor.
+    /// about the unit @p axis at load factor 1, ramped with the load factor
+    /// (or @p angle times the function of time @p in_time).
     void
-    rotate_clamp(const std::string &name, const Vector3 &axis, double angle);
+    rotate_clamp(const std::string  &name,
+                 const Vector3      &axis,
+                 double              angle,
+                 const TimeFunction &in_time = {});
 
     /**
      * Holds junction @p junction as a clamped junction: its position
@@ -133,6 +137,16 @@ namespace rodnet
                    unsigned int               vertex,
                    const std::array<bool, 3> &mask,
                    const Vector3 &displacement = Vector3::Zero()) override;
+
+    /// As fix_components(), the value @p displacement times the function
+    /// of time @p in_time (RodModel::set_time(), time stepping) instead of
+    /// the load factor: a support moving in time.
+    void
+    move_components(const std::string         &name,
+                    unsigned int               vertex,
+                    const std::array<bool, 3> &mask,
+                    const Vector3             &displacement,
+                    const TimeFunction        &in_time) override;
 
     /**
      * Lowers prescribed rotations and moments: at the end vertex of a clamp
@@ -177,7 +191,8 @@ namespace rodnet
     /**
      * The time (s) of the assemblies that follow, at which the activation
      * fields driven by functions of time are evaluated (TimeIntegrator sets
-     * it); those fields are zero until it is set. Throws
+     * it), and of apply_boundary_values() for supports moving in time;
+     * those fields are zero until it is set. Throws
      * std::invalid_argument where such a function has no finite value.
      */
     void
@@ -246,12 +261,14 @@ namespace rodnet
      * rotation there. The junction must carry a rotation; its position
      * stays as its kind says (free for a welded junction, e.g. a rotation
      * handle at a free rod end). Prescribing a junction twice is refused
-     * unless both rotations are the same.
+     * unless both rotations are the same. With @p in_time the angle is
+     * @p angle times that function of time instead of the load factor.
      */
     void
-    prescribe_rotation(unsigned int   junction,
-                       const Vector3 &axis,
-                       double         angle);
+    prescribe_rotation(unsigned int        junction,
+                       const Vector3      &axis,
+                       double              angle,
+                       const TimeFunction &in_time = {});
 
     /// As above, the rotation at load factor 1 given as a unit quaternion
     /// (a non-unit one is refused: it is not a rotation).
@@ -365,9 +382,43 @@ namespace rodnet
     double
     elastic_energy(const VectorType &u, double load_factor) const override;
 
-    /// Sets the fixed DoFs of @p u to their values at @p load_factor.
+    /// Sets the fixed DoFs of @p u to their values at @p load_factor (and,
+    /// for supports moving in time, at the time of the last set_time()).
     void
     apply_boundary_values(VectorType &u, double load_factor) const override;
+
+    /**
+     * Sets the fixed DoFs of @p u to their values at @p load_factor and at
+     * @p time (supports moving in time; doc/dynamics.md, "Moving
+     * supports"). Throws std::runtime_error where a prescribed rotation
+     * (of a junction or a clamp) would turn by 180 degrees or more from
+     * @p u: the increments of one step cannot (doc/junctions.md, "Gauge").
+     */
+    void
+    apply_boundary_values(VectorType &u, double load_factor, double time) const;
+
+    /**
+     * Throws std::runtime_error naming the support where a prescribed
+     * rotation (of a junction or a clamp) turns by half a turn or more
+     * from (@p load_factor_0, @p time_0) to (@p load_factor_1, @p time_1):
+     * the increment of one step, which a quaternion increment (1, v) cannot
+     * reach and an orientation alone cannot tell from the opposite turn
+     * (doc/junctions.md, "Gauge").
+     */
+    void
+    check_rotation_step(double load_factor_0,
+                        double time_0,
+                        double load_factor_1,
+                        double time_1) const;
+
+    /// Whether a support moves by its own function of time.
+    bool
+    moves_supports_in_time() const;
+
+    /// The factors of the supports moving in time at @p time, one per
+    /// support (empty if none moves in time).
+    std::vector<double>
+    support_time_factors(double time) const;
 
     /// Current position of vertex @p vertex at @p u.
     Vector3
@@ -616,6 +667,7 @@ namespace rodnet
       unsigned int component;
       double       value;
       bool         yields;
+      TimeFunction in_time = {};
     };
 
     /// A clamp of a rod end and its rigid motion at load factor 1: the
@@ -630,6 +682,9 @@ namespace rodnet
       Vector3                     translation = Vector3::Zero();
       Vector3                     axis        = Vector3::UnitZ();
       double                      angle       = 0;
+      /// What scales each component of the translation and the angle.
+      std::array<TimeFunction, 3> translation_in_time = {};
+      TimeFunction                rotation_in_time    = {};
     };
 
     /// A support called @p name of the masked components of @p vertex,
@@ -640,7 +695,8 @@ namespace rodnet
                          unsigned int               vertex,
                          const std::array<bool, 3> &mask,
                          const Vector3             &displacement,
-                         bool                       yields);
+                         bool                       yields,
+                         const TimeFunction        &in_time = {});
 
     /// Resolves the holds, clamps and held rotations into fixed_dofs;
     /// throws naming the supports that hold a DoF at different values and
@@ -731,11 +787,34 @@ namespace rodnet
     void
     make_sparsity_pattern();
 
-    /// The displacement of vertex @p v of clamp @p c at @p load_factor.
+    /// The factor of a support's value (TimeFunction::factor() at a load
+    /// factor and time, or a sample of it).
+    using SupportFactor = std::function<double(const TimeFunction &)>;
+
+    /// The displacement of vertex @p v of clamp @p c at the factors
+    /// @p factor of its translation and rotation.
     Vector3
-    clamp_displacement(const Clamp &c,
-                       unsigned int v,
-                       double       load_factor) const;
+    clamp_displacement(const Clamp        &c,
+                       unsigned int        v,
+                       const SupportFactor &factor) const;
+
+    /// "0 m and 0.1 m at load factor 1", or each value with what scales
+    /// it where a function of time scales one: for messages.
+    static std::string
+    held_values(const Hold &a, const Hold &b);
+
+    /// Throws std::invalid_argument where another support holds the inner
+    /// vertex of a clamp where the clamp does not move it.
+    void
+    check_clamp_inner_holds(const Clamp &clamp) const;
+
+    /// Sets the twist of every turned clamp's end segment in @p u, whose
+    /// positions are set, to reach its frame at @p factor; @p twists: the
+    /// twists before.
+    void
+    turn_clamp_twists(VectorType                &u,
+                      const std::vector<double> &twists,
+                      const SupportFactor       &factor) const;
 
     MPI_Comm                    mpi_communicator;
     dealii::IndexSet            owned_dofs;
@@ -771,6 +850,11 @@ namespace rodnet
     std::vector<bool> rotation_held;
     /// Fixed DoF -> prescribed value at load factor 1 (finalize()).
     std::map<global_dof_index, double> fixed_dofs;
+    /// The fixed DoFs whose value a function of time scales.
+    std::map<global_dof_index, TimeFunction> timed_dofs;
+    /// The time of the last set_time() (NaN: none), at which
+    /// apply_boundary_values() puts the supports moving in time.
+    double support_time = std::nan("");
     dealii::AffineConstraints<double>  homogeneous_constraints;
     /// Per DoF: fixed by a support (the same DoFs as the constraints).
     std::vector<bool>                 fixed_dof_mask;
@@ -783,6 +867,7 @@ namespace rodnet
       Vector3      axis;
       double       value; ///< moment (N m) or angle (rad) at load factor 1
       LoadRamp     ramp = LoadRamp::ramped; ///< moments only
+      TimeFunction in_time = {};            ///< rotations only
     };
     std::vector<AxisLoad> moments;
     std::vector<AxisLoad> prescribed_rotations;

@@ -55,6 +55,7 @@ namespace rodnet
   void
   RodModel::set_time(const double time)
   {
+    support_time = time;
     configuration_->set_activation_time(time);
   }
 

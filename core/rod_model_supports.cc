@@ -67,7 +67,8 @@ namespace rodnet
                                  const unsigned int         vertex,
                                  const std::array<bool, 3> &mask,
                                  const Vector3             &displacement,
-                                 const bool                 yields)
+                                 const bool                 yields,
+                                 const TimeFunction        &in_time)
   {
     const Support s = vertex_support(name, vertex, mask);
     for (unsigned int c = 0; c < 3; ++c)
@@ -77,8 +78,20 @@ namespace rodnet
                            vertex,
                            c,
                            displacement[c],
-                           yields});
+                           yields,
+                           in_time});
     support_list.push_back(s);
+  }
+
+  void
+  RodModel::move_components(const std::string         &name,
+                            const unsigned int         vertex,
+                            const std::array<bool, 3> &mask,
+                            const Vector3             &displacement,
+                            const TimeFunction        &in_time)
+  {
+    require_not_finalized("RodModel::move_components " + in_quotes(name));
+    add_position_support(name, vertex, mask, displacement, false, in_time);
   }
 
   void
@@ -142,9 +155,10 @@ namespace rodnet
   }
 
   void
-  RodModel::rotate_clamp(const std::string &name,
-                         const Vector3     &axis,
-                         const double       angle)
+  RodModel::rotate_clamp(const std::string  &name,
+                         const Vector3      &axis,
+                         const double        angle,
+                         const TimeFunction &in_time)
   {
     const std::string where = "rotation of clamp " + in_quotes(name);
     require_not_finalized("RodModel::rotate_clamp: " + where);
@@ -161,11 +175,13 @@ namespace rodnet
           segments.end())
         {
           if (clamp.angle != 0 &&
-              !same_rotation(clamp.axis, clamp.angle, axis, angle))
+              (!same_rotation(clamp.axis, clamp.angle, axis, angle) ||
+               clamp.rotation_in_time != in_time))
             throw std::invalid_argument(
               where + ": the clamp is turned twice, by different rotations");
-          clamp.axis  = axis;
-          clamp.angle = angle;
+          clamp.axis             = axis;
+          clamp.angle            = angle;
+          clamp.rotation_in_time = in_time;
         }
   }
 
@@ -198,11 +214,15 @@ namespace rodnet
   {
     for (const SupportsAndLoads::AxisLoad &rotation : rotations)
       if (const Support *clamp = clamp_at(rotation.vertex))
-        rotate_clamp(clamp->name, rotation.axis, rotation.value);
+        rotate_clamp(clamp->name,
+                     rotation.axis,
+                     rotation.value,
+                     rotation.in_time);
       else
         prescribe_rotation(rotation.junction.value(),
                            rotation.axis,
-                           rotation.value);
+                           rotation.value,
+                           rotation.in_time);
     for (const SupportsAndLoads::AxisLoad &moment : moments)
       {
         if (const Support *clamp = clamp_at(moment.vertex))
@@ -243,9 +263,10 @@ namespace rodnet
   }
 
   void
-  RodModel::prescribe_rotation(const unsigned int junction,
-                               const Vector3     &axis,
-                               const double       angle)
+  RodModel::prescribe_rotation(const unsigned int  junction,
+                               const Vector3      &axis,
+                               const double        angle,
+                               const TimeFunction &in_time)
   {
     require_not_finalized("RodModel::prescribe_rotation of junction " +
                           std::to_string(junction));
@@ -261,13 +282,15 @@ namespace rodnet
     for (const AxisLoad &p : prescribed_rotations)
       if (p.junction == junction)
         {
-          if (same_rotation(p.axis, p.value, axis, angle))
+          if (same_rotation(p.axis, p.value, axis, angle) &&
+              p.in_time == in_time)
             return;
           throw std::invalid_argument(
             where + ": the junction is turned twice, by different rotations");
         }
     rotation_held[junction] = true;
-    prescribed_rotations.push_back({junction, axis, angle});
+    prescribed_rotations.push_back(
+      {junction, axis, angle, LoadRamp::ramped, in_time});
   }
 
   void
@@ -284,14 +307,43 @@ namespace rodnet
   }
 
   Vector3
-  RodModel::clamp_displacement(const Clamp       &clamp,
-                               const unsigned int vertex,
-                               const double       load_factor) const
+  RodModel::clamp_displacement(const Clamp         &clamp,
+                               const unsigned int   vertex,
+                               const SupportFactor &factor) const
   {
     const Vector3 arm =
       network_->vertex(vertex) - network_->vertex(clamp.vertices[0]);
-    return load_factor * clamp.translation +
-           rotation_about(clamp.axis, load_factor * clamp.angle) * arm - arm;
+    Vector3 translation;
+    for (unsigned int c = 0; c < 3; ++c)
+      translation[c] = factor(clamp.translation_in_time[c]) *
+                       clamp.translation[c];
+    return translation +
+           rotation_about(clamp.axis,
+                          factor(clamp.rotation_in_time) * clamp.angle) *
+             arm -
+           arm;
+  }
+
+  namespace
+  {
+    /// "0.1 m at load factor 1" or "0.1 m times sin(t)".
+    std::string
+    held_value(const double value, const TimeFunction &in_time)
+    {
+      return number(value) + " m " +
+             (in_time.given() ? "times " + in_time.expression :
+                                std::string("at load factor 1"));
+    }
+  } // namespace
+
+  std::string
+  RodModel::held_values(const Hold &a, const Hold &b)
+  {
+    if (!a.in_time.given() && !b.in_time.given())
+      return number(a.value) + " m and " + number(b.value) +
+             " m at load factor 1";
+    return held_value(a.value, a.in_time) + " and " +
+           held_value(b.value, b.in_time);
   }
 
   void
@@ -300,75 +352,111 @@ namespace rodnet
     const auto same_value = [this](const double a, const double b) {
       return std::abs(a - b) <= 1e-12 * (length + std::abs(a) + std::abs(b));
     };
+    // Two holds agree at the same value scaled alike, or both at zero.
+    const auto agree = [&](const Hold &a, const Hold &b) {
+      return same_value(a.value, b.value) &&
+             (a.in_time == b.in_time || same_value(a.value, 0.0));
+    };
     for (auto first = holds.begin(); first != holds.end();
          first      = holds.upper_bound(first->first))
       {
-             const Hold *set   = nullptr;
-             const auto  range = holds.equal_range(first->first);
-             for (auto h = range.first; h != range.second; ++h)
+        const Hold *set   = nullptr;
+        const auto  range = holds.equal_range(first->first);
+        for (auto h = range.first; h != range.second; ++h)
           {
-                 if (h->second.yields)
+            if (h->second.yields)
               continue;
-            if (set != nullptr && !same_value(set->value, h->second.value))
+            if (set != nullptr && !agree(*set, h->second))
               throw std::invalid_argument(
                 "the supports " + in_quotes(support_list[set->support].name) +
                 " and " + in_quotes(support_list[h->second.support].name) +
                 " hold " + component_names[set->component] + " of " +
                 network_->describe_vertex(set->vertex) +
-                " at different values, " + number(set->value) + " m and " +
-                number(h->second.value) +
-                " m at load factor 1; a position may be held twice only at "
-                     "the same value");
+                " at different values, " + held_values(*set, h->second) +
+                "; a position may be held twice only at the same value");
             if (set == nullptr)
               set = &h->second;
           }
-             fixed_dofs[first->first] = set != nullptr ? set->value : 0.0;
+        fixed_dofs[first->first] = set != nullptr ? set->value : 0.0;
+        if (set != nullptr && set->in_time.given())
+          timed_dofs[first->first] = set->in_time;
       }
 
     // A clamp moves with its end vertex, and whatever else holds its inner
     // vertex must move with it.
     for (Clamp &clamp : clamps)
       for (unsigned int c = 0; c < 3; ++c)
-        clamp.translation[c] =
-          fixed_dofs.at(layout_->vertex_dof(clamp.vertices[0], c));
+        {
+          const global_dof_index dof = layout_->vertex_dof(clamp.vertices[0], c);
+          clamp.translation[c]       = fixed_dofs.at(dof);
+          const auto timed           = timed_dofs.find(dof);
+          if (timed != timed_dofs.end())
+            clamp.translation_in_time[c] = timed->second;
+        }
     for (const Clamp &clamp : clamps)
       {
+        check_clamp_inner_holds(clamp);
         for (unsigned int c = 0; c < 3; ++c)
-          {
-            const global_dof_index dof =
-              layout_->vertex_dof(clamp.vertices[1], c);
-            const auto range = holds.equal_range(dof);
-            for (auto h = range.first; h != range.second; ++h)
-              for (const double load_factor : {0.5, 1.0})
-                if (!h->second.yields)
-                  {
-                    const double moved = clamp_displacement(clamp,
-                                                            clamp.vertices[1],
-                                                            load_factor)[c];
-                    if (!same_value(load_factor * h->second.value, moved))
-                      throw std::invalid_argument(
-                        "the support " +
-                        in_quotes(support_list[h->second.support].name) +
-                        " holds " + component_names[c] + " of " +
-                        network_->describe_vertex(clamp.vertices[1]) + " at " +
-                        number(load_factor * h->second.value) +
-                        " m, but the clamp " +
-                        in_quotes(support_list[clamp.support].name) +
-                        " holds that vertex and moves it to " + number(moved) +
-                        " m (at load factor " + number(load_factor) +
-                        "); a clamp moves rigidly: prescribe the displacement "
-                        "of its end vertex instead");
-                  }
-            fixed_dofs[dof] = 0.0;
-          }
+          fixed_dofs[layout_->vertex_dof(clamp.vertices[1], c)] = 0.0;
         for (const Clamp &other : clamps)
           if (other.segment == clamp.segment &&
-              !same_rotation(clamp.axis, clamp.angle, other.axis, other.angle))
+              (!same_rotation(clamp.axis, clamp.angle, other.axis, other.angle) ||
+               (clamp.angle != 0 &&
+                clamp.rotation_in_time != other.rotation_in_time)))
             throw std::invalid_argument(
               "the clamps " + in_quotes(support_list[clamp.support].name) +
               " and " + in_quotes(support_list[other.support].name) +
               " hold the same rod end but turn it differently");
         fixed_dofs[layout_->twist_dof(clamp.segment)] = 0.0;
+      }
+  }
+
+  void
+  RodModel::check_clamp_inner_holds(const Clamp &clamp) const
+  {
+    const auto same_value = [this](const double a, const double b) {
+      return std::abs(a - b) <= 1e-12 * (length + std::abs(a) + std::abs(b));
+    };
+    // Samples of the factors: the load factor at 0.5 and 1, each distinct
+    // function of time at its own multiple of them, so that motions
+    // scaled differently cannot agree at both.
+    std::vector<std::string> expressions;
+    for (const double load_factor : {0.5, 1.0})
+      {
+        const SupportFactor sample = [&](const TimeFunction &f) {
+          if (!f.given())
+            return load_factor;
+          auto known =
+            std::find(expressions.begin(), expressions.end(), f.expression);
+          if (known == expressions.end())
+            known = expressions.insert(known, f.expression);
+          return load_factor * (1.25 + 0.5 * (known - expressions.begin()));
+        };
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            const auto range =
+              holds.equal_range(layout_->vertex_dof(clamp.vertices[1], c));
+            for (auto h = range.first; h != range.second; ++h)
+              {
+                if (h->second.yields)
+                  continue;
+                const double held = sample(h->second.in_time) * h->second.value;
+                const double moved =
+                  clamp_displacement(clamp, clamp.vertices[1], sample)[c];
+                if (!same_value(held, moved))
+                  throw std::invalid_argument(
+                    "the support " +
+                    in_quotes(support_list[h->second.support].name) +
+                    " holds " + component_names[c] + " of " +
+                    network_->describe_vertex(clamp.vertices[1]) + " at " +
+                    held_value(h->second.value, h->second.in_time) +
+                    ", but the clamp " +
+                    in_quotes(support_list[clamp.support].name) +
+                    " holds that vertex and moves it otherwise; a clamp "
+                    "moves rigidly: prescribe the displacement of its end "
+                    "vertex instead");
+              }
+          }
       }
   }
 
@@ -391,30 +479,137 @@ namespace rodnet
           "which would take up the whole moment; remove one of the two");
   }
 
+  bool
+  RodModel::moves_supports_in_time() const
+  {
+    if (!timed_dofs.empty())
+      return true;
+    for (const AxisLoad &p : prescribed_rotations)
+      if (p.in_time.given())
+        return true;
+    for (const Clamp &clamp : clamps)
+      if (clamp.angle != 0 && clamp.rotation_in_time.given())
+        return true;
+    return false;
+  }
+
+  std::vector<double>
+  RodModel::support_time_factors(const double time) const
+  {
+    std::vector<double> factors;
+    for (const auto &[dof, in_time] : timed_dofs)
+      factors.push_back((*in_time.of_time)(time));
+    for (const AxisLoad &p : prescribed_rotations)
+      if (p.in_time.given())
+        factors.push_back((*p.in_time.of_time)(time));
+    for (const Clamp &clamp : clamps)
+      if (clamp.angle != 0 && clamp.rotation_in_time.given())
+        factors.push_back((*clamp.rotation_in_time.of_time)(time));
+    return factors;
+  }
+
+  void
+  RodModel::check_rotation_step(const double load_factor_0,
+                                const double time_0,
+                                const double load_factor_1,
+                                const double time_1) const
+  {
+    // The largest turn an increment (1, v) with real part above 1e-3
+    // reaches (apply_boundary_values()).
+    const double limit = 2 * std::acos(1e-3);
+    const auto   check = [&](const double        angle,
+                           const TimeFunction &in_time,
+                           const std::string  &what) {
+      const double turn = std::abs(angle) *
+                          std::abs(in_time.factor(load_factor_1, time_1) -
+                                   in_time.factor(load_factor_0, time_0));
+      if (!(turn < limit))
+        throw std::runtime_error(
+          "the prescribed rotation of " + what + " turns by " +
+          number(turn * 180 / M_PI) + " degrees from t = " + number(time_0) +
+          " to " + number(time_1) +
+          " s, and a step turns by less than 180 degrees; take a smaller "
+          "time step (or more load steps)");
+    };
+    for (const AxisLoad &p : prescribed_rotations)
+      check(p.value,
+            p.in_time,
+            "junction " + in_quotes(network_->junctions()[p.junction].name));
+    for (const Clamp &clamp : clamps)
+      check(clamp.angle,
+            clamp.rotation_in_time,
+            "the clamp " + in_quotes(support_list[clamp.support].name));
+  }
+
   void
   RodModel::apply_boundary_values(VectorType &u, const double load_factor) const
   {
-    // A turned clamp's twist continues from its current value (below).
+    apply_boundary_values(u, load_factor, support_time);
+  }
+
+  namespace
+  {
+    /// Throws std::runtime_error where the @p increment of a prescribed
+    /// rotation of @p what within one step reaches about 180 degrees (the
+    /// increments (1, v) of the junction DoFs cannot, and a clamp's twist
+    /// would be taken modulo a turn).
+    void
+    require_increment_below_half_turn(Quaternion         increment,
+                                      const std::string &what)
+    {
+      if (increment.w() < 0)
+        increment.coeffs() *= -1.0;
+      if (!(increment.w() > 1e-3))
+        throw std::runtime_error(
+          "the prescribed rotation of " + what +
+          " turns by nearly 180 degrees or more within one step; use more "
+          "load steps or a smaller time step");
+    }
+  } // namespace
+
+  void
+  RodModel::apply_boundary_values(VectorType  &u,
+                                  const double load_factor,
+                                  const double time) const
+  {
+    const SupportFactor factor = [&](const TimeFunction &f) {
+      if (f.given() && !std::isfinite(time))
+        throw std::logic_error("a support moves by the function of time " +
+                               f.expression +
+                               ", but the model has no time: set_time() "
+                               "first (time stepping)");
+      return f.factor(load_factor, time);
+    };
+    // A turned clamp's twist continues from its current value (below); its
+    // turn within the step is measured from its current frame.
     std::vector<double> clamp_twists;
     for (const Clamp &clamp : clamps)
-      clamp_twists.push_back(u[layout_->twist_dof(clamp.segment)]);
+      {
+        clamp_twists.push_back(u[layout_->twist_dof(clamp.segment)]);
+        if (clamp.angle != 0)
+          require_increment_below_half_turn(
+            rotation_about(clamp.axis,
+                           factor(clamp.rotation_in_time) * clamp.angle) *
+              clamp.undeformed_frame *
+              configuration_->director_frame(u, clamp.segment).conjugate(),
+            "the clamp " + in_quotes(support_list[clamp.support].name));
+      }
     for (const auto &[dof, value] : fixed_dofs)
       u[dof] = load_factor * value;
+    for (const auto &[dof, in_time] : timed_dofs)
+      u[dof] = factor(in_time) * fixed_dofs.at(dof);
     // A prescribed rotation is reached from the reference rotation by an
     // increment (1, v) in the gauge of the quaternion DoFs.
     for (const AxisLoad &p : prescribed_rotations)
       {
         Quaternion increment =
-          rotation_about(p.axis, load_factor * p.value) *
+          rotation_about(p.axis, factor(p.in_time) * p.value) *
           configuration_->reference_rotation(p.junction).conjugate();
+        require_increment_below_half_turn(
+          increment,
+          "junction " + in_quotes(network_->junctions()[p.junction].name));
         if (increment.w() < 0)
           increment.coeffs() *= -1.0;
-        if (!(increment.w() > 1e-3))
-          throw std::runtime_error(
-            "the prescribed rotation of junction \"" +
-            network_->junctions()[p.junction].name +
-            "\" turns by nearly 180 degrees or more within one step; use "
-            "more load steps");
         u[layout_->rotation_dof(p.junction, 0)] = 0.0;
         for (unsigned int c = 1; c < 4; ++c)
           u[layout_->rotation_dof(p.junction, c)] =
@@ -424,14 +619,23 @@ namespace rodnet
       {
         const Clamp  &clamp = clamps[i];
         const Vector3 inner =
-          clamp_displacement(clamp, clamp.vertices[1], load_factor);
+          clamp_displacement(clamp, clamp.vertices[1], factor);
         for (unsigned int c = 0; c < 3; ++c)
           u[layout_->vertex_dof(clamp.vertices[1], c)] = inner[c];
         if (clamp.angle != 0)
           u[layout_->twist_dof(clamp.segment)] = clamp_twists[i];
       }
     u.compress(dealii::VectorOperation::insert);
+    turn_clamp_twists(u, clamp_twists, factor);
+    // The other rod ends at a junction move with its vertex.
+    layout_->junction_constraints().distribute(u);
+  }
 
+  void
+  RodModel::turn_clamp_twists(VectorType                &u,
+                              const std::vector<double> &clamp_twists,
+                              const SupportFactor       &factor) const
+  {
     // The end segment of a turned clamp has the tangent R t0 now; its
     // twist turns the director frame there from the parallel-transported
     // one to R D0 (both share d3, so the angle between their d1 about it).
@@ -443,7 +647,8 @@ namespace rodnet
           const Matrix3 frame =
             configuration_->director_frame(u, clamp.segment).toRotationMatrix();
           const Matrix3 target =
-            (rotation_about(clamp.axis, load_factor * clamp.angle) *
+            (rotation_about(clamp.axis,
+                            factor(clamp.rotation_in_time) * clamp.angle) *
              clamp.undeformed_frame)
               .toRotationMatrix();
           twists[i] =
@@ -455,8 +660,6 @@ namespace rodnet
       if (clamps[i].angle != 0)
         u[layout_->twist_dof(clamps[i].segment)] = twists[i];
     u.compress(dealii::VectorOperation::insert);
-    // The other rod ends at a junction move with its vertex.
-    layout_->junction_constraints().distribute(u);
   }
 
   Vector3

@@ -2,6 +2,7 @@
 #define RODNET_CORE_SUPPORTS_AND_LOADS_H
 
 #include <core/rod_network.h>
+#include <core/time_function.h>
 
 #include <array>
 #include <optional>
@@ -40,13 +41,15 @@ namespace rodnet
     };
 
     /// Holds the masked position components of a vertex at a displacement
-    /// (zero: a fixed vertex); a support called @p name.
+    /// (zero: a fixed vertex), scaled by the load factor or by its own
+    /// function of time; a support called @p name.
     struct FixedComponents
     {
       std::string         name;
       unsigned int        vertex;
       std::array<bool, 3> mask;
       Vector3             displacement = Vector3::Zero();
+      TimeFunction        in_time = {};
     };
 
     /**
@@ -65,6 +68,9 @@ namespace rodnet
       double                      value;
       /// Moments only: how the moment follows the load factor.
       LoadRamp ramp = LoadRamp::ramped;
+      /// Rotations only: the load factor scales the angle, or a function
+      /// of time.
+      TimeFunction in_time = {};
     };
 
     struct PointForce

@@ -5,6 +5,7 @@
 #include <io/parsed_function.h>
 #include <io/rod_groups.h>
 #include <io/scene_entries.h>
+#include <io/time_drive.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,46 +94,19 @@ namespace rodnet
                   "<s1>\" or \"near ends <d>\"");
     }
 
-    /// The function of time @p expression of the item @p item, which
-    /// throws naming the item and the time where it is not finite.
-    std::shared_ptr<const std::function<double(double)>>
-    time_function(const ActivationItem &item, const std::string &expression)
-    {
-      const auto parsed =
-        parse_function<1>({expression}, expression, "t", item.entry);
-      const std::string context = item_context(item.entry, item.text);
-      return std::make_shared<const std::function<double(double)>>(
-        [parsed, context](const double t) {
-          const double value = parsed->value(dealii::Point<1>(t));
-          if (!std::isfinite(value))
-            throw std::invalid_argument(context + "the function of time is " +
-                                        number(value) + " at t = " + number(t) +
-                                        " s");
-          return value;
-        });
-    }
-
     /// Reads the drive at the end of @p words ("fixed", "ramped", "in time
     /// <expression>") into @p item and removes it from @p words.
     void
     read_drive(std::vector<std::string> &words, ActivationItem &item)
     {
       using Kind = ActivationDrive::Kind;
-      for (std::size_t i = 0; i + 1 < words.size(); ++i)
-        if (words[i] == "in" && words[i + 1] == "time")
-          {
-            std::string expression;
-            for (std::size_t k = i + 2; k < words.size(); ++k)
-              expression += (expression.empty() ? "" : " ") + words[k];
-            if (expression.empty())
-              throw std::invalid_argument(
-                item_context(item.entry, item.text) +
-                "give the function of time after \"in time\", e.g. \"in "
-                "time 1 - exp(-t/2)\"");
-            item.drive = {Kind::time, time_function(item, expression)};
-            words.resize(i);
-            return;
-          }
+      const TimeFunction in_time =
+        read_in_time(words, item.entry, item_context(item.entry, item.text));
+      if (in_time.given())
+        {
+          item.drive = {Kind::time, in_time.of_time};
+          return;
+        }
       if (!words.empty() &&
           (words.back() == "fixed" || words.back() == "ramped"))
         {

@@ -10,6 +10,7 @@
 #include <io/scene_families.h>
 #include <io/solution_methods.h>
 #include <io/substrate.h>
+#include <io/time_drive.h>
 #include <io/unread_geometry_entries.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
@@ -201,14 +202,15 @@ namespace rodnet
       "",
       Anything(),
       "Rotations reached at load factor 1 and ramped with it: \"<where>: "
-      "<ax>,<ay>,<az> <angle>; ...\" (angle in degrees about the axis), "
-      "where is a clamped end (turned about its end vertex), a junction "
-      "or any vertex (a rotation handle there, its position free). [deg]");
+      "<ax>,<ay>,<az> <angle> [in time <f(t)>]; ...\" (degrees; in time "
+      "stepping angle x f(t)), where is a clamped end (turned about its end "
+      "vertex), a junction or any vertex (a rotation handle there). [deg]");
     prm.declare_entry("Prescribed displacements",
                       "",
                       Anything(),
-                      "Displacements reached at load factor 1 and ramped "
-                      "with it: \"<vertex>: x=<dx> y=<dy>; ...\". [m]");
+                      "Displacements at load factor 1, ramped with it (or "
+                      "x f(t)): \"<vertex>: x=<dx> y=<dy> [in time <f(t)>]; "
+                      "...\". [m]");
     prm.leave_subsection();
   }
 
@@ -848,19 +850,46 @@ namespace rodnet
                           imperfection_ramp)})
       for (const auto &[name, value] : split_items(*text, entry))
         {
-          const auto [axis, amount] = parse_axis_value(value, entry);
+          // Rotations are given in degrees, moments in N m; rotations may
+          // follow a function of time.
+          const bool         rotation = list == &spec.rotations;
+          std::string        rest     = value;
+          const TimeFunction in_time =
+            rotation ? support_in_time(entry, name, value, rest) :
+                       TimeFunction();
+          const auto [axis, amount] = parse_axis_value(rest, entry);
           const RotationTarget target =
             select_rotation_target(net, name, entry);
-          // Rotations are given in degrees, moments in N m.
-          const bool rotation = list == &spec.rotations;
           list->push_back(
             {"entry \"" + std::string(entry) + "\": \"" + name + "\"",
              target.vertex,
              target.junction,
              axis,
              rotation ? amount * M_PI / 180 : amount,
-             ramp});
+             ramp,
+             in_time});
         }
+  }
+
+  TimeFunction
+  Scene::support_in_time(const std::string &entry,
+                         const std::string &name,
+                         const std::string &value,
+                         std::string       &rest) const
+  {
+    const std::string context =
+      "entry \"" + entry + "\", item \"" + name + ": " + value + "\": ";
+    std::vector<std::string> words =
+      dealii::Utilities::split_string_list(value, ' ');
+    const TimeFunction in_time = read_in_time(words, entry, context);
+    rest.clear();
+    for (const std::string &w : words)
+      rest += (rest.empty() ? "" : " ") + w;
+    if (in_time.given())
+      check_time_function(*in_time.of_time,
+                          context + "a function of time moves a support",
+                          "let the load factor move it (without \"in time\")");
+    return in_time;
   }
 
   void
@@ -893,7 +922,9 @@ namespace rodnet
         const std::string   entry = "Supports/Prescribed displacements";
         std::array<bool, 3> mask{{false, false, false}};
         Vector3             d = Vector3::Zero();
-        std::istringstream  words(values);
+        std::string         rest;
+        const TimeFunction  in_time = support_in_time(entry, v, values, rest);
+        std::istringstream  words(rest);
         std::string         w;
         while (words >> w)
           {
@@ -920,7 +951,8 @@ namespace rodnet
           {"Prescribed displacements: " + v + ": " + values,
            select_vertex(net, v, entry),
            mask,
-           d});
+           d,
+           in_time});
       }
   }
 

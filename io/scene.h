@@ -294,6 +294,24 @@ namespace rodnet
     void
     check_activation_drives() const;
 
+    /// Throws @p what (which names the entry and item) " in time stepping
+    /// only; set Solver/Method = time stepping, or " @p instead outside
+    /// time stepping; evaluates @p f at the times the steps end on, where
+    /// it throws if not finite.
+    void
+    check_time_function(const std::function<double(double)> &f,
+                        const std::string                   &what,
+                        const std::string                   &instead) const;
+
+    /// The value of the item "<name>: <value>" of the support entry
+    /// @p entry without its "in time <f(t)>" into @p rest, and that function
+    /// (empty if none), checked by check_time_function().
+    TimeFunction
+    support_in_time(const std::string &entry,
+                    const std::string &name,
+                    const std::string &value,
+                    std::string       &rest) const;
+
     /// The index in scene_materials of the material @p rod takes.
     unsigned int
     material_index(const RodSettings &rod) const;

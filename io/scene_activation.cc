@@ -42,32 +42,38 @@ namespace rodnet
   void
   Scene::check_activation_drives() const
   {
-    const TimeIntegrator::Parameters &p = time_stepping;
     for (const std::vector<ActivationItem> &items : rod_activation)
       for (const ActivationItem &item : items)
-        {
-          if (item.drive.kind != ActivationDrive::Kind::time)
-            continue;
-          if (method != SolutionMethod::time_stepping)
-            throw std::invalid_argument(
-              "entry \"" + item.entry + "\", item \"" + item.text +
-              "\": a function of time drives a field in time stepping only; "
-              "set Solver/Method = time stepping, or drive it by the load "
-              "factor (\"ramped\")");
-          // At the times the steps end on, before any step: the function
-          // throws, naming the time, where it is not finite. (A run of too
-          // many steps is refused by check_run_length().)
-          const std::function<double(double)> &f = *item.drive.of_time;
-          if ((p.end_time - p.start_time) / p.time_step >
-              run_limits::max_time_steps)
-            return;
-          if (p.preload_time > 0)
-            for (unsigned int k = 0; k <= p.preload_steps; ++k)
-              f(p.initial_time() + k * p.preload_time / p.preload_steps);
-          for (double k = 0; p.start_time + k * p.time_step < p.end_time; ++k)
-            f(p.start_time + k * p.time_step);
-          f(p.end_time);
-        }
+        if (item.drive.kind == ActivationDrive::Kind::time)
+          check_time_function(*item.drive.of_time,
+                              "entry \"" + item.entry + "\", item \"" +
+                                item.text + "\": a function of time drives "
+                                            "a field",
+                              "drive it by the load factor (\"ramped\")");
+  }
+
+  void
+  Scene::check_time_function(const std::function<double(double)> &f,
+                             const std::string                   &what,
+                             const std::string                   &instead) const
+  {
+    const TimeIntegrator::Parameters &p = time_stepping;
+    if (method != SolutionMethod::time_stepping)
+      throw std::invalid_argument(what +
+                                  " in time stepping only; set Solver/Method "
+                                  "= time stepping, or " +
+                                  instead);
+    // At the times the steps end on, before any step: the function
+    // throws, naming the time, where it is not finite. (A run of too
+    // many steps is refused by check_run_length().)
+    if ((p.end_time - p.start_time) / p.time_step > run_limits::max_time_steps)
+      return;
+    if (p.preload_time > 0)
+      for (unsigned int k = 0; k <= p.preload_steps; ++k)
+        f(p.initial_time() + k * p.preload_time / p.preload_steps);
+    for (double k = 0; p.start_time + k * p.time_step < p.end_time; ++k)
+      f(p.start_time + k * p.time_step);
+    f(p.end_time);
   }
 
   void

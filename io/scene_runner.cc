@@ -634,11 +634,9 @@ namespace rodnet
       run_guarded(summary, [&] {
         // The history begins with the initial state, where the integrator
         // starts: at the start time, or before the preload.
-        const double time        = parameters.initial_time();
-        const double load_factor = parameters.load_factor(time);
-        model->set_time(time);
-        model->apply_boundary_values(u, load_factor);
-        record(0, time, load_factor, u, v, nullptr);
+        const double time = parameters.initial_time();
+        integrator.start_state(u, v);
+        record(0, time, parameters.load_factor(time), u, v, nullptr);
         integrator.run(u,
                        v,
                        [&](const TimeIntegrator::StepInfo &info,

@@ -3,6 +3,7 @@
 #include <solvers/equilibrium_check.h>
 #include <solvers/free_motions.h>
 #include <solvers/integration_scheme_registry.h>
+#include <solvers/prescribed_motion.h>
 #include <solvers/stability.h>
 #include <solvers/state_guard.h>
 #include <solvers/time_integrator.h>
@@ -165,6 +166,17 @@ namespace rodnet
   }
 
   void
+  TimeIntegrator::start_state(VectorType &u, VectorType &v) const
+  {
+    const double time = parameters.initial_time();
+    model.set_time(time);
+    model.apply_boundary_values(u, parameters.load_factor(time), time);
+    if (scheme->dynamic() && parameters.preload_time == 0)
+      set_prescribed_velocity(
+        model, parameters.load_factor, time, parameters.time_step, u, v);
+  }
+
+  void
   TimeIntegrator::run(VectorType &u, VectorType &v, const Observer &observer)
   {
     const Parameters &p = parameters;
@@ -182,13 +194,16 @@ namespace rodnet
         const double h    = p.preload_time / p.preload_steps;
         const double from = p.initial_time();
         model.set_time(from);
-        model.apply_boundary_values(u, p.load_factor(from));
+        model.apply_boundary_values(u, p.load_factor(from), from);
         advance(*preload_scheme, from, p.start_time - h, h, u, v, observer);
         v                = 0;
         last_step_length = 0;
       }
     model.set_time(p.start_time);
-    model.apply_boundary_values(u, p.load_factor(p.start_time));
+    model.apply_boundary_values(u, p.load_factor(p.start_time), p.start_time);
+    if (scheme->dynamic())
+      set_prescribed_velocity(
+        model, p.load_factor, p.start_time, p.time_step, u, v);
     model.set_time_step(0);
     assemble_damping(u, p.load_factor(p.start_time));
     scheme->start(u, v, p.load_factor(p.start_time));
@@ -288,6 +303,15 @@ namespace rodnet
     return info;
   }
 
+  std::vector<double>
+  TimeIntegrator::time_factors(const double time) const
+  {
+    std::vector<double> factors = model.activation_time_factors();
+    const std::vector<double> supports = model.support_time_factors(time);
+    factors.insert(factors.end(), supports.begin(), supports.end());
+    return factors;
+  }
+
   TimeIntegrator::EnergyWatch
   TimeIntegrator::watch_energy(const IntegrationScheme &scheme,
                                const double             from,
@@ -302,7 +326,7 @@ namespace rodnet
     EnergyWatch watch;
     watch.on = scheme.dynamic() && parameters.energy_growth_limit > 0;
     watch.reference_load       = parameters.load_factor(from);
-    watch.reference_activation = model.activation_time_factors();
+    watch.reference_activation = time_factors(from);
     if (watch.on)
       {
         watch.reference =
@@ -326,8 +350,8 @@ namespace rodnet
     if (!watch.on)
       return;
     const double energy = info.kinetic_energy + info.potential_energy;
-    // Fields driven by time move the natural shape as loads do.
-    const std::vector<double> activation = model.activation_time_factors();
+    // Fields and supports driven by time move as loads do.
+    const std::vector<double> activation = time_factors(info.time);
     if (info.load_factor != watch.reference_load ||
         activation != watch.reference_activation)
       {
@@ -400,8 +424,24 @@ namespace rodnet
     const double load_time = scheme.load_time(time, end_time);
     model.set_time(load_time);
     const StepStart start{u, base, h, parameters.load_factor(load_time)};
-    VectorType      x = predict(u, v, h, parameters.load_factor(end_time));
-    const bool      modified = parameters.modified_newton && scheme.dynamic();
+    VectorType x = u;
+    try
+      {
+        model.check_rotation_step(parameters.load_factor(time),
+                                  time,
+                                  parameters.load_factor(end_time),
+                                  end_time);
+        x = predict(u, v, h, end_time);
+      }
+    catch (const std::runtime_error &e)
+      {
+        // A prescribed rotation that turns by half a turn or more within
+        // the step: a shorter step turns less.
+        result.converged = false;
+        result.failure   = e.what();
+        return false;
+      }
+    const bool modified = parameters.modified_newton && scheme.dynamic();
     if (modified)
       {
         // One factorization per step where the tangent barely changes
@@ -454,7 +494,7 @@ namespace rodnet
   TimeIntegrator::predict(const VectorType &u,
                           const VectorType &v,
                           const double      h,
-                          const double      end_load_factor) const
+                          const double      end_time) const
   {
     // The last increment, scaled to the step, rather than h v_n: the
     // velocities of stiff modes that the second-order rules do not damp
@@ -465,7 +505,8 @@ namespace rodnet
       x.add(h / last_step_length, last_increment);
     else
       x.add(h, v);
-    model.apply_boundary_values(x, end_load_factor);
+    // The supports at the step's end, whatever time the loads act at.
+    model.apply_boundary_values(x, parameters.load_factor(end_time), end_time);
     return x;
   }
 

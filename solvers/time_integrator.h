@@ -230,13 +230,24 @@ namespace rodnet
      * Runs from the displacement @p u and velocity @p v at start_time
      * (after the preload, if any, which overwrites @p v with zero) to
      * end_time; both hold the last converged state on return or on a
-     * throw. Prescribed DoFs of @p u are set to their values at the start.
+     * throw. Prescribed DoFs of @p u are set to their values at the start
+     * and, in dynamic runs, those of @p v to their velocity there.
      * Quasi-static runs and preloads throw std::invalid_argument first if
      * a rigid motion is free (describe_free_motions()): without inertia
      * nothing holds it.
      */
     void
     run(VectorType &u, VectorType &v, const Observer &on_converged);
+
+    /**
+     * The state a run starts from, as run() sets it: the prescribed DoFs
+     * of @p u at their values at initial_time() and, in a dynamic run
+     * without preload, those of @p v at the velocity of the prescribed
+     * motion (set_prescribed_velocity()): a support moving at the start
+     * moves the DoFs it holds.
+     */
+    void
+    start_state(VectorType &u, VectorType &v) const;
 
     /// The mass matrix (unconstrained); empty for quasi-static runs.
     const MatrixType &
@@ -252,7 +263,7 @@ namespace rodnet
     {
       bool   on             = false;
       double reference_load = 0;
-      /// RodModel::activation_time_factors() when the load last changed.
+      /// time_factors() when the load last changed.
       std::vector<double> reference_activation;
       double              reference = 0; ///< energy when the load last changed
       double              scale     = 0;
@@ -283,12 +294,18 @@ namespace rodnet
          JudgedResult      &result);
 
     /// The predictor of a step of length @p h from (u, v), at the
-    /// prescribed values of @p end_load_factor.
+    /// prescribed values of @p end_time (throws std::runtime_error for a
+    /// prescribed rotation of half a turn or more within the step).
     VectorType
     predict(const VectorType &u,
             const VectorType &v,
             double            h,
-            double            end_load_factor) const;
+            double            end_time) const;
+
+    /// The factors of the activation fields and supports driven by
+    /// functions of time at @p time.
+    std::vector<double>
+    time_factors(double time) const;
 
     /// Newton for the step @p start of @p scheme from @p x, judged by the
     /// criterion of statics (by modified Newton if @p modified); a throw

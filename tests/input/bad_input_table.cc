@@ -965,6 +965,45 @@ namespace
      1,
      "entry \"Group all/Natural curvature\", item \"1, 0 in time 1/(t - "
      "0.5)\": the function of time is inf at t = 0.5 s"},
+    {"moving_support_outside_time_stepping",
+     with("Supports",
+          "  set Prescribed displacements = end: x=0.1 in time t\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Prescribed displacements\", item \"end: x=0.1 in "
+     "time t\": a function of time moves a support in time stepping only; "
+     "set Solver/Method = time stepping, or let the load factor move it "
+     "(without \"in time\")"},
+    {"moving_support_time_missing",
+     with("Supports", "  set Prescribed displacements = end: x=0.1 in time\n") +
+       valid_time_stepping,
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Prescribed displacements\", item \"end: x=0.1 in "
+     "time\": give the function of time after \"in time\""},
+    {"moving_support_not_finite",
+     with("Supports",
+          "  set Prescribed rotations = end: 0,0,1 10 in time 1/(t - 0.5)\n") +
+       valid_time_stepping,
+     ".prm",
+     "",
+     1,
+     "entry \"Supports/Prescribed rotations\", item \"end: 0,0,1 10 in "
+     "time 1/(t - 0.5)\": the function of time is inf at t = 0.5 s"},
+    {"moving_support_conflict",
+     with("Supports",
+          "  set Prescribed displacements = end: x=0.1 in time t; end: x=0.1 "
+          "in time t^2\n") +
+       valid_time_stepping,
+     ".prm",
+     "",
+     1,
+     "the supports \"Prescribed displacements: end: x=0.1 in time t\" and "
+     "\"Prescribed displacements: end: x=0.1 in time t^2\" hold x of vertex "
+     "10 of rod 0 at different values, 0.1 m times t and 0.1 m times t^2; a "
+     "position may be held twice only at the same value"},
   };
 
   class BadInputTable : public ::testing::TestWithParam<BadInput>

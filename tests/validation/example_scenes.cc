@@ -209,6 +209,7 @@ namespace
     "overcurved_ring",        // validation/overcurved_ring
     "ribbon_snapping",        // validation/ribbon_snapping
     "rollup_lateral",         // validation/rollup_lateral
+    "spin_up",                // validation/moving_supports
     "substrate_bridge",       // validation/substrate_bridge
   };
 

@@ -1,0 +1,26 @@
+#ifndef RODNET_IO_TIME_DRIVE_H
+#define RODNET_IO_TIME_DRIVE_H
+
+#include <core/time_function.h>
+
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /**
+   * Reads the trailing "in time <expression of t>" of the words @p words of
+   * an item of a scene entry (activation fields, prescribed displacements
+   * and rotations) and removes it from @p words; an empty TimeFunction if
+   * there is none. @p context ("entry \"...\", item \"...\": ") starts
+   * every message: an empty or unreadable expression is refused here, and
+   * the function throws std::invalid_argument naming the time where its
+   * value is not finite.
+   */
+  TimeFunction
+  read_in_time(std::vector<std::string> &words,
+               const std::string        &entry,
+               const std::string        &context);
+} // namespace rodnet
+
+#endif
