@@ -25,7 +25,7 @@
 //   2.5).
 //
 // Usage: dynamics_cost [--study cost,period] [--cells 10,20,35]
-// [--period-cells 10,35] [--steps 10] [--repeats 5]
+// [--period-cells 10,35] [--steps 10] [--repeats 5] [--rotary-inertia auto|0]
 // [--steps-per-period 20] [--amplitude 1e-4]
 // [--integrators "backward euler,newmark,midpoint"] [--threads 1].
 #include <deal.II/base/parameter_handler.h>
@@ -59,6 +59,9 @@ namespace
     std::string cells           = "10,20,35";
     std::string period_cells    = "10,35";
     std::string integrators     = "backward euler,newmark,midpoint";
+    /// The scene's "Rotary inertia per length" (auto: half the twist
+    /// inertia; 0: none), to price the rotary inertia of the sections.
+    std::string rotary_inertia = "auto";
 
     std::vector<bench::Option>
     command_line()
@@ -73,7 +76,8 @@ namespace
               bench::text("--study", studies),
               bench::text("--cells", cells),
               bench::text("--period-cells", period_cells),
-              bench::text("--integrators", integrators)};
+              bench::text("--integrators", integrators),
+              bench::text("--rotary-inertia", rotary_inertia)};
     }
   };
 
@@ -91,7 +95,7 @@ namespace
 
   /// The scene of the header with @p cells x @p cells cells.
   Scene
-  lattice_scene(const unsigned int cells)
+  lattice_scene(const unsigned int cells, const std::string &rotary_inertia)
   {
     const std::string  n = std::to_string(cells);
     std::ostringstream s;
@@ -100,6 +104,7 @@ namespace
       << "  set Segments = 10\nend\n"
       << "subsection Material\n  set Mass per length = 0.05\n"
       << "  set Twist inertia per length = 2.5e-4\n"
+      << "  set Rotary inertia per length = " << rotary_inertia << "\n"
       << "  subsection linear elastic\n    set Stiffness input = direct\n"
       << "    set EA = 1e5\n    set EI1 = 400\n    set EI2 = 100\n"
       << "    set GJ = 67\n  end\nend\nsubsection Supports\n"
@@ -315,7 +320,7 @@ namespace
                 "time step s (median, min-max)   ratio  iterations/step\n");
     for (const std::string &c : items(options.cells))
       {
-        const Scene      scene = lattice_scene(std::stoul(c));
+        const Scene      scene = lattice_scene(std::stoul(c), options.rotary_inertia);
         const auto       model = scene.build_model();
         const Mode       mode  = lowest_mode(*model, scene.inertia());
         const double     h  = 2 * M_PI / mode.omega / options.steps_per_period;
@@ -381,7 +386,7 @@ namespace
                 "min-max)\n");
     for (const std::string &c : items(options.period_cells))
       {
-        const Scene      scene  = lattice_scene(std::stoul(c));
+        const Scene      scene  = lattice_scene(std::stoul(c), options.rotary_inertia);
         const auto       model  = scene.build_model();
         const Mode       mode   = lowest_mode(*model, scene.inertia());
         const double     period = 2 * M_PI / mode.omega;
