@@ -1,6 +1,7 @@
 #include <io/entry_tree.h>
 #include <io/scene.h>
 #include <io/scene_file.h>
+#include <io/scene_help.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
@@ -8,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -158,6 +160,28 @@ namespace rodnet
       return titles;
     }
 
+    /// deal.II's message for an entry whose value does not match its
+    /// pattern ("Line <5> of file <f>: The entry value -1 for the entry
+    /// named Mass per length does not match the given pattern: [Double
+    /// 0...MAX_DOUBLE (inclusive)]") in our words, naming the line, the
+    /// entry, its value and what it asks for; any other message unchanged.
+    std::string
+    readable_parse_error(const std::string &message)
+    {
+      std::smatch parts;
+      if (!std::regex_match(
+            message,
+            parts,
+            std::regex(
+              R"(Line <(\d+)> of file <(.*)>: The entry value (.*) for )"
+              R"(the entry named (.*) does not match the given )"
+              R"(pattern: \[(.*)\])")))
+        return message;
+      return "line " + parts[1].str() + ": entry \"" + parts[4].str() +
+             "\" cannot be \"" + parts[3].str() +
+             "\"; it takes: " + describe_pattern("[" + parts[5].str() + "]");
+    }
+
     /// True if a line of the .prm @p text sets an entry.
     bool
     sets_an_entry(const std::string &text)
@@ -194,8 +218,9 @@ namespace rodnet
       }
     catch (const dealii::ExceptionBase &e)
       {
-        // What deal.II's parser found, without its source location.
-        throw std::invalid_argument(error_message(e));
+        // What deal.II's parser found, without its source location, in
+        // our words where it is a value outside its entry's pattern.
+        throw std::invalid_argument(readable_parse_error(error_message(e)));
       }
   }
 

@@ -535,8 +535,8 @@ namespace
      ".prm",
      "",
      1,
-     "The entry value -1 for the entry named Mass per length does not match "
-     "the given pattern: [Double 0...MAX_DOUBLE (inclusive)]"},
+     "entry \"Mass per length\" cannot be \"-1\"; it takes: number "
+     ">= 0"},
     // The rotary inertia: "auto" or a finite number >= 0, in our words.
     {"negative_rotary_inertia",
      with("Material", "  set Rotary inertia per length = -1e-3\n"),
