@@ -115,6 +115,7 @@ namespace rodnet
             for (const MovedDof &m : moved)
               if (m.component == a)
                 translation[m.dof] = 1;
+            translation.compress(dealii::VectorOperation::insert);
             mass_translations[a].reinit(translation);
             mass.vmult(mass_translations[a], translation);
           }
@@ -169,6 +170,8 @@ namespace rodnet
               rotations[3 + a][m.dof] = tangent[a];
           }
       }
+    for (VectorType &r : rotations)
+      r.compress(dealii::VectorOperation::insert);
     for (unsigned int j = 0; j < 6; ++j)
       mass.vmult(mass_rotations[j], rotations[j]);
   }
@@ -212,5 +215,9 @@ namespace rodnet
           rigid += alpha[m.part][j] * mass_rotations[j][m.dof];
         force[m.dof] -= rigid;
       }
+    // Element-wise additions end with compress(add), so that a following
+    // insertion (AffineConstraints::set_zero) agrees with deal.II's record
+    // of the last operation.
+    force.compress(dealii::VectorOperation::add);
   }
 } // namespace rodnet
