@@ -92,6 +92,34 @@ namespace
     return std::nan("");
   }
 
+  /// The wall times of the parts of one Newton iteration.
+  struct IterationTimes
+  {
+    double assemble, factorize, solve;
+  };
+
+  /// Assembles the residual @p r and the tangent @p K of @p model at @p u
+  /// and @p load_factor, factorizes K with @p direct and solves K @p du = r,
+  /// timing each part.
+  IterationTimes
+  timed_iteration(RodModel             &model,
+                  const VectorType     &u,
+                  const double          load_factor,
+                  VectorType           &r,
+                  MatrixType           &K,
+                  TangentFactorization &direct,
+                  VectorType           &du)
+  {
+    const double t0 = bench::now();
+    model.assemble(u, load_factor, &r, &K);
+    const double t1 = bench::now();
+    direct.factorize();
+    const double t2 = bench::now();
+    direct.solve(r, du);
+    const double t3 = bench::now();
+    return {t1 - t0, t2 - t1, t3 - t2};
+  }
+
   struct Result
   {
     unsigned int      n_dofs;
@@ -144,19 +172,14 @@ namespace
     // One warm-up iteration, then the timed ones; each starts from u = 0.
     for (unsigned int rep = 0; rep <= repeats; ++rep)
       {
-        const double t0 = bench::now();
-        model.assemble(u, 1.0, &r, &K);
-        const double t1 = bench::now();
-        direct->factorize();
-        const double t2 = bench::now();
-        direct->solve(r, du);
-        const double t3 = bench::now();
+        const IterationTimes t =
+          timed_iteration(model, u, 1.0, r, K, *direct, du);
         if (rep > 0)
           {
-            assemble.push_back(t1 - t0);
-            factorize.push_back(t2 - t1);
-            solve.push_back(t3 - t2);
-            total.push_back(t3 - t0);
+            assemble.push_back(t.assemble);
+            factorize.push_back(t.factorize);
+            solve.push_back(t.solve);
+            total.push_back(t.assemble + t.factorize + t.solve);
           }
       }
     result.assemble  = bench::statistics(assemble);
@@ -324,19 +347,14 @@ namespace
       {
         for (unsigned int k = 0; k < iterations; ++k)
           {
+            const IterationTimes t =
+              timed_iteration(model, u, 0.5, r, K, *direct, du);
             LatticeIteration it;
-            const double     t0 = bench::now();
-            model.assemble(u, 0.5, &r, &K);
-            const double t1 = bench::now();
-            direct->factorize();
-            const double t2 = bench::now();
-            direct->solve(r, du);
-            const double t3 = bench::now();
-            it.residual     = r.l2_norm();
-            it.assemble     = t1 - t0;
-            it.factorize    = t2 - t1;
-            it.solve        = t3 - t2;
-            it.fill         = direct->factor_entries() / K.n_nonzero_elements();
+            it.residual  = r.l2_norm();
+            it.assemble  = t.assemble;
+            it.factorize = t.factorize;
+            it.solve     = t.solve;
+            it.fill      = direct->factor_entries() / K.n_nonzero_elements();
             result.push_back(it);
             u.add(-1.0, du);
           }
