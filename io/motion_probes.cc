@@ -72,28 +72,28 @@ namespace rodnet
 
     /// "kinetic energy": 1/2 v.Mv.
     double
-    kinetic_energy(const Motion &m)
+    kinetic_energy_of(const Motion &m)
     {
       return m.kinetic_energy;
     }
 
     /// "potential energy": Pi, stored energy minus the dead loads' work.
     double
-    potential_energy(const Motion &m)
+    potential_energy_of(const Motion &m)
     {
       return m.potential_energy;
     }
 
     /// "total energy": 1/2 v.Mv + Pi.
     double
-    total_energy(const Motion &m)
+    total_energy_of(const Motion &m)
     {
       return m.kinetic_energy + m.potential_energy;
     }
 
-    using KineticEnergyProbe   = EnergyProbe<kinetic_energy>;
-    using PotentialEnergyProbe = EnergyProbe<potential_energy>;
-    using TotalEnergyProbe     = EnergyProbe<total_energy>;
+    using KineticEnergyProbe   = EnergyProbe<kinetic_energy_of>;
+    using PotentialEnergyProbe = EnergyProbe<potential_energy_of>;
+    using TotalEnergyProbe     = EnergyProbe<total_energy_of>;
 
     /// "linear momentum <x|y|z>": a component of the sum of M v.
     class LinearMomentumProbe : public MotionProbe
