@@ -44,12 +44,6 @@ namespace
     }
   };
 
-  std::shared_ptr<const RodMaterial>
-  elastic()
-  {
-    return std::make_shared<LinearElasticRod>(swing_stiffness);
-  }
-
   /// One run of @p method on the cantilever of @p n segments: its history
   /// and wall time.
   struct Sample
@@ -66,7 +60,7 @@ namespace
       const double       h,
       const double       end_time)
   {
-    auto         rod   = cantilever(n, elastic(), 0);
+    auto         rod   = cantilever(n, swing_elastic_rod(), 0);
     const double start = bench::now();
     Sample       s;
     s.history = free_vibration(*rod, shape, amplitude, method, h, end_time);
@@ -120,7 +114,7 @@ namespace
     while (std::getline(list, item, ','))
       {
         const unsigned int n      = std::stoul(item);
-        auto               model  = cantilever(n, elastic(), 0);
+        auto               model  = cantilever(n, swing_elastic_rod(), 0);
         const auto [omega, mode]  = first_mode(*model);
         const VectorType   shape  = bending_in_z(*model, mode);
         const double       period = 2 * M_PI / omega;

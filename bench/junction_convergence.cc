@@ -11,9 +11,8 @@
 // tau_z = 1.5 rad in 15 load steps; the reaction moment M L_b/EI about e_z
 // at the top. n = 5 ... 80 segments per blade, 2n on the shaft.
 //
-// Both models are those of tests/validation/junctions.cc (frame_force,
-// windmill_moment); the stiffnesses and supports are repeated here because
-// the bench times the construction, which the test hides inside a solve.
+// Both models are those of tests/validation/junctions.cc
+// (tests/common/junction_examples.h); the time includes their construction.
 //
 // There is no closed form at these amplitudes. The reference of a study is
 // the Richardson extrapolation of its two finest "simple" runs with the
@@ -34,9 +33,7 @@
 // [--classic-levels n] (number of refinement levels run with the classic
 // kernel, from the coarsest; default all) [--frame-max N] [--windmill-max n]
 // (finest mesh of each study; 0 skips the study)
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
-#include <materials/linear_elastic_rod.h>
 #include <solvers/static_solver.h>
 
 #include <bench/options.h>
@@ -45,9 +42,11 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <tests/common/junction_examples.h>
 #include <vector>
 
 using namespace rodnet;
+using namespace rodnet::testing;
 
 namespace
 {
@@ -70,12 +69,6 @@ namespace
               bench::number("--windmill-max", windmill_max)};
     }
   };
-
-  std::shared_ptr<const RodMaterial>
-  elastic(const double EA, const double EI, const double GJ)
-  {
-    return std::make_shared<LinearElasticRod>(RodStiffness{EA, EI, EI, GJ});
-  }
 
   struct Outcome
   {
@@ -103,78 +96,27 @@ namespace
     return u;
   }
 
-  /// The frame of Fig. 3a with @p n segments per leg: legs of length 1,
-  /// EI = 1, mu J = 2/3, A L^2/I = 400; the tip moved by u_z = 1.
+  /// The frame of Fig. 3a (fig3a_frame()) with @p n segments per leg, its
+  /// tip moved by u_z = 1: the reaction force there.
   Outcome
   frame(const std::string &kernel, const unsigned int n)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(1, 0, 0),
-                                          n),
-                     false,
-                     Vector3::UnitZ(),
-                     kernel);
-    network->add_rod(generators::straight(Vector3(1, 0, 0),
-                                          Vector3(1, 1, 0),
-                                          n),
-                     false,
-                     Vector3::UnitZ(),
-                     kernel);
-    network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
-    network->add_junction("corner",
-                          JunctionKind::welded,
-                          {{0, false}, {1, true}});
-    const auto         material = elastic(400, 1, 2.0 / 3);
-    RodModel           model(std::move(network), {material, material});
-    const unsigned int tip = model.network().rods()[1].vertices.back();
-    model.fix_components("tip", tip, {{false, false, true}}, Vector3(0, 0, 1));
-    Outcome          outcome;
-    const VectorType u = solve(model, 20, outcome);
-    outcome.value      = model.reaction(model.support("tip"), u, 1.0)[2];
+    const std::unique_ptr<RodModel> model = fig3a_frame(kernel, n, 1);
+    Outcome                         outcome;
+    const VectorType                u = solve(*model, 20, outcome);
+    outcome.value = model->reaction(model->support("tip"), u, 1.0)[2];
     return outcome;
   }
 
-  /// The windmill of Fig. 3b with @p n segments per blade and 2n on the
-  /// shaft: I = 1, E = 1, mu = E/3; shaft J = 200 I, A L_a^2/I = 400;
-  /// blades J = I, A L_b^2/I = 100; the top turned by 1.5 rad.
+  /// The windmill of Fig. 3b (fig3b_windmill()) with @p n segments per
+  /// blade, its top turned by 1.5 rad: the moment about e_z there.
   Outcome
   windmill(const std::string &kernel, const unsigned int n)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(0, 0, 1),
-                                          2 * n),
-                     false,
-                     Vector3::UnitX(),
-                     kernel);
-    for (const double degrees : {90.0, 210.0, 330.0})
-      {
-        const double angle = degrees * M_PI / 180;
-        network->add_rod(generators::straight(
-                           Vector3(0, 0, 0),
-                           0.5 * Vector3(std::cos(angle), std::sin(angle), 0),
-                           n),
-                         false,
-                         Vector3::UnitZ(),
-                         kernel);
-      }
-    network->add_junction("hub",
-                          JunctionKind::welded,
-                          {{0, true}, {1, true}, {2, true}, {3, true}});
-    const unsigned int top =
-      network->add_junction("top", JunctionKind::clamped, {{0, false}});
-    const auto blade = elastic(400, 1, 1.0 / 3);
-    RodModel   model(std::move(network),
-                   {elastic(400, 1, 200.0 / 3), blade, blade, blade});
-    for (unsigned int b = 1; b <= 3; ++b)
-      model.fix_components("blade" + std::to_string(b),
-                           model.network().rods()[b].vertices.back(),
-                           {{true, true, true}});
-    model.prescribe_rotation(top, Vector3::UnitZ(), 1.5);
-    Outcome          outcome;
-    const VectorType u = solve(model, 15, outcome);
-    outcome.value      = model.reaction_moment(top, u, 1.0)[2];
+    const Fig3bWindmill windmill = fig3b_windmill(kernel, n, 1.5);
+    Outcome             outcome;
+    const VectorType    u = solve(*windmill.model, 15, outcome);
+    outcome.value = windmill.model->reaction_moment(windmill.top, u, 1.0)[2];
     return outcome;
   }
 

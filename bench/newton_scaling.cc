@@ -92,6 +92,50 @@ namespace
     return std::nan("");
   }
 
+  /// The wall times of the parts of one Newton iteration.
+  struct IterationTimes
+  {
+    double assemble, factorize, solve;
+  };
+
+  /// Newton iterations on a model from u = 0: their vectors, tangent and
+  /// factorization, and the time of each part of an iteration. The
+  /// factorization refers to K: the object stays where it is made.
+  struct TimedNewton
+  {
+    TimedNewton(RodModel &model, const std::string &linear_solver)
+        : model(model)
+        , u(model.create_vector())
+        , r(model.create_vector())
+        , du(model.create_vector())
+    {
+      model.initialize_matrix(K);
+      direct = TangentFactorization::create(K, linear_solver);
+    }
+
+    TimedNewton(TimedNewton &&) = delete;
+
+    /// Assembles the residual r and the tangent K at u and @p load_factor,
+    /// factorizes K and solves K du = r, timing each part.
+    IterationTimes
+    iterate(const double load_factor)
+    {
+      const double t0 = bench::now();
+      model.assemble(u, load_factor, &r, &K);
+      const double t1 = bench::now();
+      direct->factorize();
+      const double t2 = bench::now();
+      direct->solve(r, du);
+      const double t3 = bench::now();
+      return {t1 - t0, t2 - t1, t3 - t2};
+    }
+
+    RodModel                             &model;
+    VectorType                            u, r, du;
+    MatrixType                            K;
+    std::unique_ptr<TangentFactorization> direct;
+  };
+
   struct Result
   {
     unsigned int      n_dofs;
@@ -131,32 +175,21 @@ namespace
 
     Result result;
     result.n_dofs = model.layout().n_dofs();
-    VectorType u  = model.create_vector();
-    VectorType r  = model.create_vector();
-    VectorType du = model.create_vector();
-    MatrixType K;
-    model.initialize_matrix(K);
-    const auto direct = TangentFactorization::create(K, linear_solver);
-    result.solver     = direct->name();
-    result.setup      = bench::now() - start;
+    TimedNewton newton(model, linear_solver);
+    result.solver = newton.direct->name();
+    result.setup  = bench::now() - start;
 
     std::vector<double> assemble, factorize, solve, total;
     // One warm-up iteration, then the timed ones; each starts from u = 0.
     for (unsigned int rep = 0; rep <= repeats; ++rep)
       {
-        const double t0 = bench::now();
-        model.assemble(u, 1.0, &r, &K);
-        const double t1 = bench::now();
-        direct->factorize();
-        const double t2 = bench::now();
-        direct->solve(r, du);
-        const double t3 = bench::now();
+        const IterationTimes t = newton.iterate(1.0);
         if (rep > 0)
           {
-            assemble.push_back(t1 - t0);
-            factorize.push_back(t2 - t1);
-            solve.push_back(t3 - t2);
-            total.push_back(t3 - t0);
+            assemble.push_back(t.assemble);
+            factorize.push_back(t.factorize);
+            solve.push_back(t.solve);
+            total.push_back(t.assemble + t.factorize + t.solve);
           }
       }
     result.assemble  = bench::statistics(assemble);
@@ -167,12 +200,12 @@ namespace
     // Backward error of the linear solve, |K du - r| / |r|: small while the
     // tip is off means the system is ill-conditioned, not the solve wrong.
     VectorType Kdu = model.create_vector();
-    K.vmult(Kdu, du);
-    Kdu.add(-1.0, r);
-    result.relative_residual = Kdu.l2_norm() / r.l2_norm();
+    newton.K.vmult(Kdu, newton.du);
+    Kdu.add(-1.0, newton.r);
+    result.relative_residual = Kdu.l2_norm() / newton.r.l2_norm();
 
-    u.add(-1.0, du);
-    const double deflection = -model.configuration().position(u, tip)[2];
+    newton.u.add(-1.0, newton.du);
+    const double deflection = -model.configuration().position(newton.u, tip)[2];
     result.tip_ratio        = deflection / (F / (3 * stiffness.EI1));
     return result;
   }
@@ -313,32 +346,22 @@ namespace
                      const unsigned int iterations,
                      const std::string &linear_solver)
   {
-    VectorType u  = model.create_vector();
-    VectorType r  = model.create_vector();
-    VectorType du = model.create_vector();
-    MatrixType K;
-    model.initialize_matrix(K);
-    const auto direct = TangentFactorization::create(K, linear_solver);
+    TimedNewton                   newton(model, linear_solver);
     std::vector<LatticeIteration> result;
     try
       {
         for (unsigned int k = 0; k < iterations; ++k)
           {
-            LatticeIteration it;
-            const double     t0 = bench::now();
-            model.assemble(u, 0.5, &r, &K);
-            const double t1 = bench::now();
-            direct->factorize();
-            const double t2 = bench::now();
-            direct->solve(r, du);
-            const double t3 = bench::now();
-            it.residual     = r.l2_norm();
-            it.assemble     = t1 - t0;
-            it.factorize    = t2 - t1;
-            it.solve        = t3 - t2;
-            it.fill         = direct->factor_entries() / K.n_nonzero_elements();
+            const IterationTimes t = newton.iterate(0.5);
+            LatticeIteration     it;
+            it.residual  = newton.r.l2_norm();
+            it.assemble  = t.assemble;
+            it.factorize = t.factorize;
+            it.solve     = t.solve;
+            it.fill =
+              newton.direct->factor_entries() / newton.K.n_nonzero_elements();
             result.push_back(it);
-            u.add(-1.0, du);
+            newton.u.add(-1.0, newton.du);
           }
       }
     catch (const std::exception &e)

@@ -24,7 +24,6 @@
 // Usage: time_steps [--study period,creep,stability] [--repeats n]
 // [--threads n]. Writes time_steps_<study>.csv into the current directory;
 // charts: gnuplot bench/time_steps.gp (from that directory).
-#include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
 
 #include "options.h"
@@ -56,12 +55,6 @@ namespace
     }
   };
 
-  std::shared_ptr<const RodMaterial>
-  elastic()
-  {
-    return std::make_shared<LinearElasticRod>(swing_stiffness);
-  }
-
   /// Median wall time of @p repeats runs of @p run, which returns its last
   /// result through @p result.
   template <class Result>
@@ -81,7 +74,7 @@ namespace
   void
   period_study(const Options &options)
   {
-    auto model                = cantilever(50, elastic(), 0);
+    auto model                = cantilever(50, swing_elastic_rod(), 0);
     const auto [omega, shape] = first_mode(*model);
     const double       period = 2 * M_PI / omega;
     const unsigned int tip    = model->network().rods()[0].vertices.back();
@@ -101,7 +94,7 @@ namespace
           SwingHistory            h;
           const bench::Statistics time =
             timed<SwingHistory>(options.repeats, h, [&] {
-              auto rod = cantilever(50, elastic(), 0);
+              auto rod = cantilever(50, swing_elastic_rod(), 0);
               return free_vibration(*rod,
                                     shape,
                                     amplitude,
@@ -144,8 +137,7 @@ namespace
     // Static deflection of the same discrete rod with the relaxed rigidity.
     double relaxed_tip = 0;
     {
-      auto model =
-        cantilever(20, std::make_shared<LinearElasticRod>(swing_stiffness), P);
+      auto                       model = cantilever(20, swing_elastic_rod(), P);
       TimeIntegrator::Parameters p;
       p.integrator = "quasi-static";
       p.time_step  = 1;
@@ -218,7 +210,7 @@ namespace
     for (const std::string method : {"newmark", "midpoint", "backward euler"})
       for (const unsigned int n : {400u, 200u, 100u, 50u, 25u, 12u, 6u})
         {
-          auto               model = cantilever(20, elastic(), 2.0);
+          auto               model = cantilever(20, swing_elastic_rod(), 2.0);
           std::ostringstream log;
           const SwingHistory h =
             released_swing(*model, method, T / n, 10 * T, &log);

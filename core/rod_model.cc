@@ -14,6 +14,20 @@
 
 namespace rodnet
 {
+  namespace
+  {
+    /// The pointers that @p owners hold, in their order.
+    template <class T>
+    std::vector<const T *>
+    raw_pointers(const std::vector<std::unique_ptr<T>> &owners)
+    {
+      std::vector<const T *> pointers;
+      for (const std::unique_ptr<T> &owner : owners)
+        pointers.push_back(owner.get());
+      return pointers;
+    }
+  } // namespace
+
   RodModel::RodModel(
     std::unique_ptr<RodNetwork>                     network,
     std::vector<std::shared_ptr<const RodMaterial>> rod_materials,
@@ -34,24 +48,16 @@ namespace rodnet
     for (unsigned int r = 0; r < rods.size(); ++r)
       if (materials[r] != nullptr && materials[r]->developable_ribbon())
         network_->set_developable(r);
-    std::vector<const HingeKernel *>    rod_kernels;
-    std::vector<const JunctionKernel *> rod_junction_kernels;
-    for (const Rod &rod : rods)
-      {
-        kernels.push_back(create_hinge_kernel(rod.hinge_kernel));
-        rod_kernels.push_back(kernels.back().get());
-        junction_kernels.push_back(
-          std::make_unique<JunctionKernel>(rod.hinge_kernel, ghost_spin));
-        rod_junction_kernels.push_back(junction_kernels.back().get());
-      }
+    create_kernels(ghost_spin);
     layout_ = std::make_unique<DofLayout>(*network_);
     // Every DoF until finalize() is told which this process owns: vectors
     // made before it (the reference frame of a clamp) must hold them all.
-    owned_dofs     = dealii::complete_index_set(layout_->n_dofs());
-    configuration_ = std::make_unique<Configuration>(*network_,
-                                                     *layout_,
-                                                     rod_kernels,
-                                                     rod_junction_kernels);
+    owned_dofs = dealii::complete_index_set(layout_->n_dofs());
+    configuration_ =
+      std::make_unique<Configuration>(*network_,
+                                      *layout_,
+                                      raw_pointers(kernels),
+                                      raw_pointers(junction_kernels));
     families.push_back(
       std::make_unique<HingeFamily>(*layout_, kernels, materials));
     families.push_back(
@@ -59,7 +65,23 @@ namespace rodnet
     families.push_back(std::make_unique<StretchFamily>(*layout_, materials));
 
     history = InternalVariables(families);
+    add_junction_supports();
+  }
 
+  void
+  RodModel::create_kernels(const GhostSpin ghost_spin)
+  {
+    for (const Rod &rod : network_->rods())
+      {
+        kernels.push_back(create_hinge_kernel(rod.hinge_kernel));
+        junction_kernels.push_back(
+          std::make_unique<JunctionKernel>(rod.hinge_kernel, ghost_spin));
+      }
+  }
+
+  void
+  RodModel::add_junction_supports()
+  {
     // Supports that junctions imply; a prescribed displacement at their
     // vertex moves them.
     const auto &junctions = network_->junctions();

@@ -687,6 +687,17 @@ namespace rodnet
       TimeFunction                rotation_in_time    = {};
     };
 
+    /// The hinge kernel and the junction kernel of each rod, after the
+    /// rods' kernel names (constructor).
+    void
+    create_kernels(GhostSpin ghost_spin);
+
+    /// The supports that the junctions imply (constructor): the position
+    /// of a clamped or welded-and-pinned junction, the rotation of a
+    /// clamped one.
+    void
+    add_junction_supports();
+
     /// A support called @p name of the masked components of @p vertex,
     /// held at @p displacement (at load factor 1) or, if it @p yields, at
     /// the value of any other support there.

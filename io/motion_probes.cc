@@ -56,44 +56,44 @@ namespace rodnet
       return probe_component(component);
     }
 
-    /// "kinetic energy": 1/2 v.Mv.
-    class KineticEnergyProbe : public MotionProbe
+    /// An energy of the Motion, in J: a probe without arguments, whose
+    /// syntax is its kind ("kinetic energy", the keyword it is registered
+    /// under and created by).
+    template <double (*energy)(const Motion &)>
+    class EnergyProbe : public MotionProbe
     {
     public:
-      KineticEnergyProbe(const ProbeWords &words, const ModelBase &)
-          : MotionProbe(words, "J", [](const Motion &m) {
-            return m.kinetic_energy;
-          })
+      EnergyProbe(const ProbeWords &words, const ModelBase &)
+          : MotionProbe(words, "J", energy)
       {
-        require_probe_arguments(words, 0, "kinetic energy");
+        require_probe_arguments(words, 0, words.kind);
       }
     };
+
+    /// "kinetic energy": 1/2 v.Mv.
+    double
+    kinetic_energy_of(const Motion &m)
+    {
+      return m.kinetic_energy;
+    }
 
     /// "potential energy": Pi, stored energy minus the dead loads' work.
-    class PotentialEnergyProbe : public MotionProbe
+    double
+    potential_energy_of(const Motion &m)
     {
-    public:
-      PotentialEnergyProbe(const ProbeWords &words, const ModelBase &)
-          : MotionProbe(words, "J", [](const Motion &m) {
-            return m.potential_energy;
-          })
-      {
-        require_probe_arguments(words, 0, "potential energy");
-      }
-    };
+      return m.potential_energy;
+    }
 
     /// "total energy": 1/2 v.Mv + Pi.
-    class TotalEnergyProbe : public MotionProbe
+    double
+    total_energy_of(const Motion &m)
     {
-    public:
-      TotalEnergyProbe(const ProbeWords &words, const ModelBase &)
-          : MotionProbe(words, "J", [](const Motion &m) {
-            return m.kinetic_energy + m.potential_energy;
-          })
-      {
-        require_probe_arguments(words, 0, "total energy");
-      }
-    };
+      return m.kinetic_energy + m.potential_energy;
+    }
+
+    using KineticEnergyProbe   = EnergyProbe<kinetic_energy_of>;
+    using PotentialEnergyProbe = EnergyProbe<potential_energy_of>;
+    using TotalEnergyProbe     = EnergyProbe<total_energy_of>;
 
     /// "linear momentum <x|y|z>": a component of the sum of M v.
     class LinearMomentumProbe : public MotionProbe

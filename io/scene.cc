@@ -84,6 +84,45 @@ namespace rodnet
       return mask;
     }
 
+    /// The components of a prescribed displacement that an item gives and
+    /// their values.
+    struct DisplacementComponents
+    {
+      std::array<bool, 3> mask{{false, false, false}};
+      Vector3             value = Vector3::Zero();
+    };
+
+    /// Parses "x=<dx> y=<dy> ..." of @p entry.
+    DisplacementComponents
+    parse_displacement(const std::string &text, const std::string &entry)
+    {
+      DisplacementComponents d;
+      std::istringstream     words(text);
+      std::string            w;
+      while (words >> w)
+        {
+          const auto eq = w.find('=');
+          try
+            {
+              if (eq != 1 || (w[0] != 'x' && w[0] != 'y' && w[0] != 'z'))
+                throw std::invalid_argument("");
+              std::size_t  used  = 0;
+              const double value = std::stod(w.substr(2), &used);
+              if (used != w.size() - 2 || !std::isfinite(value))
+                throw std::invalid_argument("");
+              d.mask[w[0] - 'x']  = true;
+              d.value[w[0] - 'x'] = value;
+            }
+          catch (const std::exception &)
+            {
+              throw std::invalid_argument("entry \"" + entry + "\": \"" + w +
+                                          "\" should read x=<value>, "
+                                          "y=<value> or z=<value>");
+            }
+        }
+      return d;
+    }
+
     /// Parses "fx, fy, fz".
     Vector3
     parse_force(const std::string &text, const std::string &entry)
@@ -121,6 +160,75 @@ namespace rodnet
                              dealii::Utilities::trim(item.substr(colon + 1)));
         }
       return items;
+    }
+
+    /// The entries "Point forces", "Moments" and "Distributed force" of
+    /// the subsection Loads.
+    void
+    declare_forces_and_moments(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Point forces",
+                        "",
+                        Anything(),
+                        "Dead forces at load factor 1: \"<vertex>: fx, fy, fz; "
+                        "...\". [N]");
+      prm.declare_entry("Moments",
+                        "",
+                        Anything(),
+                        "Moments about fixed axes at load factor 1: "
+                        "\"<where>: <ax>,<ay>,<az> <M>; ...\", where is a "
+                        "junction with a free rotation or any vertex that no "
+                        "clamp holds (a rotation handle there). [N m]");
+      prm.declare_entry("Distributed force",
+                        "0, 0, 0",
+                        vector_pattern(),
+                        "Dead force per unit undeformed length on every rod at "
+                        "load factor 1. [N/m]");
+    }
+
+    /// The entries of the subsection Loads that give the weight: "Gravity",
+    /// "Mass per length" and "Rigid bodies".
+    void
+    declare_weight(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Gravity",
+                        "0, 0, 0",
+                        vector_pattern(),
+                        "Gravitational acceleration; the weight per length of "
+                        "a rod is its material's \"Mass per length\" (or "
+                        "rho A) times this. [m/s^2]");
+      prm.declare_entry("Mass per length",
+                        "0",
+                        Double(0),
+                        "The \"Mass per length\" of materials giving none "
+                        "(one given must agree); 0: not given. [kg/m]");
+      prm.declare_entry("Rigid bodies",
+                        "",
+                        Anything(),
+                        "\"<vertex>: mass <m> [inertia <j>|<J_t>,<J_p>] "
+                        "[offset <c>]; ...\" (doc/dynamics.md). [kg, kg m^2, "
+                        "m]");
+    }
+
+    /// The subsection Imperfections of Loads.
+    void
+    declare_imperfections(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Imperfections");
+      prm.declare_entry("Point forces",
+                        "",
+                        Anything(),
+                        "Small forces, as Loads/Point forces. [N]");
+      prm.declare_entry("Moments",
+                        "",
+                        Anything(),
+                        "Small moments, as Loads/Moments. [N m]");
+      prm.declare_entry("Magnitude",
+                        "held",
+                        dealii::Patterns::Selection("held|ramped"),
+                        "held: full from the first step on; ramped: scaled by "
+                        "the load factor. [-]");
+      prm.leave_subsection();
     }
 
     /// The junctions of @p network that tie rod ends (not the rotation
@@ -224,40 +332,8 @@ namespace rodnet
       Integer(1),
       "Number of equal load steps from load factor 0 to 1, at most "
       "100000; every load and prescribed displacement is ramped. [-]");
-    prm.declare_entry("Point forces",
-                      "",
-                      Anything(),
-                      "Dead forces at load factor 1: \"<vertex>: fx, fy, fz; "
-                      "...\". [N]");
-    prm.declare_entry("Moments",
-                      "",
-                      Anything(),
-                      "Moments about fixed axes at load factor 1: "
-                      "\"<where>: <ax>,<ay>,<az> <M>; ...\", where is a "
-                      "junction with a free rotation or any vertex that no "
-                      "clamp holds (a rotation handle there). [N m]");
-    prm.declare_entry("Distributed force",
-                      "0, 0, 0",
-                      vector_pattern(),
-                      "Dead force per unit undeformed length on every rod at "
-                      "load factor 1. [N/m]");
-    prm.declare_entry("Gravity",
-                      "0, 0, 0",
-                      vector_pattern(),
-                      "Gravitational acceleration; the weight per length of "
-                      "a rod is its material's \"Mass per length\" (or "
-                      "rho A) times this. [m/s^2]");
-    prm.declare_entry("Mass per length",
-                      "0",
-                      Double(0),
-                      "The \"Mass per length\" of materials giving none "
-                      "(one given must agree); 0: not given. [kg/m]");
-    prm.declare_entry("Rigid bodies",
-                      "",
-                      Anything(),
-                      "\"<vertex>: mass <m> [inertia <j>|<J_t>,<J_p>] "
-                      "[offset <c>]; ...\" (doc/dynamics.md). [kg, kg m^2, "
-                      "m]");
+    declare_forces_and_moments(prm);
+    declare_weight(prm);
     prm.declare_entry("Ramped natural shape",
                       "",
                       Anything(),
@@ -270,21 +346,7 @@ namespace rodnet
                       dealii::Patterns::Bool(),
                       "Forces and moments at full value at every load "
                       "factor, which ramps only the rest. [-]");
-    prm.enter_subsection("Imperfections");
-    prm.declare_entry("Point forces",
-                      "",
-                      Anything(),
-                      "Small forces, as Loads/Point forces. [N]");
-    prm.declare_entry("Moments",
-                      "",
-                      Anything(),
-                      "Small moments, as Loads/Moments. [N m]");
-    prm.declare_entry("Magnitude",
-                      "held",
-                      dealii::Patterns::Selection("held|ramped"),
-                      "held: full from the first step on; ramped: scaled by "
-                      "the load factor. [-]");
-    prm.leave_subsection();
+    declare_imperfections(prm);
     prm.leave_subsection();
   }
 
@@ -919,39 +981,15 @@ namespace rodnet
          split_items(prescribed_displacements,
                      "Supports/Prescribed displacements"))
       {
-        const std::string   entry = "Supports/Prescribed displacements";
-        std::array<bool, 3> mask{{false, false, false}};
-        Vector3             d = Vector3::Zero();
-        std::string         rest;
-        const TimeFunction  in_time = support_in_time(entry, v, values, rest);
-        std::istringstream  words(rest);
-        std::string         w;
-        while (words >> w)
-          {
-            const auto eq = w.find('=');
-            try
-              {
-                if (eq != 1 || (w[0] != 'x' && w[0] != 'y' && w[0] != 'z'))
-                  throw std::invalid_argument("");
-                std::size_t  used  = 0;
-                const double value = std::stod(w.substr(2), &used);
-                if (used != w.size() - 2 || !std::isfinite(value))
-                  throw std::invalid_argument("");
-                mask[w[0] - 'x'] = true;
-                d[w[0] - 'x']    = value;
-              }
-            catch (const std::exception &)
-              {
-                throw std::invalid_argument("entry \"" + entry + "\": \"" + w +
-                                            "\" should read x=<value>, "
-                                            "y=<value> or z=<value>");
-              }
-          }
+        const std::string  entry = "Supports/Prescribed displacements";
+        std::string        rest;
+        const TimeFunction in_time = support_in_time(entry, v, values, rest);
+        const DisplacementComponents d = parse_displacement(rest, entry);
         spec.fixed_components.push_back(
           {"Prescribed displacements: " + v + ": " + values,
            select_vertex(net, v, entry),
-           mask,
-           d,
+           d.mask,
+           d.value,
            in_time});
       }
   }

@@ -30,6 +30,13 @@ namespace rodnet
     inline const RodStiffness swing_stiffness{1e4, 1, 1, 1 / 1.3};
     inline const RodInertia   swing_inertia{1, 2e-4};
 
+    /// The linear elastic rod of swing_stiffness.
+    inline std::shared_ptr<const RodMaterial>
+    swing_elastic_rod()
+    {
+      return std::make_shared<LinearElasticRod>(swing_stiffness);
+    }
+
     /// First bending period of the Euler-Bernoulli cantilever (s).
     inline double
     cantilever_period()

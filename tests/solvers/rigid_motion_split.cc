@@ -4,38 +4,19 @@
 // a rigid step leaves nothing, also where a rotation is no motion of the
 // part (a straight rod about its line) and its column is rounding.
 #include <core/mass_matrix.h>
-#include <core/network_generators.h>
-#include <core/rod_generators.h>
-#include <core/rod_graph.h>
-#include <materials/linear_elastic_rod.h>
 #include <solvers/dof_roles.h>
 #include <solvers/rigid_motion_split.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
 #include <memory>
+#include <tests/common/free_frame.h>
+#include <tests/common/rod_models.h>
 
 namespace
 {
   using namespace rodnet;
-
-  const RodStiffness stiffness{1e6, 1e3, 1e3, 1e3};
-
-  /// The right-angle frame of leg 10 without its clamp, 6 segments a leg.
-  std::unique_ptr<RodModel>
-  free_frame()
-  {
-    RodGraph graph = network_generators::right_angle_frame(10);
-    graph.nodes[graph.node_index("clamp")].kind.reset();
-    BuiltNetwork built = build_rod_network(graph, 6, "simple");
-    auto         model = std::make_unique<RodModel>(
-      std::move(built.network),
-      std::vector<std::shared_ptr<const RodMaterial>>(
-        2,
-        std::make_shared<LinearElasticRod>(stiffness)));
-    model->finalize();
-    return model;
-  }
+  using namespace rodnet::testing;
 
   /// Resultant, moment of the positions' rows about the origin and moment
   /// of the twist rows (along the segments' tangents) of @p f at @p x.
@@ -66,7 +47,8 @@ namespace
 
   TEST(RigidMotionSplit, NoResultantNoMomentOnAFreeFrame)
   {
-    auto       model = free_frame();
+    // The free frame's loads are no part of M or of the split.
+    auto       model = free_frame(6).model;
     MatrixType mass;
     assemble_mass_matrix(*model,
                          {{1, 0.5}, {2, 0.3}},
@@ -100,15 +82,9 @@ namespace
   {
     // A straight free rod: no rotation about its line (the column is
     // rounding, 1e-36), which must not remove part of a translation.
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(1, 0, 0),
-                                          8),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    RodModel model(std::move(network),
-                   {std::make_shared<LinearElasticRod>(stiffness)});
+    const std::unique_ptr<RodModel> free_rod =
+      elastic_model(straight_network(8), frame_stiffness);
+    RodModel &model = *free_rod;
     model.finalize();
     MatrixType mass;
     assemble_mass_matrix(model, {{1, 2e-3}}, MassKind::consistent, mass);

@@ -13,10 +13,6 @@
 // translation of a stressed rod in equilibrium.
 #include <core/mass_matrix.h>
 #include <core/motion.h>
-#include <core/network_generators.h>
-#include <core/rod_generators.h>
-#include <core/rod_graph.h>
-#include <materials/linear_elastic_rod.h>
 #include <solvers/dof_roles.h>
 #include <solvers/solver_failure.h>
 #include <solvers/time_integrator.h>
@@ -27,6 +23,7 @@
 #include <iostream>
 #include <memory>
 #include <tests/common/free_frame.h>
+#include <tests/common/rod_models.h>
 #include <vector>
 
 namespace
@@ -191,17 +188,11 @@ namespace
   // rod; the fallback to w = M d keeps the translation.
   TEST(FreeFlight, StressedRodInTranslation)
   {
-    const double  eps = 1e-3, EA = frame_stiffness.EA;
-    const Vector3 v0(0.3, -0.4, 1.2);
-    auto          network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(1, 0, 0),
-                                          8),
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    RodModel                         model(std::move(network),
-                   {std::make_shared<LinearElasticRod>(frame_stiffness)});
+    const double                    eps = 1e-3, EA = frame_stiffness.EA;
+    const Vector3                   v0(0.3, -0.4, 1.2);
+    const std::unique_ptr<RodModel> rod =
+      elastic_model(straight_network(8), frame_stiffness);
+    RodModel                        &model = *rod;
     const std::vector<unsigned int> &chain = model.network().rods()[0].vertices;
     model.add_point_force(chain.front(), Vector3(-EA * eps, 0, 0));
     model.add_point_force(chain.back(), Vector3(EA * eps, 0, 0));

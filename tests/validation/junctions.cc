@@ -2,6 +2,7 @@
 // Kochmann section 3): a clamp by a junction against the clamp by two fixed
 // vertices, a cantilever bent into a circle by an end moment, the
 // right-angle frame of Fig. 3a and the windmill of Fig. 3b.
+#include <common/junction_examples.h>
 #include <common/solve_model.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
@@ -15,12 +16,6 @@ namespace
 {
   using namespace rodnet;
   using namespace rodnet::testing;
-
-  std::shared_ptr<const RodMaterial>
-  elastic(const double EA, const double EI, const double GJ)
-  {
-    return std::make_shared<LinearElasticRod>(RodStiffness{EA, EI, EI, GJ});
-  }
 
   class Junctions : public ::testing::TestWithParam<std::string>
   {
@@ -50,7 +45,8 @@ namespace
           network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
         const unsigned int handle =
           network->add_junction("tip", JunctionKind::welded, {{0, false}});
-        RodModel model(std::move(network), {elastic(1e6, EI, GJ)});
+        RodModel model(std::move(network),
+                       {isotropic_elastic_rod(1e6, EI, GJ)});
         if (!junction_clamp)
           model.clamp_end("clamp", 0, true);
         const unsigned int tip = model.network().named_vertex("tip");
@@ -91,7 +87,7 @@ namespace
     network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
     const unsigned int handle =
       network->add_junction("tip", JunctionKind::welded, {{0, false}});
-    RodModel model(std::move(network), {elastic(1e6, 1, 1)});
+    RodModel model(std::move(network), {isotropic_elastic_rod(1e6, 1, 1)});
     model.add_moment(handle, Vector3::UnitZ(), M_PI / 2);
     const VectorType u = solve(model, 10);
     const Vector3    tip =
@@ -104,38 +100,17 @@ namespace
     EXPECT_NEAR(tip[2], 0, 1e-9);
   }
 
-  /// The frame of Fig. 3a with @p n segments per leg: legs of length 1,
-  /// EI = 1, mu J = 2/3, A L^2/I = 400; returns the reaction force at the
-  /// tip when it is moved by @p uz out of plane in @p steps steps.
+  /// The reaction force at the tip of the frame of Fig. 3a
+  /// (fig3a_frame()) moved by @p uz out of plane in @p steps steps.
   double
   frame_force(const std::string &kernel,
               const unsigned int n,
               const double       uz,
               const unsigned int steps)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(1, 0, 0),
-                                          n),
-                     false,
-                     Vector3::UnitZ(),
-                     kernel);
-    network->add_rod(generators::straight(Vector3(1, 0, 0),
-                                          Vector3(1, 1, 0),
-                                          n),
-                     false,
-                     Vector3::UnitZ(),
-                     kernel);
-    network->add_junction("clamp", JunctionKind::clamped, {{0, true}});
-    network->add_junction("corner",
-                          JunctionKind::welded,
-                          {{0, false}, {1, true}});
-    const auto         material = elastic(400, 1, 2.0 / 3);
-    RodModel           model(std::move(network), {material, material});
-    const unsigned int tip = model.network().rods()[1].vertices.back();
-    model.fix_components("tip", tip, {{false, false, true}}, Vector3(0, 0, uz));
-    const VectorType u = solve(model, steps);
-    return model.reaction(model.support("tip"), u, 1.0)[2];
+    const std::unique_ptr<RodModel> model = fig3a_frame(kernel, n, uz);
+    const VectorType                u     = solve(*model, steps);
+    return model->reaction(model->support("tip"), u, 1.0)[2];
   }
 
   // Linear beam theory for the frame: bending of both legs and torsion of
@@ -171,53 +146,17 @@ namespace
     EXPECT_GT(force[2], 0.5);
   }
 
-  /// The windmill of Fig. 3b (shaft length 1 along z, blades of length 1/2
-  /// at 120 degrees in the plane z = 0, welded at the hub, blade tips
-  /// pinned, shaft top clamped and turned by @p twist about e_z in
-  /// @p steps steps); returns the moment about e_z at the top.
+  /// The moment about e_z at the top of the windmill of Fig. 3b
+  /// (fig3b_windmill()) turned by @p twist in @p steps steps.
   double
   windmill_moment(const std::string &kernel,
                   const unsigned int n,
                   const double       twist,
                   const unsigned int steps)
   {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod(generators::straight(Vector3(0, 0, 0),
-                                          Vector3(0, 0, 1),
-                                          2 * n),
-                     false,
-                     Vector3::UnitX(),
-                     kernel);
-    for (const double degrees : {90.0, 210.0, 330.0})
-      {
-        const double angle = degrees * M_PI / 180;
-        network->add_rod(generators::straight(
-                           Vector3(0, 0, 0),
-                           0.5 * Vector3(std::cos(angle), std::sin(angle), 0),
-                           n),
-                         false,
-                         Vector3::UnitZ(),
-                         kernel);
-      }
-    network->add_junction("hub",
-                          JunctionKind::welded,
-                          {{0, true}, {1, true}, {2, true}, {3, true}});
-    const unsigned int top =
-      network->add_junction("top", JunctionKind::clamped, {{0, false}});
-    // I = 1, E = 1, mu = E/3: shaft J = 200 I, A L_a^2/I = 400; blades
-    // J = I, A L_b^2/I = 100.
-    RodModel model(std::move(network),
-                   {elastic(400, 1, 200.0 / 3),
-                    elastic(400, 1, 1.0 / 3),
-                    elastic(400, 1, 1.0 / 3),
-                    elastic(400, 1, 1.0 / 3)});
-    for (unsigned int blade = 1; blade <= 3; ++blade)
-      model.fix_components("blade" + std::to_string(blade),
-                           model.network().rods()[blade].vertices.back(),
-                           {{true, true, true}});
-    model.prescribe_rotation(top, Vector3::UnitZ(), twist);
-    const VectorType u = solve(model, steps);
-    return model.reaction_moment(top, u, 1.0)[2];
+    const Fig3bWindmill windmill = fig3b_windmill(kernel, n, twist);
+    const VectorType    u        = solve(*windmill.model, steps);
+    return windmill.model->reaction_moment(windmill.top, u, 1.0)[2];
   }
 
   // Beam theory for the windmill as supported here: the shaft twists
