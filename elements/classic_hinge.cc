@@ -1,10 +1,11 @@
 #include <elements/classic_hinge.h>
 #include <elements/parallel_transport.h>
+#include <elements/reduced_hinge.templates.h>
 #include <elements/segment_kinematics.h>
 
 namespace rodnet
 {
-  namespace
+  namespace reduced
   {
     using namespace hinge_offsets;
 
@@ -30,12 +31,12 @@ namespace rodnet
      * dw^j = (w_1 d_1^j + w_2 d_2^j) / 2, since every term is linear in
      * them and in w_3.
      */
-    class ClassicKinematics
+    class ClassicHingeKinematics
     {
     public:
-      ClassicKinematics(const HingeVector    &dofs,
-                        const HingeReference &reference,
-                        const reduced::Needs  needs)
+      ClassicHingeKinematics(const HingeVector    &dofs,
+                             const HingeReference &reference,
+                             const reduced::Needs  needs)
           : segment{{{dofs.segment<3>(vertex) - dofs.segment<3>(prev_vertex),
                       dofs[prev_twist],
                       reference.frame_prev,
@@ -121,7 +122,7 @@ namespace rodnet
       /// The weighted quantities shared by the gradient and the Hessian.
       struct Weighted
       {
-        Weighted(const ClassicKinematics &k, const Vector3 &w)
+        Weighted(const ClassicHingeKinematics &k, const Vector3 &w)
         {
           for (unsigned int j = 0; j < 2; ++j)
             directors[j] = 0.5 * (w[0] * k.directors[j].col(0) +
@@ -260,7 +261,7 @@ namespace rodnet
       double                 chi;
       Vector3                binormal, mean_tangent;
     };
-  } // namespace
+  } // namespace reduced
 
 
   std::string
@@ -274,47 +275,14 @@ namespace rodnet
   ClassicHinge::strains(const HingeVector    &dofs,
                         const HingeReference &reference) const
   {
-    return ClassicKinematics(dofs, reference, reduced::Needs::weighted_gradient)
+    return reduced::ClassicHingeKinematics(dofs,
+                                           reference,
+                                           reduced::Needs::weighted_gradient)
       .kappa;
   }
 
 
-  void
-  ClassicHinge::evaluate(const HingeVector    &dofs,
-                         const HingeReference &reference,
-                         HingeStrains         &result,
-                         const bool            with_hessian) const
-  {
-    reduced::evaluate<ClassicKinematics>(dofs, reference, result, with_hessian);
-  }
-
-
-  void
-  ClassicHinge::evaluate_weighted(const HingeVector    &dofs,
-                                  const HingeReference &reference,
-                                  const StrainWeights  &weights,
-                                  HingeStrains         &result,
-                                  HingeMatrix          &weighted) const
-  {
-    reduced::evaluate_weighted<ClassicKinematics>(dofs,
-                                                  reference,
-                                                  weights,
-                                                  result,
-                                                  weighted);
-  }
-
-
-  Vector3
-  ClassicHinge::weighted_gradient(const HingeVector    &dofs,
-                                  const HingeReference &reference,
-                                  const StrainWeights  &weights,
-                                  HingeVector          &weighted) const
-  {
-    return reduced::weighted_gradient<ClassicKinematics>(dofs,
-                                                         reference,
-                                                         weights,
-                                                         weighted);
-  }
+  template class ReducedHinge<reduced::ClassicHingeKinematics>;
 
   RODNET_REGISTER_HINGE_KERNEL(
     ClassicHinge,

@@ -1,7 +1,7 @@
 #ifndef RODNET_ELEMENTS_CLASSIC_HINGE_H
 #define RODNET_ELEMENTS_CLASSIC_HINGE_H
 
-#include <elements/hinge_kernel.h>
+#include <elements/reduced_hinge.h>
 
 namespace rodnet
 {
@@ -26,7 +26,12 @@ namespace rodnet
    * tests/elements/hinge_derivatives.cc checks them against finite
    * differences and against automatic differentiation of eqs. 11-12.
    */
-  class ClassicHinge : public HingeKernel
+  namespace reduced
+  {
+    class ClassicHingeKinematics;
+  }
+
+  class ClassicHinge : public ReducedHinge<reduced::ClassicHingeKinematics>
   {
   public:
     std::string
@@ -35,28 +40,6 @@ namespace rodnet
     Vector3
     strains(const HingeVector    &dofs,
             const HingeReference &reference) const override;
-
-    void
-    evaluate(const HingeVector    &dofs,
-             const HingeReference &reference,
-             HingeStrains         &result,
-             bool                  with_hessian) const override;
-
-    /// One evaluation with the weighted directors (three times less work
-    /// than three Hessians).
-    void
-    evaluate_weighted(const HingeVector    &dofs,
-                      const HingeReference &reference,
-                      const StrainWeights  &weights,
-                      HingeStrains         &result,
-                      HingeMatrix          &weighted) const override;
-
-    /// The contraction without the 3 x 11 strain gradient.
-    Vector3
-    weighted_gradient(const HingeVector    &dofs,
-                      const HingeReference &reference,
-                      const StrainWeights  &weights,
-                      HingeVector          &weighted) const override;
   };
 } // namespace rodnet
 

@@ -1,3 +1,4 @@
+#include <elements/reduced_hinge.templates.h>
 #include <elements/segment_kinematics.h>
 #include <elements/simple_hinge.h>
 
@@ -46,7 +47,7 @@ namespace rodnet
   }
 
 
-  namespace
+  namespace reduced
   {
     /**
      * One evaluation of the measure: both segments' kinematics, the
@@ -54,11 +55,11 @@ namespace rodnet
      * from which the gradient and any weighted sum of the strains'
      * Hessians follow.
      */
-    struct HingeKinematics
+    struct SimpleHingeKinematics
     {
-      HingeKinematics(const HingeVector    &dofs,
-                      const HingeReference &reference,
-                      const reduced::Needs  needs)
+      SimpleHingeKinematics(const HingeVector    &dofs,
+                            const HingeReference &reference,
+                            const reduced::Needs  needs)
           : prev(dofs.segment<3>(vertex) - dofs.segment<3>(prev_vertex),
                  dofs[prev_twist],
                  reference.frame_prev,
@@ -160,45 +161,10 @@ namespace rodnet
       reduced::Jacobian dq;
       Matrix3           W;
     };
-  } // namespace
+  } // namespace reduced
 
 
-  void
-  SimpleHinge::evaluate(const HingeVector    &dofs,
-                        const HingeReference &reference,
-                        HingeStrains         &result,
-                        const bool            with_hessian) const
-  {
-    reduced::evaluate<HingeKinematics>(dofs, reference, result, with_hessian);
-  }
-
-
-  void
-  SimpleHinge::evaluate_weighted(const HingeVector    &dofs,
-                                 const HingeReference &reference,
-                                 const StrainWeights  &weights,
-                                 HingeStrains         &result,
-                                 HingeMatrix          &weighted) const
-  {
-    reduced::evaluate_weighted<HingeKinematics>(dofs,
-                                                reference,
-                                                weights,
-                                                result,
-                                                weighted);
-  }
-
-
-  Vector3
-  SimpleHinge::weighted_gradient(const HingeVector    &dofs,
-                                 const HingeReference &reference,
-                                 const StrainWeights  &weights,
-                                 HingeVector          &weighted) const
-  {
-    return reduced::weighted_gradient<HingeKinematics>(dofs,
-                                                       reference,
-                                                       weights,
-                                                       weighted);
-  }
+  template class ReducedHinge<reduced::SimpleHingeKinematics>;
 
   RODNET_REGISTER_HINGE_KERNEL(SimpleHinge,
                                "simple",

@@ -1,7 +1,7 @@
 #ifndef RODNET_ELEMENTS_SIMPLE_HINGE_H
 #define RODNET_ELEMENTS_SIMPLE_HINGE_H
 
-#include <elements/hinge_kernel.h>
+#include <elements/reduced_hinge.h>
 
 namespace rodnet
 {
@@ -19,7 +19,12 @@ namespace rodnet
    *
    * Gradient and Hessians are the closed forms of section 3 (eqs. 3.1-3.7).
    */
-  class SimpleHinge : public HingeKernel
+  namespace reduced
+  {
+    struct SimpleHingeKinematics;
+  }
+
+  class SimpleHinge : public ReducedHinge<reduced::SimpleHingeKinematics>
   {
   public:
     std::string
@@ -28,29 +33,6 @@ namespace rodnet
     Vector3
     strains(const HingeVector    &dofs,
             const HingeReference &reference) const override;
-
-    void
-    evaluate(const HingeVector    &dofs,
-             const HingeReference &reference,
-             HingeStrains         &result,
-             bool                  with_hessian) const override;
-
-    /// One evaluation, the weighted sum formed inside eqs. 3.6-3.7 (three
-    /// times less work than three Hessians).
-    void
-    evaluate_weighted(const HingeVector    &dofs,
-                      const HingeReference &reference,
-                      const StrainWeights  &weights,
-                      HingeStrains         &result,
-                      HingeMatrix          &weighted) const override;
-
-    /// The contraction without the 3 x 11 strain gradient (eq. 3.6 seen
-    /// through the weights).
-    Vector3
-    weighted_gradient(const HingeVector    &dofs,
-                      const HingeReference &reference,
-                      const StrainWeights  &weights,
-                      HingeVector          &weighted) const override;
   };
 } // namespace rodnet
 

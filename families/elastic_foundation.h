@@ -57,7 +57,8 @@ namespace rodnet
     }
 
     void
-    get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const override;
+    get_dofs(unsigned int                   s,
+             std::vector<global_dof_index> &dofs) const override;
 
     void
     evaluate(unsigned int        s,

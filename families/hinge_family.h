@@ -1,67 +1,35 @@
 #ifndef RODNET_FAMILIES_HINGE_FAMILY_H
 #define RODNET_FAMILIES_HINGE_FAMILY_H
 
-#include <core/element_family.h>
+#include <core/configuration.h>
+#include <core/dof_layout.h>
 #include <elements/hinge_kernel.h>
-#include <materials/rod_material.h>
 
-#include <memory>
-#include <vector>
+#include <families/bending_family.h>
 
 namespace rodnet
 {
-  template <class Kernel, class Reference>
-  struct BendingStencil;
-
   /**
    * The hinges of every rod (Korner et al. eq. 2.10): bending and twisting
-   * of two consecutive segments, measured by the rod's hinge kernel and
-   * priced by its material, with the natural strains of the Configuration.
-   * Internal variables: the material's hinge variables, per hinge.
+   * of two consecutive segments, with the natural strains of the
+   * Configuration. The stencil kind of HingeFamily.
    */
-  class HingeFamily : public ElementFamily
+  struct HingeStencils
   {
-  public:
-    /// Per rod: @p kernels and @p materials (must outlive the family).
-    HingeFamily(const DofLayout                                       &layout,
-                const std::vector<std::unique_ptr<HingeKernel>>       &kernels,
-                const std::vector<std::shared_ptr<const RodMaterial>> &materials);
+    using Kernel    = HingeKernel;
+    using Reference = HingeReference;
 
-    std::string
-    name() const override
-    {
-      return "hinges";
-    }
+    static constexpr const char *name = "hinges";
 
-    unsigned int
-    n_stencils() const override;
-
-    void
-    get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const override;
-
-    void
-    evaluate(unsigned int        s,
-             const StencilState &state,
-             Derivatives         derivatives,
-             LocalContribution  &local) const override;
-
-    unsigned int
-    n_internal_variables(unsigned int s) const override;
-
-    void
-    update_internal_variables(unsigned int        s,
-                              const StencilState &state,
-                              double             *updated) const override;
-
-  private:
-    /// Stencil @p s at @p state.
-    BendingStencil<HingeKernel, HingeReference>
-    stencil_at(unsigned int s, const StencilState &state) const;
-
-    const DofLayout                                       &layout;
-    const std::vector<std::unique_ptr<HingeKernel>>       &kernels;
-    const std::vector<std::shared_ptr<const RodMaterial>> &materials;
+    static constexpr auto stencils        = &DofLayout::hinges;
+    static constexpr auto dofs            = &Configuration::hinge_dofs;
+    static constexpr auto reference       = &Configuration::hinge_reference;
+    static constexpr auto voronoi_length  = &Configuration::voronoi_length;
+    static constexpr auto natural_strains = &Configuration::natural_strains;
   };
+
+  /// The hinge family: bending and twisting of every rod's hinges.
+  using HingeFamily = BendingFamily<HingeStencils>;
 } // namespace rodnet
 
 #endif
