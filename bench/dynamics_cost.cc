@@ -27,7 +27,10 @@
 // Usage: dynamics_cost [--study cost,period] [--cells 10,20,35]
 // [--period-cells 10,35] [--steps 10] [--repeats 5] [--rotary-inertia auto|0]
 // [--steps-per-period 20] [--amplitude 1e-4]
-// [--integrators "backward euler,newmark,midpoint"] [--threads 1].
+// [--integrators "backward euler,newmark,midpoint"] [--threads 1]
+// [--cpu-clock 0|1]: with --cpu-clock 1 the cost study times the process's
+// CPU time instead of the wall time (one thread: the same work, without the
+// waits of a machine shared with other jobs).
 #include <deal.II/base/parameter_handler.h>
 
 #include <core/mass_matrix.h>
@@ -39,6 +42,7 @@
 #include <bench/timing.h>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <sstream>
 
 using namespace rodnet;
@@ -54,11 +58,13 @@ namespace
     double       amplitude        = 1e-4;
     double       tolerance        = 0; ///< 0: the scene's default
     /// TimeIntegrator::Parameters::modified_newton (0: full Newton).
-    bool        modified_newton = true;
-    std::string studies         = "cost,period";
-    std::string cells           = "10,20,35";
-    std::string period_cells    = "10,35";
-    std::string integrators     = "backward euler,newmark,midpoint";
+    bool modified_newton = true;
+    /// Time the cost study by the process's CPU time (else wall time).
+    bool        cpu_clock    = false;
+    std::string studies      = "cost,period";
+    std::string cells        = "10,20,35";
+    std::string period_cells = "10,35";
+    std::string integrators  = "backward euler,newmark,midpoint";
     /// The scene's "Rotary inertia per length" (auto: half the twist
     /// inertia; 0: none), to price the rotary inertia of the sections.
     std::string rotary_inertia = "auto";
@@ -73,6 +79,7 @@ namespace
               bench::real("--amplitude", amplitude),
               bench::real("--tolerance", tolerance),
               bench::flag("--modified-newton", modified_newton),
+              bench::flag("--cpu-clock", cpu_clock),
               bench::text("--study", studies),
               bench::text("--cells", cells),
               bench::text("--period-cells", period_cells),
@@ -80,6 +87,20 @@ namespace
               bench::text("--rotary-inertia", rotary_inertia)};
     }
   };
+
+  /// Whether read_clock() reads the CPU time (--cpu-clock).
+  bool cpu_clock = false;
+
+  /// Seconds, wall or the process's CPU time (--cpu-clock).
+  double
+  read_clock()
+  {
+    if (!cpu_clock)
+      return bench::now();
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+  }
 
   /// The items of the comma-separated @p list.
   std::vector<std::string>
@@ -213,27 +234,29 @@ namespace
     model.initialize_matrix(K);
     VectorType                r = model.create_vector(), du = r;
     TangentFactorizationCache cache;
-    std::vector<double>       parts[4];
-    const auto                whole = bench::time_repeats(repeats, [&] {
-      const double t0 = bench::now();
-      model.assemble(u, 0.0, &r, nullptr, true);
-      const double t1 = bench::now();
-      model.assemble(u, 0.0, nullptr, &K, true);
-      const double t2     = bench::now();
-      const auto   solver = cache.get(K, "auto");
-      solver->factorize();
-      const double t3 = bench::now();
-      solver->solve(r, du);
-      const double t4 = bench::now();
-      parts[0].push_back(t1 - t0);
-      parts[1].push_back(t2 - t1);
-      parts[2].push_back(t3 - t2);
-      parts[3].push_back(t4 - t3);
-    });
-    // The warm-up's parts are the first of each.
+    std::vector<double>       parts[5];
+    for (unsigned int k = 0; k <= repeats; ++k)
+      {
+        const double t0 = read_clock();
+        model.assemble(u, 0.0, &r, nullptr, true);
+        const double t1 = read_clock();
+        model.assemble(u, 0.0, nullptr, &K, true);
+        const double t2     = read_clock();
+        const auto   solver = cache.get(K, "auto");
+        solver->factorize();
+        const double t3 = read_clock();
+        solver->solve(r, du);
+        const double t4 = read_clock();
+        parts[0].push_back(t1 - t0);
+        parts[1].push_back(t2 - t1);
+        parts[2].push_back(t3 - t2);
+        parts[3].push_back(t4 - t3);
+        parts[4].push_back(t4 - t0);
+      }
+    // The first iteration is a warm-up (the symbolic analysis).
     for (auto &p : parts)
       p.erase(p.begin());
-    return {bench::statistics(whole),
+    return {bench::statistics(parts[4]),
             bench::statistics(parts[0]),
             bench::statistics(parts[1]),
             bench::statistics(parts[2]),
@@ -279,7 +302,7 @@ namespace
     VectorType     u = u0, v = model->create_vector();
     TimeIntegrator stepper(*model, scene.inertia(), p);
     const double   start = bench::now();
-    double         last  = start;
+    double         last  = read_clock();
     try
       {
         stepper.run(u,
@@ -287,7 +310,7 @@ namespace
                     [&](const TimeIntegrator::StepInfo &info,
                         const VectorType               &x,
                         const VectorType &) {
-                      const double now = bench::now();
+                      const double now = read_clock();
                       run.step_time.push_back(now - last);
                       run.iterations.push_back(info.iterations);
                       run.time.push_back(info.time);
@@ -316,11 +339,13 @@ namespace
   void
   cost_study(const Options &options)
   {
+    cpu_clock = options.cpu_clock;
     std::printf("cells  DoFs     integrator      Newton iteration s      "
                 "time step s (median, min-max)   ratio  iterations/step\n");
     for (const std::string &c : items(options.cells))
       {
-        const Scene      scene = lattice_scene(std::stoul(c), options.rotary_inertia);
+        const Scene scene =
+          lattice_scene(std::stoul(c), options.rotary_inertia);
         const auto       model = scene.build_model();
         const Mode       mode  = lowest_mode(*model, scene.inertia());
         const double     h  = 2 * M_PI / mode.omega / options.steps_per_period;
@@ -386,7 +411,8 @@ namespace
                 "min-max)\n");
     for (const std::string &c : items(options.period_cells))
       {
-        const Scene      scene  = lattice_scene(std::stoul(c), options.rotary_inertia);
+        const Scene scene =
+          lattice_scene(std::stoul(c), options.rotary_inertia);
         const auto       model  = scene.build_model();
         const Mode       mode   = lowest_mode(*model, scene.inertia());
         const double     period = 2 * M_PI / mode.omega;

@@ -8,6 +8,7 @@ namespace rodnet
   {
     point = system.model.create_vector();
     for (VectorType *v : {&gradient_m,
+                          &gradient_point,
                           &gradient_y,
                           &mass_difference,
                           &direction,
@@ -23,6 +24,7 @@ namespace rodnet
   {
     start_energy =
       system.model.assemble(step.u, step.load_factor, nullptr, nullptr);
+    gradient_known   = false;
     problem.residual = [this, &step](const VectorType &y, VectorType &r) {
       residual(step, y, r);
     };
@@ -90,11 +92,20 @@ namespace rodnet
     // DoFs move.
     RodModel &model = system.model;
     model.assemble(point, step.load_factor, &r, nullptr, false);
+    keep_gradient(r);
     const double energy = model.assemble(y, step.load_factor, nullptr, nullptr);
     const double coefficient = correction_terms(step, y, r, energy).first;
     model.constraints().set_zero(r);
     r.add(coefficient, direction);
     add_inertia(step, y, &r);
+  }
+
+  void
+  MidpointScheme::keep_gradient(const VectorType &gradient)
+  {
+    gradient_m     = gradient;
+    gradient_point = point;
+    gradient_known = true;
   }
 
   void
@@ -119,7 +130,9 @@ namespace rodnet
     // Newton tolerance.
     set_midpoint(step, y);
     RodModel &model = system.model;
-    model.assemble(point, step.load_factor, &gradient_m, nullptr, false);
+    // Newton asks for the tangent where it has just evaluated the residual.
+    if (!gradient_known || !(point == gradient_point))
+      model.assemble(point, step.load_factor, &gradient_m, nullptr, false);
     const double energy =
       model.assemble(y, step.load_factor, &gradient_y, nullptr, false);
     const auto [coefficient, norm2] =

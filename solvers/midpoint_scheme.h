@@ -84,6 +84,11 @@ namespace rodnet
     void
     set_midpoint(const StepStart &step, const VectorType &y);
 
+    /// Keeps grad Pi(m) of the residual at m = point for the tangent
+    /// there, which then does not assemble it again.
+    void
+    keep_gradient(const VectorType &gradient);
+
     /// The correction coefficient and w.d at @p y, from the @p gradient at
     /// the midpoint and the @p energy at @p y; leaves d_f in difference,
     /// M d_f in mass_difference and the correction's direction w in
@@ -108,6 +113,9 @@ namespace rodnet
     RigidMotionSplit rigid_split;
     VectorType       point, gradient_m, gradient_y, mass_difference, direction;
     VectorType       rank_one_a, rank_one_b;
+    /// The midpoint of gradient_m, where gradient_known (this step's).
+    VectorType gradient_point;
+    bool       gradient_known = false;
   };
 } // namespace rodnet
 

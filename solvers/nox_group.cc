@@ -17,6 +17,10 @@ namespace rodnet
     bool factorized = false;
     /// The rank-one part a b^T of the Jacobian (if the problem has one).
     NoxVector::VectorType rank_one_a, rank_one_b;
+    /// K^-1 a, where rank_one_solved: the Sherman-Morrison solve that
+    /// modified Newton's iterations share with the first.
+    NoxVector::VectorType rank_one_solution;
+    bool                  rank_one_solved = false;
     /// The group whose Jacobian the tangent holds.
     const NoxGroup *owner = nullptr;
     std::string     failure;
@@ -33,6 +37,8 @@ namespace rodnet
                           false,
                           {},
                           {},
+                          {},
+                          false,
                           nullptr,
                           {}})
       , x(Teuchos::rcp(new NoxVector(x)))
@@ -44,6 +50,7 @@ namespace rodnet
       {
         shared->rank_one_a.reinit(x);
         shared->rank_one_b.reinit(x);
+        shared->rank_one_solution.reinit(x);
       }
   }
 
@@ -180,8 +187,9 @@ namespace rodnet
         jacobian_valid = true;
         return Ok;
       }
-    shared->owner      = this;
-    shared->factorized = false;
+    shared->owner           = this;
+    shared->factorized      = false;
+    shared->rank_one_solved = false;
     try
       {
         shared->problem.tangent(x->values(), shared->tangent);
@@ -287,10 +295,14 @@ namespace rodnet
         shared->factorization->solve(in, out);
         if (!shared->problem.rank_one)
           return Ok;
-        const auto           &a = shared->rank_one_a;
-        const auto           &b = shared->rank_one_b;
-        NoxVector::VectorType y(a);
-        shared->factorization->solve(a, y);
+        const auto &b = shared->rank_one_b;
+        const auto &y = shared->rank_one_solution;
+        if (!shared->rank_one_solved)
+          {
+            shared->factorization->solve(shared->rank_one_a,
+                                         shared->rank_one_solution);
+            shared->rank_one_solved = true;
+          }
         const double denominator = 1 + b * y;
         if (!(std::abs(denominator) > 0) || !std::isfinite(denominator))
           {

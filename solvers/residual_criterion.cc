@@ -111,7 +111,12 @@ namespace rodnet
     VectorType loaded  = model.create_vector();
     VectorType applied = model.create_vector();
     model.assemble(u, load_factor, &loaded, nullptr, false, extra_force);
-    model.assemble(u, 0.0, &applied, nullptr, false);
+    // At a zero load factor without extra force both are one assembly (a
+    // free vibration's every step): its copy gives the same difference.
+    if (load_factor == 0 && extra_force == nullptr)
+      applied = loaded;
+    else
+      model.assemble(u, 0.0, &applied, nullptr, false);
     applied -= loaded;
 
     const DofLayout &layout         = model.layout();

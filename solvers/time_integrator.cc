@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -46,6 +47,54 @@ namespace rodnet
         throw std::invalid_argument(
           "time stepping: damping acts on velocities, which the " +
           scheme.name() + " integrator does not have; use a dynamic one");
+    }
+
+    /// The residual (and potential, where the problem has one) of a
+    /// problem at one state.
+    struct Evaluation
+    {
+      VectorType x, residual;
+      double     energy = 0;
+    };
+
+    /**
+     * Evaluates @p problem at @p x and makes its functions give those
+     * values at x from then on without evaluating again: a step's
+     * tolerance needs the residual of the predictor, which NOX evaluates
+     * first too (one residual assembly a step; two for the midpoint rule).
+     * The functions are deterministic, so what they give is what they
+     * would compute; any other state is evaluated as before.
+     */
+    std::shared_ptr<const Evaluation>
+    evaluate_once(NewtonSolver::Problem &problem, const VectorType &x)
+    {
+      auto known = std::make_shared<Evaluation>();
+      known->x   = x;
+      known->residual.reinit(x);
+      if (problem.energy)
+        {
+          known->energy = problem.energy(x, &known->residual);
+          problem.set_potential([potential = problem.energy,
+                                 known](const VectorType &y, VectorType *r) {
+            if (!(y == known->x))
+              return potential(y, r);
+            if (r != nullptr)
+              *r = known->residual;
+            return known->energy;
+          });
+        }
+      else
+        {
+          problem.residual(x, known->residual);
+          problem.residual = [residual = problem.residual,
+                              known](const VectorType &y, VectorType &r) {
+            if (y == known->x)
+              r = known->residual;
+            else
+              residual(y, r);
+          };
+        }
+      return known;
     }
   } // namespace
 
@@ -533,11 +582,11 @@ namespace rodnet
           }
         // The scales of statics, or the out-of-balance force of the
         // predictor where inertia is what the residual balances.
-        VectorType r = model.create_vector();
-        problem.residual(x, r);
+        const std::shared_ptr<const Evaluation> predictor =
+          evaluate_once(problem, x);
         const ResidualParts loads =
           criterion.judging_scale(x, start.load_factor, noise.floor);
-        const ResidualParts predicted = criterion.norms(x, r);
+        const ResidualParts predicted = criterion.norms(x, predictor->residual);
         const double        length    = model.length_scale();
         const double        force =
           std::max({loads.force, predicted.force, predicted.moment / length});

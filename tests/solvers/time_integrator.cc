@@ -2,7 +2,8 @@
 // stress relaxation of a standard-linear-solid bar held at a prescribed
 // elongation against E(t) = E1 + E2 exp(-t / t_r) (within the first-order
 // error of the backward-Euler update), Newton with a dense rank-one
-// Jacobian part, modified Newton (one tangent per solve),
+// Jacobian part (with modified Newton too), modified Newton (one tangent
+// per solve), the model assemblies of a dynamic step,
 // the parameter checks, and a failed run that reports its last state
 // instead of NaN.
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -16,8 +17,10 @@
 #include <materials/standard_linear_solid.h>
 #include <solvers/time_integrator.h>
 
+#include <atomic>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <limits>
 #include <vector>
 
 namespace
@@ -111,6 +114,77 @@ namespace
     EXPECT_GT(inexact.iterations, 1u);
   }
 
+  // f(y)_i = (2 + i) y_i + y_i^3 / 20 + a_i (b.y) - c_i, Jacobian
+  // diag(2 + i + 3 y_i^2 / 20) + a b^T: Newton with the rank-one part by
+  // Sherman-Morrison takes the iterates of Newton on the dense Jacobian,
+  // in full Newton (K^-1 a solved anew at every iterate) as in modified
+  // Newton (K^-1 a of the first iterate, solved once, for all).
+  TEST(NewtonSolver, RankOneSolveFollowsTheTangent)
+  {
+    const unsigned int             n   = 6;
+    const dealii::IndexSet         all = dealii::complete_index_set(n);
+    VectorType                     a(all, MPI_COMM_WORLD), b = a, c = a;
+    dealii::DynamicSparsityPattern diagonal(n, n), dense(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        a[i] = 1.0 + i;
+        b[i] = 0.5 - 0.1 * i;
+        c[i] = 3 * std::sin(1.0 + i);
+        diagonal.add(i, i);
+        for (unsigned int j = 0; j < n; ++j)
+          dense.add(i, j);
+      }
+    MatrixType sparse_tangent, dense_tangent;
+    sparse_tangent.reinit(diagonal);
+    dense_tangent.reinit(dense);
+    NewtonSolver::Problem problem;
+    problem.residual = [&](const VectorType &y, VectorType &r) {
+      const double by = b * y;
+      for (unsigned int i = 0; i < n; ++i)
+        r[i] = (2.0 + i) * y[i] + std::pow(y[i], 3) / 20 + a[i] * by - c[i];
+      r.compress(dealii::VectorOperation::insert);
+    };
+    // The diagonal of the Jacobian without the rank-one part.
+    const auto diagonal_entry = [](const VectorType &y, const unsigned int i) {
+      return 2.0 + i + 3 * y[i] * y[i] / 20;
+    };
+    NewtonSolver::Parameters parameters;
+    parameters.tolerance = 1e-13;
+    for (const bool modified : {false, true})
+      {
+        problem.reuse_first_jacobian = modified;
+        problem.tangent              = [&](const VectorType &y, MatrixType &k) {
+          for (unsigned int i = 0; i < n; ++i)
+            k.set(i, i, diagonal_entry(y, i));
+          k.compress(dealii::VectorOperation::insert);
+        };
+        problem.rank_one =
+          [&](const VectorType &, VectorType &p, VectorType &q) {
+            p = a;
+            q = b;
+          };
+        VectorType x = c;
+        const auto low_rank =
+          NewtonSolver(parameters).solve(problem, x, sparse_tangent);
+
+        problem.rank_one = nullptr;
+        problem.tangent  = [&](const VectorType &y, MatrixType &k) {
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              k.set(i, j, a[i] * b[j] + (i == j ? diagonal_entry(y, i) : 0.0));
+          k.compress(dealii::VectorOperation::insert);
+        };
+        VectorType reference = c;
+        const auto full =
+          NewtonSolver(parameters).solve(problem, reference, dense_tangent);
+        ASSERT_TRUE(low_rank.converged) << modified;
+        ASSERT_TRUE(full.converged) << modified;
+        EXPECT_EQ(low_rank.iterations, full.iterations) << modified;
+        x -= reference;
+        EXPECT_LT(x.linfty_norm(), 1e-12) << modified;
+      }
+  }
+
   // f(y)_i = (2 + i) y_i + y_i^3 / 20 - c_i, Jacobian diag(2 + i +
   // 3 y_i^2 / 20): modified Newton assembles the tangent once, at the first
   // iterate, converges linearly (more iterations than Newton) to the same
@@ -190,6 +264,82 @@ namespace
           difference =
             std::max(difference, std::abs(runs[1].tip[k] - runs[0].tip[k]));
         EXPECT_LT(difference, 1e-9) << method; // of a 0.01 m amplitude
+      }
+  }
+
+  /// A linear elastic rod that counts the evaluations of its segments:
+  /// every assembly of the model (energy, residual or tangent) evaluates
+  /// each segment once.
+  class CountingRod : public LinearElasticRod
+  {
+  public:
+    CountingRod(const RodStiffness &stiffness, std::atomic<unsigned> &count)
+        : LinearElasticRod(stiffness)
+        , count(count)
+    {
+    }
+
+    MaterialResponse<1>
+    segment_energy(const double strain, const double rest_length) const override
+    {
+      ++count;
+      return LinearElasticRod::segment_energy(strain, rest_length);
+    }
+
+  private:
+    std::atomic<unsigned> &count;
+  };
+
+  // The assemblies of a dynamic step in free vibration (load factor 0),
+  // modified Newton with k iterations, in a step without the round-off
+  // measurement: the predictor's residual (for the tolerance, and NOX's
+  // first), the reactions of the load scale (the applied loads at load
+  // factor 0 are no second assembly), one tangent, the residuals of the k
+  // iterates and the energy of the converged state: k + 4 (Newmark,
+  // backward Euler). The midpoint rule evaluates its residual as the
+  // gradient at the midpoint and the energy at the end, 2 (k + 1), its
+  // tangent the gradient at the end and the Hessian at the midpoint
+  // (the gradient there is the residual's), the energy of the start once:
+  // 2 k + 7.
+  TEST(TimeIntegrator, AssembliesOfAStep)
+  {
+    std::atomic<unsigned> count{0};
+    const auto            rod =
+      std::make_shared<CountingRod>(rodnet::testing::swing_stiffness, count);
+    const unsigned int n      = 20;
+    auto               model  = rodnet::testing::cantilever(n, rod, 0);
+    const auto [omega, shape] = rodnet::testing::first_mode(*model);
+    const double amplitude    = 0.01 / shape[model->layout().vertex_dof(n, 2)];
+    for (const std::string method : {"newmark", "backward euler", "midpoint"})
+      {
+        TimeIntegrator::Parameters p;
+        p.integrator  = method;
+        p.time_step   = 2 * M_PI / omega / 40;
+        p.end_time    = 10 * p.time_step;
+        p.load_factor = [](double) { return 0.0; };
+        TimeIntegrator integrator(*model, {rodnet::testing::swing_inertia}, p);
+        VectorType     u = shape, v = model->create_vector();
+        u *= amplitude;
+        // Per step: assemblies (segment evaluations / segments) beyond
+        // what its iterations need; the least over the steps is a step
+        // without the round-off measurement (every 20 steps).
+        unsigned int fewest = std::numeric_limits<unsigned int>::max();
+        unsigned int before = 0;
+        integrator.run(u,
+                       v,
+                       [&](const TimeIntegrator::StepInfo &info,
+                           const VectorType &,
+                           const VectorType &) {
+                         const unsigned int step = count - before;
+                         EXPECT_EQ(step % n, 0u) << method;
+                         const unsigned int per_iteration =
+                           method == "midpoint" ? 2 : 1;
+                         fewest =
+                           std::min(fewest,
+                                    step / n - per_iteration * info.iterations);
+                         before = count;
+                       });
+        EXPECT_EQ(fewest, method == "midpoint" ? 7u : 4u) << method;
       }
   }
 
