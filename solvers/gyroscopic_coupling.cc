@@ -17,16 +17,9 @@ namespace rodnet
       return m;
     }
 
-    /// The step of one segment: its chords at u_n and y, the twist step.
-    struct SegmentStep
-    {
-      Vector3 e0, e1;
-      double  twist;
-    };
-
     /// q = (e_m x dt) / |e_m|^2, g = -J twist / h^2 q.
     Vector3
-    turn_direction(const SegmentStep &s)
+    turn_direction(const GyroscopicCoupling::SegmentStep &s)
     {
       const Vector3 em = (s.e0 + s.e1) / 2;
       const Vector3 dt = s.e1.normalized() - s.e0.normalized();
@@ -37,7 +30,7 @@ namespace rodnet
     /// d(a x b) = -[b]_x da + [a]_x db, da = de1 / 2,
     /// db = (I - t t^T) de1 / |e1|, ds = a . de1.
     Eigen::Matrix3d
-    turn_direction_derivative(const SegmentStep &s)
+    turn_direction_derivative(const GyroscopicCoupling::SegmentStep &s)
     {
       const Vector3         a = (s.e0 + s.e1) / 2;
       const Vector3         t = s.e1.normalized();
@@ -77,10 +70,16 @@ namespace rodnet
       }
   }
 
-  Vector3
-  GyroscopicCoupling::chord(const Segment &s, const VectorType &x) const
+  GyroscopicCoupling::SegmentStep
+  GyroscopicCoupling::step_of(const Segment    &s,
+                              const VectorType &u_n,
+                              const VectorType &y) const
   {
-    return model.position(x, s.vertices[1]) - model.position(x, s.vertices[0]);
+    const auto chord = [&](const VectorType &x) {
+      return Vector3(model.position(x, s.vertices[1]) -
+                     model.position(x, s.vertices[0]));
+    };
+    return {chord(u_n), chord(y), y[s.dofs[6]] - u_n[s.dofs[6]]};
   }
 
   void
@@ -92,9 +91,7 @@ namespace rodnet
     collect_segments();
     for (const Segment &s : segments)
       {
-        const SegmentStep step{chord(s, u_n),
-                               chord(s, y),
-                               y[s.dofs[6]] - u_n[s.dofs[6]]};
+        const SegmentStep step = step_of(s, u_n, y);
         const Vector3     g =
           -s.inertia * step.twist / (h * h) * turn_direction(step);
         for (unsigned int c = 0; c < 3; ++c)
@@ -116,9 +113,7 @@ namespace rodnet
     const dealii::AffineConstraints<double> &constraints = model.constraints();
     for (const Segment &s : segments)
       {
-        const SegmentStep step{chord(s, u_n),
-                               chord(s, y),
-                               y[s.dofs[6]] - u_n[s.dofs[6]]};
+        const SegmentStep step  = step_of(s, u_n, y);
         const double      scale = -s.inertia / (h * h);
         // dg/de1 and dg/dtwist; e1 = x_end - x_start, and the rows of the
         // start vertex carry -g.

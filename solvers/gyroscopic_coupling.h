@@ -54,6 +54,13 @@ namespace rodnet
                  double            h,
                  MatrixType       &k);
 
+    /// The step of one segment: its chords at u_n and y, its twist step.
+    struct SegmentStep
+    {
+      Vector3 e0, e1;
+      double  twist;
+    };
+
   private:
     /// A segment with twist inertia.
     struct Segment
@@ -68,9 +75,9 @@ namespace rodnet
     void
     collect_segments();
 
-    /// The chord of @p s at @p x.
-    Vector3
-    chord(const Segment &s, const VectorType &x) const;
+    /// The step of @p s from @p u_n to @p y.
+    SegmentStep
+    step_of(const Segment &s, const VectorType &u_n, const VectorType &y) const;
 
     const RodModel      &model;
     const MatrixType    &mass;
