@@ -3,6 +3,7 @@
 #include <solvers/gyroscopic_coupling.h>
 
 #include <Eigen/Dense>
+#include <array>
 
 namespace rodnet
 {
@@ -120,20 +121,26 @@ namespace rodnet
         const Eigen::Matrix3d chord_block =
           scale * step.twist * turn_direction_derivative(step);
         const Vector3 twist_column = scale * turn_direction(step);
+        // One row at a time (Trilinos adds a row's entries together),
+        // the free columns only.
+        std::array<global_dof_index, 7> columns;
+        std::array<double, 7>           values;
         for (unsigned int row = 0; row < 6; ++row)
           {
             if (constraints.is_constrained(s.dofs[row]))
               continue;
-            const double sign = row < 3 ? -1.0 : 1.0;
+            const double sign     = row < 3 ? -1.0 : 1.0;
+            unsigned int n_values = 0;
             for (unsigned int col = 0; col < 7; ++col)
               if (!constraints.is_constrained(s.dofs[col]))
                 {
-                  const double value =
-                    col == 6 ?
-                      twist_column[row % 3] :
-                      (col < 3 ? -1.0 : 1.0) * chord_block(row % 3, col % 3);
-                  k.add(s.dofs[row], s.dofs[col], sign * value);
+                  columns[n_values] = s.dofs[col];
+                  values[n_values++] =
+                    sign * (col == 6 ? twist_column[row % 3] :
+                                       (col < 3 ? -1.0 : 1.0) *
+                                         chord_block(row % 3, col % 3));
                 }
+            k.add(s.dofs[row], n_values, columns.data(), values.data());
           }
       }
     k.compress(dealii::VectorOperation::add);
