@@ -5,6 +5,7 @@ namespace rodnet
   MidpointScheme::MidpointScheme(const StepSystem &system)
       : IntegrationScheme(system)
       , rigid_split(system.model, system.mass)
+      , gyroscopic(system.model, system.mass)
   {
     point = system.model.create_vector();
     for (VectorType *v : {&gradient_m,
@@ -97,6 +98,7 @@ namespace rodnet
     const double coefficient = correction_terms(step, y, r, energy).first;
     model.constraints().set_zero(r);
     r.add(coefficient, direction);
+    gyroscopic.add_force(step.u, y, step.h, r);
     add_inertia(step, y, &r);
   }
 
@@ -145,6 +147,7 @@ namespace rodnet
             (rigid_split.has_free_parts() ? 0.0 : coefficient),
           system.constrained_mass);
     add_damping_tangent(step.h, k);
+    gyroscopic.add_jacobian(step.u, y, step.h, k);
 
     rank_one_b = gradient_y;
     rank_one_b -= gradient_m;

@@ -1,6 +1,7 @@
 #ifndef RODNET_SOLVERS_MIDPOINT_SCHEME_H
 #define RODNET_SOLVERS_MIDPOINT_SCHEME_H
 
+#include <solvers/gyroscopic_coupling.h>
 #include <solvers/integration_scheme.h>
 #include <solvers/rigid_motion_split.h>
 
@@ -20,6 +21,9 @@ namespace rodnet
    * the unsupported parts at m (RigidMotionSplit), so that the correction
    * has no resultant or moment: a free body keeps its linear momentum to
    * round-off (doc/dynamics.md). A nearly rigid step takes w = M d.
+   * The residual also has the gyroscopic force of the sections' spin
+   * (GyroscopicCoupling), which does no work and turns the spin with the
+   * tangents, so that the angular momentum is kept with stocky sections.
    * Its tangent has a dense rank-one part, which NewtonSolver handles by
    * Sherman-Morrison. Needs a stored energy. The damping acts at the
    * midpoint velocity (u - u_n)/h: the energy falls by exactly h vbar.C vbar
@@ -111,8 +115,10 @@ namespace rodnet
     /// Pi(u_n) of the step.
     double           start_energy = 0;
     RigidMotionSplit rigid_split;
-    VectorType       point, gradient_m, gradient_y, mass_difference, direction;
-    VectorType       rank_one_a, rank_one_b;
+    /// The spin's force on the centreline (the twist rows' inertia).
+    GyroscopicCoupling gyroscopic;
+    VectorType point, gradient_m, gradient_y, mass_difference, direction;
+    VectorType rank_one_a, rank_one_b;
     /// The midpoint of gradient_m, where gradient_known (this step's).
     VectorType gradient_point;
     bool       gradient_known = false;

@@ -1,0 +1,89 @@
+#ifndef RODNET_SOLVERS_GYROSCOPIC_COUPLING_H
+#define RODNET_SOLVERS_GYROSCOPIC_COUPLING_H
+
+#include <core/rod_model.h>
+
+#include <vector>
+
+namespace rodnet
+{
+  /**
+   * The gyroscopic force of the sections' spin on the centreline, for the
+   * midpoint rule (doc/theory.md, "Twist"; doc/dynamics.md, "Momenta under
+   * the midpoint rule").
+   *
+   * The twist inertia rho (I1 + I2) l0 (plus a welded body's J_t), the
+   * twist row J_k of the mass matrix, weighs the twist rate phidot in the
+   * chart of the step's reference frames, whose tangent spin vanishes at the
+   * reference but whose curl does not: the kinetic energy
+   * J/2 (phidot - A(t).tdot)^2, A = (T x t) / (1 + T.t), has the
+   * Euler-Lagrange force -p t x tdot / |e| on the chord e of a segment
+   * (p = J omega.t its spin), which turns the spin p t with the tangent.
+   * Without it the spin vector turns with no torque to balance it and the
+   * angular momentum changes by sum_k p_k tdot_k.
+   *
+   * Over a step from u_n to y, with e_m = (e_n + e) / 2, dt = t - t_n and
+   * pbar = J (phi - phi_n) / h, the force on the segment's end vertex is
+   *   g = -pbar (e_m x dt) / (h |e_m|^2),
+   * and -g on its start vertex: no resultant, no work (e_m x dt is normal
+   * to t_n and t, hence to e - e_n), and the moment e_m x g = pbar dt / h
+   * (exactly for a segment whose length does not change), which cancels the
+   * turn of the spin in the balance of angular momentum.
+   */
+  class GyroscopicCoupling
+  {
+  public:
+    /// @p model must be finalized and outlive this object, as must @p
+    /// mass, its unconstrained mass matrix, whose twist diagonal is read at
+    /// the first call.
+    GyroscopicCoupling(const RodModel &model, const MatrixType &mass);
+
+    /// Adds the force of the step from @p u_n to @p y of length @p h to
+    /// @p r (fixed rows too: the caller zeroes them).
+    void
+    add_force(const VectorType &u_n,
+              const VectorType &y,
+              double            h,
+              VectorType       &r);
+
+    /// Adds its Jacobian with respect to @p y to @p k, leaving the rows and
+    /// columns of fixed DoFs alone.
+    void
+    add_jacobian(const VectorType &u_n,
+                 const VectorType &y,
+                 double            h,
+                 MatrixType       &k);
+
+    /// The step of one segment: its chords at u_n and y, its twist step.
+    struct SegmentStep
+    {
+      Vector3 e0, e1;
+      double  twist;
+    };
+
+  private:
+    /// A segment with twist inertia.
+    struct Segment
+    {
+      /// Position DoFs of its start and end vertex, then its twist.
+      std::array<global_dof_index, 7> dofs;
+      std::array<unsigned int, 2>     vertices;
+      double                          inertia;
+    };
+
+    /// The segments with twist inertia, once.
+    void
+    collect_segments();
+
+    /// The step of @p s from @p u_n to @p y.
+    SegmentStep
+    step_of(const Segment &s, const VectorType &u_n, const VectorType &y) const;
+
+    const RodModel      &model;
+    const MatrixType    &mass;
+    std::vector<Segment> segments;
+    bool                 collected = false;
+  };
+} // namespace rodnet
+
+#endif
