@@ -411,6 +411,15 @@ namespace rodnet
                         double load_factor_1,
                         double time_1) const;
 
+    /**
+     * The same for a load step from @p load_factor_0 to @p load_factor_1
+     * (static load stepping, where no time passes: a support moving in
+     * time stays). Without it a step of 360 degrees would leave the
+     * support where it was, and one of 240 would turn it by -120.
+     */
+    void
+    check_rotation_step(double load_factor_0, double load_factor_1) const;
+
     /// Whether a support moves by its own function of time.
     bool
     moves_supports_in_time() const;
@@ -808,6 +817,15 @@ namespace rodnet
     clamp_displacement(const Clamp        &c,
                        unsigned int        v,
                        const SupportFactor &factor) const;
+
+    /// Throws std::runtime_error naming the first prescribed rotation that
+    /// turns by half a turn or more where its factor changes by
+    /// @p change over the step described by @p step ("from t = 0 to 1 s");
+    /// the message ends with the @p remedy.
+    void
+    require_rotation_step_below_half_turn(const SupportFactor &change,
+                                          const std::string   &step,
+                                          const std::string   &remedy) const;
 
     /// "0 m and 0.1 m at load factor 1", or each value with what scales
     /// it where a function of time scales one: for messages.

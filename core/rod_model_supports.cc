@@ -514,22 +514,48 @@ namespace rodnet
                                 const double load_factor_1,
                                 const double time_1) const
   {
+    require_rotation_step_below_half_turn(
+      [&](const TimeFunction &in_time) {
+        return in_time.factor(load_factor_1, time_1) -
+               in_time.factor(load_factor_0, time_0);
+      },
+      "from t = " + number(time_0) + " to " + number(time_1) + " s",
+      "take a smaller time step (or more load steps)");
+  }
+
+  void
+  RodModel::check_rotation_step(const double load_factor_0,
+                                const double load_factor_1) const
+  {
+    require_rotation_step_below_half_turn(
+      [&](const TimeFunction &in_time) {
+        return in_time.given() ? 0.0 : load_factor_1 - load_factor_0;
+      },
+      "from load factor " + number(load_factor_0) + " to " +
+        number(load_factor_1),
+      "use more load steps (Loads/Steps)");
+  }
+
+  void
+  RodModel::require_rotation_step_below_half_turn(
+    const SupportFactor &change,
+    const std::string   &step,
+    const std::string   &remedy) const
+  {
     // The largest turn an increment (1, v) with real part above 1e-3
     // reaches (apply_boundary_values()).
     const double limit = 2 * std::acos(1e-3);
     const auto   check = [&](const double        angle,
                            const TimeFunction &in_time,
                            const std::string  &what) {
-      const double turn = std::abs(angle) *
-                          std::abs(in_time.factor(load_factor_1, time_1) -
-                                   in_time.factor(load_factor_0, time_0));
+      const double turn = std::abs(angle * change(in_time));
       if (!(turn < limit))
-        throw std::runtime_error(
-          "the prescribed rotation of " + what + " turns by " +
-          number(turn * 180 / M_PI) + " degrees from t = " + number(time_0) +
-          " to " + number(time_1) +
-          " s, and a step turns by less than 180 degrees; take a smaller "
-          "time step (or more load steps)");
+        throw std::runtime_error("the prescribed rotation of " + what +
+                                 " turns by " + number(turn * 180 / M_PI) +
+                                 " degrees " + step +
+                                 ", and a step turns by less than 180 "
+                                 "degrees; " +
+                                 remedy);
     };
     for (const AxisLoad &p : prescribed_rotations)
       check(p.value,

@@ -496,17 +496,14 @@ namespace rodnet
     natural_shape_ramp =
       parse_natural_shape_ramp(prm.get("Ramped natural shape"));
     fixed_loads = prm.get_bool("Fixed loads");
-    const bool ramped_shape_or_support =
-      natural_shape_ramp || ramps_activation() ||
-      !prescribed_displacements.empty() || !prescribed_rotations.empty() ||
-      substrate.moves();
-    if (fixed_loads && !ramped_shape_or_support)
+    if (fixed_loads && !moves_shape_or_support(false))
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": with the loads fixed the load factor "
         "has nothing to ramp; give Loads/Ramped natural shape, a ramped "
         "activation field (Group <name>/Natural curvature, ...), "
-        "Supports/Prescribed displacements, Supports/Prescribed rotations "
-        "or a strain of the Substrate");
+        "Supports/Prescribed displacements or rotations without \"in "
+        "time\" (an item \"in time\" follows its own function of time) or "
+        "a strain of the Substrate");
     prm.enter_subsection("Imperfections");
     imperfection_forces  = prm.get("Point forces");
     imperfection_moments = prm.get("Moments");
@@ -514,11 +511,25 @@ namespace rodnet
       prm.get("Magnitude") == "held" ? LoadRamp::held : LoadRamp::ramped;
     prm.leave_subsection();
     prm.leave_subsection();
-    check_imperfection_ramp(ramped_shape_or_support);
+    check_imperfection_ramp();
+  }
+
+  bool
+  Scene::moves_shape_or_support(const bool in_time_too) const
+  {
+    const auto moves = [in_time_too](const std::string &items) {
+      for (const std::string &item :
+           dealii::Utilities::split_string_list(items, ';'))
+        if (in_time_too || !follows_time_function(item))
+          return true;
+      return false;
+    };
+    return natural_shape_ramp || ramps_activation() || substrate.moves() ||
+           moves(prescribed_displacements) || moves(prescribed_rotations);
   }
 
   void
-  Scene::check_imperfection_ramp(const bool ramped_shape_or_support) const
+  Scene::check_imperfection_ramp() const
   {
     const std::string entry = "entry \"Loads/Imperfections/Magnitude\": ";
     if (imperfection_forces.empty() && imperfection_moments.empty())
@@ -530,8 +541,9 @@ namespace rodnet
     const bool ramped_loads =
       !fixed_loads && (!point_forces.empty() || !moments.empty() ||
                        distributed_force.norm() > 0 || gravity.norm() > 0);
-    if (imperfection_ramp == LoadRamp::held && !ramped_shape_or_support &&
-        !ramped_loads)
+    // A support moving in time moves something the imperfections perturb.
+    if (imperfection_ramp == LoadRamp::held && !ramped_loads &&
+        !moves_shape_or_support(true))
       throw std::invalid_argument(
         entry + "the imperfections are held at their full value and the "
                 "load factor has nothing else to ramp; give the loads, "

@@ -320,13 +320,18 @@ namespace rodnet
     /// Subsection Loads, and "Steps" into solver.n_steps.
     void
     parse_loads(dealii::ParameterHandler &prm);
+    /// Whether the load factor ramps a natural shape, an activation field,
+    /// the substrate or a prescribed displacement or rotation (an item
+    /// without "in time"); with @p in_time_too, also whether a prescribed
+    /// displacement or rotation follows a function of time.
+    bool
+    moves_shape_or_support(bool in_time_too) const;
     /// Throws naming Loads/Imperfections/Magnitude where the imperfections
     /// cannot follow it: ramped while Loads/Fixed loads holds every load,
-    /// held while the load factor ramps nothing else
-    /// (@p ramped_shape_or_support: no natural shape, prescribed
-    /// displacement or rotation).
+    /// held while nothing else moves (no load, natural shape, activation
+    /// field, substrate strain, prescribed displacement or rotation).
     void
-    check_imperfection_ramp(bool ramped_shape_or_support) const;
+    check_imperfection_ramp() const;
     /// Subsection Solver: the method and the parameters of every method.
     void
     parse_solver(dealii::ParameterHandler &prm);

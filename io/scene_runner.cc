@@ -355,6 +355,48 @@ namespace rodnet
         }
     }
 
+    /// StaticSolver's parameters of @p scene, tracking the lowest
+    /// eigenvalue where one of @p probes asks for it.
+    StaticSolver::Parameters
+    static_parameters(const Scene &scene, const ProbeList &probes)
+    {
+      StaticSolver::Parameters parameters = scene.solver;
+      if (needs_lowest_eigenvalue(probes))
+        parameters.track_lowest_eigenvalue = true;
+      parameters.strain_limits.fiber_distance = scene.fiber_distances();
+      return parameters;
+    }
+
+    /// The observer of StaticSolver::run(): counts the unstable and
+    /// out-of-range steps into @p summary and records each converged step
+    /// with its checks in @p recorder.
+    StaticSolver::Observer
+    record_static_steps(StepRecorder<VectorType> &recorder,
+                        const ProbeList          &probes,
+                        const RodModel           &model,
+                        RunSummary               &summary)
+    {
+      return [&recorder,
+              &probes,
+              &model,
+              &summary](const StaticSolver::StepInfo &info,
+                        const VectorType             &solution) {
+        summary.unstable_steps += !info.check.stable;
+        summary.out_of_range_steps += !info.strain.in_range;
+        recorder.record(info.step,
+                        info.load_factor,
+                        info.load_factor,
+                        evaluate_probes(probes,
+                                        model,
+                                        solution,
+                                        info.load_factor,
+                                        info.lowest_eigenvalue),
+                        solution,
+                        {double(info.check.stable),
+                         double(info.strain.in_range)});
+      };
+    }
+
     RunSummary
     run_newton(const Scene       &scene,
                const std::string &output_directory,
@@ -362,12 +404,9 @@ namespace rodnet
     {
       const std::unique_ptr<RodModel> model =
         build_with_progress(scene, log, [&] { return scene.build_model(); });
-      const ProbeList probes = scene.probes(*model);
-
-      StaticSolver::Parameters parameters = scene.solver;
-      if (needs_lowest_eigenvalue(probes))
-        parameters.track_lowest_eigenvalue = true;
-      parameters.strain_limits.fiber_distance = scene.fiber_distances();
+      const ProbeList                probes = scene.probes(*model);
+      const StaticSolver::Parameters parameters =
+        static_parameters(scene, probes);
 
       RunSummary               summary;
       StepRecorder<VectorType> recorder(scene,
@@ -399,23 +438,7 @@ namespace rodnet
                                           std::nan("")),
                         u,
                         {std::nan(""), std::nan("")});
-        solver.run(u,
-                   [&](const StaticSolver::StepInfo &info,
-                       const VectorType             &solution) {
-                     summary.unstable_steps += !info.check.stable;
-                     summary.out_of_range_steps += !info.strain.in_range;
-                     recorder.record(info.step,
-                                     info.load_factor,
-                                     info.load_factor,
-                                     evaluate_probes(probes,
-                                                     *model,
-                                                     solution,
-                                                     info.load_factor,
-                                                     info.lowest_eigenvalue),
-                                     solution,
-                                     {double(info.check.stable),
-                                      double(info.strain.in_range)});
-                   });
+        solver.run(u, record_static_steps(recorder, probes, *model, summary));
       });
       summary.critical_load_factor = solver.critical_load_factor();
       recorder.finish(output_directory);

@@ -21,6 +21,12 @@ namespace rodnet
   read_in_time(std::vector<std::string> &words,
                const std::string        &entry,
                const std::string        &context);
+
+  /// Whether the item @p text of a scene entry ends in "in time ...", read
+  /// by read_in_time(): its value then follows that function of time, not
+  /// the load factor.
+  bool
+  follows_time_function(const std::string &text);
 } // namespace rodnet
 
 #endif

@@ -87,6 +87,18 @@ namespace rodnet
                              bool             &followed_mode)
   {
     JudgedResult result;
+    try
+      {
+        // A prescribed rotation's increment from the step's start cannot
+        // tell a turn of half a turn or more from a shorter one the other
+        // way (RodModel::check_rotation_step()): a shorter step turns less.
+        model.check_rotation_step(path.lambda, target);
+      }
+    catch (const std::runtime_error &e)
+      {
+        result.failure = e.what();
+        return result;
+      }
     if (parameters.predict)
       {
         // With an increment to follow, extrapolate it; without one (first

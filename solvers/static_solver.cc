@@ -80,9 +80,36 @@ namespace rodnet
                          const bool        far_start)
   {
     model.apply_boundary_values(u, load_factor);
-    ResidualParts         tolerance, reached;
+    NewtonSolver::Problem problem =
+      equilibrium_problem(u, load_factor, extra_force);
+    JudgedSolve solve(load_factor,
+                      extra_force,
+                      far_start,
+                      parameters.relative_tolerance);
+    // The noise is measured at the start (judge_start()), and again where
+    // Newton stalls (ResidualCriterion::stall_aware_test()).
+    problem.converged = criterion.stall_aware_test(solve.step, solve.reached);
+    try
+      {
+        judge_start(u, scale_state, solve);
+      }
+    catch (const std::exception &e)
+      {
+        JudgedResult outcome;
+        outcome.failure = e.what();
+        return outcome;
+      }
+    return newton_rounds(problem, solve, u);
+  }
+
+  NewtonSolver::Problem
+  StaticSolver::equilibrium_problem(const VectorType &u,
+                                    const double      load_factor,
+                                    const VectorType *extra_force)
+  {
     NewtonSolver::Problem problem;
-    const auto potential = [&](const VectorType &x, VectorType *r) {
+    const auto potential = [this, load_factor, extra_force](const VectorType &x,
+                                                            VectorType *r) {
       return model.assemble(x, load_factor, r, nullptr, true, extra_force);
     };
     // With multipliers the assembled "energy" is the Lagrangian, whose
@@ -99,51 +126,49 @@ namespace rodnet
     // on a loaded ring, until Newton fails; issue 33). A spring on one
     // twist of each such rod, in the tangent only, holds the turn where
     // it is; the residual, and so the equilibrium, is unchanged.
-    const std::vector<global_dof_index> turns =
-      free_frame_turns(model, u, load_factor);
-    problem.tangent = [&](const VectorType &x, MatrixType &k) {
-      model.assemble(x, load_factor, nullptr, &k, true, extra_force);
-      hold_twists(k, turns);
-    };
+    problem.tangent =
+      [this,
+       load_factor,
+       extra_force,
+       turns = free_frame_turns(model, u, load_factor)](const VectorType &x,
+                                                        MatrixType       &k) {
+        model.assemble(x, load_factor, nullptr, &k, true, extra_force);
+        hold_twists(k, turns);
+      };
+    return problem;
+  }
 
-    JudgedResult  outcome;
-    ResidualParts scale;
-    RoundoffNoise noise;
-    ResidualCriterion::StepTolerance step{noise,
-                                          tolerance,
-                                          scale,
-                                          parameters.relative_tolerance,
-                                          load_factor,
-                                          extra_force};
-    problem.converged = criterion.stall_aware_test(step, reached);
-    try
+  void
+  StaticSolver::judge_start(const VectorType &u,
+                            const VectorType *scale_state,
+                            JudgedSolve      &solve)
+  {
+    VectorType start = scale_state != nullptr ? *scale_state : u;
+    model.apply_boundary_values(start, solve.load_factor);
+    solve.noise =
+      criterion.roundoff_noise(u, solve.load_factor, solve.extra_force);
+    solve.scale = criterion.judging_scale(start,
+                                          solve.load_factor,
+                                          solve.noise.floor,
+                                          solve.extra_force);
+    if (solve.far_start)
       {
-        VectorType start = scale_state != nullptr ? *scale_state : u;
-        model.apply_boundary_values(start, load_factor);
-        noise = criterion.roundoff_noise(u, load_factor, extra_force);
-        scale =
-          criterion.judging_scale(start, load_factor, noise.floor, extra_force);
-        if (far_start)
-          {
-            // Newton assembles its own tangent: the residual alone here.
-            VectorType r = model.create_vector();
-            model.assemble(u, load_factor, &r, nullptr, true, extra_force);
-            const ResidualParts out_of_balance = criterion.norms(u, r);
-            scale.force  = std::max(scale.force, out_of_balance.force);
-            scale.moment = std::max(scale.moment, out_of_balance.moment);
-          }
+        // Newton assembles its own tangent: the residual alone here.
+        VectorType r = model.create_vector();
+        model
+          .assemble(u, solve.load_factor, &r, nullptr, true, solve.extra_force);
+        const ResidualParts out_of_balance = criterion.norms(u, r);
+        solve.scale.force = std::max(solve.scale.force, out_of_balance.force);
+        solve.scale.moment =
+          std::max(solve.scale.moment, out_of_balance.moment);
       }
-    catch (const std::exception &e)
-      {
-        outcome.failure = e.what();
-        return outcome;
-      }
+  }
 
-    // The reactions in the scale are those of the start; the solution's
-    // are what counts. Where they ask for a tighter tolerance, Newton goes
-    // on from the solution. The noise is measured at the start, and again
-    // where Newton stalls (ResidualCriterion::stall_aware_test()).
-    unsigned int iterations = 0;
+  JudgedResult
+  StaticSolver::newton_rounds(const NewtonSolver::Problem &problem,
+                              JudgedSolve                 &solve,
+                              VectorType                  &u)
+  {
     // A far start's first round meets a tolerance inflated by the start's
     // out-of-balance. Its state is kept as a fallback if it is within
     // far_start_relative_tolerance of the loads at the solution, and the
@@ -151,66 +176,88 @@ namespace rodnet
     // is nearly singular, they can fail where the fallback is an
     // equilibrium to that tolerance (the elastica's branch switch).
     std::optional<std::pair<VectorType, JudgedResult>> fallback;
-    const auto failed = [&]() {
+    JudgedResult                                       outcome;
+    const auto                                         failed = [&]() {
       if (!fallback)
         return outcome;
       u = fallback->first;
       return fallback->second;
     };
+    unsigned int iterations = 0;
     for (unsigned int round = 0; round < 3; ++round)
       {
-        tolerance = ResidualCriterion::tolerance(scale,
-                                                 noise.floor,
-                                                 parameters.relative_tolerance);
-        step.excess_before_last = step.excess_last = 0;
+        solve.tolerance =
+          ResidualCriterion::tolerance(solve.scale,
+                                       solve.noise.floor,
+                                       parameters.relative_tolerance);
+        solve.step.excess_before_last = solve.step.excess_last = 0;
         static_cast<NewtonSolver::Result &>(outcome) =
           NewtonSolver(parameters.newton)
             .solve(problem, u, tangent, &factorizations);
         iterations += outcome.iterations;
         outcome.iterations = iterations;
-        outcome.residual   = reached;
-        outcome.noise      = noise;
+        outcome.residual   = solve.reached;
+        outcome.noise      = solve.noise;
         if (!outcome.converged)
           {
             outcome.failure +=
-              "; " + ResidualCriterion::describe(reached, tolerance);
+              "; " +
+              ResidualCriterion::describe(solve.reached, solve.tolerance);
             return failed();
           }
-        try
-          {
-            scale =
-              criterion.judging_scale(u, load_factor, noise.floor, extra_force);
-          }
-        catch (const std::exception &e)
-          {
-            outcome.converged = false;
-            outcome.failure   = e.what();
-            return failed();
-          }
-        outcome.scale = scale;
-        outcome.rounding_limited =
-          ResidualCriterion::inconclusive(noise.floor,
-                                          scale,
-                                          parameters.rounding_floor_limit);
-        const ResidualParts judged =
-          ResidualCriterion::tolerance(scale,
-                                       noise.floor,
-                                       parameters.relative_tolerance);
-        if (ResidualCriterion::within(reached, judged))
+        if (judge_round(u, solve, outcome))
           return outcome;
-        if (far_start && !fallback &&
-            ResidualCriterion::within(
-              reached,
-              ResidualCriterion::tolerance(scale,
-                                           noise.floor,
-                                           std::max(far_start_relative_tolerance,
-                                                    parameters
-                                                      .relative_tolerance))))
+        if (!outcome.converged)
+          return failed();
+        if (solve.far_start && !fallback &&
+            within_relative(solve,
+                            std::max(far_start_relative_tolerance,
+                                     parameters.relative_tolerance)))
           fallback.emplace(u, outcome);
       }
     outcome.converged = false;
     outcome.failure   = "the reactions kept changing the tolerance";
     return failed();
+  }
+
+  bool
+  StaticSolver::judge_round(const VectorType &u,
+                            JudgedSolve      &solve,
+                            JudgedResult     &outcome)
+  {
+    // The reactions in the scale were those of the start; the solution's
+    // are what counts. Where they ask for a tighter tolerance, Newton goes
+    // on from the solution.
+    try
+      {
+        solve.scale = criterion.judging_scale(u,
+                                              solve.load_factor,
+                                              solve.noise.floor,
+                                              solve.extra_force);
+      }
+    catch (const std::exception &e)
+      {
+        outcome.converged = false;
+        outcome.failure   = e.what();
+        return false;
+      }
+    outcome.scale = solve.scale;
+    outcome.rounding_limited =
+      ResidualCriterion::inconclusive(solve.noise.floor,
+                                      solve.scale,
+                                      parameters.rounding_floor_limit);
+    return within_relative(solve, parameters.relative_tolerance);
+  }
+
+  bool
+  StaticSolver::within_relative(const JudgedSolve &solve,
+                                const double       relative_tolerance)
+  {
+    return ResidualCriterion::within(
+      solve.reached,
+      ResidualCriterion::tolerance(solve.scale,
+                                   solve.noise.floor,
+                                   relative_tolerance));
   }
 
   bool

@@ -167,6 +167,81 @@ namespace rodnet
              const VectorType *scale_state = nullptr,
              bool              far_start   = false);
 
+    /// What the Newton rounds of one solve_at() share: where they solve,
+    /// and the loads' scale, the rounding noise and the tolerance, which
+    /// the convergence test reads through step
+    /// (ResidualCriterion::stall_aware_test()) and the rounds update.
+    struct JudgedSolve
+    {
+      JudgedSolve(const double      load_factor,
+                  const VectorType *extra_force,
+                  const bool        far_start,
+                  const double      relative_tolerance)
+          : load_factor(load_factor)
+          , extra_force(extra_force)
+          , far_start(far_start)
+          , step{noise,
+                 tolerance,
+                 scale,
+                 relative_tolerance,
+                 load_factor,
+                 extra_force}
+      {
+      }
+
+      /// step refers to the members of this one.
+      JudgedSolve(const JudgedSolve &) = delete;
+      JudgedSolve &
+      operator=(const JudgedSolve &) = delete;
+
+      double            load_factor;
+      const VectorType *extra_force;
+      /// Whether the start may lie far from equilibrium: its out-of-balance
+      /// counts in the scale (solve_from_far_start()).
+      bool                             far_start;
+      ResidualParts                    tolerance, reached, scale;
+      RoundoffNoise                    noise;
+      ResidualCriterion::StepTolerance step;
+    };
+
+    /// The equilibrium equations at @p load_factor (and the dead force
+    /// @p extra_force, if given) for NewtonSolver, without the convergence
+    /// test: the potential where there are no multipliers, the tangent
+    /// with the frames' free turns at @p u held (free_frame_turns()).
+    NewtonSolver::Problem
+    equilibrium_problem(const VectorType &u,
+                        double            load_factor,
+                        const VectorType *extra_force);
+
+    /// The rounding noise at @p u and the scale of the loads and reactions
+    /// at the start (@p scale_state if given, else @p u, with the supports
+    /// moved), widened to @p u's out-of-balance for a far start, into
+    /// @p solve; throws where they cannot be evaluated.
+    void
+    judge_start(const VectorType &u,
+                const VectorType *scale_state,
+                JudgedSolve      &solve);
+
+    /// Up to three Newton solves of @p problem from @p u, each to the
+    /// tolerance of the reactions at the last one's solution, until the
+    /// solution meets its own (judge_round()); @p u holds the result, or
+    /// a far start's fallback where the tighter rounds fail.
+    JudgedResult
+    newton_rounds(const NewtonSolver::Problem &problem,
+                  JudgedSolve                 &solve,
+                  VectorType                  &u);
+
+    /// The scale of the loads and reactions at the converged @p u into
+    /// @p solve and @p outcome; whether @p u meets the tolerance it gives.
+    /// Where the scale cannot be evaluated, @p outcome becomes a failure.
+    bool
+    judge_round(const VectorType &u, JudgedSolve &solve, JudgedResult &outcome);
+
+    /// Whether the residual @p solve reached is within @p relative_tolerance
+    /// of its scale (or at its rounding floor).
+    static bool
+    within_relative(const JudgedSolve &solve, double relative_tolerance);
+
     /**
      * Newton at @p load_factor from @p u displaced both ways along the
      * lowest eigenmode of the tangent at (@p u, @p mode_load_factor). If a

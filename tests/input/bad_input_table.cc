@@ -975,6 +975,17 @@ namespace
      "time t\": a function of time moves a support in time stepping only; "
      "set Solver/Method = time stepping, or let the load factor move it "
      "(without \"in time\")"},
+    {"fixed_loads_only_supports_in_time",
+     with("Supports",
+          "  set Prescribed displacements = end: x=0.1 in time t\n") +
+       section("Loads", "  set Fixed loads = true\n") + valid_time_stepping,
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Fixed loads\": with the loads fixed the load factor has "
+     "nothing to ramp; give Loads/Ramped natural shape, a ramped activation "
+     "field (Group <name>/Natural curvature, ...), Supports/Prescribed "
+     "displacements or rotations without \"in time\""},
     {"moving_support_time_missing",
      with("Supports", "  set Prescribed displacements = end: x=0.1 in time\n") +
        valid_time_stepping,

@@ -164,4 +164,55 @@ namespace
                                 supports("  set Clamped ends = @n_9_9\n"),
                               {"entry \"Supports/Clamped ends\"", "\"n_9_9\""});
   }
+
+  /// The rod above in quasi-static time stepping, with the support entries
+  /// @p support_entries and the load entries @p load_entries.
+  std::string
+  rod_in_time(const std::string &support_entries,
+              const std::string &load_entries)
+  {
+    return rod(10, supports("  set Clamped ends = start\n" + support_entries)) +
+           "subsection Loads\n" + load_entries +
+           "end\n"
+           "subsection Solver\n"
+           "  set Method = time stepping\n"
+           "  subsection Time stepping\n"
+           "    set Integrator = quasi-static\n"
+           "    set Time step = 0.25\n"
+           "  end\n"
+           "end\n"
+           "subsection Output\n"
+           "  set Write VTU = false\n"
+           "  set Plot = false\n"
+           "end\n";
+  }
+
+  TEST(SupportErrors, FixedLoadsWithOnlySupportsMovingInTime)
+  {
+    // A support "in time" follows its function of time, not the load
+    // factor: with the loads fixed, the load factor has nothing to ramp.
+    expect_input_error_naming(
+      "fixed_loads_in_time",
+      rod_in_time("  set Prescribed displacements = end: x=0.01 in time t\n",
+                  "  set Fixed loads = true\n"),
+      {"entry \"Loads/Fixed loads\"",
+       "the load factor has nothing to ramp",
+       "without \"in time\""});
+    // One item the load factor ramps is enough.
+    const DriverOutcome ramped = run_driver(
+      "fixed_loads_ramped_and_in_time",
+      rod_in_time("  set Prescribed displacements = end: x=0.01\n"
+                  "  set Prescribed rotations = end: 0,0,1 10 in time t\n",
+                  "  set Fixed loads = true\n"));
+    EXPECT_EQ(ramped.exit_code, 0) << ramped.output;
+    // A held imperfection perturbs what a support moving in time does:
+    // something moves besides it.
+    const DriverOutcome held = run_driver(
+      "held_imperfection_in_time",
+      rod_in_time("  set Prescribed displacements = end: y=0.01 in time t\n",
+                  "  subsection Imperfections\n"
+                  "    set Point forces = end: 0, 0, 1e-6\n"
+                  "  end\n"));
+    EXPECT_EQ(held.exit_code, 0) << held.output;
+  }
 } // namespace

@@ -216,6 +216,46 @@ namespace
     EXPECT_NEAR(last(run, "tip_y"), 0, 1e-12);
   }
 
+  // The same clamp turned by a whole turn, and by 240 degrees, in ONE
+  // load step. The clamp's frame alone cannot tell a turn of 360 degrees
+  // from none, nor 240 from -120: the step is halved until each part
+  // turns by less than half a turn (RodModel::check_rotation_step()), and
+  // the torque is that of the whole turn, GJ phi/((n - 1) h) to O(tau^2)
+  // as above, and that of the same scene in 4 steps to rounding. A turn
+  // no step the solver may take can follow fails, naming the clamp.
+  TEST_P(Supports, SceneClampTurnedByMoreThanHalfATurnInOneStep)
+  {
+    const unsigned int n = 20;
+    const auto twist     = [&](const double degrees, const unsigned int steps) {
+      return run_rod(GetParam(),
+                     n,
+                     false,
+                     "  set Clamped ends = start, end\n"
+                         "  set Pinned vertices = end\n"
+                         "  set Prescribed rotations = end: 1,0,0 " +
+                       std::to_string(degrees) + "\n",
+                     "  set Steps = " + std::to_string(steps) + "\n",
+                     "torque: moment end x");
+    };
+    for (const double degrees : {360.0, 240.0})
+      {
+        const double phi    = degrees * M_PI / 180;
+        const double tau    = phi / (n - 1);
+        const double theory = GJ * phi / ((n - 1) * (1.0 / n));
+        const double torque = last(twist(degrees, 1), "torque");
+        std::cout << GetParam() << ": clamp turned by " << degrees
+                  << " degrees in one load step: torque " << torque
+                  << ", GJ phi/L " << theory << std::endl;
+        EXPECT_NEAR(torque, theory, tau * tau * theory);
+        EXPECT_NEAR(torque, last(twist(degrees, 4), "torque"), 1e-8 * theory);
+      }
+    const RunSummary too_far = twist(360000, 1);
+    EXPECT_NE(too_far.failure.find("the prescribed rotation of the clamp "
+                                   "\"Clamped ends: end\" turns by"),
+              std::string::npos)
+      << too_far.failure;
+  }
+
   // A moment M = 2 pi EI/L at the free end of a cantilever (a rotation
   // handle there, no stub beam) rolls it into the circle of radius EI/M
   // centred at (0, EI/M): the tip comes back to the clamp.
