@@ -151,8 +151,10 @@ namespace rodnet
       for (const std::string &item :
            dealii::Utilities::split_string_list(text, ';'))
         {
-          // The vertex may itself contain "rod:", so split at the last ':'.
-          const auto colon = item.rfind(':');
+          // The vertex may itself contain "rod:", so split at the last ':'
+          // before a function of time, whose conditionals (c ? a : b) have
+          // their own.
+          const auto colon = item.rfind(':', in_time_offset(item));
           if (colon == std::string::npos)
             throw std::invalid_argument("entry \"" + entry + "\": \"" + item +
                                         "\" should read \"<vertex>: ...\"");
@@ -524,7 +526,7 @@ namespace rodnet
           return true;
       return false;
     };
-    return natural_shape_ramp || ramps_activation() || substrate.moves() ||
+    return natural_shape_ramp || ramps_activation(in_time_too) || substrate.moves() ||
            moves(prescribed_displacements) || moves(prescribed_rotations);
   }
 

@@ -284,9 +284,10 @@ namespace rodnet
     void
     add_activation_fields(RodModel &model) const;
 
-    /// Whether a group gives a rod a ramped activation field.
+    /// Whether a group gives a rod a ramped activation field (or, with
+    /// @p in_time_too, one driven by a function of time).
     bool
-    ramps_activation() const;
+    ramps_activation(bool in_time_too = false) const;
 
     /// Throws naming the entry and the item for an activation field driven
     /// by a function of time outside time stepping, or one not finite at
@@ -322,8 +323,9 @@ namespace rodnet
     parse_loads(dealii::ParameterHandler &prm);
     /// Whether the load factor ramps a natural shape, an activation field,
     /// the substrate or a prescribed displacement or rotation (an item
-    /// without "in time"); with @p in_time_too, also whether a prescribed
-    /// displacement or rotation follows a function of time.
+    /// without "in time"); with @p in_time_too, also whether an activation
+    /// field or a prescribed displacement or rotation follows a function of
+    /// time.
     bool
     moves_shape_or_support(bool in_time_too) const;
     /// Throws naming Loads/Imperfections/Magnitude where the imperfections

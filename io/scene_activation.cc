@@ -30,11 +30,12 @@ namespace rodnet
   } // namespace
 
   bool
-  Scene::ramps_activation() const
+  Scene::ramps_activation(const bool in_time_too) const
   {
     for (const std::vector<ActivationItem> &items : rod_activation)
       for (const ActivationItem &item : items)
-        if (item.drive.kind == ActivationDrive::Kind::load_factor)
+        if (item.drive.kind == ActivationDrive::Kind::load_factor ||
+            (in_time_too && item.drive.kind == ActivationDrive::Kind::time))
           return true;
     return false;
   }
@@ -47,8 +48,9 @@ namespace rodnet
         if (item.drive.kind == ActivationDrive::Kind::time)
           check_time_function(*item.drive.of_time,
                               "entry \"" + item.entry + "\", item \"" +
-                                item.text + "\": a function of time drives "
-                                            "a field",
+                                item.text +
+                                "\": a function of time drives "
+                                "a field",
                               "drive it by the load factor (\"ramped\")");
   }
 

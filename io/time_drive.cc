@@ -5,6 +5,7 @@
 #include <io/time_drive.h>
 
 #include <cmath>
+#include <regex>
 #include <stdexcept>
 
 namespace rodnet
@@ -26,10 +27,20 @@ namespace rodnet
   bool
   follows_time_function(const std::string &text)
   {
-    const std::vector<std::string> words =
-      dealii::Utilities::split_string_list(text, ' ');
-    return in_time_position(words) < words.size();
+    return in_time_offset(text) != std::string::npos;
   }
+
+
+  std::size_t
+  in_time_offset(const std::string &text)
+  {
+    static const std::regex words(R"((^|\s)in\s+time(\s|$))");
+    std::smatch             match;
+    if (!std::regex_search(text, match, words))
+      return std::string::npos;
+    return match.position(0) + match.length(1);
+  }
+
 
   TimeFunction
   read_in_time(std::vector<std::string> &words,

@@ -27,6 +27,11 @@ namespace rodnet
   /// the load factor.
   bool
   follows_time_function(const std::string &text);
+
+  /// The offset in @p text of the words "in time" that start a function of
+  /// time; std::string::npos if there are none.
+  std::size_t
+  in_time_offset(const std::string &text);
 } // namespace rodnet
 
 #endif

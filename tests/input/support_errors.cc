@@ -214,5 +214,28 @@ namespace
                   "    set Point forces = end: 0, 0, 1e-6\n"
                   "  end\n"));
     EXPECT_EQ(held.exit_code, 0) << held.output;
+    // So does an activation field driven in time (it was refused: "the
+    // load factor has nothing else to ramp").
+    const DriverOutcome activated = run_driver(
+      "held_imperfection_activation_in_time",
+      rod_in_time("",
+                  "  subsection Imperfections\n"
+                  "    set Point forces = end: 0, 0, 1e-6\n"
+                  "  end\n") +
+        "subsection Group all\n  set Natural twist = 0.5 in time t\nend\n");
+    EXPECT_EQ(activated.exit_code, 0) << activated.output;
+  }
+
+  TEST(SupportErrors, ConditionalInTimeIsNotTheVertexColon)
+  {
+    // The ':' of a conditional in the function of time is not the one
+    // that ends the vertex (it used to be taken as such: "unknown vertex").
+    const DriverOutcome conditional = run_driver(
+      "conditional_in_time",
+      rod_in_time(
+        "  set Prescribed displacements = end: y=0.01 in time t < 0.5 ? t : "
+        "0.5\n",
+        ""));
+    EXPECT_EQ(conditional.exit_code, 0) << conditional.output;
   }
 } // namespace
