@@ -2,8 +2,8 @@
 #include <solvers/tangent_factorization.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
-#include <string>
 
 namespace rodnet
 {
@@ -12,10 +12,13 @@ namespace rodnet
   {
     const double rho = system.spectral_radius_at_infinity;
     if (!(rho >= 0 && rho <= 1))
-      throw std::invalid_argument(
-        "time stepping (generalized alpha): the spectral radius at infinity "
-        "must lie in [0, 1], got " +
-        std::to_string(rho));
+      {
+        std::ostringstream message;
+        message << "time stepping (generalized alpha): the spectral radius at "
+                   "infinity must lie in [0, 1], got "
+                << rho;
+        throw std::invalid_argument(message.str());
+      }
     // Chung & Hulbert (1993), eqs. (25) and (17)-(18): second order,
     // high-frequency dissipation maximal for the given rho_inf.
     alpha_m = (2 * rho - 1) / (rho + 1);

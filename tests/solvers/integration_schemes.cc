@@ -9,6 +9,7 @@
 #include <solvers/integration_scheme_registry.h>
 #include <solvers/time_integrator.h>
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
@@ -195,6 +196,26 @@ namespace
     const auto midpoint =
       integration_scheme_registry().create("midpoint", system);
     EXPECT_FALSE(midpoint->has_incremental_potential());
+  }
+
+  TEST_F(IntegrationSchemes, SpectralRadiusOutsideTheUnitIntervalIsRefused)
+  {
+    for (const double rho : {-0.1, 1.5, std::nan("")})
+      {
+        system.spectral_radius_at_infinity = rho;
+        try
+          {
+            integration_scheme_registry().create("generalized alpha", system);
+            ADD_FAILURE() << "took a spectral radius of " << rho;
+          }
+        catch (const std::invalid_argument &e)
+          {
+            EXPECT_NE(std::string(e.what()).find(
+                        "spectral radius at infinity must lie in [0, 1]"),
+                      std::string::npos)
+              << e.what();
+          }
+      }
   }
 
   TEST_F(IntegrationSchemes, EnergyLineSearchRefusesTheMidpointRule)
