@@ -1,12 +1,12 @@
 // Stability map of the dynamic integrators on the free-flying frame
 // (tests/common/free_frame.h, N = 10 segments a leg; doc/dynamics.md,
-// "Stability map on the frame"): for backward euler, newmark and midpoint
-// and time steps from 0.2 s down, the error of the tip's position
-// relative to the corner, largest over t = 1, 2, ..., end, against a
-// midpoint run of step h_ref (converged: its difference to h_ref / 2 is
-// printed), divided by the leg length; where a run stops, the time and the
-// solver's message. Wall time of each run (one run: the map is about
-// accuracy, not speed).
+// "Stability map on the frame"): for backward euler, newmark, midpoint and
+// generalized alpha (its default rho_inf = 0.8) and time steps from 0.2 s down,
+// the error of the tip's position relative to the corner, largest over t = 1,
+// 2, ..., end, against a midpoint run of step h_ref (converged: its difference
+// to h_ref / 2 is printed), divided by the leg length; where a run stops, the
+// time and the solver's message. Wall time of each run (one run: the map is
+// about accuracy, not speed).
 //
 // Usage: frame_stability_map [--end 6] [--reference-step 0.0025]
 // [--threads 1]. Writes
@@ -120,12 +120,12 @@ namespace
     std::ofstream csv("frame_stability_map.csv");
     csv << "integrator,h,error,reached,seconds,stopped\n";
     for (const std::string integrator :
-         {"backward euler", "newmark", "midpoint"})
+         {"backward euler", "newmark", "midpoint", "generalized alpha"})
       for (const double h : {0.2, 0.1, 0.05, 0.02, 0.01, 0.005})
         {
           const Run  run     = fly(integrator, h, options.end);
           const bool stopped = !run.failure.empty();
-          std::printf("%-14s h = %-6g error %.3e  %s%s\n",
+          std::printf("%-17s h = %-6g error %.3e  %s%s\n",
                       integrator.c_str(),
                       h,
                       error(run, reference),

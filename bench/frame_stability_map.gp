@@ -22,10 +22,10 @@ set title "Free-flying frame: accuracy and failures of the integrators"
 # is 1 where the run stopped early.
 completed(name, y) = (strcol(1) eq name && column(6) == 0) ? y : 1/0
 stopped(name, y)   = (strcol(1) eq name && column(6) == 1) ? y : 1/0
-n1 = "backward euler"; n2 = "newmark"; n3 = "midpoint"
+n1 = "backward euler"; n2 = "newmark"; n3 = "midpoint"; n4 = "generalized alpha"
 name(i) = value(sprintf("n%d", i))
 
-plot for [i=1:3] csv skip 1 using 2:(completed(name(i), $3)) \
+plot for [i=1:4] csv skip 1 using 2:(completed(name(i), $3)) \
        with linespoints lw 2 pt 7 lc i title name(i), \
-     for [i=1:3] csv skip 1 using 2:(stopped(name(i), $3)) \
+     for [i=1:4] csv skip 1 using 2:(stopped(name(i), $3)) \
        with points pt 2 ps 2 lw 2 lc i title name(i).", stopped"

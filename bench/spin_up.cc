@@ -3,8 +3,9 @@
 // deflection in the hub's frame of the rod against KRB's reduced model with
 // the centrifugal stiffening and without it, as CSV on standard output:
 //   time, rod, stiffened, linear
-// Usage: spin_up [segments [time step [end time [integrator]]]], defaults
-// 10, 0.005, 30, newmark. Chart: bench/spin_up.gp.
+// Usage: spin_up [segments [time step [end time [integrator [rho_inf]]]]],
+// defaults 10, 0.005, 30, newmark, 0.8 (the spectral radius at infinity of
+// "generalized alpha"). Chart: bench/spin_up.gp.
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -19,7 +20,8 @@ main(int argc, char *argv[])
   const double              h      = argc > 2 ? std::atof(argv[2]) : 0.005;
   const double              end    = argc > 3 ? std::atof(argv[3]) : 30;
   const std::string         method = argc > 4 ? argv[4] : "newmark";
-  const RodHistory          rod    = rod_spin_up(n, method, h, end);
+  const double              rho    = argc > 5 ? std::atof(argv[5]) : 0.8;
+  const RodHistory          rod    = rod_spin_up(n, method, h, end, rho);
   const std::vector<double> stiffened =
     reduced_tip_deflection(rod.time, rod.hub_radius, true);
   const std::vector<double> linear =

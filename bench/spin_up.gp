@@ -2,7 +2,7 @@
 # flexible beam (Kane, Ryan & Banerjee 1987; doc/dynamics.md, "Moving
 # supports"): the rod against KRB's reduced model with the centrifugal
 # stiffening, and the linear model without it, which diverges.
-#   spin_up 10 0.005 30 newmark > /tmp/spin_up.csv   (bench/spin_up.cc)
+#   spin_up 20 0.01 30 "generalized alpha" > /tmp/spin_up.csv   (bench/spin_up.cc)
 #   gnuplot -e "csv='/tmp/spin_up.csv'; out='doc/spin_up.png'" bench/spin_up.gp
 if (!exists("csv")) csv = 'spin_up.csv'
 if (!exists("out")) out = 'spin_up.png'
@@ -12,7 +12,7 @@ set output out
 set datafile separator comma
 set xlabel "t (s)"
 set ylabel "tip deflection in the hub's frame (m)"
-set title "Spin-up to 6 rad/s in 15 s: L = 10 m, EI = 1.4e4 N m^2, rho A = 1.2 kg/m (N = 10, Newmark, h = 0.005 s)"
+set title "Spin-up to 6 rad/s in 15 s: L = 10 m, EI = 1.4e4 N m^2, rho A = 1.2 kg/m (N = 20, generalized alpha, h = 0.01 s)"
 set grid
 set key bottom right
 set xrange [0:30]

@@ -94,6 +94,12 @@ namespace rodnet
       throw std::invalid_argument(entry + "End time\": " + number(p.end_time) +
                                   " s lies before the start time " +
                                   number(p.start_time) + " s");
+    const double rho = p.spectral_radius_at_infinity;
+    if (!(rho >= 0 && rho <= 1))
+      throw std::invalid_argument(
+        entry + "Spectral radius at infinity\": " + number(rho) +
+        " lies outside [0, 1]; 1 damps no frequency (as newmark), 0 removes "
+        "the highest in one step");
     check_damping();
     if (!p.dynamic())
       return;

@@ -98,6 +98,22 @@ namespace rodnet
   }
 
   void
+  IntegrationScheme::initial_inertial_force(const VectorType &u,
+                                            const VectorType &v,
+                                            const double      load_factor,
+                                            VectorType       &force) const
+  {
+    system.model.assemble(u, load_factor, &force, nullptr, true);
+    if (system.damping.m() != 0)
+      system.damping.vmult_add(force, v);
+    force *= -1.0;
+    for (unsigned int i = 0; i < system.has_mass.size(); ++i)
+      if (!system.has_mass[i])
+        force[i] = 0;
+    force.compress(dealii::VectorOperation::insert);
+  }
+
+  void
   IntegrationScheme::first_order_velocity(const StepStart  &step,
                                           const VectorType &x,
                                           VectorType       &v)

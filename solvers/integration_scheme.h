@@ -22,6 +22,9 @@ namespace rodnet
     const MatrixType &damping; ///< unconstrained
     /// Fixed rows and columns zero but the tangent's diagonal there.
     const MatrixType &constrained_damping;
+    /// The spectral radius at omega h -> infinity that a scheme with
+    /// controllable numerical dissipation is asked for (generalized alpha).
+    double spectral_radius_at_infinity = 1;
   };
 
   /// The velocity at which a scheme's damping force C v acts, in terms of
@@ -88,6 +91,15 @@ namespace rodnet
     /// (NewtonSolver::Problem::energy), which the energy line search needs.
     virtual bool
     has_incremental_potential() const
+    {
+      return true;
+    }
+
+    /// Whether the total energy of a stable run under constant loads never
+    /// grows, so that TimeIntegrator's energy watch may take growth for an
+    /// instability.
+    virtual bool
+    energy_never_grows() const
     {
       return true;
     }
@@ -181,6 +193,18 @@ namespace rodnet
     {
       return nullptr;
     }
+
+    /**
+     * The out-of-balance force lambda f - grad Pi(@p u) - C @p v of the
+     * start, M a_0, on the rows that carry mass (zero on the others), into
+     * @p force: the inertial force of the start that Newmark and
+     * generalized alpha carry.
+     */
+    void
+    initial_inertial_force(const VectorType &u,
+                           const VectorType &v,
+                           double            load_factor,
+                           VectorType       &force) const;
 
     /// v = (x - u_n) / h.
     static void

@@ -1,6 +1,7 @@
 // The registry of integration schemes: a new scheme adds its line (class,
 // name, description) to the list below and nothing else.
 #include <solvers/backward_euler_scheme.h>
+#include <solvers/generalized_alpha_scheme.h>
 #include <solvers/integration_scheme_registry.h>
 #include <solvers/midpoint_scheme.h>
 #include <solvers/newmark_scheme.h>
@@ -20,14 +21,15 @@ namespace rodnet
       r.add<QuasiStaticScheme>(
         "quasi-static",
         "equilibrium at every time, no inertia (creep, relaxation)");
-      r.add<BackwardEulerScheme>("backward euler",
-                                 "first order, numerically damped");
+      r.add<BackwardEulerScheme>("backward euler", "first order, damped");
       r.add<NewmarkScheme>("newmark",
                            "average acceleration, second order, undamped");
       r.add<MidpointScheme>(
         "midpoint",
-        "implicit midpoint rule with a discrete gradient, conserves the "
-        "energy of elastic rods (not for viscoelastic materials)");
+        "midpoint rule with a discrete gradient, conserves the energy of "
+        "elastic rods (not viscoelastic)");
+      r.add<GeneralizedAlphaScheme>("generalized alpha",
+                                    "second order, damps stiff modes");
       return r;
     }();
     return registry;

@@ -14,8 +14,8 @@ namespace rodnet
    * The time integrators (TimeIntegrator::Parameters::integrator, the scene
    * entry "Integrator"), in the order of registration, which is the order
    * of the selection and its help in --help: "quasi-static", "backward
-   * euler", "newmark", "midpoint". A new scheme adds its line to
-   * integration_scheme_registry.cc.
+   * euler", "newmark", "midpoint", "generalized alpha". A new scheme adds
+   * its line to integration_scheme_registry.cc.
    */
   const IntegrationSchemeRegistry &
   integration_scheme_registry();

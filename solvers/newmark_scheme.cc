@@ -13,14 +13,7 @@ namespace rodnet
                        const VectorType &v,
                        const double      load_factor)
   {
-    system.model.assemble(u, load_factor, &inertial_force, nullptr, true);
-    if (system.damping.m() != 0)
-      system.damping.vmult_add(inertial_force, v);
-    inertial_force *= -1.0;
-    for (unsigned int i = 0; i < system.has_mass.size(); ++i)
-      if (!system.has_mass[i])
-        inertial_force[i] = 0;
-    inertial_force.compress(dealii::VectorOperation::insert);
+    initial_inertial_force(u, v, load_factor, inertial_force);
   }
 
   void

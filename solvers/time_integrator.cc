@@ -373,7 +373,8 @@ namespace rodnet
     // (Newmark's rule has no energy bound for nonlinear rods), stopped
     // before it runs away. The reference restarts whenever the load moves.
     EnergyWatch watch;
-    watch.on = scheme.dynamic() && parameters.energy_growth_limit > 0;
+    watch.on = scheme.dynamic() && scheme.energy_never_grows() &&
+               parameters.energy_growth_limit > 0;
     watch.reference_load       = parameters.load_factor(from);
     watch.reference_activation = time_factors(from);
     if (watch.on)

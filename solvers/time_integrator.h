@@ -147,6 +147,10 @@ namespace rodnet
       double rayleigh_mass      = 0;
       double rayleigh_stiffness = 0;
       double viscous_drag       = 0;
+      /// The generalized-alpha scheme's spectral radius at omega h ->
+      /// infinity, in [0, 1]: 1 keeps every frequency (Newmark), 0
+      /// annihilates the highest in one step (GeneralizedAlphaScheme).
+      double spectral_radius_at_infinity = 0.8;
 
       /// Whether any damping coefficient is nonzero.
       bool
@@ -392,7 +396,8 @@ namespace rodnet
                       constrained_mass,
                       has_mass,
                       damping,
-                      constrained_damping};
+                      constrained_damping,
+                      parameters.spectral_radius_at_infinity};
     /// The scheme of Parameters::integrator, and the quasi-static one of
     /// the preload.
     std::unique_ptr<IntegrationScheme> scheme, preload_scheme;

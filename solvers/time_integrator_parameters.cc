@@ -24,7 +24,7 @@ namespace rodnet
                       "newmark",
                       Selection(names),
                       help + "All but quasi-static need the inertia of every "
-                             "material subsection in use. [-]");
+                             "material in use. [-]");
     // No lower bound in the pattern: a bad step is reported by the
     // scene with what is wrong, rather than as a pattern mismatch.
     prm.declare_entry("Time step",
@@ -83,6 +83,11 @@ namespace rodnet
                       "alpha, beta of C = alpha M + beta K (K at the start): "
                       "damping ratio alpha/(2 omega) + beta omega/2. [1/s, "
                       "s]");
+    prm.declare_entry("Spectral radius at infinity",
+                      "0.8",
+                      Double(),
+                      "generalized alpha: amplitude a stiff mode keeps per "
+                      "step. [-]");
     prm.declare_entry("Viscous drag per length",
                       "0",
                       Double(),
@@ -109,5 +114,6 @@ namespace rodnet
     rayleigh_mass      = dealii::Utilities::string_to_double(rayleigh[0]);
     rayleigh_stiffness = dealii::Utilities::string_to_double(rayleigh[1]);
     viscous_drag       = prm.get_double("Viscous drag per length");
+    spectral_radius_at_infinity = prm.get_double("Spectral radius at infinity");
   }
 } // namespace rodnet

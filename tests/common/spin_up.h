@@ -164,13 +164,15 @@ namespace rodnet
        * support moving in time), integrated with @p method in steps @p h
        * to @p end_time. The end vertex lies l/2 behind the clamped
        * section: the hub radius of the reference is l/2 (the midpoint
-       * clamp's first segment, l = L / (n - 1/2)).
+       * clamp's first segment, l = L / (n - 1/2)). @p spectral_radius is
+       * the generalized-alpha scheme's rho_inf.
        */
       inline RodHistory
       rod_spin_up(const unsigned int n,
                   const std::string &method,
                   const double       h,
-                  const double       end_time)
+                  const double       end_time,
+                  const double       spectral_radius = 0.8)
       {
         auto network = std::make_unique<RodNetwork>();
         network->add_rod(
@@ -190,11 +192,12 @@ namespace rodnet
            std::make_shared<const std::function<double(double)>>(theta)});
         model.finalize();
         TimeIntegrator::Parameters p;
-        p.integrator         = method;
-        p.time_step          = h;
-        p.end_time           = end_time;
-        p.load_factor        = [](double) { return 0.0; };
-        p.relative_tolerance = 1e-10;
+        p.integrator                  = method;
+        p.time_step                   = h;
+        p.end_time                    = end_time;
+        p.load_factor                 = [](double) { return 0.0; };
+        p.relative_tolerance          = 1e-10;
+        p.spectral_radius_at_infinity = spectral_radius;
         TimeIntegrator integrator(model, {{rho_A, rho_J}}, p);
         const auto    &vertices = model.network().rods()[0].vertices;
         const Vector3  pivot    = model.network().vertex(vertices[0]);

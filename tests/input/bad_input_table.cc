@@ -235,6 +235,18 @@ namespace
      1,
      "entry \"Solver/Time stepping/Viscous drag per length\": -2 N s/m^2 "
      "must not be negative"},
+    {"spectral_radius_above_one",
+     valid_cantilever + valid_time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Integrator = generalized alpha\n"
+               "    set Spectral radius at infinity = 1.2\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Solver/Time stepping/Spectral radius at infinity\": 1.2 lies "
+     "outside [0, 1]"},
     {"damping_in_quasi_static_run",
      valid_cantilever + valid_time_stepping +
        section("Solver",

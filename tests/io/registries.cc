@@ -97,7 +97,8 @@ namespace
               "continuation ]");
     EXPECT_EQ(
       tree.find("Solver")->find("Time stepping")->find("Integrator")->pattern,
-      "[Selection quasi-static|backward euler|newmark|midpoint ]");
+      "[Selection quasi-static|backward euler|newmark|midpoint|generalized "
+      "alpha ]");
   }
 
   TEST(Registries, OrderIsSortedOrThatOfRegistration)

@@ -9,6 +9,7 @@
 #include <solvers/integration_scheme_registry.h>
 #include <solvers/time_integrator.h>
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
@@ -89,7 +90,8 @@ namespace
               (std::vector<std::string>{"quasi-static",
                                         "backward euler",
                                         "newmark",
-                                        "midpoint"}));
+                                        "midpoint",
+                                        "generalized alpha"}));
     try
       {
         integration_scheme_registry().create("leapfrog", system);
@@ -106,13 +108,20 @@ namespace
       }
   }
 
+  // Generalized alpha at rho_inf = 0.8 (Chung & Hulbert 1993): alpha_m =
+  // 1/3, alpha_f = 4/9, gamma = 11/18, beta = 25/81, so c h^2 = (1 -
+  // alpha_m) / ((1 - alpha_f) beta) = 1458/375 and the damping velocity
+  // gamma/(beta h) (u - u_n) + (1 - gamma/beta) v_n, gamma/beta = 1.98.
   TEST_F(IntegrationSchemes, EveryIntegratorHasItsScheme)
   {
     const double h = 0.125, start = 1.5;
-    for (const Expected &e : {Expected{"quasi-static", false, 0, 1, 1, 0},
-                              Expected{"backward euler", true, 1, 1, 1, 0},
-                              Expected{"newmark", true, 4, 1, 2, 1},
-                              Expected{"midpoint", true, 2, 0.5, 1, 0}})
+    system.spectral_radius_at_infinity = 0.8;
+    for (const Expected &e :
+         {Expected{"quasi-static", false, 0, 1, 1, 0},
+          Expected{"backward euler", true, 1, 1, 1, 0},
+          Expected{"newmark", true, 4, 1, 2, 1},
+          Expected{"midpoint", true, 2, 0.5, 1, 0},
+          Expected{"generalized alpha", true, 1458.0 / 375, 1, 1.98, 0.98}})
       {
         const std::string &name = e.integrator;
         const auto scheme = integration_scheme_registry().create(name, system);
@@ -130,7 +139,7 @@ namespace
           << name;
         EXPECT_NEAR(scheme->damping_velocity(h).a * h, e.damping_ah, 1e-15)
           << name;
-        EXPECT_EQ(scheme->damping_velocity(h).b, e.damping_b) << name;
+        EXPECT_NEAR(scheme->damping_velocity(h).b, e.damping_b, 1e-15) << name;
       }
   }
 
@@ -168,9 +177,13 @@ namespace
     v -= u;
     v /= step.h;
 
+    // Generalized alpha with dissipation: its start solves M a_0 = p_0 (a
+    // state out of balance), whose damping force h (1 - gamma/(2 beta))
+    // C a_0 enters e_n.
+    system.spectral_radius_at_infinity = 0.8;
     for (const bool damped : {false, true})
       for (const std::string name :
-           {"quasi-static", "backward euler", "newmark"})
+           {"quasi-static", "backward euler", "newmark", "generalized alpha"})
         {
           if (damped)
             for (MatrixType *c : {&damping, &constrained_damping})
@@ -183,6 +196,26 @@ namespace
     const auto midpoint =
       integration_scheme_registry().create("midpoint", system);
     EXPECT_FALSE(midpoint->has_incremental_potential());
+  }
+
+  TEST_F(IntegrationSchemes, SpectralRadiusOutsideTheUnitIntervalIsRefused)
+  {
+    for (const double rho : {-0.1, 1.5, std::nan("")})
+      {
+        system.spectral_radius_at_infinity = rho;
+        try
+          {
+            integration_scheme_registry().create("generalized alpha", system);
+            ADD_FAILURE() << "took a spectral radius of " << rho;
+          }
+        catch (const std::invalid_argument &e)
+          {
+            EXPECT_NE(std::string(e.what()).find(
+                        "spectral radius at infinity must lie in [0, 1]"),
+                      std::string::npos)
+              << e.what();
+          }
+      }
   }
 
   TEST_F(IntegrationSchemes, EnergyLineSearchRefusesTheMidpointRule)
