@@ -396,24 +396,48 @@ namespace rodnet
   StaticSolver::solve_along_mode(VectorType   &u,
                                  const double  mode_load_factor,
                                  const double  load_factor,
-                                 double        energy_bound,
+                                 const double  energy_bound,
                                  double       &eigenvalue,
                                  JudgedResult *solved)
   {
     model.assemble(u, mode_load_factor, nullptr, &tangent);
-    const std::vector<double> mode =
-      lowest_eigenpairs(tangent, model.constraints(), 1, model.multiplier_dofs()).vectors[0];
+    const std::vector<double> mode = lowest_eigenpairs(tangent,
+                                                       model.constraints(),
+                                                       1,
+                                                       model.multiplier_dofs())
+                                       .vectors[0];
     // Displace the state along the mode so that its largest component
     // moves by the given fraction of the model size, and let Newton find
-    // the equilibrium nearby, on both sides.
-    const double distance =
-      parameters.branch_switch_amplitude * model.length_scale();
+    // the equilibrium nearby, on both sides. Where Newton diverges from
+    // both starts, they were too far for it (the classic kernel's windmill
+    // of Fig. 3b past the shaft's torsional buckling): half the distance,
+    // twice at most, before the branch counts as not found.
+    ModeSearch search;
+    search.best         = u;
+    search.energy_bound = energy_bound;
+    double distance = parameters.branch_switch_amplitude * model.length_scale();
+    for (unsigned int attempt = 0; attempt < 3 && !search.any_converged;
+         ++attempt, distance /= 2)
+      search_both_ways(u, mode, distance, load_factor, search);
+    if (!search.best_state)
+      return false;
+    model.set_state(*search.best_state);
+    u          = search.best;
+    eigenvalue = search.eigenvalue;
+    if (solved != nullptr)
+      *solved = search.best_result;
+    return true;
+  }
 
-    // The start's state returns unless a stable equilibrium is found.
-    StateGuard                start(model);
-    std::optional<ModelState> best_state;
-    VectorType                best = u;
-    JudgedResult              best_result;
+  void
+  StaticSolver::search_both_ways(const VectorType          &u,
+                                 const std::vector<double> &mode,
+                                 const double               distance,
+                                 const double               load_factor,
+                                 ModeSearch                &search)
+  {
+    // The start's state returns after each solve and on return.
+    const StateGuard start(model);
     for (const double sign : {1.0, -1.0})
       {
         model.set_state(start.saved_state());
@@ -422,27 +446,20 @@ namespace rodnet
           solve_at(trial, load_factor, nullptr, nullptr, true);
         if (!result.converged)
           continue;
+        search.any_converged = true;
         model.reset_reference(trial);
         const double energy =
           model.assemble(trial, load_factor, nullptr, nullptr);
         const double mu = lowest_eigenvalue(trial, load_factor);
-        if (mu > 0 && energy < energy_bound)
+        if (mu > 0 && energy < search.energy_bound)
           {
-            energy_bound = energy;
-            eigenvalue   = mu;
-            best         = trial;
-            best_state   = model.state();
-            best_result  = result;
+            search.energy_bound = energy;
+            search.eigenvalue   = mu;
+            search.best         = trial;
+            search.best_state   = model.state();
+            search.best_result  = result;
           }
       }
-    if (!best_state)
-      return false;
-    model.set_state(*best_state);
-    start.keep();
-    u = best;
-    if (solved != nullptr)
-      *solved = best_result;
-    return true;
   }
 
   void

@@ -259,6 +259,29 @@ namespace rodnet
                      double       &eigenvalue,
                      JudgedResult *solved = nullptr);
 
+    /// What solve_along_mode() found so far: the stable equilibrium of
+    /// lowest energy below energy_bound (best_state empty if none), and
+    /// whether any Newton solve from the mode converged at all.
+    struct ModeSearch
+    {
+      VectorType                best;
+      double                    energy_bound;
+      double                    eigenvalue = std::nan("");
+      std::optional<ModelState> best_state;
+      JudgedResult              best_result;
+      bool                      any_converged = false;
+    };
+
+    /// Newton at @p load_factor from @p u moved by @p distance along
+    /// @p mode, both ways, into @p search; the model's state is @p u's on
+    /// return.
+    void
+    search_both_ways(const VectorType          &u,
+                     const std::vector<double> &mode,
+                     double                     distance,
+                     double                     load_factor,
+                     ModeSearch                &search);
+
     /**
      * Start for a step to @p load_factor from the equilibrium @p u that has
      * no previous increment to extrapolate: the prescribed DoFs move to
