@@ -8,7 +8,7 @@
 //
 // Windmill (Fig. 3b): shaft of length 1 along z, three blades of length
 // 1/2 welded at the hub, blade tips pinned, shaft top clamped and turned by
-// tau_z = 1.5 rad in 15 load steps; the reaction moment M L_b/EI about e_z
+// tau_z = 1.5 rad in 15 load steps; the reaction moment M about e_z (EI = 1)
 // at the top. n = 5 ... 80 segments per blade, 2n on the shaft.
 //
 // Both models are those of tests/validation/junctions.cc
@@ -252,7 +252,7 @@ namespace
             options);
     if (options.windmill_max > 0)
       study("windmill",
-            "M L_b/EI at tau_z = 1.5 rad, 15 load steps",
+            "M (EI = 1) at tau_z = 1.5 rad, 15 load steps",
             up_to(5, options.windmill_max),
             windmill,
             options);
