@@ -244,6 +244,13 @@ namespace
         sizes.push_back(n);
       return sizes;
     };
+    // The observed order needs three sizes: 10, 20, 40 and 5, 10, 20 at
+    // the least.
+    if ((options.frame_max > 0 && options.frame_max < 40) ||
+        (options.windmill_max > 0 && options.windmill_max < 20))
+      throw std::invalid_argument(
+        "--frame-max must be 0 or at least 40, --windmill-max 0 or at least "
+        "20: the observed order needs three sizes");
     if (options.frame_max > 0)
       study("frame",
             "F L^2/EI at u_z/L = 1, 20 load steps",
