@@ -1,5 +1,6 @@
 // The gyroscopic force of the sections' spin on the centreline under the
 // midpoint rule (solvers/gyroscopic_coupling.h).
+#include <elements/quaternion.h>
 #include <solvers/gyroscopic_coupling.h>
 
 #include <Eigen/Dense>
@@ -9,15 +10,6 @@ namespace rodnet
 {
   namespace
   {
-    /// The cross-product matrix [a]_x: [a]_x b = a x b.
-    Eigen::Matrix3d
-    cross_matrix(const Vector3 &a)
-    {
-      Eigen::Matrix3d m;
-      m << 0, -a[2], a[1], a[2], 0, -a[0], -a[1], a[0], 0;
-      return m;
-    }
-
     /// q = (e_m x dt) / |e_m|^2, g = -J twist / h^2 q.
     Vector3
     turn_direction(const GyroscopicCoupling::SegmentStep &s)
