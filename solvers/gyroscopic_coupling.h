@@ -29,6 +29,9 @@ namespace rodnet
    * to t_n and t, hence to e - e_n), and the moment e_m x g = pbar dt / h
    * (exactly for a segment whose length does not change), which cancels the
    * turn of the spin in the balance of angular momentum.
+   *
+   * Serial, as the model is (it refuses more than one process; issue 37):
+   * it reads the mass matrix and the vectors by global index.
    */
   class GyroscopicCoupling
   {
