@@ -26,6 +26,13 @@ namespace rodnet
       return 1 / (h * h);
     }
 
+    /// grad Pi at the step's end.
+    std::vector<ForcePoint>
+    force_points() const override
+    {
+      return {{1, 1}};
+    }
+
     void
     finish(const StepStart &step, const VectorType &x, VectorType &v) override
     {

@@ -35,6 +35,13 @@ namespace rodnet
     double b;
   };
 
+  /// A point y = (1 - s) u_n + s u_{n+1} of a step and a weight.
+  struct ForcePoint
+  {
+    double s;
+    double weight;
+  };
+
   /// One step of length h from the state (u_n, v_n).
   struct StepStart
   {
@@ -110,6 +117,22 @@ namespace rodnet
     instability_advice() const
     {
       return "";
+    }
+
+    /**
+     * Where the step's balance of momentum M (v_{n+1} - v_n) / h + f = R
+     * takes the internal force: f = sum_k w_k grad Pi((1 - s_k) u_n + s_k
+     * u_{n+1}) under the loads and fields of the time t_n + s_k h (the
+     * mass term's correction and forces that do no work aside), so that
+     * the work of the loads and of a moving support's reaction R is the
+     * one the step's energy balance holds with (EnergyBalance). The
+     * trapezoidal rule's: Newmark's, whose M (v_{n+1} - v_n) / h is the
+     * mean of M a_n and M a_{n+1}, each under its own loads.
+     */
+    virtual std::vector<ForcePoint>
+    force_points() const
+    {
+      return {{0, 0.5}, {1, 0.5}};
     }
 
     /// Time at which the loads of the step from @p start to @p end act

@@ -54,6 +54,14 @@ namespace rodnet
       return false;
     }
 
+    /// grad Pi at the midpoint (the discrete gradient's correction has no
+    /// fixed rows).
+    std::vector<ForcePoint>
+    force_points() const override
+    {
+      return {{0.5, 1}};
+    }
+
     double
     load_time(const double start, const double end) const override
     {

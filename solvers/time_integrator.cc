@@ -268,7 +268,7 @@ namespace rodnet
                           VectorType        &v,
                           const Observer    &observer)
   {
-    EnergyWatch watch = watch_energy(scheme, from, u, v);
+    watch_energy(scheme, from, u, v);
     // Times closer than this to a grid point are on it (rounding of t).
     const double on_grid = 1e-9 * h;
     double       t       = from;
@@ -299,14 +299,20 @@ namespace rodnet
         ++n_steps;
         StepInfo info  = describe_step(scheme, t, length, u, v, result);
         info.wall_time = timer.wall_time();
-        check_energy(scheme, info, watch);
+        check_energy(scheme, info);
+        info.external_work = energy_balance.work();
         if (observer)
           observer(info, u, v);
         if (log != nullptr && parameters.progress_interval > 0 &&
             n_steps % parameters.progress_interval == 0)
           *log << "  t = " << t << " s: step " << n_steps << ", "
                << result.iterations << " Newton iterations, energy "
-               << info.kinetic_energy + info.potential_energy << " J\n";
+               << info.kinetic_energy + info.potential_energy << " J"
+               << (info.external_work != 0 ?
+                     ", work done on it " + time_string(info.external_work) +
+                       " J" :
+                     "")
+               << "\n";
       }
   }
 
@@ -352,73 +358,41 @@ namespace rodnet
     return info;
   }
 
-  std::vector<double>
-  TimeIntegrator::time_factors(const double time) const
-  {
-    std::vector<double> factors = model.activation_time_factors();
-    const std::vector<double> supports = model.support_time_factors(time);
-    factors.insert(factors.end(), supports.begin(), supports.end());
-    return factors;
-  }
-
-  TimeIntegrator::EnergyWatch
+  void
   TimeIntegrator::watch_energy(const IntegrationScheme &scheme,
                                const double             from,
                                const VectorType        &u,
                                const VectorType        &v)
   {
-    // Under a constant load factor the total energy of a dynamic run can
-    // only stay (conservative rods) or fall (dissipation); growth beyond
-    // energy_growth_limit of its scale marks an unstable integration
-    // (Newmark's rule has no energy bound for nonlinear rods), stopped
-    // before it runs away. The reference restarts whenever the load moves.
-    EnergyWatch watch;
-    watch.on = scheme.dynamic() && scheme.energy_never_grows() &&
-               parameters.energy_growth_limit > 0;
-    watch.reference_load       = parameters.load_factor(from);
-    watch.reference_activation = time_factors(from);
-    if (watch.on)
-      {
-        watch.reference =
-          kinetic_energy(mass, v) +
-          model.assemble(u, watch.reference_load, nullptr, nullptr);
-        watch.scale = std::abs(watch.reference);
-      }
-    return watch;
+    // The total energy of a stable dynamic run can only stay (conservative
+    // rods) or fall (dissipation) beyond the work that the loads, fields
+    // and supports do on it; more marks an unstable integration (Newmark's
+    // rule has no energy bound for nonlinear rods), stopped before it runs
+    // away.
+    const bool on = scheme.dynamic() && scheme.energy_never_grows() &&
+                    parameters.energy_growth_limit > 0;
+    energy_balance.start(
+      on,
+      parameters.energy_growth_limit,
+      on ? kinetic_energy(mass, v) : 0.0,
+      on ? model.assemble(u, parameters.load_factor(from), nullptr, nullptr) :
+           0.0);
   }
 
   void
   TimeIntegrator::check_energy(const IntegrationScheme &scheme,
-                               const StepInfo          &info,
-                               EnergyWatch             &watch) const
+                               const StepInfo          &info)
   {
     if (!std::isfinite(info.potential_energy) ||
         !std::isfinite(info.kinetic_energy))
       throw SolverFailure(
         "time stepping (" + scheme.name() +
         "): the energy is not finite at t = " + time_string(info.time) + " s");
-    if (!watch.on)
-      return;
-    const double energy = info.kinetic_energy + info.potential_energy;
-    // Fields and supports driven by time move as loads do.
-    const std::vector<double> activation = time_factors(info.time);
-    if (info.load_factor != watch.reference_load ||
-        activation != watch.reference_activation)
-      {
-        watch.reference_load       = info.load_factor;
-        watch.reference_activation = activation;
-        watch.reference            = energy;
-        watch.scale                = std::abs(energy);
-      }
-    watch.scale = std::max(watch.scale, info.kinetic_energy);
-    if (energy - watch.reference > parameters.energy_growth_limit * watch.scale)
-      throw SolverFailure("time stepping (" + scheme.name() +
-                          "): unstable at t = " + time_string(info.time) +
-                          " s, the energy grew from " +
-                          time_string(watch.reference) + " to " +
-                          time_string(energy) +
-                          " J under a constant load; take a smaller time step" +
-                          scheme.instability_advice());
+    energy_balance.check("time stepping (" + scheme.name() + ")",
+                         scheme.instability_advice(),
+                         info.time,
+                         info.kinetic_energy,
+                         info.potential_energy);
   }
 
   void
@@ -525,12 +499,18 @@ namespace rodnet
     // at the step's end.
     model.set_time_step(0);
     model.set_time(end_time);
+    const VectorType start_velocity = energy_balance.on() ? v : VectorType();
     scheme.finish(start, x, v);
     // Rows without mass (junction quaternions) have no velocity.
     for (unsigned int i = 0; i < has_mass.size(); ++i)
       if (!has_mass[i])
         v[i] = 0;
     v.compress(dealii::VectorOperation::insert);
+    // The work of the step, in its chart (before the reference reset).
+    if (energy_balance.on())
+      energy_balance.add_step(
+        {u, x, start_velocity, v, time, end_time, scheme.force_points()},
+        parameters.load_factor);
     last_increment = x;
     last_increment -= u;
     last_step_length = h;

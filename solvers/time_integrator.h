@@ -3,6 +3,7 @@
 
 #include <core/mass_matrix.h>
 #include <core/rod_model.h>
+#include <solvers/energy_balance.h>
 #include <solvers/integration_scheme.h>
 #include <solvers/newton_solver.h>
 #include <solvers/residual_criterion.h>
@@ -66,8 +67,9 @@ namespace rodnet
    * of the nominal step; the run then throws SolverFailure naming the time
    * and the reason, after every earlier step has been reported. A state or
    * energy that is not finite is a failure as well, never an output, and
-   * so is energy growth under constant loads (Parameters::
-   * energy_growth_limit): the signature of an unstable integration.
+   * so is energy growth beyond the work of the loads and supports
+   * (Parameters::energy_growth_limit, EnergyBalance): the signature of an
+   * unstable integration.
    *
    * Each integrator is an IntegrationScheme (solvers/<name>_scheme.h),
    * created by its name from integration_scheme_registry(); TimeIntegrator
@@ -127,10 +129,11 @@ namespace rodnet
       StrainLimits             strain_limits;
       NewtonSolver::Parameters newton;
       /**
-       * Dynamic runs stop as unstable (SolverFailure) where, over steps with
-       * an unchanged load factor, the total energy (kinetic plus potential)
-       * grows by more than this fraction of its scale (its value when the
-       * load last changed, or the largest kinetic energy since). 0: off.
+       * Dynamic runs stop as unstable (SolverFailure) where the total
+       * energy (kinetic plus potential) grows beyond the work of the loads,
+       * fields and moving supports by more than this fraction of its scale
+       * (the largest of the energy at the start, the kinetic energy, the
+       * energy and the work since; EnergyBalance). 0: off.
        */
       double energy_growth_limit = 0.01;
       /// Progress line on the log every this many steps (0: none).
@@ -206,6 +209,10 @@ namespace rodnet
       double        kinetic_energy = 0; ///< 1/2 v.Mv (0 quasi-statically)
       /// Stored energy minus load potential at the end of the step.
       double potential_energy = 0;
+      /// The work the loads, fields and moving supports did on the model
+      /// since the start of the run (dynamic runs with the energy watch
+      /// on; EnergyBalance).
+      double external_work = 0;
       double wall_time        = 0; ///< seconds spent on this step
       /// Quasi-static steps: the constrained tangent has no negative
       /// eigenvalue (always true for dynamic steps, which do not check).
@@ -261,18 +268,6 @@ namespace rodnet
     }
 
   private:
-    /// Watch of the total energy of a dynamic run under constant loads
-    /// (Parameters::energy_growth_limit).
-    struct EnergyWatch
-    {
-      bool   on             = false;
-      double reference_load = 0;
-      /// time_factors() when the load last changed.
-      std::vector<double> reference_activation;
-      double              reference = 0; ///< energy when the load last changed
-      double              scale     = 0;
-    };
-
     /// Runs steps of @p scheme from @p from to @p to, nominally @p h long.
     void
     advance(IntegrationScheme &scheme,
@@ -305,11 +300,6 @@ namespace rodnet
             const VectorType &v,
             double            h,
             double            end_time) const;
-
-    /// The factors of the activation fields and supports driven by
-    /// functions of time at @p time.
-    std::vector<double>
-    time_factors(double time) const;
 
     /// Newton for the step @p start of @p scheme from @p x, judged by the
     /// criterion of statics (by modified Newton if @p modified); a throw
@@ -345,19 +335,18 @@ namespace rodnet
                   const VectorType        &v,
                   const JudgedResult      &result);
 
-    /// The energy watch at the start (@p from) of a run of @p scheme.
-    EnergyWatch
+    /// Starts the energy watch at the start (@p from) of a run of
+    /// @p scheme.
+    void
     watch_energy(const IntegrationScheme &scheme,
                  double                   from,
                  const VectorType        &u,
                  const VectorType        &v);
 
     /// Throws SolverFailure for an energy of @p info that is not finite
-    /// or that grew beyond the limit under a constant load.
+    /// or whose balance (EnergyBalance) grew beyond the limit.
     void
-    check_energy(const IntegrationScheme &scheme,
-                 const StepInfo          &info,
-                 EnergyWatch             &watch) const;
+    check_energy(const IntegrationScheme &scheme, const StepInfo &info);
 
     /// Stability and rounding (quasi-static steps, check_equilibrium()) and
     /// the strain range of the converged @p u that @p result accepted into
@@ -401,6 +390,8 @@ namespace rodnet
     /// The scheme of Parameters::integrator, and the quasi-static one of
     /// the preload.
     std::unique_ptr<IntegrationScheme> scheme, preload_scheme;
+    /// The energy watch of dynamic runs.
+    EnergyBalance energy_balance{model, mass, damping};
     /// u_n - u_{n-1} and its step length (0: none yet), for the predictor.
     VectorType   last_increment;
     double       last_step_length = 0;

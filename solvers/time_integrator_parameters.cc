@@ -73,10 +73,9 @@ namespace rodnet
       "Energy growth limit",
       "0.01",
       Double(0),
-      "A dynamic run stops as unstable where, under an unchanged load "
-      "factor, the total energy grows by more than this fraction of its "
-      "value (or of the largest kinetic energy since the load last "
-      "changed); 0 switches the check off. [-]");
+      "A dynamic run stops as unstable where the total energy grows beyond "
+      "the work of the loads and moving supports by more than this fraction "
+      "of its scale (the largest energy or work); 0: no check. [-]");
     prm.declare_entry("Rayleigh damping",
                       "0, 0",
                       dealii::Patterns::List(Double(), 2, 2, ","),

@@ -150,10 +150,12 @@ namespace rodnet
       }
 
       /// The spin-up history of the rod: times and tip deflection in the
-      /// frame of the hub; the solver's message if it stopped early.
+      /// frame of the hub, total energy and the work done on the rod
+      /// (TimeIntegrator::StepInfo); the solver's message if it stopped
+      /// early.
       struct RodHistory
       {
-        std::vector<double> time, tip;
+        std::vector<double> time, tip, energy, work;
         std::string         failure;
         double              hub_radius = 0;
       };
@@ -219,6 +221,9 @@ namespace rodnet
                              history.time.push_back(info.time);
                              history.tip.push_back(-std::sin(a) * arm[0] +
                                                    std::cos(a) * arm[1]);
+                             history.energy.push_back(info.kinetic_energy +
+                                                      info.potential_energy);
+                             history.work.push_back(info.external_work);
                            });
           }
         catch (const SolverFailure &e)

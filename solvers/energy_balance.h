@@ -1,0 +1,143 @@
+#ifndef RODNET_SOLVERS_ENERGY_BALANCE_H
+#define RODNET_SOLVERS_ENERGY_BALANCE_H
+
+#include <core/rod_model.h>
+#include <solvers/integration_scheme.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rodnet
+{
+  /// The two ends of a converged time step, in the step's chart (before
+  /// the model's reference reset).
+  struct StepEnds
+  {
+    const VectorType &u0, &u1; ///< u_n, u_{n+1}
+    const VectorType &v0, &v1; ///< v_n, v_{n+1}
+    double            time, end_time;
+    /// Where the step's scheme takes grad Pi
+    /// (IntegrationScheme::force_points()).
+    std::vector<ForcePoint> force_points;
+  };
+
+  /**
+   * The energy watch of a dynamic run (doc/dynamics.md, "Failures"): the
+   * balance of the total energy E = 1/2 v.Mv + Pi against the work W that
+   * the loads, the activation fields and the supports moving in time do
+   * on the model,
+   *   B = E - E_0 - W,
+   * which no stable run makes grow: the midpoint rule keeps it at zero to
+   * the Newton tolerance, the others and damping lower it. Growth beyond a
+   * fraction of its scale (the largest of |E_0|, the kinetic energy, |E|
+   * and |W| so far) marks an unstable integration, stopped before it runs
+   * away.
+   *
+   * A step from t_n to t_{n+1} is balanced as its scheme's discrete
+   * system is: the scheme takes grad Pi at force points
+   * (IntegrationScheme::force_points()) y_k = (1 - s_k) u_n + s_k
+   * u_{n+1} with weights w_k, under the loads and fields p_k of the time
+   * t_n + s_k h, so that the step adds to B
+   *   Delta B = Delta K + sum_k w_k [Pi(u_{n+1}, p_k) - Pi(u_n, p_k)] - W_s,
+   * the rest of the change of Pi being the loads' and fields' work (the
+   * midpoint rule: its discrete gradient at p_{n+1/2}; Newmark: the
+   * trapezoidal rule, whose carried inertial force holds the loads of
+   * both ends). W_s is the supports' work on their fixed DoFs, with the
+   * reaction there that the step's balance of momentum holds with,
+   *   W_s = [M (v_{n+1} - v_n) / h + f + C (v_n + v_{n+1}) / 2]_fixed
+   *         . (u_{n+1} - u_n)_fixed,
+   * f = sum_k w_k grad Pi(y_k, p_k) unconstrained: the equation of motion
+   * M a + C v + grad Pi = R, with R the reaction, gives dE/dt =
+   * R.v_fixed - v.Cv. With the midpoint rule's own point the balance holds
+   * to the Newton tolerance; the trapezoidal rule on a midpoint run would
+   * miss the work by percents where stiff modes ring. A step where nothing
+   * moves costs nothing more; one where the loads, fields or supports move
+   * two energy assemblies per force point (one of them with the gradient
+   * where a support moves).
+   */
+  class EnergyBalance
+  {
+  public:
+    /// @p model, its unconstrained mass matrix @p mass and damping matrix
+    /// @p damping (empty: none) must outlive this object; the model must be
+    /// finalized.
+    EnergyBalance(RodModel         &model,
+                  const MatrixType &mass,
+                  const MatrixType &damping);
+
+    /// (Re)starts the watch, on or off, at the state of energies
+    /// @p kinetic and @p potential; @p growth_limit is the fraction of the
+    /// scale the balance may grow by.
+    void
+    start(bool on, double growth_limit, double kinetic, double potential);
+
+    /// Whether the watch is on.
+    bool
+    on() const
+    {
+      return watching;
+    }
+
+    /// Records the work of the converged step @p ends, with the load
+    /// factor as a function of time @p load_factor. Leaves the model at
+    /// ends.end_time.
+    void
+    add_step(const StepEnds                     &ends,
+             const std::function<double(double)> &load_factor);
+
+    /**
+     * Adds the step last recorded, which ended with the energies
+     * @p kinetic and @p potential, to the balance, and throws
+     * SolverFailure naming @p who at @p time (and appending @p advice)
+     * where the balance grew beyond the limit.
+     */
+    void
+    check(const std::string &who,
+          const std::string &advice,
+          double             time,
+          double             kinetic,
+          double             potential);
+
+    /// The work W done on the model since start().
+    double
+    work() const
+    {
+      return external_work;
+    }
+
+  private:
+    /// Whether the load factor @p load_factor or a field driven in time
+    /// changes over the step @p ends (at its ends and force points).
+    bool
+    parameters_move(const StepEnds                      &ends,
+                    const std::function<double(double)> &load_factor);
+
+    /// The supports' work W_s of @p ends under the step's mean internal
+    /// force @p force.
+    double
+    support_work(const StepEnds &ends, const VectorType &force) const;
+
+    RodModel         &model;
+    const MatrixType &mass;
+    const MatrixType &damping;
+    /// The DoFs fixed by supports (no junction copies).
+    std::vector<global_dof_index> fixed;
+
+    bool   watching     = false;
+    double growth_limit = 0;
+    double start_energy = 0;
+    double scale        = 0;
+    double balance      = 0;
+    double external_work  = 0;
+    double last_kinetic   = 0;
+    double last_potential = 0;
+    /// The step last recorded: whether its loads, fields or supports
+    /// moved, and then Pi(u_{n+1}, p*) - Pi(u_n, p*) and W_s.
+    bool   step_moved            = false;
+    double step_potential_change = 0;
+    double step_support_work     = 0;
+  };
+} // namespace rodnet
+
+#endif
