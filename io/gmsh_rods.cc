@@ -106,7 +106,8 @@ namespace rodnet
       const std::string where =
         "mesh \"" + path + "\", physical tag " + std::to_string(tag);
       const std::optional<long> start = open_chain_start(segments, where);
-      nodes                           = walk(segments.neighbours,
+      // A closed chain starts anywhere.
+      nodes = walk(segments.neighbours,
                    start ? *start : segments.neighbours.begin()->first);
       RodChain chain;
       chain.tag    = tag;
