@@ -9,6 +9,71 @@
 
 namespace rodnet
 {
+  namespace
+  {
+    /// The undeformed material frame D^j of segment @p j of rod @p r
+    /// (@p rod), whose edge is @p e: d1 is the rod's director hint normal
+    /// to the tangent, turned where the rod's frame turns.
+    Quaternion
+    undeformed_segment_frame(const Rod         &rod,
+                             const unsigned int r,
+                             const unsigned int j,
+                             const Vector3     &e)
+    {
+      const Vector3 t  = e / e.norm();
+      Vector3       d1 = rod.director_hint - rod.director_hint.dot(t) * t;
+      if (!(d1.norm() > 1e-8 * rod.director_hint.norm()))
+        throw std::invalid_argument(
+          "rod " + std::to_string(r) + ", segment " + std::to_string(j) +
+          ": the director d1 hint is parallel to the segment; choose "
+          "another \"Director d1\"");
+      d1.normalize();
+      // A turned frame turns evenly along a closed rod.
+      const double turn = M_PI * rod.frame_half_turns * j / rod.segments.size();
+
+      d1 = std::cos(turn) * d1 + std::sin(turn) * t.cross(d1);
+      Matrix3 R;
+      R.col(0) = d1;
+      R.col(1) = t.cross(d1);
+      R.col(2) = t;
+      return Quaternion(R).normalized();
+    }
+
+    /// The rest length and the undeformed frame of each segment of the
+    /// rods of @p network, per cell, between the vertices @p undeformed.
+    void
+    set_undeformed_segments(const RodNetwork           &network,
+                            const std::vector<Vector3> &undeformed,
+                            std::vector<double>        &rest_lengths,
+                            std::vector<Quaternion>    &frames)
+    {
+      const auto &rods = network.rods();
+      for (unsigned int r = 0; r < rods.size(); ++r)
+        {
+          const Rod &rod = rods[r];
+          for (unsigned int j = 0; j < rod.segments.size(); ++j)
+            {
+              const unsigned int cell = rod.segments[j];
+              const Vector3      e =
+                undeformed[rod.vertices[(j + 1) % rod.vertices.size()]] -
+                undeformed[rod.vertices[j]];
+              rest_lengths[cell] = e.norm();
+              frames[cell]       = undeformed_segment_frame(rod, r, j, e);
+            }
+        }
+    }
+
+    /// The zero displacement of @p layout's DoFs: a scratch vector of this
+    /// process alone.
+    dealii::TrilinosWrappers::MPI::Vector
+    zero_displacement(const DofLayout &layout)
+    {
+      return dealii::TrilinosWrappers::MPI::Vector(dealii::complete_index_set(
+                                                     layout.n_dofs()),
+                                                   MPI_COMM_SELF);
+    }
+  } // namespace
+
   Configuration::Configuration(
     const RodNetwork                          &network_,
     const DofLayout                           &layout_,
@@ -26,37 +91,7 @@ namespace rodnet
     segment_index.resize(n_cells);
     for (unsigned int s = 0; s < layout->segments().size(); ++s)
       segment_index[layout->segments()[s].cell] = s;
-
-    const auto &rods = network->rods();
-    for (unsigned int r = 0; r < rods.size(); ++r)
-      {
-        const Rod &rod = rods[r];
-        for (unsigned int j = 0; j < rod.segments.size(); ++j)
-          {
-            const unsigned int cell = rod.segments[j];
-            const Vector3      e =
-              undeformed[rod.vertices[(j + 1) % rod.vertices.size()]] -
-              undeformed[rod.vertices[j]];
-            rest_lengths[cell] = e.norm();
-            const Vector3 t    = e / rest_lengths[cell];
-            Vector3       d1 = rod.director_hint - rod.director_hint.dot(t) * t;
-            if (!(d1.norm() > 1e-8 * rod.director_hint.norm()))
-              throw std::invalid_argument(
-                "rod " + std::to_string(r) + ", segment " + std::to_string(j) +
-                ": the director d1 hint is parallel to the segment; choose "
-                "another \"Director d1\"");
-            d1.normalize();
-            // A turned frame turns evenly along a closed rod.
-            const double turn =
-              M_PI * rod.frame_half_turns * j / rod.segments.size();
-            d1 = std::cos(turn) * d1 + std::sin(turn) * t.cross(d1);
-            Matrix3 R;
-            R.col(0)     = d1;
-            R.col(1)     = t.cross(d1);
-            R.col(2)     = t;
-            frames[cell] = Quaternion(R).normalized();
-          }
-      }
+    set_undeformed_segments(*network, undeformed, rest_lengths, frames);
 
     for (const HingeStencil &h : layout->hinges())
       {
@@ -83,17 +118,16 @@ namespace rodnet
       }
 
     // The reference twist of kernels that track it is that of the
-    // undeformed configuration, which has zero displacement (a scratch
-    // vector of this process alone).
-    dealii::TrilinosWrappers::MPI::Vector zero(dealii::complete_index_set(
-                                                 layout->n_dofs()),
-                                               MPI_COMM_SELF);
+    // undeformed configuration, which has zero displacement.
+    const dealii::TrilinosWrappers::MPI::Vector zero =
+      zero_displacement(*layout);
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
       hinge_refs[i].twist =
         kernels[i]->strains(hinge_dofs(zero, layout->hinges()[i]),
                             hinge_refs[i])[2];
     // Natural strains are the undeformed strains with the reference twist
     // just set (for the classic kernel, the twist of the undeformed rod).
+    const auto &rods = network->rods();
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
       {
         const HingeStencil &h = layout->hinges()[i];

@@ -61,10 +61,9 @@ namespace rodnet
       return !((hint - hint.dot(t) * t).norm() > 1e-8 * hint.norm());
     }
 
-    /// Node names, indices and positions: everything that does not need
-    /// the beams' ends to be counted.
+    /// Each node has a name of its own and a finite position.
     void
-    check_nodes_and_beams(const RodGraph &graph, const double tolerance)
+    check_node_names(const RodGraph &graph)
     {
       std::set<std::string> names;
       for (unsigned int n = 0; n < graph.nodes.size(); ++n)
@@ -81,34 +80,44 @@ namespace rodnet
                                         " has a non-finite position " +
                                         describe(node.position));
         }
+    }
 
-      for (unsigned int b = 0; b < graph.beams.size(); ++b)
-        {
-          const RodGraph::Beam &beam = graph.beams[b];
-          if (beam.from >= graph.nodes.size() || beam.to >= graph.nodes.size())
-            throw std::invalid_argument(
-              "beam " + std::to_string(b) + " joins nodes " +
-              std::to_string(beam.from) + " and " + std::to_string(beam.to) +
-              " but the network has " + std::to_string(graph.nodes.size()) +
-              " nodes");
-          if (beam.from == beam.to)
-            throw std::invalid_argument(
-              describe(graph, b) +
-              " starts and ends at the same node; a closed beam loop needs "
-              "a second node");
-          const Vector3 chord =
-            graph.nodes[beam.to].position - graph.nodes[beam.from].position;
-          if (chord.norm() <= tolerance)
-            throw std::invalid_argument(
-              describe(graph, b) + " has zero length (its ends " +
-              describe_distance(chord.norm(), tolerance) + ")");
-          if (beam.director_hint != Vector3::Zero() &&
-              parallel(beam.director_hint, chord))
-            throw std::invalid_argument(
-              describe(graph, b) + ": its director hint " +
-              describe(beam.director_hint) + " is parallel to the beam");
-        }
+    /// Beam @p b joins two distinct nodes of the graph, more than
+    /// @p tolerance apart, and its director hint is not along its chord.
+    void
+    check_beam(const RodGraph    &graph,
+               const unsigned int b,
+               const double       tolerance)
+    {
+      const RodGraph::Beam &beam = graph.beams[b];
+      if (beam.from >= graph.nodes.size() || beam.to >= graph.nodes.size())
+        throw std::invalid_argument(
+          "beam " + std::to_string(b) + " joins nodes " +
+          std::to_string(beam.from) + " and " + std::to_string(beam.to) +
+          " but the network has " + std::to_string(graph.nodes.size()) +
+          " nodes");
+      if (beam.from == beam.to)
+        throw std::invalid_argument(
+          describe(graph, b) +
+          " starts and ends at the same node; a closed beam loop needs "
+          "a second node");
+      const Vector3 chord =
+        graph.nodes[beam.to].position - graph.nodes[beam.from].position;
+      if (chord.norm() <= tolerance)
+        throw std::invalid_argument(
+          describe(graph, b) + " has zero length (its ends " +
+          describe_distance(chord.norm(), tolerance) + ")");
+      if (beam.director_hint != Vector3::Zero() &&
+          parallel(beam.director_hint, chord))
+        throw std::invalid_argument(
+          describe(graph, b) + ": its director hint " +
+          describe(beam.director_hint) + " is parallel to the beam");
+    }
 
+    /// No two nodes within @p tolerance of each other.
+    void
+    check_coincident_nodes(const RodGraph &graph, const double tolerance)
+    {
       // Distinct nodes at one point would be rod ends that look joined but
       // are not. Sorting along x keeps the search near O(n log n).
       std::vector<unsigned int> order(graph.nodes.size());
@@ -137,6 +146,17 @@ namespace rodnet
           }
     }
 
+    /// Node names, indices and positions: everything that does not need
+    /// the beams' ends to be counted.
+    void
+    check_nodes_and_beams(const RodGraph &graph, const double tolerance)
+    {
+      check_node_names(graph);
+      for (unsigned int b = 0; b < graph.beams.size(); ++b)
+        check_beam(graph, b, tolerance);
+      check_coincident_nodes(graph, tolerance);
+    }
+
     /// d1 of beam @p b as the header documents it.
     Vector3
     director_hint(const RodGraph &graph, const unsigned int b)
@@ -152,6 +172,133 @@ namespace rodnet
       chord.cwiseAbs().minCoeff(&axis);
       return Vector3::Unit(axis);
     }
+
+    /// The settings of @p graph that are not its nodes and beams.
+    void
+    check_graph_settings(const RodGraph    &graph,
+                         const unsigned int segments_per_beam)
+    {
+      if (segments_per_beam == 0)
+        throw std::invalid_argument(
+          "the number of segments per beam must be at least 1");
+      if (graph.nodes.empty() || graph.beams.empty())
+        throw std::invalid_argument("the network has no beam");
+      if (!graph.default_director.allFinite() ||
+          graph.default_director == Vector3::Zero())
+        throw std::invalid_argument("the network's default director " +
+                                    describe(graph.default_director) +
+                                    " is zero or not finite");
+    }
+
+    /// The distance (m) within which nodes of @p graph are one point:
+    /// coincident_node_tolerance relative to the size of the whole graph.
+    double
+    coincidence_tolerance(const RodGraph &graph)
+    {
+      Vector3 low = graph.nodes.front().position, high = low;
+      for (const RodGraph::Node &node : graph.nodes)
+        {
+          low  = low.cwiseMin(node.position);
+          high = high.cwiseMax(node.position);
+        }
+      return coincident_node_tolerance * std::max((high - low).norm(), 1e-300);
+    }
+
+    /// The vertices of the rod of beam @p b: its interior points between
+    /// its nodes, or a straight split into its segments.
+    std::vector<Vector3>
+    beam_points(const RodGraph    &graph,
+                const unsigned int b,
+                const unsigned int segments_per_beam)
+    {
+      const RodGraph::Beam &beam = graph.beams[b];
+      const Vector3        &from = graph.nodes[beam.from].position;
+      const Vector3        &to   = graph.nodes[beam.to].position;
+      std::vector<Vector3>  points;
+      if (beam.interior.empty())
+        {
+          points = generators::straight(from,
+                                        to,
+                                        beam.segments > 0 ? beam.segments :
+                                                            segments_per_beam);
+          // Rod ends sit exactly on their node, whatever the round-off
+          // of the split.
+          points.back() = to;
+        }
+      else
+        {
+          points.push_back(from);
+          points.insert(points.end(),
+                        beam.interior.begin(),
+                        beam.interior.end());
+          points.push_back(to);
+        }
+      return points;
+    }
+
+    /// Adds a rod to @p network for each beam of @p graph, rod b for beam
+    /// b; returns the rod ends at each node.
+    std::vector<std::vector<RodEnd>>
+    add_beam_rods(const RodGraph    &graph,
+                  const unsigned int segments_per_beam,
+                  const std::string &hinge_kernel,
+                  const NaturalShape natural_shape,
+                  RodNetwork        &network)
+    {
+      std::vector<std::vector<RodEnd>> node_ends(graph.nodes.size());
+      for (unsigned int b = 0; b < graph.beams.size(); ++b)
+        {
+          network.add_rod(beam_points(graph, b, segments_per_beam),
+                          false,
+                          director_hint(graph, b),
+                          hinge_kernel,
+                          natural_shape);
+          node_ends[graph.beams[b].from].push_back(RodEnd{b, true});
+          node_ends[graph.beams[b].to].push_back(RodEnd{b, false});
+        }
+      return node_ends;
+    }
+
+    /// Joins the rod ends @p node_ends at each node of @p graph in
+    /// built.network: a junction of the node's kind, or the name of a
+    /// free end; fills built.node_junction and built.node_vertex.
+    void
+    join_beam_ends(const RodGraph                         &graph,
+                   const std::vector<std::vector<RodEnd>> &node_ends,
+                   BuiltNetwork                           &built)
+    {
+      RodNetwork &network = *built.network;
+      built.node_junction.assign(graph.nodes.size(), -1);
+      built.node_vertex.resize(graph.nodes.size());
+      for (unsigned int n = 0; n < graph.nodes.size(); ++n)
+        {
+          const RodGraph::Node      &node  = graph.nodes[n];
+          const std::vector<RodEnd> &ends  = node_ends[n];
+          const std::string          where = "node " + quoted(node.name);
+          if (ends.empty())
+            throw std::invalid_argument(where + " is not the end of any beam");
+          built.node_vertex[n] = network.end_vertex(ends.front());
+          if (ends.size() == 1 && !node.kind)
+            {
+              // A free end: scenes may still refer to it by the node's name.
+              network.name_vertex(node.name, built.node_vertex[n]);
+              continue;
+            }
+          // A welded or pinned "junction" of a single beam would most
+          // likely be a beam missing from the input, so it is refused here
+          // although RodNetwork accepts a welded one as a rotation handle.
+          if (ends.size() == 1 && (*node.kind == JunctionKind::welded ||
+                                   *node.kind == JunctionKind::pinned))
+            throw std::invalid_argument(
+              where + " is " + to_string(*node.kind) +
+              " but only one beam ends there; a single beam end can be "
+              "clamped, welded and pinned, or free (no kind)");
+          built.node_junction[n] =
+            network.add_junction(node.name,
+                                 node.kind.value_or(JunctionKind::welded),
+                                 ends);
+        }
+    }
   } // namespace
 
   BuiltNetwork
@@ -160,98 +307,19 @@ namespace rodnet
                     const std::string &hinge_kernel,
                     const NaturalShape natural_shape)
   {
-    if (segments_per_beam == 0)
-      throw std::invalid_argument(
-        "the number of segments per beam must be at least 1");
-    if (graph.nodes.empty() || graph.beams.empty())
-      throw std::invalid_argument("the network has no beam");
-    if (!graph.default_director.allFinite() ||
-        graph.default_director == Vector3::Zero())
-      throw std::invalid_argument("the network's default director " +
-                                  describe(graph.default_director) +
-                                  " is zero or not finite");
-
-    // Nodes closer than the tolerance relative to the size of the whole
-    // graph are one point.
-    Vector3 low = graph.nodes.front().position, high = low;
-    for (const RodGraph::Node &node : graph.nodes)
-      {
-        low  = low.cwiseMin(node.position);
-        high = high.cwiseMax(node.position);
-      }
-    check_nodes_and_beams(graph,
-                          coincident_node_tolerance *
-                            std::max((high - low).norm(), 1e-300));
+    check_graph_settings(graph, segments_per_beam);
+    check_nodes_and_beams(graph, coincidence_tolerance(graph));
 
     BuiltNetwork built;
-    built.network                            = std::make_unique<RodNetwork>();
-    RodNetwork                      &network = *built.network;
-    std::vector<std::vector<RodEnd>> node_ends(graph.nodes.size());
-    for (unsigned int b = 0; b < graph.beams.size(); ++b)
-      {
-        const RodGraph::Beam &beam = graph.beams[b];
-        const Vector3        &from = graph.nodes[beam.from].position;
-        const Vector3        &to   = graph.nodes[beam.to].position;
-        std::vector<Vector3>  points;
-        if (beam.interior.empty())
-          {
-            points =
-              generators::straight(from,
-                                   to,
-                                   beam.segments > 0 ? beam.segments :
-                                                       segments_per_beam);
-            // Rod ends sit exactly on their node, whatever the round-off
-            // of the split.
-            points.back() = to;
-          }
-        else
-          {
-            points.push_back(from);
-            points.insert(points.end(),
-                          beam.interior.begin(),
-                          beam.interior.end());
-            points.push_back(to);
-          }
-        network.add_rod(points,
-                        false,
-                        director_hint(graph, b),
-                        hinge_kernel,
-                        natural_shape);
-        node_ends[beam.from].push_back(RodEnd{b, true});
-        node_ends[beam.to].push_back(RodEnd{b, false});
-      }
-
-    built.node_junction.assign(graph.nodes.size(), -1);
-    built.node_vertex.resize(graph.nodes.size());
-    for (unsigned int n = 0; n < graph.nodes.size(); ++n)
-      {
-        const RodGraph::Node      &node  = graph.nodes[n];
-        const std::vector<RodEnd> &ends  = node_ends[n];
-        const std::string          where = "node " + quoted(node.name);
-        if (ends.empty())
-          throw std::invalid_argument(where + " is not the end of any beam");
-        built.node_vertex[n] = network.end_vertex(ends.front());
-        if (ends.size() == 1 && !node.kind)
-          {
-            // A free end: scenes may still refer to it by the node's name.
-            network.name_vertex(node.name, built.node_vertex[n]);
-            continue;
-          }
-        // A welded or pinned "junction" of a single beam would most likely
-        // be a beam missing from the input, so it is refused here although
-        // RodNetwork accepts a welded one as a rotation handle.
-        if (ends.size() == 1 && (*node.kind == JunctionKind::welded ||
-                                 *node.kind == JunctionKind::pinned))
-          throw std::invalid_argument(
-            where + " is " + to_string(*node.kind) +
-            " but only one beam ends there; a single beam end can be clamped, "
-            "welded and pinned, or free (no kind)");
-        built.node_junction[n] =
-          network.add_junction(node.name,
-                               node.kind.value_or(JunctionKind::welded),
-                               ends);
-      }
-    network.create_triangulation();
+    built.network = std::make_unique<RodNetwork>();
+    join_beam_ends(graph,
+                   add_beam_rods(graph,
+                                 segments_per_beam,
+                                 hinge_kernel,
+                                 natural_shape,
+                                 *built.network),
+                   built);
+    built.network->create_triangulation();
     return built;
   }
 } // namespace rodnet

@@ -20,6 +20,183 @@ namespace rodnet
       s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
       return s.str();
     }
+
+    /// Rod @p rod has enough vertices for a rod @p closed or not, each
+    /// finite.
+    void
+    check_rod_vertices(const std::vector<Vector3> &rod_points,
+                       const bool                  closed,
+                       const unsigned int          rod)
+    {
+      const unsigned int n = rod_points.size();
+      if (n < (closed ? 3u : 2u))
+        throw std::invalid_argument(
+          "rod " + std::to_string(rod) + " has " + std::to_string(n) +
+          " vertices; an open rod needs at least 2, a closed one at least 3");
+      for (const Vector3 &p : rod_points)
+        if (!p.allFinite())
+          throw std::invalid_argument("rod " + std::to_string(rod) +
+                                      " has a non-finite vertex " +
+                                      describe(p));
+    }
+
+    /// The distance within which two vertices of @p rod_points coincide:
+    /// 1e-12 of the rod's size (its bounding sphere about its first).
+    double
+    rod_point_tolerance(const std::vector<Vector3> &rod_points)
+    {
+      double extent = 0;
+      for (const Vector3 &p : rod_points)
+        extent = std::max(extent, (p - rod_points[0]).norm());
+      return 1e-12 * std::max(extent, 1e-300);
+    }
+
+    /// No segment of rod @p rod is @p tolerance long or shorter.
+    void
+    check_rod_segments(const std::vector<Vector3> &rod_points,
+                       const bool                  closed,
+                       const unsigned int          rod,
+                       const double                tolerance)
+    {
+      const unsigned int n          = rod_points.size();
+      const unsigned int n_segments = closed ? n : n - 1;
+      for (unsigned int j = 0; j < n_segments; ++j)
+        if ((rod_points[(j + 1) % n] - rod_points[j]).norm() <= tolerance)
+          throw std::invalid_argument(
+            "rod " + std::to_string(rod) + ": zero-length segment " +
+            std::to_string(j) + " between vertices " + std::to_string(j) +
+            " and " + std::to_string((j + 1) % n) + " at " +
+            describe(rod_points[j]));
+    }
+
+    /// The axis (0, 1, 2) along which @p rod_points spread the most.
+    unsigned int
+    largest_spread_axis(const std::vector<Vector3> &rod_points)
+    {
+      Vector3 low = rod_points[0], high = rod_points[0];
+      for (const Vector3 &p : rod_points)
+        {
+          low  = low.cwiseMin(p);
+          high = high.cwiseMax(p);
+        }
+      const Vector3 spread(high - low);
+      unsigned int  axis = 0;
+      spread.maxCoeff(&axis);
+      return axis;
+    }
+
+    /// No two vertices of rod @p rod within @p tolerance, but neighbours
+    /// and the pairs that close a rod.
+    void
+    check_distinct_rod_vertices(const std::vector<Vector3> &rod_points,
+                                const bool                  closed,
+                                const unsigned int          rod,
+                                const double                tolerance)
+    {
+      // Coincident but not consecutive vertices would make two segments
+      // meet at a point that the mesh does not know as shared. Sorting
+      // along the axis of largest spread keeps the search near O(n log n).
+      const unsigned int n    = rod_points.size();
+      const unsigned int axis = largest_spread_axis(rod_points);
+      // An open rod whose last segment lies on its first one, (x_{n-2},
+      // x_{n-1}) = (x_0, x_1), is closed through them (the clamped closure
+      // of Korner et al. section 5(d)): those two pairs may coincide.
+      const bool end_segments_overlap =
+        !closed && n >= 5 &&
+        (rod_points[0] - rod_points[n - 2]).norm() <= tolerance &&
+        (rod_points[1] - rod_points[n - 1]).norm() <= tolerance;
+      const auto overlap_pair = [&](const unsigned int i,
+                                    const unsigned int k) {
+        return end_segments_overlap &&
+               ((i == 0 && k == n - 2) || (i == 1 && k == n - 1));
+      };
+      std::vector<unsigned int> order(n);
+      std::iota(order.begin(), order.end(), 0u);
+      std::sort(order.begin(),
+                order.end(),
+                [&](unsigned int a, unsigned int b) {
+                  return rod_points[a][axis] < rod_points[b][axis];
+                });
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = a + 1;
+             b < n && rod_points[order[b]][axis] - rod_points[order[a]][axis] <=
+                        tolerance;
+             ++b)
+          {
+            const unsigned int i = std::min(order[a], order[b]);
+            const unsigned int k = std::max(order[a], order[b]);
+            if (k > i + 1 && !(closed && i == 0 && k == n - 1) &&
+                !overlap_pair(i, k) &&
+                (rod_points[i] - rod_points[k]).norm() <= tolerance)
+              throw std::invalid_argument(
+                "rod " + std::to_string(rod) + ": vertices " +
+                std::to_string(i) + " and " + std::to_string(k) +
+                " coincide at " + describe(rod_points[i]));
+          }
+    }
+
+    /// "start of rod 2".
+    std::string
+    describe_rod_end(const RodEnd &e)
+    {
+      return std::string(e.at_start ? "start" : "end") + " of rod " +
+             std::to_string(e.rod);
+    }
+
+    /// End @p i of @p ends, of the junction @p where, is an end of a rod of
+    /// @p network, listed once and in no other junction.
+    void
+    check_junction_end(const RodNetwork          &network,
+                       const std::string         &where,
+                       const std::vector<RodEnd> &ends,
+                       const unsigned int         i)
+    {
+      const RodEnd &e = ends[i];
+      if (e.rod >= network.rods().size())
+        throw std::invalid_argument(where + ": there is no rod " +
+                                    std::to_string(e.rod));
+      if (network.rods()[e.rod].closed)
+        throw std::invalid_argument(where + ": rod " + std::to_string(e.rod) +
+                                    " is closed and has no ends");
+      for (unsigned int k = 0; k < i; ++k)
+        if (ends[k].rod == e.rod && ends[k].at_start == e.at_start)
+          throw std::invalid_argument(where + " lists the " +
+                                      describe_rod_end(e) + " twice");
+      for (const Junction &j : network.junctions())
+        for (const RodEnd &other : j.ends)
+          if (other.rod == e.rod && other.at_start == e.at_start)
+            throw std::invalid_argument(where + ": the " + describe_rod_end(e) +
+                                        " is already in junction \"" + j.name +
+                                        "\"");
+    }
+
+    /// The ends @p ends of the junction @p where meet: within round-off
+    /// of the size of @p network.
+    void
+    check_junction_ends_meet(const RodNetwork          &network,
+                             const std::string         &where,
+                             const std::vector<RodEnd> &ends)
+    {
+      Vector3 low = network.vertex(0), high = low;
+      for (unsigned int v = 0; v < network.n_vertices(); ++v)
+        {
+          low  = low.cwiseMin(network.vertex(v));
+          high = high.cwiseMax(network.vertex(v));
+        }
+      const double  tolerance = 1e-9 * std::max((high - low).norm(), 1e-300);
+      const Vector3 position  = network.vertex(network.end_vertex(ends[0]));
+      for (const RodEnd &e : ends)
+        {
+          const Vector3 end = network.vertex(network.end_vertex(e));
+          const double  gap = (end - position).norm();
+          if (gap > tolerance)
+            throw std::invalid_argument(
+              where + ": the rods do not meet; the " + describe_rod_end(e) +
+              " at " + describe(end) + " is " + std::to_string(gap) +
+              " m from the " + describe_rod_end(ends[0]) + " at " +
+              describe(position));
+        }
+    }
   } // namespace
 
   void
@@ -91,76 +268,10 @@ namespace rodnet
                       const NaturalShape          natural_shape)
   {
     const unsigned int rod_index = rod_list.size();
-    const unsigned int n         = rod_points.size();
-    if (n < (closed ? 3u : 2u))
-      throw std::invalid_argument(
-        "rod " + std::to_string(rod_index) + " has " + std::to_string(n) +
-        " vertices; an open rod needs at least 2, a closed one at least 3");
-    for (const Vector3 &p : rod_points)
-      if (!p.allFinite())
-        throw std::invalid_argument("rod " + std::to_string(rod_index) +
-                                    " has a non-finite vertex " + describe(p));
-
-    // A length scale for the coincidence test: the rod's bounding box.
-    double extent = 0;
-    for (const Vector3 &p : rod_points)
-      extent = std::max(extent, (p - rod_points[0]).norm());
-    const double tolerance = 1e-12 * std::max(extent, 1e-300);
-
-    const unsigned int n_segments = closed ? n : n - 1;
-    for (unsigned int j = 0; j < n_segments; ++j)
-      if ((rod_points[(j + 1) % n] - rod_points[j]).norm() <= tolerance)
-        throw std::invalid_argument(
-          "rod " + std::to_string(rod_index) + ": zero-length segment " +
-          std::to_string(j) + " between vertices " + std::to_string(j) +
-          " and " + std::to_string((j + 1) % n) + " at " +
-          describe(rod_points[j]));
-    // Coincident but not consecutive vertices would make two segments
-    // meet at a point that the mesh does not know as shared. Sorting along
-    // the axis of largest spread keeps the search near O(n log n).
-    const Vector3 spread = [&] {
-      Vector3 low = rod_points[0], high = rod_points[0];
-      for (const Vector3 &p : rod_points)
-        {
-          low  = low.cwiseMin(p);
-          high = high.cwiseMax(p);
-        }
-      return Vector3(high - low);
-    }();
-    unsigned int axis = 0;
-    spread.maxCoeff(&axis);
-    // An open rod whose last segment lies on its first one, (x_{n-2},
-    // x_{n-1}) = (x_0, x_1), is closed through them (the clamped closure
-    // of Korner et al. section 5(d)): those two pairs may coincide.
-    const bool end_segments_overlap =
-      !closed && n >= 5 &&
-      (rod_points[0] - rod_points[n - 2]).norm() <= tolerance &&
-      (rod_points[1] - rod_points[n - 1]).norm() <= tolerance;
-    const auto overlap_pair = [&](const unsigned int i, const unsigned int k) {
-      return end_segments_overlap &&
-             ((i == 0 && k == n - 2) || (i == 1 && k == n - 1));
-    };
-    std::vector<unsigned int> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
-      return rod_points[a][axis] < rod_points[b][axis];
-    });
-    for (unsigned int a = 0; a < n; ++a)
-      for (unsigned int b = a + 1;
-           b < n &&
-           rod_points[order[b]][axis] - rod_points[order[a]][axis] <= tolerance;
-           ++b)
-        {
-          const unsigned int i = std::min(order[a], order[b]);
-          const unsigned int k = std::max(order[a], order[b]);
-          if (k > i + 1 && !(closed && i == 0 && k == n - 1) &&
-              !overlap_pair(i, k) &&
-              (rod_points[i] - rod_points[k]).norm() <= tolerance)
-            throw std::invalid_argument(
-              "rod " + std::to_string(rod_index) + ": vertices " +
-              std::to_string(i) + " and " + std::to_string(k) +
-              " coincide at " + describe(rod_points[i]));
-        }
+    check_rod_vertices(rod_points, closed, rod_index);
+    const double tolerance = rod_point_tolerance(rod_points);
+    check_rod_segments(rod_points, closed, rod_index, tolerance);
+    check_distinct_rod_vertices(rod_points, closed, rod_index, tolerance);
 
     Rod rod;
     rod.closed        = closed;
@@ -245,50 +356,9 @@ namespace rodnet
         where + " joins a single rod end; a pinned junction joins at least "
                 "two (to fix a single end's position use a pinned support)");
 
-    const auto describe_end = [](const RodEnd &e) {
-      return std::string(e.at_start ? "start" : "end") + " of rod " +
-             std::to_string(e.rod);
-    };
     for (unsigned int i = 0; i < ends.size(); ++i)
-      {
-        const RodEnd &e = ends[i];
-        if (e.rod >= rod_list.size())
-          throw std::invalid_argument(where + ": there is no rod " +
-                                      std::to_string(e.rod));
-        if (rod_list[e.rod].closed)
-          throw std::invalid_argument(where + ": rod " + std::to_string(e.rod) +
-                                      " is closed and has no ends");
-        for (unsigned int k = 0; k < i; ++k)
-          if (ends[k].rod == e.rod && ends[k].at_start == e.at_start)
-            throw std::invalid_argument(where + " lists the " +
-                                        describe_end(e) + " twice");
-        for (const Junction &j : junction_list)
-          for (const RodEnd &other : j.ends)
-            if (other.rod == e.rod && other.at_start == e.at_start)
-              throw std::invalid_argument(where + ": the " + describe_end(e) +
-                                          " is already in junction \"" +
-                                          j.name + "\"");
-      }
-
-    // The ends must meet: within round-off of the network's size.
-    Vector3 low = points[0], high = points[0];
-    for (const Vector3 &p : points)
-      {
-        low  = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-      }
-    const double  tolerance = 1e-9 * std::max((high - low).norm(), 1e-300);
-    const Vector3 position  = points[end_vertex(ends[0])];
-    for (const RodEnd &e : ends)
-      {
-        const double gap = (points[end_vertex(e)] - position).norm();
-        if (gap > tolerance)
-          throw std::invalid_argument(
-            where + ": the rods do not meet; the " + describe_end(e) + " at " +
-            describe(points[end_vertex(e)]) + " is " + std::to_string(gap) +
-            " m from the " + describe_end(ends[0]) + " at " +
-            describe(position));
-      }
+      check_junction_end(*this, where, ends, i);
+    check_junction_ends_meet(*this, where, ends);
 
     name_vertex(name, end_vertex(ends[0]));
     Junction junction;

@@ -367,34 +367,41 @@ namespace rodnet
       return parameters;
     }
 
-    /// The observer of StaticSolver::run(): counts the unstable and
-    /// out-of-range steps into @p summary and records each converged step
-    /// with its checks in @p recorder.
-    StaticSolver::Observer
-    record_static_steps(StepRecorder<VectorType> &recorder,
-                        const ProbeList          &probes,
-                        const RodModel           &model,
-                        RunSummary               &summary)
+    /**
+     * The observer of a path of equilibria (Solver: StaticSolver or
+     * ArclengthContinuation): counts the unstable and out-of-range steps
+     * into @p summary and records each converged step in @p recorder with
+     * its probes and @p checks_of(info), the values of its check columns.
+     * @p lowest_eigenvalue_of(info, solution) is the lowest eigenvalue the
+     * probes may ask for (NaN where none does); it is asked after the
+     * counts, so that a failing eigen-solver finds the step counted.
+     */
+    template <class Solver, class LowestEigenvalue, class Checks>
+    typename Solver::Observer
+    record_equilibria(StepRecorder<VectorType> &recorder,
+                      const ProbeList          &probes,
+                      const RodModel           &model,
+                      RunSummary               &summary,
+                      const LowestEigenvalue    lowest_eigenvalue_of,
+                      const Checks              checks_of)
     {
-      return [&recorder,
-              &probes,
-              &model,
-              &summary](const StaticSolver::StepInfo &info,
-                        const VectorType             &solution) {
-        summary.unstable_steps += !info.check.stable;
-        summary.out_of_range_steps += !info.strain.in_range;
-        recorder.record(info.step,
-                        info.load_factor,
-                        info.load_factor,
-                        evaluate_probes(probes,
-                                        model,
-                                        solution,
-                                        info.load_factor,
-                                        info.lowest_eigenvalue),
-                        solution,
-                        {double(info.check.stable),
-                         double(info.strain.in_range)});
-      };
+      return
+        [&recorder, &probes, &model, &summary, lowest_eigenvalue_of, checks_of](
+          const typename Solver::StepInfo &info,
+          const VectorType                &solution) {
+          summary.unstable_steps += !info.check.stable;
+          summary.out_of_range_steps += !info.strain.in_range;
+          recorder.record(info.step,
+                          info.load_factor,
+                          info.load_factor,
+                          evaluate_probes(probes,
+                                          model,
+                                          solution,
+                                          info.load_factor,
+                                          lowest_eigenvalue_of(info, solution)),
+                          solution,
+                          checks_of(info));
+        };
     }
 
     RunSummary
@@ -438,7 +445,18 @@ namespace rodnet
                                           std::nan("")),
                         u,
                         {std::nan(""), std::nan("")});
-        solver.run(u, record_static_steps(recorder, probes, *model, summary));
+        solver.run(u,
+                   record_equilibria<StaticSolver>(
+                     recorder,
+                     probes,
+                     *model,
+                     summary,
+                     [](const StaticSolver::StepInfo &info,
+                        const VectorType &) { return info.lowest_eigenvalue; },
+                     [](const StaticSolver::StepInfo &info) {
+                       return std::vector<double>{double(info.check.stable),
+                                                  double(info.strain.in_range)};
+                     }));
       });
       summary.critical_load_factor = solver.critical_load_factor();
       recorder.finish(output_directory);
@@ -499,26 +517,20 @@ namespace rodnet
       MatrixType            tangent;
       run_guarded(summary, [&] {
         solver.run(u,
-                   [&](const ArclengthContinuation::StepInfo &info,
-                       const VectorType                      &solution) {
-                     summary.unstable_steps += !info.check.stable;
-                     summary.out_of_range_steps += !info.strain.in_range;
-                     recorder.record(info.step,
-                                     info.load_factor,
-                                     info.load_factor,
-                                     evaluate_probes(probes,
-                                                     *model,
-                                                     solution,
-                                                     info.load_factor,
-                                                     lowest_eigenvalue_if_asked(
-                                                       probes,
-                                                       *model,
-                                                       solution,
-                                                       info.load_factor,
-                                                       tangent)),
-                                     solution,
-                                     continuation_checks(info));
-                   });
+                   record_equilibria<ArclengthContinuation>(
+                     recorder,
+                     probes,
+                     *model,
+                     summary,
+                     [&](const ArclengthContinuation::StepInfo &info,
+                         const VectorType                      &solution) {
+                       return lowest_eigenvalue_if_asked(probes,
+                                                         *model,
+                                                         solution,
+                                                         info.load_factor,
+                                                         tangent);
+                     },
+                     continuation_checks));
       });
       if (!solver.bifurcations().empty())
         summary.critical_load_factor = solver.bifurcations().front();
@@ -578,6 +590,109 @@ namespace rodnet
       return summary;
     }
 
+    /// The check columns of probes.csv in a time-stepping run. Dynamic
+    /// steps do not check stability: inertia holds their tangent.
+    std::vector<std::string>
+    time_stepping_columns(const bool dynamic)
+    {
+      return dynamic ? std::vector<std::string>{"in_range"} :
+                       std::vector<std::string>{"stable", "in_range"};
+    }
+
+    /**
+     * Records the states of a time-stepping run in a StepRecorder: the
+     * probes, with the motion where a motion probe asks for it, and the
+     * checks of time_stepping_columns(), counted into the summary.
+     */
+    class TimeStepRecording
+    {
+    public:
+      TimeStepRecording(StepRecorder<VectorType> &recorder,
+                        const ProbeList          &probes,
+                        const RodModel           &model,
+                        const TimeIntegrator     &integrator,
+                        RunSummary               &summary,
+                        const bool                dynamic)
+          : recorder(recorder)
+          , probes(probes)
+          , model(model)
+          , integrator(integrator)
+          , summary(summary)
+          , dynamic(dynamic)
+          , motion_probes(first_motion_probe(probes) != nullptr)
+      {
+      }
+
+      /// Records step @p step at @p time and @p load_factor, the state
+      /// @p u moving at @p v; @p info is the integrator's account of the
+      /// step, null for the initial state, which is not checked (NaN in
+      /// its columns).
+      void
+      operator()(const unsigned int              step,
+                 const double                    time,
+                 const double                    load_factor,
+                 const VectorType               &u,
+                 const VectorType               &v,
+                 const TimeIntegrator::StepInfo *info) const
+      {
+        const std::vector<double> values = checks(info);
+        // Scene::probes() allows motion probes in dynamic runs only.
+        const Motion motion =
+          motion_probes ?
+            motion_of(model, integrator.mass_matrix(), u, v, load_factor) :
+            Motion();
+        recorder.record(
+          step,
+          time,
+          load_factor,
+          evaluate_probes(probes, model, u, load_factor, std::nan(""), &motion),
+          u,
+          values);
+      }
+
+    private:
+      /// The values of the check columns at the step of @p info, counted
+      /// into the summary; NaN where @p info is null.
+      std::vector<double>
+      checks(const TimeIntegrator::StepInfo *info) const
+      {
+        std::vector<double> values(time_stepping_columns(dynamic).size(),
+                                   std::nan(""));
+        if (info != nullptr)
+          {
+            summary.unstable_steps += !info->stable;
+            summary.out_of_range_steps += !info->strain.in_range;
+            values.back() = info->strain.in_range;
+            if (!dynamic)
+              values.front() = info->stable;
+          }
+        return values;
+      }
+
+      StepRecorder<VectorType> &recorder;
+      const ProbeList          &probes;
+      const RodModel           &model;
+      const TimeIntegrator     &integrator;
+      RunSummary               &summary;
+      const bool                dynamic;
+      const bool                motion_probes;
+    };
+
+    /// The first line of a time-stepping run on @p log, if any.
+    void
+    log_time_stepping(std::ostream                     *log,
+                      const RodModel                   &model,
+                      const TimeIntegrator::Parameters &parameters)
+    {
+      if (log != nullptr)
+        *log << "rodnet (time stepping, " << parameters.integrator
+             << "): " << model.network().rods().size() << " rod(s), "
+             << model.layout().n_dofs()
+             << " DoFs, t = " << parameters.start_time << " to "
+             << parameters.end_time << " s in steps of " << parameters.time_step
+             << " s" << std::endl;
+    }
+
     RunSummary
     run_time_stepping(const Scene       &scene,
                       const std::string &output_directory,
@@ -598,61 +713,22 @@ namespace rodnet
                                 parameters,
                                 log);
 
-      RunSummary summary;
-      // Dynamic steps do not check stability: inertia holds their tangent.
-      const std::vector<std::string> checks =
-        dynamic ? std::vector<std::string>{"in_range"} :
-                  std::vector<std::string>{"stable", "in_range"};
+      RunSummary               summary;
       StepRecorder<VectorType> recorder(scene,
                                         output_directory,
                                         probes,
                                         *model,
                                         summary,
                                         "time",
-                                        checks);
-      if (log != nullptr)
-        *log << "rodnet (time stepping, " << parameters.integrator
-             << "): " << model->network().rods().size() << " rod(s), "
-             << model->layout().n_dofs()
-             << " DoFs, t = " << parameters.start_time << " to "
-             << parameters.end_time << " s in steps of " << parameters.time_step
-             << " s" << std::endl;
-
-      // The initial state (step 0) is not checked: NaN in its columns.
-      const bool motion_probes = first_motion_probe(probes) != nullptr;
-      const auto record        = [&](const unsigned int              step,
-                              const double                    time,
-                              const double                    load_factor,
-                              const VectorType               &u,
-                              const VectorType               &v,
-                              const TimeIntegrator::StepInfo *info) {
-        std::vector<double> values(checks.size(), std::nan(""));
-        if (info != nullptr)
-          {
-            summary.unstable_steps += !info->stable;
-            summary.out_of_range_steps += !info->strain.in_range;
-            values.back() = info->strain.in_range;
-            if (!dynamic)
-              values.front() = info->stable;
-          }
-        // Scene::probes() allows motion probes in dynamic runs only.
-        const Motion motion =
-          motion_probes ?
-                   motion_of(*model, integrator.mass_matrix(), u, v, load_factor) :
-                   Motion();
-        recorder.record(step,
-                        time,
-                        load_factor,
-                        evaluate_probes(probes,
-                                        *model,
-                                        u,
-                                        load_factor,
-                                        std::nan(""),
-                                        &motion),
-                        u,
-                        values);
-      };
-      VectorType u, v;
+                                        time_stepping_columns(dynamic));
+      log_time_stepping(log, *model, parameters);
+      const TimeStepRecording record(recorder,
+                                     probes,
+                                     *model,
+                                     integrator,
+                                     summary,
+                                     dynamic);
+      VectorType              u, v;
       scene.initial_state(*model, u, v);
       run_guarded(summary, [&] {
         // The history begins with the initial state, where the integrator

@@ -168,8 +168,8 @@ namespace rodnet
         length_scale            = std::max(length_scale, summary->length_scale);
         for (std::size_t p = 0; p < summary->probe_names.size(); ++p)
           {
-            const std::size_t column = probe_column(summary->probe_names[p],
-                                                    summary->probe_units[p]);
+            const std::size_t column =
+              probe_column(summary->probe_names[p], summary->probe_units[p]);
             outcome.last_values.resize(probe_names.size(), std::nan(""));
             if (!summary->rows.empty())
               outcome.last_values[column] = summary->rows.back()[p + 1];
@@ -259,7 +259,8 @@ namespace rodnet
       std::size_t
       probe_column(const std::string &name, const std::string &unit)
       {
-        const auto found = std::find(probe_names.begin(), probe_names.end(), name);
+        const auto found =
+          std::find(probe_names.begin(), probe_names.end(), name);
         if (found != probe_names.end())
           return found - probe_names.begin();
         probe_names.push_back(name);
@@ -284,6 +285,64 @@ namespace rodnet
       const std::size_t width  = std::to_string(n_runs).size();
       return std::string(width - std::min(width, number.size()), '0') + number;
     }
+    /// Every scene of @p runs, loaded before any runs: a typo in the last
+    /// must not wait for the others. Throws std::invalid_argument naming
+    /// the run whose scene is refused.
+    std::vector<std::unique_ptr<Scene>>
+    load_study_scenes(const std::vector<StudyRun> &runs)
+    {
+      std::vector<std::unique_ptr<Scene>> scenes;
+      for (const StudyRun &run : runs)
+        try
+          {
+            scenes.push_back(load_scene(run.scene_file, run.settings));
+          }
+        catch (const std::exception &e)
+          {
+            throw std::invalid_argument("run \"" + run.label + "\" (scene \"" +
+                                        run.scene_file +
+                                        "\"): " + error_message(e));
+          }
+      return scenes;
+    }
+
+    /// How one run of a study ended: its summary, its status in
+    /// summary.csv and its exit code (as rodnet-run's for the scene).
+    struct StudyRunOutcome
+    {
+      RunSummary  result;
+      std::string status;
+      int         exit_code = 0;
+    };
+
+    /// Runs @p scene into @p directory; bad input refuses the run, not the
+    /// study.
+    StudyRunOutcome
+    run_study_scene(const Scene       &scene,
+                    const std::string &directory,
+                    std::ostream      &log)
+    {
+      StudyRunOutcome outcome;
+      try
+        {
+          prepare_output_directory(directory);
+          RunSummary &result = outcome.result;
+          result             = run_scene(scene, directory, &log);
+          outcome.exit_code = result.stopped_by != 0 ? 128 + result.stopped_by :
+                              !result.failure.empty() ? 2 :
+                                                        0;
+          outcome.status =
+            result.stopped_by != 0 ? "interrupted" :
+            result.failure.empty() ? "done" :
+                                     "stopped early: " + result.failure;
+        }
+      catch (const std::exception &e)
+        {
+          outcome.exit_code = 1;
+          outcome.status    = "refused: " + error_message(e);
+        }
+      return outcome;
+    }
   } // namespace
 
   Sweep
@@ -296,8 +355,8 @@ namespace rodnet
         "\" is not Section/Entry=VALUES (VALUES: FROM:TO:COUNT or a list "
         "separated by ',' or ';')");
     Sweep sweep;
-    sweep.entry               = trim(text.substr(0, equals));
-    const std::string values  = trim(text.substr(equals + 1));
+    sweep.entry              = trim(text.substr(0, equals));
+    const std::string values = trim(text.substr(equals + 1));
     if (sweep.entry.empty() || values.empty())
       throw std::invalid_argument("--sweep \"" + text +
                                   "\" needs an entry and values");
@@ -399,19 +458,7 @@ namespace rodnet
             const std::string           &output_directory,
             std::ostream                &log)
   {
-    // Every scene first: a typo in the last must not wait for the others.
-    std::vector<std::unique_ptr<Scene>> scenes;
-    for (const StudyRun &run : runs)
-      try
-        {
-          scenes.push_back(load_scene(run.scene_file, run.settings));
-        }
-      catch (const std::exception &e)
-        {
-          throw std::invalid_argument("run \"" + run.label + "\" (scene \"" +
-                                      run.scene_file +
-                                      "\"): " + error_message(e));
-        }
+    const std::vector<std::unique_ptr<Scene>> scenes = load_study_scenes(runs);
     prepare_output_directory(output_directory);
 
     StudySummary summary(runs, parameter_name, output_directory);
@@ -425,40 +472,21 @@ namespace rodnet
         const std::string directory = output_directory + "/" + folder;
         log << "run " << k + 1 << "/" << runs.size() << ": " << runs[k].label
             << " -> " << directory << "/" << std::endl;
-        dealii::Timer timer;
-        std::string   status;
-        RunSummary    result;
-        int           run_exit_code = 0;
-        try
-          {
-            prepare_output_directory(directory);
-            result        = run_scene(*scenes[k], directory, &log);
-            run_exit_code = result.stopped_by != 0  ? 128 + result.stopped_by :
-                            !result.failure.empty() ? 2 :
-                                                      0;
-            status =
-              result.stopped_by != 0 ? "interrupted" :
-              result.failure.empty() ? "done" :
-                                       "stopped early: " + result.failure;
-          }
-        catch (const std::exception &e)
-          {
-            run_exit_code = 1;
-            status        = "refused: " + error_message(e);
-          }
+        dealii::Timer         timer;
+        const StudyRunOutcome run = run_study_scene(*scenes[k], directory, log);
         summary.record(k,
-                       status,
-                       run_exit_code,
-                       run_exit_code == 1 ? nullptr : &result,
+                       run.status,
+                       run.exit_code,
+                       run.exit_code == 1 ? nullptr : &run.result,
                        timer.wall_time(),
                        folder);
         summary.write();
-        if (run_exit_code != 0)
-          log << "run " << k + 1 << ": " << status << std::endl;
-        if (result.stopped_by != 0)
-          return run_exit_code;
+        if (run.exit_code != 0)
+          log << "run " << k + 1 << ": " << run.status << std::endl;
+        if (run.result.stopped_by != 0)
+          return run.exit_code;
         if (exit_code == 0)
-          exit_code = run_exit_code;
+          exit_code = run.exit_code;
       }
     log << "summary of " << runs.size() << " runs in " << output_directory
         << "/: summary.csv, summary.png" << std::endl;

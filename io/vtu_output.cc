@@ -45,6 +45,21 @@ namespace rodnet
       if (!out)
         throw std::runtime_error("VtuOutput: writing \"" + path + "\" failed");
     }
+
+    /// Adds the 3-vector field @p name, @p values on @p dofs, to
+    /// @p data_out.
+    void
+    add_vector_field(dealii::DataOut<1, 3>          &data_out,
+                     const dealii::DoFHandler<1, 3> &dofs,
+                     const dealii::Vector<double>   &values,
+                     const std::string              &name)
+    {
+      data_out.add_data_vector(
+        dofs,
+        values,
+        std::vector<std::string>(3, name),
+        std::vector<Interpretation>(3, component_is_part_of_vector));
+    }
   } // namespace
 
   VtuOutput::VtuOutput(const RodNetwork  &network_,
@@ -122,10 +137,9 @@ namespace rodnet
   {
     const unsigned int n_vertices = network.triangulation().n_vertices();
     if (displacement.size() != n_vertices)
-      throw std::invalid_argument("VtuOutput: a displacement of " +
-                                  std::to_string(displacement.size()) +
-                                  " vertices for a network of " +
-                                  std::to_string(n_vertices));
+      throw std::invalid_argument(
+        "VtuOutput: a displacement of " + std::to_string(displacement.size()) +
+        " vertices for a network of " + std::to_string(n_vertices));
     const FieldSpace      &target = space(false, 3);
     dealii::Vector<double> values(target.dofs.n_dofs());
     for (unsigned int v = 0; v < n_vertices; ++v)
@@ -139,8 +153,8 @@ namespace rodnet
                           const bool                 per_segment)
   {
     const auto        &tria = network.triangulation();
-    const unsigned int n = per_segment ? tria.n_active_cells() :
-                                         tria.n_vertices();
+    const unsigned int n =
+      per_segment ? tria.n_active_cells() : tria.n_vertices();
     if (!(field.components == 1 || field.components == 3) ||
         field.values.size() != field.components * n)
       throw std::invalid_argument(
@@ -166,43 +180,61 @@ namespace rodnet
       return;
     // The fields as finite element vectors (the model's solution, other
     // vector fields and vertex scalars) or as cell data (segment scalars);
-    // kept alive until the patches are built.
+    // kept alive until the patches are built, at the addresses DataOut
+    // holds (reserved: no reallocation).
     dealii::DataOut<1, 3> data_out;
     data_out.attach_triangulation(network.triangulation());
     std::vector<dealii::Vector<double>> values;
     values.reserve(1 + fields.vertex_fields.size() +
                    fields.segment_fields.size());
-    const auto add_vector = [&](const dealii::DoFHandler<1, 3> &dofs,
-                                const std::string              &name) {
-      data_out.add_data_vector(
-        dofs,
-        values.back(),
-        std::vector<std::string>(3, name),
-        std::vector<Interpretation>(3, component_is_part_of_vector));
-    };
+    const std::unique_ptr<dealii::Mapping<1, 3>> mapping =
+      add_displacement(data_out, values, fields);
+    add_fields(data_out, values, fields);
+    data_out.build_patches(*mapping, 1);
+    data_out.set_flags(dealii::DataOutBase::VtkFlags(
+      time,
+      step,
+      false,
+      dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed));
+    write_patches(data_out, step, time);
+  }
 
+  std::unique_ptr<dealii::Mapping<1, 3>>
+  VtuOutput::add_displacement(dealii::DataOut<1, 3>               &data_out,
+                              std::vector<dealii::Vector<double>> &values,
+                              const OutputFields                  &fields)
+  {
     // A degree-1 Eulerian mapping moves each vertex by its displacement
     // (the first three components of the solution), so the patches are the
     // deformed polyline.
-    std::unique_ptr<dealii::Mapping<1, 3>> mapping;
     if (const auto &solution = fields.solution)
       {
         data_out.add_data_vector(*solution->dof_handler,
                                  solution->values,
                                  solution->names,
                                  solution->interpretation);
-        mapping = std::make_unique<
+        return std::make_unique<
           dealii::MappingQEulerian<1, dealii::Vector<double>, 3>>(
-          1, *solution->dof_handler, solution->values);
+          1,
+          *solution->dof_handler,
+          solution->values);
       }
-    else
-      {
-        values.push_back(displacement_vector(fields.displacement));
-        add_vector(space(false, 3).dofs, "displacement");
-        mapping = std::make_unique<
-          dealii::MappingQ1Eulerian<1, dealii::Vector<double>, 3>>(
-          space(false, 3).dofs, values.back());
-      }
+    values.push_back(displacement_vector(fields.displacement));
+    add_vector_field(data_out,
+                     space(false, 3).dofs,
+                     values.back(),
+                     "displacement");
+    return std::make_unique<
+      dealii::MappingQ1Eulerian<1, dealii::Vector<double>, 3>>(
+      space(false, 3).dofs,
+      values.back());
+  }
+
+  void
+  VtuOutput::add_fields(dealii::DataOut<1, 3>               &data_out,
+                        std::vector<dealii::Vector<double>> &values,
+                        const OutputFields                  &fields)
+  {
     for (const auto &[list, per_segment] :
          {std::make_pair(&fields.vertex_fields, false),
           std::make_pair(&fields.segment_fields, true)})
@@ -210,7 +242,10 @@ namespace rodnet
         {
           values.push_back(field_vector(field, per_segment));
           if (field.components == 3)
-            add_vector(space(per_segment, 3).dofs, field.name);
+            add_vector_field(data_out,
+                             space(per_segment, 3).dofs,
+                             values.back(),
+                             field.name);
           else if (per_segment)
             data_out.add_data_vector(values.back(),
                                      field.name,
@@ -220,14 +255,13 @@ namespace rodnet
                                      values.back(),
                                      field.name);
         }
+  }
 
-    data_out.build_patches(*mapping, 1);
-    data_out.set_flags(dealii::DataOutBase::VtkFlags(
-      time,
-      step,
-      false,
-      dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed));
-
+  void
+  VtuOutput::write_patches(const dealii::DataOut<1, 3> &data_out,
+                           const unsigned int           step,
+                           const double                 time)
+  {
     const std::string vtu  = vtu_path(step);
     std::ofstream     file = open_for_writing(vtu);
     data_out.write_vtu(file);

@@ -3,7 +3,9 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
 
 #include <core/model.h>
 #include <core/output_fields.h>
@@ -110,6 +112,28 @@ namespace rodnet
     dealii::Vector<double>
     field_vector(const OutputFields::Field &field, bool per_segment);
 
+    /// Adds the displacement of @p fields to @p data_out: the model's
+    /// solution, or the vertex displacements (their vector kept in
+    /// @p values); returns the mapping that moves the patches by it.
+    std::unique_ptr<dealii::Mapping<1, 3>>
+    add_displacement(dealii::DataOut<1, 3>               &data_out,
+                     std::vector<dealii::Vector<double>> &values,
+                     const OutputFields                  &fields);
+
+    /// Adds the vertex and segment fields of @p fields to @p data_out,
+    /// their vectors kept in @p values.
+    void
+    add_fields(dealii::DataOut<1, 3>               &data_out,
+               std::vector<dealii::Vector<double>> &values,
+               const OutputFields                  &fields);
+
+    /// Writes the patches of @p data_out as the .vtu file of @p step at
+    /// @p time and adds it to the .pvd record.
+    void
+    write_patches(const dealii::DataOut<1, 3> &data_out,
+                  unsigned int                 step,
+                  double                       time);
+
     /// Rewrites the .pvd record with every step written.
     void
     write_pvd_record() const;
@@ -119,8 +143,7 @@ namespace rodnet
     std::string       basename;
 
     /// (per segment, components) -> its space.
-    std::map<std::pair<bool, unsigned int>, std::unique_ptr<FieldSpace>>
-      spaces;
+    std::map<std::pair<bool, unsigned int>, std::unique_ptr<FieldSpace>> spaces;
 
     /// Step -> (load factor, .vtu file name relative to the .pvd).
     std::map<unsigned int, std::pair<double, std::string>> records;

@@ -33,6 +33,82 @@ namespace rodnet
             return "";
         }
     }
+
+    /**
+     * When a corrector ends: the tolerance of its residual, judged at its
+     * start (start()), and the test of each iterate (reached()).
+     */
+    class CorrectorEnd
+    {
+    public:
+      /// The end of a corrector under @p parameters whose constraint has
+      /// the length @p constraint_length.
+      CorrectorEnd(const ResidualCriterion                 &criterion,
+                   const ArclengthContinuation::Parameters &parameters,
+                   const double                             constraint_length)
+          : criterion(criterion)
+          , parameters(parameters)
+          , constraint_length(constraint_length)
+      {
+      }
+
+      /// Judges the residuals of a corrector from (@p u, @p load_factor):
+      /// sets the rounding noise, the loads' scale and whether rounding
+      /// limits the residual in @p result, and the tolerance.
+      void
+      start(const VectorType &u, const double load_factor, JudgedResult &result)
+      {
+        result.noise = criterion.roundoff_noise(u, load_factor);
+        result.scale =
+          criterion.judging_scale(u, load_factor, result.noise.floor);
+        result.rounding_limited =
+          ResidualCriterion::inconclusive(result.noise.floor,
+                                          result.scale,
+                                          1e-3);
+        tolerance = ResidualCriterion::tolerance(result.scale,
+                                                 result.noise.floor,
+                                                 parameters.relative_tolerance);
+      }
+
+      /**
+       * Whether the corrector ends at its iterate, whose residual @p result
+       * holds and whose constraint residual is @p g: converged (the
+       * tolerance met and g within 1e-10 of the larger of the constraint's
+       * length and the smallest step), or failed (a residual not finite,
+       * the iterations spent); @p result says which.
+       */
+      bool
+      reached(const double g, JudgedResult &result) const
+      {
+        if (!std::isfinite(result.residual_norm) || !std::isfinite(g))
+          {
+            result.failure = "the residual is not finite";
+            return true;
+          }
+        if (ResidualCriterion::within(result.residual, tolerance) &&
+            std::abs(g) <= 1e-10 * std::max(std::abs(constraint_length),
+                                            parameters.min_step))
+          {
+            result.converged = true;
+            return true;
+          }
+        if (result.iterations == parameters.max_iterations)
+          {
+            result.failure =
+              "no convergence in " + std::to_string(parameters.max_iterations) +
+              " corrector iterations (" +
+              ResidualCriterion::describe(result.residual, tolerance) + ")";
+            return true;
+          }
+        return false;
+      }
+
+    private:
+      const ResidualCriterion                 &criterion;
+      const ArclengthContinuation::Parameters &parameters;
+      const double                             constraint_length;
+      ResidualParts                            tolerance;
+    };
   } // namespace
 
   ArclengthContinuation::ArclengthContinuation(RodModel         &model,
@@ -132,16 +208,8 @@ namespace rodnet
     try
       {
         model.apply_boundary_values(u, lambda);
-        result.noise = criterion.roundoff_noise(u, lambda);
-        result.scale = criterion.judging_scale(u, lambda, result.noise.floor);
-        result.rounding_limited =
-          ResidualCriterion::inconclusive(result.noise.floor,
-                                          result.scale,
-                                          1e-3);
-        const ResidualParts tolerance =
-          ResidualCriterion::tolerance(result.scale,
-                                       result.noise.floor,
-                                       parameters.relative_tolerance);
+        CorrectorEnd corrector_end(criterion, parameters, constraint.length);
+        corrector_end.start(u, lambda, result);
         const auto factorization =
           factorizations.get(tangent, parameters.linear_solver);
         for (result.iterations = 0;; ++result.iterations)
@@ -150,27 +218,8 @@ namespace rodnet
             result.residual      = criterion.norms(u, r);
             result.residual_norm = r.l2_norm();
             const double g       = constraint_value();
-            if (!std::isfinite(result.residual_norm) || !std::isfinite(g))
-              {
-                result.failure = "the residual is not finite";
-                return result;
-              }
-            if (ResidualCriterion::within(result.residual, tolerance) &&
-                std::abs(g) <= 1e-10 * std::max(std::abs(constraint.length),
-                                                parameters.min_step))
-              {
-                result.converged = true;
-                return result;
-              }
-            if (result.iterations == parameters.max_iterations)
-              {
-                result.failure =
-                  "no convergence in " +
-                  std::to_string(parameters.max_iterations) +
-                  " corrector iterations (" +
-                  ResidualCriterion::describe(result.residual, tolerance) + ")";
-                return result;
-              }
+            if (corrector_end.reached(g, result))
+              return result;
             // Block elimination of the bordered system: K a = -R,
             // K b = R_lambda, du = a - dlambda b. R_lambda is taken at the
             // start of the corrector and kept: it is constant for dead

@@ -2,6 +2,41 @@
 
 namespace rodnet
 {
+  namespace
+  {
+    /// Per cell of @p network: whether a hinge or junction element of
+    /// @p layout sees its twist.
+    std::vector<bool>
+    twists_seen(const RodNetwork &network, const DofLayout &layout)
+    {
+      std::vector<bool> seen(network.triangulation().n_active_cells(), false);
+      for (const HingeStencil &h : layout.hinges())
+        seen[h.segment_prev] = seen[h.segment_next] = true;
+      for (const JunctionStencil &e : layout.junctions())
+        seen[e.segment] = true;
+      return seen;
+    }
+
+    /// (rod, place along it) of each vertex and each cell of @p network.
+    void
+    set_rod_places(
+      const RodNetwork                                   &network,
+      std::vector<std::pair<unsigned int, unsigned int>> &vertex_places,
+      std::vector<std::pair<unsigned int, unsigned int>> &cell_places)
+    {
+      vertex_places.resize(network.n_vertices());
+      cell_places.resize(network.triangulation().n_active_cells());
+      for (unsigned int r = 0; r < network.rods().size(); ++r)
+        {
+          const Rod &rod = network.rods()[r];
+          for (unsigned int k = 0; k < rod.vertices.size(); ++k)
+            vertex_places[rod.vertices[k]] = {r, k};
+          for (unsigned int k = 0; k < rod.segments.size(); ++k)
+            cell_places[rod.segments[k]] = {r, k};
+        }
+    }
+  } // namespace
+
   DofRoles::DofRoles(const RodModel &model)
       : model(model)
   {
@@ -23,12 +58,8 @@ namespace rodnet
       kinds[copy.index] = Kind::inert;
 
     // A twist that no hinge or junction element sees carries nothing.
-    const unsigned int n_cells = network.triangulation().n_active_cells();
-    std::vector<bool>  seen(n_cells, false);
-    for (const HingeStencil &h : layout.hinges())
-      seen[h.segment_prev] = seen[h.segment_next] = true;
-    for (const JunctionStencil &e : layout.junctions())
-      seen[e.segment] = true;
+    const unsigned int      n_cells = network.triangulation().n_active_cells();
+    const std::vector<bool> seen    = twists_seen(network, layout);
     for (unsigned int cell = 0; cell < n_cells; ++cell)
       {
         owners[layout.twist_dof(cell)] = cell;
@@ -63,16 +94,7 @@ namespace rodnet
             components[d]            = c;
           }
 
-    vertex_places.resize(network.n_vertices());
-    cell_places.resize(n_cells);
-    for (unsigned int r = 0; r < network.rods().size(); ++r)
-      {
-        const Rod &rod = network.rods()[r];
-        for (unsigned int k = 0; k < rod.vertices.size(); ++k)
-          vertex_places[rod.vertices[k]] = {r, k};
-        for (unsigned int k = 0; k < rod.segments.size(); ++k)
-          cell_places[rod.segments[k]] = {r, k};
-      }
+    set_rod_places(network, vertex_places, cell_places);
   }
 
   std::string
