@@ -3,8 +3,8 @@
 #include <elements/quaternion.h>
 #include <solvers/gyroscopic_coupling.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <Eigen/Dense>
+#include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -91,13 +91,15 @@ namespace rodnet
   }
 
   GyroscopicCoupling::SegmentStep
-  GyroscopicCoupling::step_of(const Segment    &s,
-                              const VectorType &u_n,
-                              const VectorType &y) const
+  GyroscopicCoupling::step_of(const Segment   &s,
+                              const DofValues &u_n,
+                              const DofValues &y) const
   {
-    const auto chord = [&](const VectorType &x) {
-      return Vector3(model.position(x, s.vertices[1]) -
-                     model.position(x, s.vertices[0]));
+    // DofValues: read by global index without Trilinos' lookup of each.
+    const Configuration &configuration = model.configuration();
+    const auto           chord         = [&](const DofValues &x) {
+      return Vector3(configuration.position(x, s.vertices[1]) -
+                     configuration.position(x, s.vertices[0]));
     };
     return {chord(u_n), chord(y), y[s.dofs[6]] - u_n[s.dofs[6]]};
   }
@@ -109,9 +111,10 @@ namespace rodnet
                                 VectorType       &r)
   {
     collect_segments();
+    const DofValues start(u_n), end(y);
     for (const Segment &s : segments)
       {
-        const SegmentStep step = step_of(s, u_n, y);
+        const SegmentStep step = step_of(s, start, end);
         const Vector3     g =
           -s.inertia * step.twist / (h * h) * turn_direction(step);
         for (unsigned int c = 0; c < 3; ++c)
@@ -142,10 +145,10 @@ namespace rodnet
       for (unsigned int row = 0; row < 6; ++row)
         for (unsigned int col = 0; col < 7; ++col)
           {
-            const global_dof_index r = segments[k].dofs[row];
-            const global_dof_index c = segments[k].dofs[col];
-            int &place = places[k][7 * row + col];
-            place      = -1;
+            const global_dof_index r     = segments[k].dofs[row];
+            const global_dof_index c     = segments[k].dofs[col];
+            int                   &place = places[k][7 * row + col];
+            place                        = -1;
             if (constraints.is_constrained(r) || constraints.is_constrained(c))
               continue;
             place = place_of(m, rows.offsets, rows.columns, r, c);
@@ -161,13 +164,14 @@ namespace rodnet
   {
     collect_segments();
     place_entries(k.trilinos_matrix());
-    int    *offsets, *columns;
-    double *values;
+    int            *offsets, *columns;
+    double         *values;
+    const DofValues start(u_n), end(y);
     k.trilinos_matrix().ExtractCrsDataPointers(offsets, columns, values);
     for (std::size_t n = 0; n < segments.size(); ++n)
       {
         const Segment    &s     = segments[n];
-        const SegmentStep step  = step_of(s, u_n, y);
+        const SegmentStep step  = step_of(s, start, end);
         const double      scale = -s.inertia / (h * h);
         // dg/de1 and dg/dtwist; e1 = x_end - x_start, and the rows of the
         // start vertex carry -g.

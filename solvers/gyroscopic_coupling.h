@@ -102,7 +102,7 @@ namespace rodnet
 
     /// The step of @p s from @p u_n to @p y.
     SegmentStep
-    step_of(const Segment &s, const VectorType &u_n, const VectorType &y) const;
+    step_of(const Segment &s, const DofValues &u_n, const DofValues &y) const;
 
     const RodModel      &model;
     const MatrixType    &mass;
@@ -111,9 +111,9 @@ namespace rodnet
     /// Per segment, the place of each entry (row-major: 6 position rows,
     /// the 6 positions and the twist as columns) of its Jacobian block in
     /// the values of the tangent's compressed rows, or -1 where the row or
-    /// the column is fixed: adding there costs no search of the row (a
-    /// fifth of the midpoint tangent's time at 1e5 DoFs with Trilinos'
-    /// add()).
+    /// the column is fixed: adding there costs no search of the row
+    /// (Trilinos' add() took 0.015 s a tangent at 1.1e5 DoFs, this 0.005 s
+    /// with the derivatives; doc/performance.md).
     std::vector<std::array<int, 42>> places;
     CompressedRows                   placed_rows;
   };

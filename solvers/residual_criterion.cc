@@ -259,7 +259,7 @@ namespace rodnet
                                    const VectorType    *extra_force,
                                    const VectorType    *loaded) const
   {
-    const LoadParts loads = load_parts(u, load_factor, extra_force, loaded);
+    const LoadParts     loads = load_parts(u, load_factor, extra_force, loaded);
     const ResidualParts scale = scale_of(loads);
     // Reactions are residuals at fixed rows: within the floor they are
     // rounding, however the supports are placed.
