@@ -4,7 +4,10 @@
 #include <solvers/gyroscopic_coupling.h>
 
 #include <Eigen/Dense>
+#include <Epetra_CrsMatrix.h>
+#include <algorithm>
 #include <array>
+#include <stdexcept>
 
 namespace rodnet
 {
@@ -35,6 +38,30 @@ namespace rodnet
         -cross_matrix(b) / 2 + cross_matrix(a) * projection;
       return cross / n - a.cross(b) * a.transpose() / (n * n);
     }
+
+    /// The place of entry (@p row, @p column) in the values of the
+    /// compressed rows @p rows of @p m.
+    int
+    place_of(const Epetra_CrsMatrix &m,
+             const int              *offsets,
+             const int              *columns,
+             const global_dof_index  row,
+             const global_dof_index  column)
+    {
+      using Index         = dealii::TrilinosWrappers::types::int_type;
+      const int local_row = m.LRID(Index(row));
+      const int local_col = m.LCID(Index(column));
+      if (local_row >= 0 && local_col >= 0)
+        {
+          const int *begin = columns + offsets[local_row];
+          const int *end   = columns + offsets[local_row + 1];
+          const int *found = std::find(begin, end, local_col);
+          if (found != end)
+            return found - columns;
+        }
+      throw std::logic_error("GyroscopicCoupling: the tangent's pattern "
+                             "lacks a segment's coupling");
+    }
   } // namespace
 
   GyroscopicCoupling::GyroscopicCoupling(const RodModel   &model,
@@ -64,13 +91,15 @@ namespace rodnet
   }
 
   GyroscopicCoupling::SegmentStep
-  GyroscopicCoupling::step_of(const Segment    &s,
-                              const VectorType &u_n,
-                              const VectorType &y) const
+  GyroscopicCoupling::step_of(const Segment   &s,
+                              const DofValues &u_n,
+                              const DofValues &y) const
   {
-    const auto chord = [&](const VectorType &x) {
-      return Vector3(model.position(x, s.vertices[1]) -
-                     model.position(x, s.vertices[0]));
+    // DofValues: read by global index without Trilinos' lookup of each.
+    const Configuration &configuration = model.configuration();
+    const auto           chord         = [&](const DofValues &x) {
+      return Vector3(configuration.position(x, s.vertices[1]) -
+                     configuration.position(x, s.vertices[0]));
     };
     return {chord(u_n), chord(y), y[s.dofs[6]] - u_n[s.dofs[6]]};
   }
@@ -82,9 +111,10 @@ namespace rodnet
                                 VectorType       &r)
   {
     collect_segments();
+    const DofValues start(u_n), end(y);
     for (const Segment &s : segments)
       {
-        const SegmentStep step = step_of(s, u_n, y);
+        const SegmentStep step = step_of(s, start, end);
         const Vector3     g =
           -s.inertia * step.twist / (h * h) * turn_direction(step);
         for (unsigned int c = 0; c < 3; ++c)
@@ -97,42 +127,73 @@ namespace rodnet
   }
 
   void
+  GyroscopicCoupling::place_entries(const Epetra_CrsMatrix &m)
+  {
+    CompressedRows rows;
+    double        *values = nullptr;
+    m.ExtractCrsDataPointers(rows.offsets, rows.columns, values);
+    rows.matrix    = &m;
+    rows.n_entries = m.NumMyNonzeros();
+    if (rows == placed_rows)
+      return;
+    if (rows.offsets == nullptr)
+      throw std::logic_error("GyroscopicCoupling: the tangent's storage is "
+                             "not optimized (no compressed rows)");
+    const dealii::AffineConstraints<double> &constraints = model.constraints();
+    places.assign(segments.size(), {});
+    for (std::size_t k = 0; k < segments.size(); ++k)
+      for (unsigned int row = 0; row < 6; ++row)
+        for (unsigned int col = 0; col < 7; ++col)
+          {
+            const global_dof_index r     = segments[k].dofs[row];
+            const global_dof_index c     = segments[k].dofs[col];
+            int                   &place = places[k][7 * row + col];
+            place                        = -1;
+            if (constraints.is_constrained(r) || constraints.is_constrained(c))
+              continue;
+            place = place_of(m, rows.offsets, rows.columns, r, c);
+          }
+    placed_rows = rows;
+  }
+
+  void
   GyroscopicCoupling::add_jacobian(const VectorType &u_n,
                                    const VectorType &y,
                                    const double      h,
                                    MatrixType       &k)
   {
     collect_segments();
-    const dealii::AffineConstraints<double> &constraints = model.constraints();
-    for (const Segment &s : segments)
+    place_entries(k.trilinos_matrix());
+    int            *offsets, *columns;
+    double         *values;
+    const DofValues start(u_n), end(y);
+    k.trilinos_matrix().ExtractCrsDataPointers(offsets, columns, values);
+    for (std::size_t n = 0; n < segments.size(); ++n)
       {
-        const SegmentStep step  = step_of(s, u_n, y);
+        const Segment    &s     = segments[n];
+        const SegmentStep step  = step_of(s, start, end);
         const double      scale = -s.inertia / (h * h);
         // dg/de1 and dg/dtwist; e1 = x_end - x_start, and the rows of the
         // start vertex carry -g.
         const Eigen::Matrix3d chord_block =
           scale * step.twist * turn_direction_derivative(step);
         const Vector3 twist_column = scale * turn_direction(step);
-        // One row at a time (Trilinos adds a row's entries together),
-        // the free columns only.
-        std::array<global_dof_index, 7> columns;
-        std::array<double, 7>           values;
+        // Straight into the compressed rows, at the places found once per
+        // pattern (free rows and columns only); zeros are not added, as
+        // Trilinos' add() leaves them out.
         for (unsigned int row = 0; row < 6; ++row)
           {
-            if (constraints.is_constrained(s.dofs[row]))
-              continue;
-            const double sign     = row < 3 ? -1.0 : 1.0;
-            unsigned int n_values = 0;
+            const double sign = row < 3 ? -1.0 : 1.0;
             for (unsigned int col = 0; col < 7; ++col)
-              if (!constraints.is_constrained(s.dofs[col]))
-                {
-                  columns[n_values] = s.dofs[col];
-                  values[n_values++] =
-                    sign * (col == 6 ? twist_column[row % 3] :
-                                       (col < 3 ? -1.0 : 1.0) *
-                                         chord_block(row % 3, col % 3));
-                }
-            k.add(s.dofs[row], n_values, columns.data(), values.data());
+              {
+                const int    place = places[n][7 * row + col];
+                const double value =
+                  sign * (col == 6 ? twist_column[row % 3] :
+                                     (col < 3 ? -1.0 : 1.0) *
+                                       chord_block(row % 3, col % 3));
+                if (place >= 0 && value != 0)
+                  values[place] += value;
+              }
           }
       }
     k.compress(dealii::VectorOperation::add);

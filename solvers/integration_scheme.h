@@ -188,6 +188,20 @@ namespace rodnet
     virtual void
     finish(const StepStart &step, const VectorType &x, VectorType &v) = 0;
 
+    /**
+     * The model's unconstrained residual at @p x and the load factor of the
+     * step set_up() last prepared (RodModel::assemble() without
+     * constraints or extra force) if the scheme needs it later in that
+     * step, then assembled once for both; else null. The tolerance's load
+     * scale takes it instead of assembling it again.
+     */
+    virtual const VectorType *
+    shared_gradient(const VectorType &x)
+    {
+      (void)x;
+      return nullptr;
+    }
+
   protected:
     /**
      * Adds c M (@p y - base) (and -extra_inertial_force()) to @p r (if not

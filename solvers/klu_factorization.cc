@@ -87,6 +87,8 @@ namespace rodnet
             "the tangent is singular (KLU found no pivot)");
       }
 
+      using TangentFactorization::solve;
+
       void
       solve(const VectorType &b, VectorType &x) override
       {
@@ -98,6 +100,33 @@ namespace rodnet
           throw std::runtime_error("KLU's solve failed");
         if (saddle_point)
           refine(xs);
+      }
+
+      /// KLU's solve of both columns at once: its arithmetic on each is
+      /// that of a one-column solve, in one pass over the factors.
+      void
+      solve(const VectorType &b,
+            VectorType       &x,
+            const VectorType &c,
+            VectorType       &y) override
+      {
+        if (saddle_point)
+          return TangentFactorization::solve(b, x, c, y);
+        const double *columns_in[] = {b.trilinos_vector()[0],
+                                      c.trilinos_vector()[0]};
+        pair.resize(2 * std::size_t(n()));
+        for (unsigned int j = 0; j < 2; ++j)
+          std::copy(columns_in[j], columns_in[j] + n(), pair.data() + j * n());
+        if (klu_tsolve(symbolic, numeric, n(), 2, pair.data(), &common) != 1)
+          throw std::runtime_error("KLU's solve failed");
+        x                     = b;
+        y                     = c;
+        double *columns_out[] = {x.trilinos_vector()[0],
+                                 y.trilinos_vector()[0]};
+        for (unsigned int j = 0; j < 2; ++j)
+          std::copy(pair.data() + j * n(),
+                    pair.data() + (j + 1) * n(),
+                    columns_out[j]);
       }
 
       std::string
@@ -188,6 +217,8 @@ namespace rodnet
       std::vector<double> values;
       /// The right-hand side of solve() and the correction of refine().
       std::vector<double> rhs, correction;
+      /// The two columns of the two-column solve().
+      std::vector<double> pair;
       /// Whether the analysis took saddle_point_order() (analyse()).
       bool          saddle_point = false;
       klu_common    common;

@@ -10,6 +10,7 @@ namespace rodnet
     point = system.model.create_vector();
     for (VectorType *v : {&gradient_m,
                           &gradient_point,
+                          &end_point,
                           &gradient_y,
                           &mass_difference,
                           &direction,
@@ -26,6 +27,8 @@ namespace rodnet
     start_energy =
       system.model.assemble(step.u, step.load_factor, nullptr, nullptr);
     gradient_known   = false;
+    end_known        = false;
+    current_step     = &step;
     problem.residual = [this, &step](const VectorType &y, VectorType &r) {
       residual(step, y, r);
     };
@@ -110,6 +113,26 @@ namespace rodnet
     gradient_known = true;
   }
 
+  const VectorType *
+  MidpointScheme::shared_gradient(const VectorType &x)
+  {
+    if (current_step == nullptr)
+      return nullptr;
+    assemble_end(*current_step, x);
+    return &gradient_y;
+  }
+
+  void
+  MidpointScheme::assemble_end(const StepStart &step, const VectorType &y)
+  {
+    if (end_known && y == end_point)
+      return;
+    end_energy =
+      system.model.assemble(y, step.load_factor, &gradient_y, nullptr, false);
+    end_point = y;
+    end_known = true;
+  }
+
   void
   MidpointScheme::tangent(const StepStart  &step,
                           const VectorType &y,
@@ -135,10 +158,9 @@ namespace rodnet
     // Newton asks for the tangent where it has just evaluated the residual.
     if (!gradient_known || !(point == gradient_point))
       model.assemble(point, step.load_factor, &gradient_m, nullptr, false);
-    const double energy =
-      model.assemble(y, step.load_factor, &gradient_y, nullptr, false);
+    assemble_end(step, y);
     const auto [coefficient, norm2] =
-      correction_terms(step, y, gradient_m, energy);
+      correction_terms(step, y, gradient_m, end_energy);
 
     model.assemble(point, step.load_factor, nullptr, &k, true);
     k *= 0.5;

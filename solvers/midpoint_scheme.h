@@ -83,6 +83,12 @@ namespace rodnet
       second_order_velocity(step, x, v);
     }
 
+    /// grad Pi(@p x), which the tangent at @p x needs (Newton's first
+    /// iterate, where the tolerance's scale is taken: modified Newton asks
+    /// for no other tangent).
+    const VectorType *
+    shared_gradient(const VectorType &x) override;
+
   private:
     /// The discrete-gradient residual at @p y.
     void
@@ -100,6 +106,11 @@ namespace rodnet
     /// there, which then does not assemble it again.
     void
     keep_gradient(const VectorType &gradient);
+
+    /// grad Pi and Pi at @p y into gradient_y and end_energy (one
+    /// assembly), unless they are there for @p y already.
+    void
+    assemble_end(const StepStart &step, const VectorType &y);
 
     /// The correction coefficient and w.d at @p y, from the @p gradient at
     /// the midpoint and the @p energy at @p y; leaves d_f in difference,
@@ -130,6 +141,13 @@ namespace rodnet
     /// The midpoint of gradient_m, where gradient_known (this step's).
     VectorType gradient_point;
     bool       gradient_known = false;
+    /// The iterate of gradient_y and of Pi there, end_energy, where
+    /// end_known (this step's).
+    VectorType end_point;
+    double     end_energy = 0;
+    bool       end_known  = false;
+    /// The step of the last set_up().
+    const StepStart *current_step = nullptr;
   };
 } // namespace rodnet
 

@@ -292,17 +292,21 @@ namespace rodnet
             shared->factorization->factorize();
             shared->factorized = true;
           }
-        shared->factorization->solve(in, out);
-        if (!shared->problem.rank_one)
-          return Ok;
         const auto &b = shared->rank_one_b;
         const auto &y = shared->rank_one_solution;
-        if (!shared->rank_one_solved)
+        if (shared->problem.rank_one && !shared->rank_one_solved)
           {
-            shared->factorization->solve(shared->rank_one_a,
+            // K^-1 a of the Sherman-Morrison formula with the first solve.
+            shared->factorization->solve(in,
+                                         out,
+                                         shared->rank_one_a,
                                          shared->rank_one_solution);
             shared->rank_one_solved = true;
           }
+        else
+          shared->factorization->solve(in, out);
+        if (!shared->problem.rank_one)
+          return Ok;
         const double denominator = 1 + b * y;
         if (!(std::abs(denominator) > 0) || !std::isfinite(denominator))
           {

@@ -103,14 +103,18 @@ namespace rodnet
   ResidualCriterion::LoadParts
   ResidualCriterion::load_parts(const VectorType &u,
                                 const double      load_factor,
-                                const VectorType *extra_force) const
+                                const VectorType *extra_force,
+                                const VectorType *known_loaded) const
   {
     // Unconstrained residuals: at fixed DoFs they are the reactions, and
     // their change with the loads is the applied generalized force (dead
     // forces and the moments' -lambda M grad theta alike).
     VectorType loaded  = model.create_vector();
     VectorType applied = model.create_vector();
-    model.assemble(u, load_factor, &loaded, nullptr, false, extra_force);
+    if (known_loaded != nullptr)
+      loaded = *known_loaded;
+    else
+      model.assemble(u, load_factor, &loaded, nullptr, false, extra_force);
     // At a zero load factor without extra force both are one assembly (a
     // free vibration's every step): its copy gives the same difference.
     if (load_factor == 0 && extra_force == nullptr)
@@ -252,9 +256,10 @@ namespace rodnet
   ResidualCriterion::judging_scale(const VectorType    &u,
                                    const double         load_factor,
                                    const ResidualParts &floor,
-                                   const VectorType    *extra_force) const
+                                   const VectorType    *extra_force,
+                                   const VectorType    *loaded) const
   {
-    const LoadParts     loads = load_parts(u, load_factor, extra_force);
+    const LoadParts     loads = load_parts(u, load_factor, extra_force, loaded);
     const ResidualParts scale = scale_of(loads);
     // Reactions are residuals at fixed rows: within the floor they are
     // rounding, however the supports are placed.

@@ -119,12 +119,16 @@ namespace rodnet
      * its reactions (issue 33). An applied load, however small, keeps the
      * loads' scales: a residual below the floor cannot show how the
      * structure carries it, and the solvers check the Newton correction.
+     * @p loaded, if not null, is the model's unconstrained residual at
+     * (@p u, @p load_factor, @p extra_force), which the caller has already
+     * assembled: it is taken instead of assembling it again.
      */
     ResidualParts
     judging_scale(const VectorType    &u,
                   double               load_factor,
                   const ResidualParts &floor,
-                  const VectorType    *extra_force = nullptr) const;
+                  const VectorType    *extra_force = nullptr,
+                  const VectorType    *loaded      = nullptr) const;
 
     /**
      * The rounding noise of the residual at (@p u, @p load_factor), with
@@ -242,7 +246,8 @@ namespace rodnet
     LoadParts
     load_parts(const VectorType &u,
                double            load_factor,
-               const VectorType *extra_force) const;
+               const VectorType *extra_force,
+               const VectorType *known_loaded = nullptr) const;
 
     /// The scales of @p loads: the larger applied or reaction part, each
     /// combined().

@@ -73,6 +73,8 @@ namespace rodnet
             "the tangent is singular (KLU found no pivot)");
       }
 
+      using TangentFactorization::solve;
+
       void
       solve(const VectorType &b, VectorType &x) override
       {
@@ -233,6 +235,8 @@ namespace rodnet
             "the tangent is singular (band LU: zero pivot in row " +
             std::to_string(info) + ")");
       }
+
+      using TangentFactorization::solve;
 
       void
       solve(const VectorType &b, VectorType &x) override

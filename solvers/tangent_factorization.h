@@ -61,6 +61,19 @@ namespace rodnet
     virtual void
     solve(const VectorType &b, VectorType &x) = 0;
 
+    /// Solves K x = b and K y = c with the last factorization, the same
+    /// values as two solve() calls; KLU takes both in one pass over its
+    /// factors (the midpoint rule's Sherman-Morrison solve beside Newton's).
+    virtual void
+    solve(const VectorType &b,
+          VectorType       &x,
+          const VectorType &c,
+          VectorType       &y)
+    {
+      solve(b, x);
+      solve(c, y);
+    }
+
     /// "klu" or "band".
     virtual std::string
     name() const = 0;

@@ -566,7 +566,11 @@ namespace rodnet
         const std::shared_ptr<const Evaluation> predictor =
           evaluate_once(problem, x);
         const ResidualParts loads =
-          criterion.judging_scale(x, start.load_factor, noise.floor);
+          criterion.judging_scale(x,
+                                  start.load_factor,
+                                  noise.floor,
+                                  nullptr,
+                                  scheme.shared_gradient(x));
         const ResidualParts predicted = criterion.norms(x, predictor->residual);
         const double        length    = model.length_scale();
         const double        force =
