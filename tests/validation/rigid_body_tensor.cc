@@ -242,7 +242,7 @@ namespace
 
   // The Jacobian of the body's force f(v) (BodyRotationInertia::
   // step_force()) against central differences, at an oblique inertia and a
-  // step that turns by 0.5 rad.
+  // step that turns by 0.53 rad.
   TEST(RigidBodyTensor, ForceJacobianMatchesCentralDifferences)
   {
     const Matrix3 Q =
