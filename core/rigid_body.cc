@@ -3,7 +3,6 @@
 #include <core/rigid_body.h>
 
 #include <Eigen/Eigenvalues>
-
 #include <cmath>
 #include <stdexcept>
 
@@ -28,7 +27,7 @@ namespace rodnet
     void
     check_inertia_tensor(const RigidBody &body)
     {
-      const Matrix3 &J = body.inertia_tensor;
+      const Matrix3 &J     = body.inertia_tensor;
       const auto     where = body.where + ": the inertia tensor ";
       if (!J.allFinite() || (J - J.transpose()).norm() > 1e-12 * J.norm())
         throw std::invalid_argument(where + "must be finite and symmetric");
@@ -40,9 +39,9 @@ namespace rodnet
       const double smallest =
         Eigen::SelfAdjointEigenSolver<Matrix3>(J).eigenvalues().minCoeff();
       if (!(smallest > 0))
-        throw std::invalid_argument(
-          where + "has the principal moment " + std::to_string(smallest) +
-          " kg m^2; it must be positive definite");
+        throw std::invalid_argument(where + "has the principal moment " +
+                                    std::to_string(smallest) +
+                                    " kg m^2; it must be positive definite");
     }
 
     /// A body at vertex @p v: a point mass, and an isotropic inertia or an

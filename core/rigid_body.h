@@ -76,8 +76,7 @@ namespace rodnet
     double
     isotropic_inertia() const
     {
-      return has_inertia_tensor() ? inertia_tensor.trace() / 3 :
-                                    axial_inertia;
+      return has_inertia_tensor() ? inertia_tensor.trace() / 3 : axial_inertia;
     }
   };
 

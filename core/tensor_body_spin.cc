@@ -14,8 +14,7 @@ namespace rodnet
           // check_rigid_body() put the body on a junction with a rotation.
           const unsigned int v = std::get<unsigned int>(body.attachment);
           const unsigned int j = *model.network().junction_at(v);
-          TensorBody         b{j, {}, body.inertia_tensor,
-                       body.isotropic_inertia()};
+          TensorBody b{j, {}, body.inertia_tensor, body.isotropic_inertia()};
           for (unsigned int c = 0; c < 3; ++c)
             b.dofs[c] = model.layout().rotation_dof(j, c + 1);
           found.push_back(b);
@@ -56,8 +55,8 @@ namespace rodnet
     for (const TensorBody &body : tensor_bodies(model))
       {
         const Vector3 omega = angular_velocity(body, u, v);
-        const Vector3 pi    = spatial_inertia(model, body, u) * omega -
-                           body.isotropic * omega;
+        const Vector3 pi =
+          spatial_inertia(model, body, u) * omega - body.isotropic * omega;
         spin.kinetic_energy += omega.dot(pi) / 2;
         spin.angular_momentum += pi;
       }

@@ -35,7 +35,8 @@ namespace rodnet
   /// R J_0 R^T at @p u, R the junction's rotation from the undeformed
   /// configuration.
   Matrix3
-  spatial_inertia(const RodModel &model, const TensorBody &body,
+  spatial_inertia(const RodModel   &model,
+                  const TensorBody &body,
                   const VectorType &u);
 
   /**
@@ -45,7 +46,8 @@ namespace rodnet
    * time integrators leave it after every step (doc/junctions.md).
    */
   Vector3
-  angular_velocity(const TensorBody &body, const VectorType &u,
+  angular_velocity(const TensorBody &body,
+                   const VectorType &u,
                    const VectorType &v);
 
   /// The rotational kinetic energy and the spatial angular momentum
@@ -60,7 +62,8 @@ namespace rodnet
   /// The BodySpin of the tensor bodies of @p model at (@p u, @p v), summed:
   /// what a probe adds to 1/2 v.Mv and to the junctions' spin of M v.
   BodySpin
-  tensor_body_spin(const RodModel &model, const VectorType &u,
+  tensor_body_spin(const RodModel   &model,
+                   const VectorType &u,
                    const VectorType &v);
 } // namespace rodnet
 

@@ -170,7 +170,7 @@ namespace rodnet
   RigidBody
   place_rigid_body(const RodNetwork &network, const RigidBodyItem &item)
   {
-    RigidBody          body{item.where,
+    RigidBody body{item.where,
                    select_vertex(network, item.place, item.entry),
                    item.mass,
                    item.axial_inertia,

@@ -21,18 +21,17 @@ namespace rodnet
                                   const double   h)
   {
     // C = cay(2 v), the rotation of q = (1, v); pi_{n+1} = C p.
-    const Matrix3 C = Quaternion(1, v[0], v[1], v[2]).normalized()
-                        .toRotationMatrix();
+    const Matrix3 C =
+      Quaternion(1, v[0], v[1], v[2]).normalized().toRotationMatrix();
     const Vector3 p    = 4 / h * J_n * v - pi_n;
     const Vector3 next = C * p;
     const Vector3 D    = next - pi_n;
     const Matrix3 turn = Matrix3::Identity() - cross_matrix(v / 2);
     // d(C p)/dv at fixed p: from (I - [v]_x) C p = (I + [v]_x) p,
     // (I - [v]_x) d(C p) = -[p + C p]_x dv.
-    const Matrix3 dD =
-      -(Matrix3::Identity() - cross_matrix(v)).inverse() *
-        cross_matrix(p + next) +
-      4 / h * C * J_n;
+    const Matrix3 dD = -(Matrix3::Identity() - cross_matrix(v)).inverse() *
+                         cross_matrix(p + next) +
+                       4 / h * C * J_n;
     return {2 / h * turn * D, 2 / h * (turn * dD + cross_matrix(D) / 2)};
   }
 

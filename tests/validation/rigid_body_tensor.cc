@@ -81,9 +81,9 @@ namespace
     const std::unique_ptr<RodModel> top   = top_model();
     RodModel                       &model = *top;
     TimeIntegrator::Parameters      p;
-    p.integrator         = "midpoint";
-    p.time_step          = h;
-    p.end_time           = end_time;
+    p.integrator = "midpoint";
+    p.time_step  = h;
+    p.end_time   = end_time;
     // The soft rod's forces set the scale of the residual criterion: at
     // 1e-10 of them Newton stalls at the rounding of the body's moments
     // (3e-12 N m of 600 N m); 1e-8 of them is still 1e-10 N m.
@@ -143,9 +143,9 @@ namespace
         momentum = std::max(momentum,
                             (s.momentum - states[0].momentum).norm() /
                               states[0].momentum.norm());
-        energy   = std::max(energy,
-                          std::abs(s.energy - states[0].energy) /
-                            states[0].energy);
+        energy =
+          std::max(energy,
+                   std::abs(s.energy - states[0].energy) / states[0].energy);
       }
     return {momentum, energy};
   }
@@ -158,12 +158,12 @@ namespace
   // of order (lambda h)^2 / 12 = 3e-5.
   TEST(RigidBodyTensor, WobbleAboutTheLargestAxis)
   {
-    const double  Omega = 2, h = 0.01;
-    const double  lambda = Omega * std::sqrt((moments[2] - moments[0]) *
-                                            (moments[2] - moments[1]) /
-                                            (moments[0] * moments[1]));
-    const double  period = 2 * M_PI / lambda;
-    const Vector3 omega_0(1e-3 * Omega, 0, Omega);
+    const double Omega = 2, h = 0.01;
+    const double lambda =
+      Omega * std::sqrt((moments[2] - moments[0]) * (moments[2] - moments[1]) /
+                        (moments[0] * moments[1]));
+    const double                period = 2 * M_PI / lambda;
+    const Vector3               omega_0(1e-3 * Omega, 0, Omega);
     const std::vector<TopState> states = spin_top(omega_0, h, 3.2 * period);
     const std::vector<double>   zeros  = sign_changes(states, 0);
     ASSERT_GE(zeros.size(), 6u) << "omega_x does not oscillate";
@@ -219,7 +219,8 @@ namespace
     const double                end_time = 30;
     const std::vector<TopState> states   = spin_top(omega_0, 0.01, end_time);
     const std::vector<double>   run      = sign_changes(states, 1);
-    const std::vector<double>   exact = euler_sign_changes(omega_0, 1e-4, end_time);
+    const std::vector<double>   exact =
+      euler_sign_changes(omega_0, 1e-4, end_time);
     ASSERT_GE(exact.size(), 3u) << "Euler's body does not tumble";
     ASSERT_EQ(run.size(), exact.size());
     double largest = 0;
@@ -261,9 +262,8 @@ namespace
            BodyRotationInertia::step_force(J_n, pi_n, v - e, h).force) /
           (2 * step);
       }
-    const double error =
-      (exact.jacobian - differences).cwiseAbs().maxCoeff() /
-      exact.jacobian.cwiseAbs().maxCoeff();
+    const double error = (exact.jacobian - differences).cwiseAbs().maxCoeff() /
+                         exact.jacobian.cwiseAbs().maxCoeff();
     std::cout << "body force Jacobian: largest difference " << error
               << " of the largest entry" << std::endl;
     EXPECT_LT(error, 1e-8);
@@ -284,7 +284,7 @@ namespace
       Eigen::AngleAxisd(0.7, Vector3(1, 2, -1).normalized()).toRotationMatrix();
     const Matrix3 J_n = Q * moments.asDiagonal() * Q.transpose();
     const Vector3 pi_n(0.3, -1.1, 0.8);
-    const double  h = 0.05;
+    const double  h       = 0.05;
     const auto    kinetic = [](const Matrix3 &J, const Vector3 &pi) {
       return pi.dot(J.inverse() * pi) / 2;
     };
@@ -299,8 +299,8 @@ namespace
     const double change    = kinetic(J_1, pi_1) - kinetic(J_n, pi_n);
     const double work =
       BodyRotationInertia::step_force(J_n, pi_n, v, h).force.dot(v);
-    std::cout << "body force: f . v = " << work << ", K_{n+1} - K_n = "
-              << change << std::endl;
+    std::cout << "body force: f . v = " << work
+              << ", K_{n+1} - K_n = " << change << std::endl;
     EXPECT_NEAR(work, change, 1e-12 * std::abs(change));
 
     Vector3 free = h / 2 * J_n.inverse() * pi_n;
@@ -312,10 +312,12 @@ namespace
       }
     const auto [J_f, pi_f] = next(free);
     std::cout << "torque-free step: |pi_{n+1} - pi_n| = "
-              << (pi_f - pi_n).norm() << ", K_{n+1} - K_n = "
-              << kinetic(J_f, pi_f) - kinetic(J_n, pi_n) << std::endl;
+              << (pi_f - pi_n).norm()
+              << ", K_{n+1} - K_n = " << kinetic(J_f, pi_f) - kinetic(J_n, pi_n)
+              << std::endl;
     EXPECT_LT((pi_f - pi_n).norm(), 1e-14 * pi_n.norm());
-    EXPECT_NEAR(kinetic(J_f, pi_f), kinetic(J_n, pi_n),
+    EXPECT_NEAR(kinetic(J_f, pi_f),
+                kinetic(J_n, pi_n),
                 1e-14 * kinetic(J_n, pi_n));
   }
 } // namespace
