@@ -1,6 +1,7 @@
 // Energies and momenta of a rod network in motion, for probes.
 #include <core/mass_matrix.h>
 #include <core/motion.h>
+#include <core/tensor_body_spin.h>
 #include <elements/junction_moment.h>
 
 #include <vector>
@@ -65,6 +66,10 @@ namespace rodnet
             }
           motion.angular_momentum += spatial_moment(q, p);
         }
+    // Bodies with an inertia tensor, whose rotation is not in M.
+    const BodySpin spin = tensor_body_spin(model, u, v);
+    motion.kinetic_energy += spin.kinetic_energy;
+    motion.angular_momentum += spin.angular_momentum;
     return motion;
   }
 } // namespace rodnet

@@ -13,7 +13,8 @@ namespace rodnet
    */
   struct Motion
   {
-    /// 1/2 v.Mv.
+    /// 1/2 v.Mv, plus the rotational energy 1/2 omega . R J_0 R^T omega of
+    /// bodies with an inertia tensor (core/tensor_body_spin.h).
     double kinetic_energy = 0;
     /// Pi(u, lambda): stored energy minus the work of the dead loads at the
     /// load factor lambda (RodModel::assemble()).
@@ -23,7 +24,7 @@ namespace rodnet
     /// Sum over the vertices of x_i x (M v)_i, about the origin, plus the
     /// spin of the sections, sum over the segments of (M v)_twist e, e the
     /// unit tangent, and the spin of the junctions' rotations (a hub's
-    /// j omega; doc/dynamics.md).
+    /// j omega, a body's R J_0 R^T omega; doc/dynamics.md).
     Vector3 angular_momentum = Vector3::Zero();
   };
 

@@ -2,6 +2,7 @@
 // and their weight (doc/dynamics.md, "Rigid bodies").
 #include <core/rigid_body.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,8 +21,31 @@ namespace rodnet
                                     "; it must be finite and not negative");
     }
 
-    /// A body at vertex @p v: a point mass, and an isotropic inertia on the
-    /// rotation of the junction there.
+    /// A general inertia tensor: finite, symmetric, positive definite (a
+    /// body's kinetic energy is positive for every omega), and the body's
+    /// only rotary inertia.
+    void
+    check_inertia_tensor(const RigidBody &body)
+    {
+      const Matrix3 &J     = body.inertia_tensor;
+      const auto     where = body.where + ": the inertia tensor ";
+      if (!J.allFinite() || (J - J.transpose()).norm() > 1e-12 * J.norm())
+        throw std::invalid_argument(where + "must be finite and symmetric");
+      if (body.axial_inertia != 0 || body.transverse_inertia != 0 ||
+          body.offset != 0)
+        throw std::invalid_argument(
+          where + "comes with another inertia or an offset; give the tensor "
+                  "alone (a centre off the junction is not represented)");
+      const double smallest =
+        Eigen::SelfAdjointEigenSolver<Matrix3>(J).eigenvalues().minCoeff();
+      if (!(smallest > 0))
+        throw std::invalid_argument(where + "has the principal moment " +
+                                    std::to_string(smallest) +
+                                    " kg m^2; it must be positive definite");
+    }
+
+    /// A body at vertex @p v: a point mass, and an isotropic inertia or an
+    /// inertia tensor on the rotation of the junction there.
     void
     check_vertex_body(const RodNetwork  &network,
                       const RigidBody   &body,
@@ -42,7 +66,7 @@ namespace rodnet
           where + "at " + network.describe_vertex(v) +
           " only an isotropic rotary inertia is represented (no axis to "
           "align J_t, J_p with); give one value");
-      if (body.axial_inertia == 0)
+      if (body.axial_inertia == 0 && !body.has_inertia_tensor())
         return;
       const auto junction = network.junction_at(v);
       if (!junction || !network.junctions()[*junction].has_rotation())
@@ -85,12 +109,18 @@ namespace rodnet
                          body.transverse_inertia,
                          "rotary inertia (kg m^2)");
     require_not_negative(body, body.offset, "offset (m)");
+    if (body.has_inertia_tensor())
+      check_inertia_tensor(body);
     if (body.mass == 0 && body.axial_inertia == 0 &&
-        body.transverse_inertia == 0)
+        body.transverse_inertia == 0 && !body.has_inertia_tensor())
       throw std::invalid_argument(body.where +
                                   ": it has neither mass nor rotary inertia");
     if (const auto *v = std::get_if<unsigned int>(&body.attachment))
       return check_vertex_body(network, body, *v);
+    if (body.has_inertia_tensor())
+      throw std::invalid_argument(
+        body.where + ": an inertia tensor turns with a junction's rotation, "
+                     "and a rod end welded to a body has none");
     const RodEnd &end = std::get<RodEnd>(body.attachment);
     if (end.rod >= network.rods().size())
       throw std::invalid_argument(body.where + ": rod " +

@@ -30,9 +30,16 @@ namespace rodnet
    *   it and J_p on the rate of the tangent, |tdot|^2. Both are exact
    *   while the end segments keep their lengths.
    *
-   * A general inertia tensor, or a centre off the axis, makes the kinetic
-   * energy depend on the body's orientation, which a constant M cannot
-   * represent: it is not offered.
+   * - at a junction with a rotation, with a general inertia tensor J_0
+   *   (@p inertia_tensor, in global axes at the undeformed configuration):
+   *   a point mass m on the position, and the kinetic energy
+   *   1/2 omega . R J_0 R^T omega of the junction's rotation R (from the
+   *   undeformed configuration), which depends on R: the constant M
+   *   carries its isotropic part j = trace(J_0) / 3 as above, and the
+   *   midpoint rule the rest (BodyRotationInertia,
+   *   solvers/body_rotation_inertia.h); the other integrators refuse it.
+   *
+   * A centre off the axis at a junction is not offered.
    */
   struct RigidBody
   {
@@ -51,6 +58,26 @@ namespace rodnet
     /// c (m), the distance of the centre beyond the rod end along its
     /// tangent; zero at a vertex.
     double offset = 0;
+    /// J_0 (kg m^2), a general inertia tensor in global axes at the
+    /// undeformed configuration, at a vertex with a junction that turns;
+    /// zero for none (then axial_inertia and transverse_inertia are zero).
+    Matrix3 inertia_tensor = Matrix3::Zero();
+
+    /// Whether the body has a general inertia tensor.
+    bool
+    has_inertia_tensor() const
+    {
+      return inertia_tensor != Matrix3::Zero();
+    }
+
+    /// The isotropic rotary inertia that the mass matrix carries at a
+    /// vertex: j, or for a tensor its mean moment trace(J_0) / 3, the
+    /// rest being BodyRotationInertia's.
+    double
+    isotropic_inertia() const
+    {
+      return has_inertia_tensor() ? inertia_tensor.trace() / 3 : axial_inertia;
+    }
   };
 
   /**
@@ -59,7 +86,9 @@ namespace rodnet
    * not finite, a body with neither mass nor inertia, a vertex or rod that
    * does not exist, a rotary inertia at a vertex without a junction that
    * turns (a pinned junction, a plain vertex), an anisotropic inertia or an
-   * offset at a vertex (no axis), an end of a closed rod.
+   * offset at a vertex (no axis), an end of a closed rod; an inertia tensor
+   * that is not finite, symmetric and positive definite, or that comes
+   * with another inertia, an offset or a rod end.
    */
   void
   check_rigid_body(const RodNetwork &network, const RigidBody &body);

@@ -12,7 +12,8 @@ namespace rodnet
   {
     /// The block of a body at vertex @p v: m I_3 on the position, and the
     /// rotation of the junction there, omega = 2 vdot at q = (1, 0):
-    /// 1/2 j |omega|^2 = 1/2 (4 j) |vdot|^2.
+    /// 1/2 j |omega|^2 = 1/2 (4 j) |vdot|^2 (j the mean moment of an
+    /// inertia tensor, whose rest BodyRotationInertia adds).
     void
     add_vertex_body(const RodModel                          &model,
                     const RigidBody                         &body,
@@ -23,7 +24,8 @@ namespace rodnet
       std::vector<global_dof_index> dofs;
       for (unsigned int c = 0; c < 3; ++c)
         dofs.push_back(model.layout().vertex_dof(v, c));
-      if (body.axial_inertia > 0)
+      const double j = body.isotropic_inertia();
+      if (j > 0)
         {
           const unsigned int j = *model.network().junction_at(v);
           for (unsigned int c = 1; c < 4; ++c)
@@ -31,7 +33,7 @@ namespace rodnet
         }
       dealii::FullMatrix<double> block(dofs.size(), dofs.size());
       for (unsigned int i = 0; i < dofs.size(); ++i)
-        block(i, i) = i < 3 ? body.mass : 4 * body.axial_inertia;
+        block(i, i) = i < 3 ? body.mass : 4 * j;
       constraints.distribute_local_to_global(block, dofs, mass);
     }
 

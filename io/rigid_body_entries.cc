@@ -14,14 +14,13 @@ namespace rodnet
 {
   namespace
   {
-    const std::string syntax = "\"<place>: mass <m> [inertia <j> | inertia "
-                               "<J_t>,<J_p>] [offset <c>]\"";
+    const std::string syntax =
+      "\"<place>: mass <m> [inertia <j> | <J_t>,<J_p> | "
+      "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c>]\"";
 
-    /// The positive finite number @p text, the value of @p word of @p item.
+    /// @p text as a number, NaN unless all of it is one.
     double
-    positive(const std::string   &text,
-             const std::string   &word,
-             const RigidBodyItem &item)
+    number(const std::string &text)
     {
       std::size_t used  = 0;
       double      value = std::nan("");
@@ -32,7 +31,17 @@ namespace rodnet
       catch (const std::exception &)
         {
         }
-      if (used != text.size() || !(value > 0) || !std::isfinite(value))
+      return used == text.size() ? value : std::nan("");
+    }
+
+    /// The positive finite number @p text, the value of @p word of @p item.
+    double
+    positive(const std::string   &text,
+             const std::string   &word,
+             const RigidBodyItem &item)
+    {
+      const double value = number(text);
+      if (!(value > 0) || !std::isfinite(value))
         throw std::invalid_argument(
           item.where + ": the " + word + " \"" + text +
           "\" must be a positive number" +
@@ -42,17 +51,47 @@ namespace rodnet
       return value;
     }
 
-    /// "<J_t>,<J_p>" or "<j>" into @p item.
+    /// The finite number @p text, an off-diagonal component of the inertia
+    /// tensor of @p item.
+    double
+    finite(const std::string &text, const RigidBodyItem &item)
+    {
+      const double value = number(text);
+      if (!std::isfinite(value))
+        throw std::invalid_argument(item.where + ": the inertia component \"" +
+                                    text + "\" must be a finite number");
+      return value;
+    }
+
+    /// "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]" into @p item.
+    void
+    read_inertia_tensor(const std::vector<std::string> &values,
+                        RigidBodyItem                  &item)
+    {
+      Matrix3 &J = item.inertia_tensor;
+      for (unsigned int c = 0; c < 3; ++c)
+        J(c, c) = positive(values[c], "inertia", item);
+      if (values.size() == 6)
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            // J_yz, J_zx, J_xy: the component off the axis c.
+            const unsigned int a = (c + 1) % 3, b = (c + 2) % 3;
+            J(a, b) = J(b, a) = finite(values[3 + c], item);
+          }
+    }
+
+    /// "<J_t>,<J_p>", "<j>" or a tensor into @p item.
     void
     read_inertia(const std::string &text, RigidBodyItem &item)
     {
       const auto values = dealii::Utilities::split_string_list(text, ',');
+      if (values.size() == 3 || values.size() == 6)
+        return read_inertia_tensor(values, item);
       if (values.size() > 2 || values.empty())
         throw std::invalid_argument(
           item.where + ": the inertia \"" + text +
-          "\" should be <j> (isotropic) or <J_t>,<J_p> (axisymmetric about a "
-          "rod end's tangent); a general inertia tensor makes the mass "
-          "matrix depend on the body's orientation and is not represented");
+          "\" should be <j> (isotropic), <J_t>,<J_p> (axisymmetric about a "
+          "rod end's tangent), or three or six components of a tensor");
       item.axial_inertia      = positive(values.front(), "inertia", item);
       item.transverse_inertia = positive(values.back(), "inertia", item);
       item.axisymmetric       = values.size() == 2;
@@ -116,7 +155,7 @@ namespace rodnet
   std::optional<unsigned int>
   rigid_body_handle_vertex(const RodNetwork &network, const RigidBodyItem &item)
   {
-    if (item.axial_inertia == 0)
+    if (item.axial_inertia == 0 && item.inertia_tensor == Matrix3::Zero())
       return std::nullopt;
     // At a free rod end an isotropic inertia without offset turns with a
     // handle: its ghost segment has the tangent at the end itself, where
@@ -131,19 +170,21 @@ namespace rodnet
   RigidBody
   place_rigid_body(const RodNetwork &network, const RigidBodyItem &item)
   {
-    RigidBody          body{item.where,
+    RigidBody body{item.where,
                    select_vertex(network, item.place, item.entry),
                    item.mass,
                    item.axial_inertia,
                    item.transverse_inertia,
                    item.offset};
+    body.inertia_tensor  = item.inertia_tensor;
     const unsigned int v = std::get<unsigned int>(body.attachment);
     if (const std::optional<RodEnd> end = free_rod_end(network, v))
       {
         body.attachment = *end;
         return body;
       }
-    if (item.offset > 0 || item.axisymmetric)
+    // A tensor with an offset: check_rigid_body() says why not.
+    if ((item.offset > 0 || item.axisymmetric) && !body.has_inertia_tensor())
       {
         const auto        junction = network.junction_at(v);
         const std::string at =

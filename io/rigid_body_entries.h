@@ -10,7 +10,8 @@ namespace rodnet
 {
   /**
    * One item of the scene entry "Loads/Rigid bodies" as written,
-   * "<place>: mass <m> [inertia <j> | inertia <J_t>,<J_p>] [offset <c>]"
+   * "<place>: mass <m> [inertia <j> | <J_t>,<J_p> |
+   * <J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c>]"
    * (doc/dynamics.md, "Rigid bodies"), before it is placed on a network.
    */
   struct RigidBodyItem
@@ -27,6 +28,9 @@ namespace rodnet
     double axial_inertia = 0, transverse_inertia = 0;
     /// Whether two inertias were given (an axisymmetric body).
     bool axisymmetric = false;
+    /// The tensor of three or six inertias, in global axes at the
+    /// undeformed configuration; zero otherwise.
+    Matrix3 inertia_tensor = Matrix3::Zero();
     /// c (m), 0 without.
     double offset = 0;
   };
@@ -35,7 +39,8 @@ namespace rodnet
    * Reads the item @p place: @p text of entry @p entry. Throws
    * std::invalid_argument naming the entry and the item for a word that is
    * not mass, inertia or offset, one given twice, a missing mass, and a
-   * value that is not a positive finite number.
+   * value that is not a positive finite number (an off-diagonal component
+   * of an inertia tensor: not a finite number).
    */
   RigidBodyItem
   parse_rigid_body_item(const std::string &place,
@@ -45,7 +50,8 @@ namespace rodnet
   /**
    * The vertex of @p item in @p network where the body's rotary inertia
    * needs a rotation handle: a vertex in no junction, inside a rod, or a
-   * free rod end where the inertia is isotropic and there is no offset;
+   * free rod end where the inertia is isotropic or a tensor and there is
+   * no offset;
    * none for a body without rotary inertia or at a junction. Throws as
    * select_vertex().
    */

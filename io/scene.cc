@@ -207,7 +207,8 @@ namespace rodnet
       prm.declare_entry("Rigid bodies",
                         "",
                         Anything(),
-                        "\"<vertex>: mass <m> [inertia <j>|<J_t>,<J_p>] "
+                        "\"<vertex>: mass <m> [inertia <j>|<J_t>,<J_p>|"
+                        "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] "
                         "[offset <c>]; ...\" (doc/dynamics.md). [kg, kg m^2, "
                         "m]");
     }

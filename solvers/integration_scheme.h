@@ -102,6 +102,14 @@ namespace rodnet
       return true;
     }
 
+    /// Whether the scheme carries the orientation-dependent inertia of rigid
+    /// bodies with a general inertia tensor (BodyRotationInertia).
+    virtual bool
+    carries_inertia_tensors() const
+    {
+      return false;
+    }
+
     /// Whether the total energy of a stable run under constant loads never
     /// grows, so that TimeIntegrator's energy watch may take growth for an
     /// instability.

@@ -6,6 +6,7 @@ namespace rodnet
       : IntegrationScheme(system)
       , rigid_split(system.model, system.mass)
       , gyroscopic(system.model, system.mass)
+      , body_rotation(system.model)
   {
     point = system.model.create_vector();
     for (VectorType *v : {&gradient_m,
@@ -102,6 +103,7 @@ namespace rodnet
     model.constraints().set_zero(r);
     r.add(coefficient, direction);
     gyroscopic.add_force(step.u, y, step.h, r);
+    body_rotation.add_force(step, y, r);
     add_inertia(step, y, &r);
   }
 
@@ -170,6 +172,7 @@ namespace rodnet
           system.constrained_mass);
     add_damping_tangent(step.h, k);
     gyroscopic.add_jacobian(step.u, y, step.h, k);
+    body_rotation.add_jacobian(step, y, k);
 
     rank_one_b = gradient_y;
     rank_one_b -= gradient_m;

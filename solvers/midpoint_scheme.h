@@ -1,6 +1,7 @@
 #ifndef RODNET_SOLVERS_MIDPOINT_SCHEME_H
 #define RODNET_SOLVERS_MIDPOINT_SCHEME_H
 
+#include <solvers/body_rotation_inertia.h>
 #include <solvers/gyroscopic_coupling.h>
 #include <solvers/integration_scheme.h>
 #include <solvers/rigid_motion_split.h>
@@ -23,7 +24,9 @@ namespace rodnet
    * round-off (doc/dynamics.md). A nearly rigid step takes w = M d.
    * The residual also has the gyroscopic force of the sections' spin
    * (GyroscopicCoupling), which does no work and turns the spin with the
-   * tangents, so that the angular momentum is kept with stocky sections.
+   * tangents, so that the angular momentum is kept with stocky sections,
+   * and the inertia of rigid bodies with an inertia tensor
+   * (BodyRotationInertia).
    * Its tangent has a dense rank-one part, which NewtonSolver handles by
    * Sherman-Morrison. Needs a stored energy. The damping acts at the
    * midpoint velocity (u - u_n)/h: the energy falls by exactly h vbar.C vbar
@@ -42,6 +45,12 @@ namespace rodnet
 
     bool
     needs_stored_energy() const override
+    {
+      return true;
+    }
+
+    bool
+    carries_inertia_tensors() const override
     {
       return true;
     }
@@ -81,6 +90,7 @@ namespace rodnet
     finish(const StepStart &step, const VectorType &x, VectorType &v) override
     {
       second_order_velocity(step, x, v);
+      body_rotation.turn_velocities(step, x, v);
     }
 
     /// grad Pi(@p x), which the tangent at @p x needs (Newton's first
@@ -136,6 +146,8 @@ namespace rodnet
     RigidMotionSplit rigid_split;
     /// The spin's force on the centreline (the twist rows' inertia).
     GyroscopicCoupling gyroscopic;
+    /// The inertia of rigid bodies with an inertia tensor.
+    BodyRotationInertia body_rotation;
     VectorType point, gradient_m, gradient_y, mass_difference, direction;
     VectorType rank_one_a, rank_one_b;
     /// The midpoint of gradient_m, where gradient_known (this step's).

@@ -1,3 +1,4 @@
+#include <elements/quaternion.h>
 #include <solvers/dof_roles.h>
 #include <solvers/free_motions.h>
 #include <solvers/rigid_motion_split.h>
@@ -81,7 +82,8 @@ namespace rodnet
     for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
       {
         const Kind kind = roles.kind(d);
-        if (kind != Kind::position && kind != Kind::twist)
+        if (kind != Kind::position && kind != Kind::twist &&
+            kind != Kind::quaternion)
           continue;
         const int part = part_of_root[root[rod_of(network, roles, d)]];
         if (part < 0 || model.constraints().is_constrained(d))
@@ -90,6 +92,12 @@ namespace rodnet
           moved.push_back({d,
                            unsigned(part),
                            roles.component(d),
+                           roles.owner(d),
+                           roles.owner(d)});
+        else if (kind == Kind::quaternion)
+          moved.push_back({d,
+                           unsigned(part),
+                           3u + roles.component(d),
                            roles.owner(d),
                            roles.owner(d)});
         else
@@ -154,6 +162,11 @@ namespace rodnet
       r = 0;
     for (const MovedDof &m : moved)
       {
+        if (m.component > 3)
+          {
+            set_junction_turn(x, m);
+            continue;
+          }
         const Vector3 position = model.configuration().position(x, m.vertex);
         if (m.component < 3)
           {
@@ -174,6 +187,20 @@ namespace rodnet
       r.compress(dealii::VectorOperation::insert);
     for (unsigned int j = 0; j < 6; ++j)
       mass.vmult(mass_rotations[j], rotations[j]);
+  }
+
+  void
+  RigidMotionSplit::set_junction_turn(const VectorType &x, const MovedDof &m)
+  {
+    // A turn by e_a takes q = (1, a) to (1, e_a / 2) q, which at real part
+    // 1 is a + (I - [a]_x + a a^T) e_a / 2 to first order.
+    Vector3 a;
+    for (unsigned int c = 0; c < 3; ++c)
+      a[c] = x[model.layout().rotation_dof(m.vertex, c + 1)];
+    const Matrix3 turn =
+      (Matrix3::Identity() - cross_matrix(a) + a * a.transpose()) / 2;
+    for (unsigned int b = 0; b < 3; ++b)
+      rotations[3 + b][m.dof] = turn(m.component - 4, b);
   }
 
   void

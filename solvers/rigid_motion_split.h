@@ -19,7 +19,9 @@ namespace rodnet
    * of R: three translations t_a (every vertex moves by e_a), three
    * rotations of the centreline r_a (a vertex by e_a x (x - c), c the
    * part's centre of mass) and three turns of the material frames s_a (the
-   * twist of a segment of unit tangent e by e_a . e). They are kept apart
+   * twist of a segment of unit tangent e by e_a . e, and the vector part a
+   * of a junction's increment q = (1, a) by (I - [a]_x + a a^T) e_a / 2,
+   * its turn by e_a at real part 1). They are kept apart
    * so that a force orthogonal to all of them has no resultant, no moment
    * on the centreline and none on the frames. With the mass matrix M,
    * remove_rigid_part() takes f = M d to
@@ -33,8 +35,10 @@ namespace rodnet
    * relative size below 1e-12 (a straight part has no rotation about its
    * line; a planar one no turn of its frames about the normal).
    *
-   * Junction quaternions carry no mass and are left out: a rigid body
-   * with rotary inertia at a junction would need its rows here.
+   * The junctions' turns matter where a rigid body's rotary inertia
+   * gives their rows mass (RigidBody): without them w would put a moment
+   * c w on the body, unbalanced, and the angular momentum of a free part
+   * with a body would drift with the correction c.
    */
   class RigidMotionSplit
   {
@@ -65,9 +69,11 @@ namespace rodnet
     {
       global_dof_index dof;
       unsigned int     part;
-      /// Position: 0, 1, 2; twist: 3.
+      /// Position: 0, 1, 2; twist: 3; a junction's quaternion: 3 + its
+      /// component (4, 5, 6 for the vector part).
       unsigned int component;
-      /// Position: its vertex; twist: the vertices of its segment.
+      /// Position: its vertex; twist: the vertices of its segment;
+      /// quaternion: the junction (vertex).
       unsigned int vertex, next;
     };
 
@@ -78,6 +84,10 @@ namespace rodnet
     /// The rotations r_a and turns s_a at @p x into rotations[0..5].
     void
     set_rotations(const VectorType &x);
+
+    /// The turns s_a of the junction quaternion row @p m at @p x.
+    void
+    set_junction_turn(const VectorType &x, const MovedDof &m);
 
     const RodModel       &model;
     const MatrixType     &mass;

@@ -1,5 +1,7 @@
 #include <deal.II/base/timer.h>
 
+#include <core/tensor_body_spin.h>
+#include <solvers/body_rotation_inertia.h>
 #include <solvers/equilibrium_check.h>
 #include <solvers/free_motions.h>
 #include <solvers/integration_scheme_registry.h>
@@ -148,6 +150,7 @@ namespace rodnet
         " globalization needs; use newmark, backward euler or quasi-static, "
         "or another line search");
     check_damping(p, *scheme);
+    check_tensor_bodies(model, *scheme);
     model.initialize_matrix(tangent);
     last_increment = model.create_vector();
     if (!scheme->dynamic())
@@ -353,7 +356,8 @@ namespace rodnet
     info.potential_energy =
       model.assemble(u, info.load_factor, nullptr, nullptr);
     if (scheme.dynamic())
-      info.kinetic_energy = kinetic_energy(mass, v);
+      info.kinetic_energy =
+        kinetic_energy(mass, v) + tensor_body_spin(model, u, v).kinetic_energy;
     check_state(scheme, u, result, info);
     return info;
   }
@@ -374,7 +378,9 @@ namespace rodnet
     energy_balance.start(
       on,
       parameters.energy_growth_limit,
-      on ? kinetic_energy(mass, v) : 0.0,
+      on ? kinetic_energy(mass, v) +
+           tensor_body_spin(model, u, v).kinetic_energy :
+         0.0,
       on ? model.assemble(u, parameters.load_factor(from), nullptr, nullptr) :
            0.0);
   }

@@ -626,8 +626,8 @@ namespace
      "",
      1,
      "entry \"Loads/Rigid bodies\": \"end\": the body has no mass; write "
-     "\"<place>: mass <m> [inertia <j> | inertia <J_t>,<J_p>] [offset "
-     "<c>]\""},
+     "\"<place>: mass <m> [inertia <j> | <J_t>,<J_p> | "
+     "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c>]\""},
     {"rigid_body_unknown_word",
      with("Loads", "  set Rigid bodies = end: mass 1 spin 2\n"),
      ".prm",
@@ -635,15 +635,55 @@ namespace
      1,
      "entry \"Loads/Rigid bodies\": \"end\": \"spin\" is none of mass, "
      "inertia, offset"},
-    {"rigid_body_inertia_tensor",
-     with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,2,3\n"),
+    // A general inertia tensor (doc/dynamics.md, "Rigid bodies"): positive
+    // moments, positive definite, no offset, the midpoint rule.
+    {"rigid_body_tensor_negative_moment",
+     with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,2,-3\n"),
      ".prm",
      "",
      1,
-     "entry \"Loads/Rigid bodies\": \"end\": the inertia \"1,2,3\" should "
-     "be <j> (isotropic) or <J_t>,<J_p> (axisymmetric about a rod end's "
-     "tangent); a general inertia tensor makes the mass matrix depend on the "
-     "body's orientation and is not represented"},
+     "entry \"Loads/Rigid bodies\": \"end\": the inertia \"-3\" must be a "
+     "positive number"},
+    {"rigid_body_tensor_not_positive_definite",
+     with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,1,1,0,0,2\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the inertia tensor has the "
+     "principal moment -1"},
+    {"rigid_body_four_inertias",
+     with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,2,3,4\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the inertia \"1,2,3,4\" should "
+     "be <j> (isotropic), <J_t>,<J_p> (axisymmetric about a rod end's "
+     "tangent), or three or six components of a tensor"},
+    {"rigid_body_tensor_with_offset",
+     with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,2,3 offset 1\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the inertia tensor comes with "
+     "another inertia or an offset; give the tensor alone (a centre off the "
+     "junction is not represented)"},
+    {"rigid_body_tensor_newmark",
+     with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,2,3\n") +
+       section("Material",
+               "  set Mass per length = 1\n"
+               "  set Twist inertia per length = 1\n") +
+       valid_time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Integrator = newmark\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": a general inertia tensor turns "
+     "with the body, and only the midpoint rule carries it (its force "
+     "depends on the orientation, not on the constant mass matrix); the "
+     "newmark integrator does not: use Integrator = midpoint"},
     {"rigid_body_unknown_place",
      with("Loads", "  set Rigid bodies = tip: mass 1\n"),
      ".prm",
