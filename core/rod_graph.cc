@@ -36,14 +36,6 @@ namespace rodnet
              quoted(graph.nodes[beam.to].name);
     }
 
-    std::string
-    describe(const Vector3 &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-      return s.str();
-    }
-
     /// "1e-10 apart, within 1e-08 m" for the messages about coincidence.
     std::string
     describe_distance(const double distance, const double tolerance)
@@ -78,7 +70,7 @@ namespace rodnet
           if (!node.position.allFinite())
             throw std::invalid_argument("node " + quoted(node.name) +
                                         " has a non-finite position " +
-                                        describe(node.position));
+                                        describe_point(node.position));
         }
     }
 
@@ -111,7 +103,7 @@ namespace rodnet
           parallel(beam.director_hint, chord))
         throw std::invalid_argument(
           describe(graph, b) + ": its director hint " +
-          describe(beam.director_hint) + " is parallel to the beam");
+          describe_point(beam.director_hint) + " is parallel to the beam");
     }
 
     /// No two nodes within @p tolerance of each other.
@@ -139,7 +131,7 @@ namespace rodnet
             if (distance <= tolerance)
               throw std::invalid_argument(
                 "nodes " + quoted(a.name) + " and " + quoted(b.name) +
-                " coincide at " + describe(a.position) + " (" +
+                " coincide at " + describe_point(a.position) + " (" +
                 describe_distance(distance, tolerance) +
                 "): a joint is one node; let the beams that meet there name "
                 "the same node");
@@ -186,7 +178,7 @@ namespace rodnet
       if (!graph.default_director.allFinite() ||
           graph.default_director == Vector3::Zero())
         throw std::invalid_argument("the network's default director " +
-                                    describe(graph.default_director) +
+                                    describe_point(graph.default_director) +
                                     " is zero or not finite");
     }
 

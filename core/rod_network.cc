@@ -13,14 +13,6 @@ namespace rodnet
 
   namespace
   {
-    std::string
-    describe(const Vector3 &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-      return s.str();
-    }
-
     /// Rod @p rod has enough vertices for a rod @p closed or not, each
     /// finite.
     void
@@ -37,7 +29,7 @@ namespace rodnet
         if (!p.allFinite())
           throw std::invalid_argument("rod " + std::to_string(rod) +
                                       " has a non-finite vertex " +
-                                      describe(p));
+                                      describe_point(p));
     }
 
     /// The distance within which two vertices of @p rod_points coincide:
@@ -66,7 +58,7 @@ namespace rodnet
             "rod " + std::to_string(rod) + ": zero-length segment " +
             std::to_string(j) + " between vertices " + std::to_string(j) +
             " and " + std::to_string((j + 1) % n) + " at " +
-            describe(rod_points[j]));
+            describe_point(rod_points[j]));
     }
 
     /// The axis (0, 1, 2) along which @p rod_points spread the most.
@@ -131,7 +123,7 @@ namespace rodnet
               throw std::invalid_argument(
                 "rod " + std::to_string(rod) + ": vertices " +
                 std::to_string(i) + " and " + std::to_string(k) +
-                " coincide at " + describe(rod_points[i]));
+                " coincide at " + describe_point(rod_points[i]));
           }
     }
 
@@ -192,12 +184,20 @@ namespace rodnet
           if (gap > tolerance)
             throw std::invalid_argument(
               where + ": the rods do not meet; the " + describe_rod_end(e) +
-              " at " + describe(end) + " is " + std::to_string(gap) +
+              " at " + describe_point(end) + " is " + std::to_string(gap) +
               " m from the " + describe_rod_end(ends[0]) + " at " +
-              describe(position));
+              describe_point(position));
         }
     }
   } // namespace
+
+  std::string
+  describe_point(const Vector3 &p)
+  {
+    std::ostringstream s;
+    s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+    return s.str();
+  }
 
   void
   RodNetwork::set_frame_half_turns(const unsigned int rod,

@@ -12,6 +12,11 @@
 
 namespace rodnet
 {
+  /// "(x, y, z)": a point or direction as messages about the network name
+  /// it.
+  std::string
+  describe_point(const Vector3 &p);
+
   /**
    * The stress-free shape of a rod's hinges (doc/theory.md, "Natural
    * shape"):
