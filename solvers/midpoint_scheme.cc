@@ -1,5 +1,7 @@
 #include <solvers/midpoint_scheme.h>
 
+#include <cmath>
+
 namespace rodnet
 {
   MidpointScheme::MidpointScheme(const StepSystem &system)
@@ -26,7 +28,9 @@ namespace rodnet
   MidpointScheme::set_up(const StepStart &step, NewtonSolver::Problem &problem)
   {
     start_energy =
-      system.model.assemble(step.u, step.load_factor, nullptr, nullptr);
+      std::isnan(step.start_energy) ?
+        system.model.assemble(step.u, step.load_factor, nullptr, nullptr) :
+        step.start_energy;
     gradient_known   = false;
     end_known        = false;
     current_step     = &step;
