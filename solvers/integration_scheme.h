@@ -84,6 +84,15 @@ namespace rodnet
     virtual std::string
     name() const = 0;
 
+    /// Pi at @p x where the last residual of the step assembled it there,
+    /// at the step's load factor and fields, else NaN: the converged
+    /// state's energy without another assembly.
+    virtual double
+    energy_at(const VectorType & /*x*/) const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// Whether the scheme has inertia (needs the mass matrix).
     virtual bool
     dynamic() const

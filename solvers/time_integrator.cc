@@ -1,7 +1,5 @@
 #include <deal.II/base/timer.h>
 
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
-
 #include <core/tensor_body_spin.h>
 #include <solvers/body_rotation_inertia.h>
 #include <solvers/equilibrium_check.h>
@@ -98,36 +96,6 @@ namespace rodnet
           "or another line search");
       check_damping(p, scheme);
       check_tensor_bodies(model, scheme);
-    }
-
-    /**
-     * The entries of @p from that are not zero, and its diagonal, into
-     * @p to in a pattern of their own: the mass matrix on the model's
-     * pattern is mostly zeros, and a product with @p to costs what its
-     * entries do. Each row keeps its order and loses only zero terms, so
-     * products are those of @p from to the bit (but the sign of a zero).
-     */
-    void
-    copy_nonzeros(const MatrixType &from, MatrixType &to)
-    {
-      const dealii::IndexSet &rows = from.locally_owned_range_indices();
-      dealii::TrilinosWrappers::SparsityPattern pattern(
-        rows,
-        from.get_mpi_communicator());
-      for (const auto row : rows)
-        {
-          pattern.add(row, row);
-          for (auto entry = from.begin(row); entry != from.end(row); ++entry)
-            if (entry->value() != 0)
-              pattern.add(row, entry->column());
-        }
-      pattern.compress();
-      to.reinit(pattern);
-      for (const auto row : rows)
-        for (auto entry = from.begin(row); entry != from.end(row); ++entry)
-          if (entry->value() != 0)
-            to.set(row, entry->column(), entry->value());
-      to.compress(dealii::VectorOperation::insert);
     }
 
     /// The residual (and potential, where the problem has one) of a
@@ -421,8 +389,14 @@ namespace rodnet
     info.load_factor = parameters.load_factor(time);
     info.iterations  = result.iterations;
     info.residual    = result.residual;
+    // The energy of the converged state: its scheme's where that was
+    // assembled at the same inputs (before the reference reset, which
+    // changes it by rounding only), else an assembly.
     info.potential_energy =
-      model.assemble(u, info.load_factor, nullptr, nullptr);
+      std::isnan(step_energy) ?
+        model.assemble(u, info.load_factor, nullptr, nullptr) :
+        step_energy;
+    step_energy = std::numeric_limits<double>::quiet_NaN();
     remember_energy(u, info.load_factor, info.potential_energy);
     if (scheme.dynamic())
       info.kinetic_energy = kinetic_energy(mass_nonzeros, v) +
@@ -441,6 +415,23 @@ namespace rodnet
     converged_energy.time_factors = model.activation_time_factors();
     converged_energy.value        = energy;
     converged_energy.known        = true;
+  }
+
+  double
+  TimeIntegrator::energy_at_end(const IntegrationScheme   &scheme,
+                                const StepStart           &start,
+                                const double               end_time,
+                                const std::vector<double> &load_time_fields,
+                                const VectorType          &x) const
+  {
+    // The scheme assembled at the step's load factor and the fields of its
+    // load time; the end's energy is wanted at the end's and at a zero
+    // time step (the model's time now).
+    if (model.has_internal_variables() ||
+        !(parameters.load_factor(end_time) == start.load_factor) ||
+        model.activation_time_factors() != load_time_fields)
+      return std::numeric_limits<double>::quiet_NaN();
+    return scheme.energy_at(x);
   }
 
   double
@@ -634,6 +625,8 @@ namespace rodnet
                               VectorType        &u,
                               VectorType        &v)
   {
+    const std::vector<double> load_time_fields =
+      model.activation_time_factors();
     // The commit first: it may throw, and then nothing has moved.
     model.commit_internal_variables(x);
     // Until the next step, evaluations see the converged state: the stored
@@ -656,6 +649,7 @@ namespace rodnet
     last_increment = x;
     last_increment -= u;
     last_step_length = start.h;
+    step_energy = energy_at_end(scheme, start, end_time, load_time_fields, x);
     model.reset_reference(x);
     u = x;
   }
@@ -742,15 +736,17 @@ namespace rodnet
                              const VectorType      &x)
   {
     // The scales of statics, or the out-of-balance force of the
-    // predictor where inertia is what the residual balances.
+    // predictor where inertia is what the residual balances. The shared
+    // gradient first: the midpoint residual at x takes Pi(x) from its
+    // assembly.
+    const VectorType *const gradient = scheme.shared_gradient(x);
     const std::shared_ptr<const Evaluation> predictor =
       evaluate_once(problem, x);
-    const ResidualParts loads =
-      criterion.judging_scale(x,
-                              start.load_factor,
-                              noise.floor,
-                              nullptr,
-                              scheme.shared_gradient(x));
+    const ResidualParts loads     = criterion.judging_scale(x,
+                                                        start.load_factor,
+                                                        noise.floor,
+                                                        nullptr,
+                                                        gradient);
     const ResidualParts predicted = criterion.norms(x, predictor->residual);
     const double        length    = model.length_scale();
     const double        force =

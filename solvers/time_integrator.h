@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -407,6 +408,17 @@ namespace rodnet
                 const JudgedResult      &result,
                 StepInfo                &info);
 
+    /// Pi at the converged @p x of the step @p start (before the reference
+    /// reset) where its scheme assembled it at the load factor of
+    /// @p end_time and the fields there (@p load_time_fields those of the
+    /// step's load time; the model at @p end_time), else NaN.
+    double
+    energy_at_end(const IntegrationScheme   &scheme,
+                  const StepStart           &start,
+                  double                     end_time,
+                  const std::vector<double> &load_time_fields,
+                  const VectorType          &x) const;
+
     /// Remembers Pi = @p energy of the converged @p u at @p load_factor
     /// and the model's time factors (describe_step()).
     void
@@ -467,6 +479,9 @@ namespace rodnet
       double              value = 0;
       bool                known = false;
     } converged_energy;
+    /// The converged state's energy of the step just committed where its
+    /// scheme knows it (energy_at_end()), for describe_step(); else NaN.
+    double step_energy = std::numeric_limits<double>::quiet_NaN();
     /// u_n - u_{n-1} and its step length (0: none yet), for the predictor.
     VectorType   last_increment;
     double       last_step_length = 0;
