@@ -89,6 +89,18 @@ namespace rodnet
    */
   double
   kinetic_energy(const MatrixType &mass, const VectorType &velocity);
+
+  /**
+   * The entries of @p from that are not zero, and its diagonal, into @p to
+   * in a sparsity pattern of their own. A mass matrix on the model's
+   * pattern is mostly zeros (a consistent M couples the same component of
+   * neighbouring vertices only): a product with @p to costs what its
+   * entries do. Each row keeps its order and loses only zero terms, so a
+   * product with a finite vector is that of @p from to the bit (but the
+   * sign of a zero). @p to cannot be added to a tangent of the model.
+   */
+  void
+  copy_nonzeros(const MatrixType &from, MatrixType &to);
 } // namespace rodnet
 
 #endif

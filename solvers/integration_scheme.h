@@ -4,6 +4,7 @@
 #include <core/rod_model.h>
 #include <solvers/newton_solver.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,10 @@ namespace rodnet
     double            h;
     /// The load factor at the scheme's load_time().
     double load_factor;
+    /// Pi(u_n) at load_factor where the integrator knows it already (the
+    /// last converged state's energy, assembled at the same inputs), else
+    /// NaN.
+    double start_energy = std::numeric_limits<double>::quiet_NaN();
   };
 
   /**
@@ -78,6 +83,15 @@ namespace rodnet
     /// The name that selects the scheme (TimeIntegrator's Integrator).
     virtual std::string
     name() const = 0;
+
+    /// Pi at @p x where the last residual of the step assembled it there,
+    /// at the step's load factor and fields, else NaN: the converged
+    /// state's energy without another assembly.
+    virtual double
+    energy_at(const VectorType & /*x*/) const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
 
     /// Whether the scheme has inertia (needs the mass matrix).
     virtual bool

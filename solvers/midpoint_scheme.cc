@@ -1,5 +1,7 @@
 #include <solvers/midpoint_scheme.h>
 
+#include <cmath>
+
 namespace rodnet
 {
   MidpointScheme::MidpointScheme(const StepSystem &system)
@@ -12,6 +14,7 @@ namespace rodnet
     for (VectorType *v : {&gradient_m,
                           &gradient_point,
                           &end_point,
+                          &residual_point,
                           &gradient_y,
                           &mass_difference,
                           &direction,
@@ -26,9 +29,12 @@ namespace rodnet
   MidpointScheme::set_up(const StepStart &step, NewtonSolver::Problem &problem)
   {
     start_energy =
-      system.model.assemble(step.u, step.load_factor, nullptr, nullptr);
+      std::isnan(step.start_energy) ?
+        system.model.assemble(step.u, step.load_factor, nullptr, nullptr) :
+        step.start_energy;
     gradient_known   = false;
     end_known        = false;
+    residual_known   = false;
     current_step     = &step;
     problem.residual = [this, &step](const VectorType &y, VectorType &r) {
       residual(step, y, r);
@@ -98,7 +104,15 @@ namespace rodnet
     RodModel &model = system.model;
     model.assemble(point, step.load_factor, &r, nullptr, false);
     keep_gradient(r);
-    const double energy = model.assemble(y, step.load_factor, nullptr, nullptr);
+    // Pi(y) of the assembly of grad Pi(y) where there is one at y (the
+    // first iterate's, shared_gradient()), else an energy-only assembly.
+    const double energy =
+      end_known && y == end_point ?
+        end_energy :
+        model.assemble(y, step.load_factor, nullptr, nullptr);
+    residual_point           = y;
+    residual_energy          = energy;
+    residual_known           = true;
     const double coefficient = correction_terms(step, y, r, energy).first;
     model.constraints().set_zero(r);
     r.add(coefficient, direction);

@@ -6,6 +6,7 @@
 #include <solvers/integration_scheme.h>
 #include <solvers/rigid_motion_split.h>
 
+#include <limits>
 #include <utility>
 
 namespace rodnet
@@ -93,6 +94,14 @@ namespace rodnet
       body_rotation.turn_velocities(step, x, v);
     }
 
+    double
+    energy_at(const VectorType &x) const override
+    {
+      return residual_known && x == residual_point ?
+               residual_energy :
+               std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// grad Pi(@p x), which the tangent at @p x needs (Newton's first
     /// iterate, where the tolerance's scale is taken: modified Newton asks
     /// for no other tangent).
@@ -158,6 +167,11 @@ namespace rodnet
     VectorType end_point;
     double     end_energy = 0;
     bool       end_known  = false;
+    /// The iterate of the last residual and Pi there, where
+    /// residual_known (this step's).
+    VectorType residual_point;
+    double     residual_energy = 0;
+    bool       residual_known  = false;
     /// The step of the last set_up().
     const StepStart *current_step = nullptr;
   };

@@ -51,6 +51,53 @@ namespace rodnet
           scheme.name() + " integrator does not have; use a dynamic one");
     }
 
+    /// Throws std::invalid_argument for times, steps or a preload of @p p
+    /// out of range.
+    void
+    check_times(const TimeIntegrator::Parameters &p)
+    {
+      if (!(p.time_step > 0) || !std::isfinite(p.time_step))
+        throw std::invalid_argument(
+          "time stepping: the time step must be positive and finite, got " +
+          time_string(p.time_step));
+      if (!(p.end_time >= p.start_time) || !std::isfinite(p.end_time))
+        throw std::invalid_argument(
+          "time stepping: the end time " + time_string(p.end_time) +
+          " lies before the start time " + time_string(p.start_time));
+      if (!(p.preload_time >= 0) || !std::isfinite(p.preload_time) ||
+          (p.preload_time > 0 && p.preload_steps == 0))
+        throw std::invalid_argument(
+          "time stepping: the preload time must be finite and not negative, "
+          "and a preload needs at least one step");
+      if (!(p.min_step_fraction > 0 && p.min_step_fraction <= 1))
+        throw std::invalid_argument(
+          "time stepping: the minimum step fraction must lie in (0, 1]");
+    }
+
+    /// Throws std::invalid_argument where @p scheme cannot integrate
+    /// @p model with the parameters @p p (its energy, globalization,
+    /// damping or rigid bodies).
+    void
+    check_scheme(const RodModel                   &model,
+                 const TimeIntegrator::Parameters &p,
+                 const IntegrationScheme          &scheme)
+    {
+      if (scheme.needs_stored_energy() && model.has_internal_variables())
+        throw std::invalid_argument(
+          "time stepping: the midpoint rule conserves a stored energy, which "
+          "a material with internal variables (a viscoelastic law) does not "
+          "have; use newmark or backward euler");
+      if (p.newton.needs_potential() && !scheme.has_incremental_potential())
+        throw std::invalid_argument(
+          "time stepping: the " + scheme.name() +
+          " step is not the minimum of a potential, which the " +
+          p.newton.line_search +
+          " globalization needs; use newmark, backward euler or quasi-static, "
+          "or another line search");
+      check_damping(p, scheme);
+      check_tensor_bodies(model, scheme);
+    }
+
     /// The residual (and potential, where the problem has one) of a
     /// problem at one state.
     struct Evaluation
@@ -111,22 +158,7 @@ namespace rodnet
       , strains(model, parameters.strain_limits)
   {
     const Parameters &p = parameters;
-    if (!(p.time_step > 0) || !std::isfinite(p.time_step))
-      throw std::invalid_argument(
-        "time stepping: the time step must be positive and finite, got " +
-        time_string(p.time_step));
-    if (!(p.end_time >= p.start_time) || !std::isfinite(p.end_time))
-      throw std::invalid_argument(
-        "time stepping: the end time " + time_string(p.end_time) +
-        " lies before the start time " + time_string(p.start_time));
-    if (!(p.preload_time >= 0) || !std::isfinite(p.preload_time) ||
-        (p.preload_time > 0 && p.preload_steps == 0))
-      throw std::invalid_argument(
-        "time stepping: the preload time must be finite and not negative, "
-        "and a preload needs at least one step");
-    if (!(p.min_step_fraction > 0 && p.min_step_fraction <= 1))
-      throw std::invalid_argument(
-        "time stepping: the minimum step fraction must lie in (0, 1]");
+    check_times(p);
     if (!model.multiplier_dofs().empty())
       // The multipliers carry no mass: the equations of motion would be
       // differential-algebraic, which the schemes here do not integrate.
@@ -137,20 +169,7 @@ namespace rodnet
     scheme = integration_scheme_registry().create(p.integrator, system);
     preload_scheme =
       integration_scheme_registry().create("quasi-static", system);
-    if (scheme->needs_stored_energy() && model.has_internal_variables())
-      throw std::invalid_argument(
-        "time stepping: the midpoint rule conserves a stored energy, which "
-        "a material with internal variables (a viscoelastic law) does not "
-        "have; use newmark or backward euler");
-    if (p.newton.needs_potential() && !scheme->has_incremental_potential())
-      throw std::invalid_argument(
-        "time stepping: the " + scheme->name() +
-        " step is not the minimum of a potential, which the " +
-        p.newton.line_search +
-        " globalization needs; use newmark, backward euler or quasi-static, "
-        "or another line search");
-    check_damping(p, *scheme);
-    check_tensor_bodies(model, *scheme);
+    check_scheme(model, p, *scheme);
     model.initialize_matrix(tangent);
     last_increment = model.create_vector();
     if (!scheme->dynamic())
@@ -160,8 +179,16 @@ namespace rodnet
         "time stepping: the " + scheme->name() +
         " integrator needs the inertia of every rod (a density); only "
         "quasi-static runs do without");
+    assemble_inertia(inertia);
+  }
+
+  void
+  TimeIntegrator::assemble_inertia(const std::vector<RodInertia> &inertia)
+  {
+    const Parameters &p = parameters;
     assemble_mass_matrix(model, inertia, p.mass, mass, false);
     assemble_mass_matrix(model, inertia, p.mass, constrained_mass, true);
+    copy_nonzeros(mass, mass_nonzeros);
     has_mass.resize(mass.m());
     for (unsigned int i = 0; i < mass.m(); ++i)
       has_mass[i] = mass.diag_element(i) != 0.0;
@@ -224,8 +251,12 @@ namespace rodnet
     model.set_time(time);
     model.apply_boundary_values(u, parameters.load_factor(time), time);
     if (scheme->dynamic() && parameters.preload_time == 0)
-      set_prescribed_velocity(
-        model, parameters.load_factor, time, parameters.time_step, u, v);
+      set_prescribed_velocity(model,
+                              parameters.load_factor,
+                              time,
+                              parameters.time_step,
+                              u,
+                              v);
   }
 
   void
@@ -254,8 +285,12 @@ namespace rodnet
     model.set_time(p.start_time);
     model.apply_boundary_values(u, p.load_factor(p.start_time), p.start_time);
     if (scheme->dynamic())
-      set_prescribed_velocity(
-        model, p.load_factor, p.start_time, p.time_step, u, v);
+      set_prescribed_velocity(model,
+                              p.load_factor,
+                              p.start_time,
+                              p.time_step,
+                              u,
+                              v);
     model.set_time_step(0);
     assemble_damping(u, p.load_factor(p.start_time));
     scheme->start(u, v, p.load_factor(p.start_time));
@@ -272,6 +307,7 @@ namespace rodnet
                           const Observer    &observer)
   {
     watch_energy(scheme, from, u, v);
+    converged_energy.known = false;
     // Times closer than this to a grid point are on it (rounding of t).
     const double on_grid = 1e-9 * h;
     double       t       = from;
@@ -353,13 +389,64 @@ namespace rodnet
     info.load_factor = parameters.load_factor(time);
     info.iterations  = result.iterations;
     info.residual    = result.residual;
+    // The energy of the converged state: its scheme's where that was
+    // assembled at the same inputs (before the reference reset, which
+    // changes it by rounding only), else an assembly.
     info.potential_energy =
-      model.assemble(u, info.load_factor, nullptr, nullptr);
+      std::isnan(step_energy) ?
+        model.assemble(u, info.load_factor, nullptr, nullptr) :
+        step_energy;
+    step_energy = std::numeric_limits<double>::quiet_NaN();
+    remember_energy(u, info.load_factor, info.potential_energy);
     if (scheme.dynamic())
-      info.kinetic_energy =
-        kinetic_energy(mass, v) + tensor_body_spin(model, u, v).kinetic_energy;
+      info.kinetic_energy = kinetic_energy(mass_nonzeros, v) +
+                            tensor_body_spin(model, u, v).kinetic_energy;
     check_state(scheme, u, result, info);
     return info;
+  }
+
+  void
+  TimeIntegrator::remember_energy(const VectorType &u,
+                                  const double      load_factor,
+                                  const double      energy)
+  {
+    converged_energy.u            = u;
+    converged_energy.load_factor  = load_factor;
+    converged_energy.time_factors = model.activation_time_factors();
+    converged_energy.value        = energy;
+    converged_energy.known        = true;
+  }
+
+  double
+  TimeIntegrator::energy_at_end(const IntegrationScheme   &scheme,
+                                const StepStart           &start,
+                                const double               end_time,
+                                const std::vector<double> &load_time_fields,
+                                const VectorType          &x) const
+  {
+    // The scheme assembled at the step's load factor and the fields of its
+    // load time; the end's energy is wanted at the end's and at a zero
+    // time step (the model's time now).
+    if (model.has_internal_variables() ||
+        !(parameters.load_factor(end_time) == start.load_factor) ||
+        model.activation_time_factors() != load_time_fields)
+      return std::numeric_limits<double>::quiet_NaN();
+    return scheme.energy_at(x);
+  }
+
+  double
+  TimeIntegrator::known_energy(const VectorType &u,
+                               const double      load_factor) const
+  {
+    // The energy depends on the state, the load factor (loads, ramped
+    // natural shape), the fields driven by time and, with internal
+    // variables, the time step, which differs (0 after a step).
+    const ConvergedEnergy &known = converged_energy;
+    if (known.known && !model.has_internal_variables() &&
+        load_factor == known.load_factor &&
+        model.activation_time_factors() == known.time_factors && u == known.u)
+      return known.value;
+    return std::numeric_limits<double>::quiet_NaN();
   }
 
   void
@@ -378,9 +465,9 @@ namespace rodnet
     energy_balance.start(
       on,
       parameters.energy_growth_limit,
-      on ? kinetic_energy(mass, v) +
-           tensor_body_spin(model, u, v).kinetic_energy :
-         0.0,
+      on ? kinetic_energy(mass_nonzeros, v) +
+             tensor_body_spin(model, u, v).kinetic_energy :
+           0.0,
       on ? model.assemble(u, parameters.load_factor(from), nullptr, nullptr) :
            0.0);
   }
@@ -453,15 +540,43 @@ namespace rodnet
     // The fields driven by time at the time the loads are taken at.
     const double load_time = scheme.load_time(time, end_time);
     model.set_time(load_time);
-    const StepStart start{u, base, h, parameters.load_factor(load_time)};
-    VectorType x = u;
+    const double    load_factor = parameters.load_factor(load_time);
+    const StepStart start{u,
+                          base,
+                          h,
+                          load_factor,
+                          known_energy(u, load_factor)};
+    VectorType      x = u;
+    if (!predict_step(time, end_time, u, v, x, result))
+      return false;
+    solve_newton(scheme, start, x, result);
+    if (!result.converged)
+      {
+        noise.rows.clear();
+        return false;
+      }
+    ++steps_since_noise;
+    commit_step(scheme, start, time, end_time, x, u, v);
+    before.keep();
+    return true;
+  }
+
+  bool
+  TimeIntegrator::predict_step(const double      time,
+                               const double      end_time,
+                               const VectorType &u,
+                               const VectorType &v,
+                               VectorType       &x,
+                               JudgedResult     &result) const
+  {
     try
       {
         model.check_rotation_step(parameters.load_factor(time),
                                   time,
                                   parameters.load_factor(end_time),
                                   end_time);
-        x = predict(u, v, h, end_time);
+        x = predict(u, v, end_time - time, end_time);
+        return true;
       }
     catch (const std::runtime_error &e)
       {
@@ -471,6 +586,14 @@ namespace rodnet
         result.failure   = e.what();
         return false;
       }
+  }
+
+  void
+  TimeIntegrator::solve_newton(IntegrationScheme &scheme,
+                               const StepStart   &start,
+                               VectorType        &x,
+                               JudgedResult      &result)
+  {
     const bool modified = parameters.modified_newton && scheme.dynamic();
     if (modified)
       {
@@ -491,13 +614,19 @@ namespace rodnet
         result.converged = false;
         result.failure   = "the state is not finite";
       }
-    if (!result.converged)
-      {
-        noise.rows.clear();
-        return false;
-      }
-    ++steps_since_noise;
+  }
 
+  void
+  TimeIntegrator::commit_step(IntegrationScheme &scheme,
+                              const StepStart   &start,
+                              const double       time,
+                              const double       end_time,
+                              VectorType        &x,
+                              VectorType        &u,
+                              VectorType        &v)
+  {
+    const std::vector<double> load_time_fields =
+      model.activation_time_factors();
     // The commit first: it may throw, and then nothing has moved.
     model.commit_internal_variables(x);
     // Until the next step, evaluations see the converged state: the stored
@@ -519,11 +648,10 @@ namespace rodnet
         parameters.load_factor);
     last_increment = x;
     last_increment -= u;
-    last_step_length = h;
+    last_step_length = start.h;
+    step_energy = energy_at_end(scheme, start, end_time, load_time_fields, x);
     model.reset_reference(x);
     u = x;
-    before.keep();
-    return true;
   }
 
   VectorType
@@ -567,21 +695,7 @@ namespace rodnet
             noise             = criterion.roundoff_noise(x, start.load_factor);
             steps_since_noise = 0;
           }
-        // The scales of statics, or the out-of-balance force of the
-        // predictor where inertia is what the residual balances.
-        const std::shared_ptr<const Evaluation> predictor =
-          evaluate_once(problem, x);
-        const ResidualParts loads =
-          criterion.judging_scale(x,
-                                  start.load_factor,
-                                  noise.floor,
-                                  nullptr,
-                                  scheme.shared_gradient(x));
-        const ResidualParts predicted = criterion.norms(x, predictor->residual);
-        const double        length    = model.length_scale();
-        const double        force =
-          std::max({loads.force, predicted.force, predicted.moment / length});
-        const ResidualParts scale{force, force * length};
+        const ResidualParts scale = step_scale(scheme, start, problem, x);
         ResidualParts       tolerance =
           ResidualCriterion::tolerance(scale,
                                        noise.floor,
@@ -613,5 +727,30 @@ namespace rodnet
         result.converged = false;
         result.failure   = e.what();
       }
+  }
+
+  ResidualParts
+  TimeIntegrator::step_scale(IntegrationScheme     &scheme,
+                             const StepStart       &start,
+                             NewtonSolver::Problem &problem,
+                             const VectorType      &x)
+  {
+    // The scales of statics, or the out-of-balance force of the
+    // predictor where inertia is what the residual balances. The shared
+    // gradient first: the midpoint residual at x takes Pi(x) from its
+    // assembly.
+    const VectorType *const gradient = scheme.shared_gradient(x);
+    const std::shared_ptr<const Evaluation> predictor =
+      evaluate_once(problem, x);
+    const ResidualParts loads     = criterion.judging_scale(x,
+                                                        start.load_factor,
+                                                        noise.floor,
+                                                        nullptr,
+                                                        gradient);
+    const ResidualParts predicted = criterion.norms(x, predictor->residual);
+    const double        length    = model.length_scale();
+    const double        force =
+      std::max({loads.force, predicted.force, predicted.moment / length});
+    return {force, force * length};
   }
 } // namespace rodnet

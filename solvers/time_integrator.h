@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -213,7 +214,7 @@ namespace rodnet
       /// since the start of the run (dynamic runs with the energy watch
       /// on; EnergyBalance).
       double external_work = 0;
-      double wall_time        = 0; ///< seconds spent on this step
+      double wall_time     = 0; ///< seconds spent on this step
       /// Quasi-static steps: the constrained tangent has no negative
       /// eigenvalue (always true for dynamic steps, which do not check).
       bool        stable = true;
@@ -292,6 +293,41 @@ namespace rodnet
          VectorType        &v,
          JudgedResult      &result);
 
+    /// The predictor of the step from (@p u, @p v) at @p time to
+    /// @p end_time into @p x; false, with a failed @p result, where a
+    /// prescribed rotation turns by half a turn or more within the step.
+    bool
+    predict_step(double            time,
+                 double            end_time,
+                 const VectorType &u,
+                 const VectorType &v,
+                 VectorType       &x,
+                 JudgedResult     &result) const;
+
+    /// Newton for the step @p start from the predictor @p x: modified
+    /// Newton where the scheme is dynamic and modified_newton is on, full
+    /// Newton from the same predictor where that fails; a state that is
+    /// not finite is a failure.
+    void
+    solve_newton(IntegrationScheme &scheme,
+                 const StepStart   &start,
+                 VectorType        &x,
+                 JudgedResult      &result);
+
+    /// Commits the converged @p x of the step @p start from @p time to
+    /// @p end_time: the internal variables, the velocity (zero on rows
+    /// without mass), the work of the step, the reference reset (which
+    /// changes the twist DoFs of @p x); then
+    /// @p u = @p x.
+    void
+    commit_step(IntegrationScheme &scheme,
+                const StepStart   &start,
+                double             time,
+                double             end_time,
+                VectorType        &x,
+                VectorType        &u,
+                VectorType        &v);
+
     /// The predictor of a step of length @p h from (u, v), at the
     /// prescribed values of @p end_time (throws std::runtime_error for a
     /// prescribed rotation of half a turn or more within the step).
@@ -310,6 +346,21 @@ namespace rodnet
                VectorType        &x,
                JudgedResult      &result,
                bool               modified = false);
+
+    /// The mass and drag matrices of the rods' @p inertia (constructor,
+    /// dynamic schemes).
+    void
+    assemble_inertia(const std::vector<RodInertia> &inertia);
+
+    /// The force and moment scales of the step @p start's tolerance, from
+    /// the predictor @p x: the loads' and the predictor's out-of-balance
+    /// force; @p problem then gives its values at x without evaluating
+    /// again.
+    ResidualParts
+    step_scale(IntegrationScheme     &scheme,
+               const StepStart       &start,
+               NewtonSolver::Problem &problem,
+               const VectorType      &x);
 
     /// C = alpha M + beta K(@p u) + drag at the start of a dynamic run at
     /// @p load_factor (nothing without damping).
@@ -357,6 +408,28 @@ namespace rodnet
                 const JudgedResult      &result,
                 StepInfo                &info);
 
+    /// Pi at the converged @p x of the step @p start (before the reference
+    /// reset) where its scheme assembled it at the load factor of
+    /// @p end_time and the fields there (@p load_time_fields those of the
+    /// step's load time; the model at @p end_time), else NaN.
+    double
+    energy_at_end(const IntegrationScheme   &scheme,
+                  const StepStart           &start,
+                  double                     end_time,
+                  const std::vector<double> &load_time_fields,
+                  const VectorType          &x) const;
+
+    /// Remembers Pi = @p energy of the converged @p u at @p load_factor
+    /// and the model's time factors (describe_step()).
+    void
+    remember_energy(const VectorType &u, double load_factor, double energy);
+
+    /// The remembered Pi where @p u, @p load_factor and the model's time
+    /// factors are those it was assembled at (the same assembly: the same
+    /// value to the bit), else NaN.
+    double
+    known_energy(const VectorType &u, double load_factor) const;
+
     RodModel         &model;
     Parameters        parameters;
     std::ostream     *log;
@@ -368,6 +441,10 @@ namespace rodnet
     static constexpr unsigned int noise_interval    = 20;
     MatrixType                    mass; ///< unconstrained
     MatrixType constrained_mass;        ///< fixed rows and columns zero
+    /// The entries of mass that are not zero, in a pattern of their own:
+    /// the products of a step (the schemes', the energies') cost what M's
+    /// entries do, not K's pattern.
+    MatrixType mass_nonzeros;
     /// The damping matrix C (empty without damping), for the residual and
     /// for the tangent (fixed rows and columns zero but K_0's diagonal);
     /// both condense the clamps' constraints, as the mass matrix does.
@@ -381,7 +458,7 @@ namespace rodnet
     /// Rows with a nonzero mass diagonal.
     std::vector<bool> has_mass;
     StepSystem        system{model,
-                      mass,
+                      mass_nonzeros,
                       constrained_mass,
                       has_mass,
                       damping,
@@ -391,7 +468,20 @@ namespace rodnet
     /// the preload.
     std::unique_ptr<IntegrationScheme> scheme, preload_scheme;
     /// The energy watch of dynamic runs.
-    EnergyBalance energy_balance{model, mass, damping};
+    EnergyBalance energy_balance{model, mass_nonzeros, damping};
+    /// Pi of the last converged state, with what it was assembled at: the
+    /// midpoint rule's next step starts from it (StepStart::start_energy).
+    struct ConvergedEnergy
+    {
+      VectorType          u;
+      double              load_factor = 0;
+      std::vector<double> time_factors;
+      double              value = 0;
+      bool                known = false;
+    } converged_energy;
+    /// The converged state's energy of the step just committed where its
+    /// scheme knows it (energy_at_end()), for describe_step(); else NaN.
+    double step_energy = std::numeric_limits<double>::quiet_NaN();
     /// u_n - u_{n-1} and its step length (0: none yet), for the predictor.
     VectorType   last_increment;
     double       last_step_length = 0;

@@ -450,6 +450,39 @@ namespace
       }
   }
 
+  // copy_nonzeros keeps the entries that are not zero and the diagonal,
+  // nothing else, and its products are those of the full matrix to the
+  // bit (the consistent mass with rotary inertia, on the windmill).
+  TEST(MassMatrix, CopyOfNonzerosHasTheirEntriesAndTheSameProducts)
+  {
+    const auto model = network_model(network_generators::windmill(2.0), 3);
+    std::vector<RodInertia> inertia = graded_inertia(*model);
+    for (RodInertia &rod : inertia)
+      rod.rotary_inertia_per_length = 0.03;
+    const MatrixType full = mass_of(*model, inertia, MassKind::consistent);
+    MatrixType       copy;
+    copy_nonzeros(full, copy);
+    const Eigen::MatrixXd m       = dense(full);
+    std::size_t           entries = 0;
+    for (unsigned int i = 0; i < m.rows(); ++i)
+      for (unsigned int j = 0; j < m.cols(); ++j)
+        entries += m(i, j) != 0 || i == j;
+    EXPECT_EQ(copy.n_nonzero_elements(), entries);
+    EXPECT_LT(copy.n_nonzero_elements(), full.n_nonzero_elements() / 2);
+    EXPECT_EQ((dense(copy) - m).cwiseAbs().maxCoeff(), 0.0);
+
+    std::mt19937                           random(7);
+    std::uniform_real_distribution<double> value(-1, 1);
+    VectorType x = model->create_vector(), y = x, z = x;
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x[i] = value(random);
+    x.compress(dealii::VectorOperation::insert);
+    full.vmult(y, x);
+    copy.vmult(z, x);
+    for (unsigned int i = 0; i < x.size(); ++i)
+      EXPECT_EQ(y[i], z[i]) << "row " << i;
+  }
+
   TEST(MassMatrix, InertiaOfCircularSection)
   {
     const double     r = 0.01, rho = 7800;
