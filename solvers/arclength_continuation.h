@@ -390,17 +390,16 @@ namespace rodnet
 
     /**
      * A step() of length @p ds from @p p to (@p u, @p lambda); where it
-     * crosses an output load factor, land()ed there instead, marked an
-     * output point in @p info, with @p ds_taken its pseudo-arclength.
-     * False if the step or the landing fails.
+     * crosses an output load factor, land()ed there instead (@p ds then
+     * the pseudo-arclength to the landing) and marked an output point in
+     * @p info. False if the step or the landing fails.
      */
     bool
     step_onto_path(const PathPoint &p,
-                   double           ds,
+                   double          &ds,
                    VectorType      &u,
                    double          &lambda,
                    JudgedResult    &result,
-                   double          &ds_taken,
                    StepInfo        &info);
 
     /// Marks the step from @p p to @p q, across which t_lambda changes

@@ -116,7 +116,7 @@ namespace rodnet
         VectorType next   = p.u;
         double     lambda = 0, ds_taken = ds;
         info = StepInfo();
-        if (!step_onto_path(p, ds, next, lambda, result, ds_taken, info))
+        if (!step_onto_path(p, ds_taken, next, lambda, result, info))
           {
             ds /= 2;
             if (ds < parameters.min_step)
@@ -168,11 +168,10 @@ namespace rodnet
 
   bool
   ArclengthContinuation::step_onto_path(const PathPoint &p,
-                                        const double     ds,
+                                        double          &ds,
                                         VectorType      &u,
                                         double          &lambda,
                                         JudgedResult    &result,
-                                        double          &ds_taken,
                                         StepInfo        &info)
   {
     if (!step(p, ds, u, lambda, result))
@@ -180,7 +179,7 @@ namespace rodnet
     const std::optional<double> target = crossed_target(p.lambda, lambda);
     if (!target)
       return true;
-    if (!land(p, *target, u, lambda, result, ds_taken))
+    if (!land(p, *target, u, lambda, result, ds))
       return false;
     info.kind = PointKind::output_point;
     return true;
