@@ -175,6 +175,44 @@ namespace rodnet
       const std::vector<bool>                *fixed;
       std::shared_ptr<const ScatterPositions> positions;
     };
+
+    /// The scratch data of the stencil loops: none, the kernels keep
+    /// theirs on the stack.
+    struct NoAssemblyScratch
+    {
+    };
+
+    /**
+     * Calls @p worker (stencil, scratch, copy) and then @p add (copy) on
+     * every stencil of @p blocks: the colors one after the other, the
+     * blocks of a color in parallel, @p add included (a color's blocks
+     * share no row). Templates rather than std::function, so that both
+     * calls stay inlined in the stencil loop.
+     */
+    template <typename Worker, typename Add>
+    void
+    run_in_colors(const StencilBlocks &blocks,
+                  const Worker        &worker,
+                  const Add           &add)
+    {
+      for (const std::vector<unsigned int> &color : blocks.colors)
+        dealii::parallel::apply_to_subranges(
+          std::size_t(0),
+          color.size(),
+          [&](const std::size_t begin, const std::size_t end) {
+            NoAssemblyScratch scratch;
+            LocalContribution copy;
+            for (std::size_t k = begin; k < end; ++k)
+              for (unsigned int s = blocks.first[color[k]];
+                   s < blocks.first[color[k] + 1];
+                   ++s)
+                {
+                  worker(s, scratch, copy);
+                  add(copy);
+                }
+          },
+          1);
+    }
   } // namespace
 
   void
@@ -194,11 +232,8 @@ namespace rodnet
     // the same sum with one thread or several.
     const ElementFamily &family = *families[f];
     std::vector<double>  energies(family.n_stencils(), 0.0);
-    struct NoScratch
-    {
-    };
-    const auto worker =
-      [&](const unsigned int s, NoScratch &, LocalContribution &copy) {
+    const auto           worker =
+      [&](const unsigned int s, NoAssemblyScratch &, LocalContribution &copy) {
         copy.dofs.clear();
         copy.energy  = 0;
         copy.family  = f;
@@ -223,29 +258,13 @@ namespace rodnet
         copier(copy);
     };
     if (blocks != nullptr)
-      for (const std::vector<unsigned int> &color : blocks->colors)
-        dealii::parallel::apply_to_subranges(
-          std::size_t(0),
-          color.size(),
-          [&](const std::size_t begin, const std::size_t end) {
-            NoScratch         scratch;
-            LocalContribution copy;
-            for (std::size_t k = begin; k < end; ++k)
-              for (unsigned int s = blocks->first[color[k]];
-                   s < blocks->first[color[k] + 1];
-                   ++s)
-                {
-                  worker(s, scratch, copy);
-                  add(copy);
-                }
-          },
-          1);
+      run_in_colors(*blocks, worker, add);
     else
       dealii::WorkStream::run(0u,
                               family.n_stencils(),
                               worker,
                               add,
-                              NoScratch(),
+                              NoAssemblyScratch(),
                               LocalContribution());
     if (failure)
       std::rethrow_exception(failure);

@@ -86,6 +86,79 @@ namespace rodnet
       {dr_dof::node_a, dr_dof::node_b}};
     constexpr std::array<unsigned int, 2> far_block = {
       {dr_dof::far_a, dr_dof::far_b}};
+
+    /**
+     * The material tangent C = d^2 W / d strain^2 of an element of rest
+     * length @p l0 at @p strain, by central differences of the stress:
+     * exact for an energy quadratic in the strains, the tangent at the
+     * state otherwise. The stretch is a length, hence its step 1e-4 l0.
+     */
+    Eigen::Matrix<double, 6, 6>
+    stress_tangent(const RodStiffness &k,
+                   const double        l0,
+                   const StrainVector &strain)
+    {
+      Eigen::Matrix<double, 6, 6> C;
+      for (unsigned int q = 0; q < 6; ++q)
+        {
+          const double h     = q == 0 ? 1e-4 * l0 : 1e-4;
+          StrainVector shift = StrainVector::Zero();
+          shift[q]           = h;
+          DrBeamStress plus, minus;
+          dr_beam_energy(k, l0, unpack<DrBeamStrains>(strain + shift), &plus);
+          dr_beam_energy(k, l0, unpack<DrBeamStrains>(strain - shift), &minus);
+          C.col(q) = (pack(plus) - pack(minus)) / (2 * h);
+        }
+      return C;
+    }
+
+    /// |J|, the strain Jacobian of @p kinematics with its entries' absolute
+    /// values, row by row: the pull-back of a unit stress is a strain
+    /// gradient.
+    Eigen::Matrix<double, 6, n_dr_element_dofs>
+    abs_strain_jacobian(const DrBeamKinematics &kinematics)
+    {
+      Eigen::Matrix<double, 6, n_dr_element_dofs> abs_J;
+      DrElementVector                             gradient;
+      for (unsigned int p = 0; p < 6; ++p)
+        {
+          kinematics.pull_back(unpack<DrBeamStress>(StrainVector::Unit(p)),
+                               gradient);
+          abs_J.row(p) = gradient.transpose().cwiseAbs();
+        }
+      return abs_J;
+    }
+
+    /**
+     * The bound of the Gershgorin row sums of one element's stiffness at
+     * its local DoFs @p local (see DrModel::fictitious_masses()): the
+     * material part |J|^T |C| |J| 1 and the geometric stiffness 2 |N| / L
+     * of the axial force on the translations of both ends.
+     */
+    DrElementVector
+    element_row_sum_bound(const DrElementVector &local,
+                          const DrBeamReference &reference,
+                          const RodStiffness    &k)
+    {
+      const DrBeamKinematics            kinematics(local, reference);
+      const double                      l0 = reference.rest_length;
+      const Eigen::Matrix<double, 6, 6> C =
+        stress_tangent(k, l0, pack(kinematics.strains()));
+      const Eigen::Matrix<double, 6, n_dr_element_dofs> abs_J =
+        abs_strain_jacobian(kinematics);
+      DrElementVector bound =
+        abs_J.transpose() * (C.cwiseAbs() * abs_J.rowwise().sum());
+
+      DrBeamStress stress;
+      dr_beam_energy(k, l0, kinematics.strains(), &stress);
+      const double geometric =
+        2 * std::abs(stress.stretch) /
+        (local.segment<3>(dr_dof::node_b) - local.segment<3>(dr_dof::node_a))
+          .norm();
+      for (const unsigned int block : node_block)
+        bound.segment<3>(block + dr_dof::position).array() += geometric;
+      return bound;
+    }
   } // namespace
 
 
@@ -528,54 +601,27 @@ namespace rodnet
     DrVector row_sums(n_dofs());
     for (const Element &e : elements)
       {
-        const DrElementVector  local = local_dofs(e, u);
-        const DrBeamKinematics kinematics(local, e.reference);
-        const RodStiffness    &k      = stiffness[e.rod];
-        const double           l0     = e.reference.rest_length;
-        const StrainVector     strain = pack(kinematics.strains());
-
-        // C by central differences of the stress: exact for an energy
-        // quadratic in the strains, the tangent at the state otherwise.
-        Eigen::Matrix<double, 6, 6> C;
-        for (unsigned int q = 0; q < 6; ++q)
-          {
-            const double h     = q == 0 ? 1e-4 * l0 : 1e-4;
-            StrainVector shift = StrainVector::Zero();
-            shift[q]           = h;
-            DrBeamStress plus, minus;
-            dr_beam_energy(k, l0, unpack<DrBeamStrains>(strain + shift), &plus);
-            dr_beam_energy(k,
-                           l0,
-                           unpack<DrBeamStrains>(strain - shift),
-                           &minus);
-            C.col(q) = (pack(plus) - pack(minus)) / (2 * h);
-          }
-
-        // J row by row: the pull-back of a unit stress is a strain gradient.
-        Eigen::Matrix<double, 6, n_dr_element_dofs> abs_J;
-        DrElementVector                             gradient;
-        for (unsigned int p = 0; p < 6; ++p)
-          {
-            kinematics.pull_back(unpack<DrBeamStress>(StrainVector::Unit(p)),
-                                 gradient);
-            abs_J.row(p) = gradient.transpose().cwiseAbs();
-          }
-        DrElementVector bound =
-          abs_J.transpose() * (C.cwiseAbs() * abs_J.rowwise().sum());
-
-        DrBeamStress stress;
-        dr_beam_energy(k, l0, kinematics.strains(), &stress);
-        const double geometric =
-          2 * std::abs(stress.stretch) /
-          (local.segment<3>(dr_dof::node_b) - local.segment<3>(dr_dof::node_a))
-            .norm();
-        for (const unsigned int block : node_block)
-          bound.segment<3>(block + dr_dof::position).array() += geometric;
-
+        const DrElementVector bound = element_row_sum_bound(local_dofs(e, u),
+                                                            e.reference,
+                                                            stiffness[e.rod]);
         for (unsigned int i = 0; i < n_dr_element_dofs; ++i)
           row_sums[e.dofs[i]] += bound[i];
       }
+    equalize_node_row_sums(row_sums);
 
+    // A DoF without stiffness (none in a connected model) gets the largest
+    // mass rather than a division by zero.
+    const double largest = row_sums.linfty_norm();
+    masses.reinit(n_dofs());
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      masses[i] =
+        0.5 * mass_scaling * (row_sums[i] > 0 ? row_sums[i] : largest);
+  }
+
+
+  void
+  DrModel::equalize_node_row_sums(DrVector &row_sums) const
+  {
     // Elements turn during a relaxation, and with them the directions in
     // which a node is stiff: an axial row sum EA/L0 along a straight rod
     // becomes a bending one 24 EI/L0^3 when its elements turn by 90 degrees.
@@ -591,14 +637,6 @@ namespace rodnet
       }
     for (const unsigned int d : frame_dofs)
       row_sums[d] = row_sums[d + 1] = std::max(row_sums[d], row_sums[d + 1]);
-
-    // A DoF without stiffness (none in a connected model) gets the largest
-    // mass rather than a division by zero.
-    const double largest = row_sums.linfty_norm();
-    masses.reinit(n_dofs());
-    for (unsigned int i = 0; i < n_dofs(); ++i)
-      masses[i] =
-        0.5 * mass_scaling * (row_sums[i] > 0 ? row_sums[i] : largest);
   }
 
 

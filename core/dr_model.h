@@ -309,6 +309,13 @@ namespace rodnet
     DrElementVector
     local_dofs(const Element &e, const DrVector &u) const;
 
+    /// Gives the three translations of every position node the largest of
+    /// their @p row_sums, and n_x, n_y of every frame node theirs, so that
+    /// the masses bound the stiffness in whatever direction the elements
+    /// turn (fictitious_masses()).
+    void
+    equalize_node_row_sums(DrVector &row_sums) const;
+
     /// Throws unless every rigidity of every rod is positive and finite.
     void
     check_stiffness() const;

@@ -36,6 +36,45 @@ namespace rodnet
         }
     }
 
+    /// In ribbon_hinge_at_vertex(): no ribbon hinge at the vertex.
+    constexpr unsigned int no_ribbon_hinge = static_cast<unsigned int>(-1);
+
+    /// Per vertex of the network (@p n_vertices of them), the hinge of
+    /// @p layout with ribbon DoFs centred there, or no_ribbon_hinge: the
+    /// neighbours whose eta enter a hinge's eta'.
+    std::vector<unsigned int>
+    ribbon_hinge_at_vertex(const DofLayout   &layout,
+                           const unsigned int n_vertices)
+    {
+      const auto               &hinges = layout.hinges();
+      std::vector<unsigned int> hinge_at(n_vertices, no_ribbon_hinge);
+      for (unsigned int h = 0; h < hinges.size(); ++h)
+        if (layout.has_ribbon_dofs(h))
+          hinge_at[hinges[h].vertices[1]] = h;
+      return hinge_at;
+    }
+
+    /**
+     * Throws unless @p hinge (index @p h) has no natural strains. The
+     * developability constraints hold for a strip that is flat and
+     * straight when unstressed; a natural curvature or twist would
+     * silently turn them into constraints on the strains' change.
+     */
+    void
+    check_flat_at_rest(const Configuration &configuration,
+                       const HingeStencil  &hinge,
+                       const unsigned int   h)
+    {
+      if (configuration.natural_strains(h).norm() > 1e-12)
+        throw std::invalid_argument(
+          "rod " + std::to_string(hinge.rod) +
+          ": a developable ribbon is straight and flat when unstressed, "
+          "but its hinge at vertex " +
+          std::to_string(hinge.vertices[1]) +
+          " has natural strains; set \"Geometry/Natural shape = "
+          "straight\"");
+    }
+
     /// Local DoFs of a ribbon stencil: the hinge's, up to three etas and
     /// the two multipliers.
     constexpr int max_ribbon_dofs = n_hinge_dofs + 3 + 2;
@@ -141,13 +180,9 @@ namespace rodnet
       : layout(layout)
       , kernels(kernels)
   {
-    const auto               &hinges = layout.hinges();
-    constexpr unsigned int    none   = static_cast<unsigned int>(-1);
-    std::vector<unsigned int> hinge_at(network.n_vertices(), none);
-    for (unsigned int h = 0; h < hinges.size(); ++h)
-      if (layout.has_ribbon_dofs(h))
-        hinge_at[hinges[h].vertices[1]] = h;
-
+    const auto                     &hinges = layout.hinges();
+    const std::vector<unsigned int> hinge_at =
+      ribbon_hinge_at_vertex(layout, network.n_vertices());
     for (unsigned int h = 0; h < hinges.size(); ++h)
       {
         if (!layout.has_ribbon_dofs(h))
@@ -159,60 +194,63 @@ namespace rodnet
         if (stencil.law == nullptr)
           throw std::logic_error("rod " + std::to_string(hinge.rod) +
                                  " is developable, its material is not");
-        unsigned int prev = hinge_at[hinge.vertices[0]];
-        unsigned int next = hinge_at[hinge.vertices[2]];
-        if (prev == next) // a closed rod of two segments
-          next = none;
-        // Across the closure of a Moebius band eta changes sign.
-        const double prev_sign =
-          prev != none && configuration.closes_with_a_flip(hinges[prev]) ? -1 :
-                                                                           1;
-        const double next_sign =
-          configuration.closes_with_a_flip(hinge) ? -1 : 1;
-        const double l_prev = configuration.rest_length(hinge.segment_prev);
-        const double l_next = configuration.rest_length(hinge.segment_next);
-        stencil.etas        = {layout.ribbon_dof(h, 0)};
-        stencil.difference  = {0.0};
-        const double span =
-          (prev != none ? l_prev : 0.0) + (next != none ? l_next : 0.0);
-        if (prev != none)
-          {
-            stencil.etas.push_back(layout.ribbon_dof(prev, 0));
-            stencil.difference.push_back(-prev_sign / span);
-          }
-        if (next != none)
-          {
-            stencil.etas.push_back(layout.ribbon_dof(next, 0));
-            stencil.difference.push_back(next_sign / span);
-          }
-        // One-sided at an end: the hinge's own eta takes the missing
-        // neighbour's place.
-        if (prev == none && next != none)
-          stencil.difference[0] = -1 / span;
-        if (next == none && prev != none)
-          stencil.difference[0] = 1 / span;
-        const double t = network.rods()[hinge.rod].closure_coupling;
-        if (t < 1 && prev != none && next != none)
-          {
-            if (configuration.closes(hinge))
-              couple_across_closure(stencil.difference, t, true, l_prev);
-            if (configuration.closes(hinges[prev]))
-              couple_across_closure(stencil.difference, t, false, l_next);
-          }
-        // The developability constraints hold for a strip that is flat
-        // and straight when unstressed; a natural curvature or twist would
-        // silently turn them into constraints on the strains' change.
-        if (configuration.natural_strains(h).norm() > 1e-12)
-          throw std::invalid_argument(
-            "rod " + std::to_string(hinge.rod) +
-            ": a developable ribbon is straight and flat when unstressed, "
-            "but its hinge at vertex " +
-            std::to_string(hinge.vertices[1]) +
-            " has natural strains; set \"Geometry/Natural shape = "
-            "straight\"");
+        set_eta_difference(stencil, hinge_at, network, configuration);
+        check_flat_at_rest(configuration, hinge, h);
         stencil.drag = drag_factor * stencil.law->bending_modulus() /
                        configuration.voronoi_length(h);
         stencils.push_back(std::move(stencil));
+      }
+  }
+
+
+  void
+  DevelopableRibbonFamily::set_eta_difference(
+    Stencil                         &stencil,
+    const std::vector<unsigned int> &hinge_at,
+    const RodNetwork                &network,
+    const Configuration             &configuration) const
+  {
+    const auto         &hinges = layout.hinges();
+    const unsigned int  h      = stencil.hinge;
+    const HingeStencil &hinge  = hinges[h];
+    unsigned int        prev   = hinge_at[hinge.vertices[0]];
+    unsigned int        next   = hinge_at[hinge.vertices[2]];
+    if (prev == next) // a closed rod of two segments
+      next = no_ribbon_hinge;
+    const bool has_prev = prev != no_ribbon_hinge;
+    const bool has_next = next != no_ribbon_hinge;
+    // Across the closure of a Moebius band eta changes sign.
+    const double prev_sign =
+      has_prev && configuration.closes_with_a_flip(hinges[prev]) ? -1 : 1;
+    const double next_sign = configuration.closes_with_a_flip(hinge) ? -1 : 1;
+    const double l_prev    = configuration.rest_length(hinge.segment_prev);
+    const double l_next    = configuration.rest_length(hinge.segment_next);
+    stencil.etas           = {layout.ribbon_dof(h, 0)};
+    stencil.difference     = {0.0};
+    const double span = (has_prev ? l_prev : 0.0) + (has_next ? l_next : 0.0);
+    if (has_prev)
+      {
+        stencil.etas.push_back(layout.ribbon_dof(prev, 0));
+        stencil.difference.push_back(-prev_sign / span);
+      }
+    if (has_next)
+      {
+        stencil.etas.push_back(layout.ribbon_dof(next, 0));
+        stencil.difference.push_back(next_sign / span);
+      }
+    // One-sided at an end: the hinge's own eta takes the missing
+    // neighbour's place.
+    if (!has_prev && has_next)
+      stencil.difference[0] = -1 / span;
+    if (!has_next && has_prev)
+      stencil.difference[0] = 1 / span;
+    const double t = network.rods()[hinge.rod].closure_coupling;
+    if (t < 1 && has_prev && has_next)
+      {
+        if (configuration.closes(hinge))
+          couple_across_closure(stencil.difference, t, true, l_prev);
+        if (configuration.closes(hinges[prev]))
+          couple_across_closure(stencil.difference, t, false, l_next);
       }
   }
 

@@ -100,6 +100,20 @@ namespace rodnet
       double                      drag; ///< drag()
     };
 
+    /**
+     * The eta DoFs and coefficients of eta' in @p stencil (its hinge set):
+     * the central difference over the neighbouring ribbon hinges
+     * @p hinge_at (per vertex: the ribbon hinge centred there, or -1),
+     * one-sided at an end, signs flipped across a Moebius closure and
+     * blended with the one-sided difference by the rod's closure coupling
+     * beside a ring's closure (see the class documentation).
+     */
+    void
+    set_eta_difference(Stencil                         &stencil,
+                       const std::vector<unsigned int> &hinge_at,
+                       const RodNetwork                &network,
+                       const Configuration             &configuration) const;
+
     /// The state's ribbon variables of stencil @p s: (eta_i, eta', mu_2,
     /// mu_3).
     Eigen::Vector4d

@@ -383,6 +383,31 @@ namespace rodnet
     void
     follow_path(PathPoint &p, double ds, const Observer &on_converged);
 
+    /// Throws SolverFailure, standing at @p p, where the path has used up
+    /// its Parameters::max_steps points inside the load factor range.
+    void
+    check_points_left(const PathPoint &p) const;
+
+    /**
+     * A step() of length @p ds from @p p to (@p u, @p lambda); where it
+     * crosses an output load factor, land()ed there instead (@p ds then
+     * the pseudo-arclength to the landing) and marked an output point in
+     * @p info. False if the step or the landing fails.
+     */
+    bool
+    step_onto_path(const PathPoint &p,
+                   double          &ds,
+                   VectorType      &u,
+                   double          &lambda,
+                   JudgedResult    &result,
+                   StepInfo        &info);
+
+    /// Marks the step from @p p to @p q, across which t_lambda changes
+    /// sign, as passing a limit point in @p info, and records (and logs)
+    /// the limit load factor estimated from the points around it.
+    void
+    note_limit_point(const PathPoint &p, const PathPoint &q, StepInfo &info);
+
     /// Numbers, times, reports and observes the converged @p p.
     void
     finish_point(StepInfo        &info,

@@ -112,23 +112,11 @@ namespace rodnet
     while (p.lambda < parameters.upper_limit &&
            p.lambda > parameters.lower_limit)
       {
-        if (n_points > parameters.max_steps)
-          throw SolverFailure(
-            "the path did not leave the load factors [" +
-            number(parameters.lower_limit) + ", " +
-            number(parameters.upper_limit) + "] within " +
-            std::to_string(parameters.max_steps) +
-            " points (entry \"Solver/Continuation/Max points\"); it stands "
-            "at load factor " +
-            number(p.lambda));
+        check_points_left(p);
         VectorType next   = p.u;
         double     lambda = 0, ds_taken = ds;
-        info               = StepInfo();
-        const bool stepped = step(p, ds, next, lambda, result);
-        const auto target =
-          stepped ? crossed_target(p.lambda, lambda) : std::nullopt;
-        if (!stepped ||
-            (target && !land(p, *target, next, lambda, result, ds_taken)))
+        info = StepInfo();
+        if (!step_onto_path(p, ds_taken, next, lambda, result, info))
           {
             ds /= 2;
             if (ds < parameters.min_step)
@@ -139,8 +127,6 @@ namespace rodnet
                 result.failure);
             continue;
           }
-        if (target)
-          info.kind = PointKind::output_point;
         PathPoint q = accept(next, lambda, &p, result, info);
         if (q.t_lambda * p.t_lambda < 0 && parameters.snap_at_limit_points &&
             p.t_lambda > 0)
@@ -150,17 +136,7 @@ namespace rodnet
             continue;
           }
         if (q.t_lambda * p.t_lambda < 0)
-          {
-            info.kind = PointKind::limit_point;
-            passed_limit_points.push_back(
-              points_on_path >= 2 ?
-                parabola_extremum({{recent[1], recent[2], {q.s, q.lambda}}}) :
-                slope_extremum(p.s, p.lambda, p.t_lambda, q.s, q.t_lambda));
-            if (log != nullptr)
-              *log << "limit point at load factor " << std::setprecision(10)
-                   << passed_limit_points.back() << std::setprecision(6)
-                   << " (estimated from the points around it)" << std::endl;
-          }
+          note_limit_point(p, q, info);
         else if (q.negative != p.negative && !just_switched)
           {
             if (follow_bifurcation(p, q, ds_taken, info, on_converged))
@@ -175,6 +151,54 @@ namespace rodnet
         p  = q;
         ds = next_step_length(ds, result.iterations);
       }
+  }
+
+  void
+  ArclengthContinuation::check_points_left(const PathPoint &p) const
+  {
+    if (n_points > parameters.max_steps)
+      throw SolverFailure(
+        "the path did not leave the load factors [" +
+        number(parameters.lower_limit) + ", " + number(parameters.upper_limit) +
+        "] within " + std::to_string(parameters.max_steps) +
+        " points (entry \"Solver/Continuation/Max points\"); it stands "
+        "at load factor " +
+        number(p.lambda));
+  }
+
+  bool
+  ArclengthContinuation::step_onto_path(const PathPoint &p,
+                                        double          &ds,
+                                        VectorType      &u,
+                                        double          &lambda,
+                                        JudgedResult    &result,
+                                        StepInfo        &info)
+  {
+    if (!step(p, ds, u, lambda, result))
+      return false;
+    const std::optional<double> target = crossed_target(p.lambda, lambda);
+    if (!target)
+      return true;
+    if (!land(p, *target, u, lambda, result, ds))
+      return false;
+    info.kind = PointKind::output_point;
+    return true;
+  }
+
+  void
+  ArclengthContinuation::note_limit_point(const PathPoint &p,
+                                          const PathPoint &q,
+                                          StepInfo        &info)
+  {
+    info.kind = PointKind::limit_point;
+    passed_limit_points.push_back(
+      points_on_path >= 2 ?
+        parabola_extremum({{recent[1], recent[2], {q.s, q.lambda}}}) :
+        slope_extremum(p.s, p.lambda, p.t_lambda, q.s, q.t_lambda));
+    if (log != nullptr)
+      *log << "limit point at load factor " << std::setprecision(10)
+           << passed_limit_points.back() << std::setprecision(6)
+           << " (estimated from the points around it)" << std::endl;
   }
 
   double

@@ -221,29 +221,79 @@ namespace rodnet
             attempt.reason = reason.str();
             return attempt;
           }
+        if (const std::optional<std::string> reason =
+              advance(u, r, load_factor, dt, motion, attempt))
+          return unstable(*reason);
+      }
+  }
 
-        double       reversal       = 0;
-        const double kinetic_energy = leapfrog(u, r, dt, motion, reversal);
-        if (!std::isfinite(kinetic_energy))
-          return unstable("the kinetic energy is not finite");
-        if (const std::string reason =
-              instability(kinetic_energy, reversal, motion);
-            !reason.empty())
-          return unstable(reason);
-        try
-          {
-            attempt.peaks += damp_at_peak(u, kinetic_energy, dt, motion);
-            model.residual(u, load_factor, r);
-          }
-        catch (const std::exception &e)
-          {
-            return unstable(e.what());
-          }
 
-        if (log != nullptr && parameters.progress_interval > 0 &&
-            (iteration + 1) % parameters.progress_interval == 0)
-          *log << "    DR iteration " << iteration + 1 << ": kinetic energy "
-               << kinetic_energy << ", |R| " << free_norm(r) << std::endl;
+  std::optional<std::string>
+  DynamicRelaxation::advance(DrVector    &u,
+                             DrVector    &r,
+                             const double load_factor,
+                             const double dt,
+                             Motion      &motion,
+                             Attempt     &attempt) const
+  {
+    double       reversal       = 0;
+    const double kinetic_energy = leapfrog(u, r, dt, motion, reversal);
+    if (!std::isfinite(kinetic_energy))
+      return "the kinetic energy is not finite";
+    if (std::string reason = instability(kinetic_energy, reversal, motion);
+        !reason.empty())
+      return reason;
+    try
+      {
+        attempt.peaks += damp_at_peak(u, kinetic_energy, dt, motion);
+        model.residual(u, load_factor, r);
+      }
+    catch (const std::exception &e)
+      {
+        return std::string(e.what());
+      }
+
+    const unsigned int done = attempt.iterations + 1;
+    if (log != nullptr && parameters.progress_interval > 0 &&
+        done % parameters.progress_interval == 0)
+      *log << "    DR iteration " << done << ": kinetic energy "
+           << kinetic_energy << ", |R| " << free_norm(r) << std::endl;
+    return std::nullopt;
+  }
+
+
+  DynamicRelaxation::Attempt
+  DynamicRelaxation::relax_cutting_time_step(DrVector          &u,
+                                             const DrVector    &last_converged,
+                                             const unsigned int step,
+                                             const double       load_factor,
+                                             double            &dt,
+                                             Result            &result) const
+  {
+    const double min_dt =
+      parameters.time_step * parameters.min_time_step_fraction;
+    for (;;)
+      {
+        const Attempt attempt = relax(u, load_factor, dt);
+        result.total_iterations += attempt.iterations;
+        if (attempt.converged)
+          return attempt;
+        u = last_converged;
+        std::ostringstream where;
+        where << "dynamic relaxation, load step " << step << " (load factor "
+              << load_factor << "), time step " << dt << ", iteration "
+              << attempt.iterations << ": " << attempt.reason;
+        if (!attempt.unstable)
+          throw SolverFailure(where.str());
+        if (!(0.5 * dt >= min_dt))
+          throw SolverFailure(where.str() +
+                              "; the time step cannot be cut below " +
+                              std::to_string(min_dt));
+        if (log != nullptr)
+          *log << where.str() << "; retrying with time step " << 0.5 * dt
+               << std::endl;
+        dt *= 0.5;
+        ++result.time_step_cuts;
       }
   }
 
@@ -255,41 +305,20 @@ namespace rodnet
       throw std::invalid_argument(
         "dynamic relaxation: the state has " + std::to_string(u.size()) +
         " entries, the model " + std::to_string(model.n_dofs()) + " DoFs");
-    Result       result;
-    double       dt = parameters.time_step;
-    const double min_dt =
-      parameters.time_step * parameters.min_time_step_fraction;
+    Result   result;
+    double   dt             = parameters.time_step;
     DrVector last_converged = u;
 
     for (unsigned int step = 1; step <= parameters.n_steps; ++step)
       {
-        const auto   start       = std::chrono::steady_clock::now();
-        const double load_factor = double(step) / parameters.n_steps;
-        Attempt      attempt;
-        for (;;)
-          {
-            attempt = relax(u, load_factor, dt);
-            result.total_iterations += attempt.iterations;
-            if (attempt.converged)
-              break;
-            u = last_converged;
-            std::ostringstream where;
-            where << "dynamic relaxation, load step " << step
-                  << " (load factor " << load_factor << "), time step " << dt
-                  << ", iteration " << attempt.iterations << ": "
-                  << attempt.reason;
-            if (!attempt.unstable)
-              throw SolverFailure(where.str());
-            if (!(0.5 * dt >= min_dt))
-              throw SolverFailure(where.str() +
-                                  "; the time step cannot be cut below " +
-                                  std::to_string(min_dt));
-            if (log != nullptr)
-              *log << where.str() << "; retrying with time step " << 0.5 * dt
-                   << std::endl;
-            dt *= 0.5;
-            ++result.time_step_cuts;
-          }
+        const auto    start       = std::chrono::steady_clock::now();
+        const double  load_factor = double(step) / parameters.n_steps;
+        const Attempt attempt     = relax_cutting_time_step(u,
+                                                        last_converged,
+                                                        step,
+                                                        load_factor,
+                                                        dt,
+                                                        result);
         last_converged = u;
 
         StepInfo info;

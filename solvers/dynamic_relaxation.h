@@ -5,6 +5,7 @@
 #include <solvers/static_solver.h>
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -139,6 +140,36 @@ namespace rodnet
     /// Relaxes @p u at @p load_factor with time step @p dt.
     Attempt
     relax(DrVector &u, double load_factor, double dt) const;
+
+    /**
+     * One iteration of relax() from @p u with its residual @p r: a
+     * leapfrog step of @p motion, kinetic damping at a peak (counted in
+     * @p attempt), the residual at the new state and, every
+     * progress_interval iterations, a line in the log. Returns why the
+     * motion is unstable, nothing where it carries on.
+     */
+    std::optional<std::string>
+    advance(DrVector &u,
+            DrVector &r,
+            double    load_factor,
+            double    dt,
+            Motion   &motion,
+            Attempt  &attempt) const;
+
+    /**
+     * Relaxes load step @p step at @p load_factor from @p u, halving the
+     * time step @p dt (and going back to @p last_converged) while the
+     * motion is unstable; counts iterations and cuts in @p result. Throws
+     * SolverFailure naming the step, the time step and the iteration where
+     * it does not converge or the time step reaches its minimum.
+     */
+    Attempt
+    relax_cutting_time_step(DrVector       &u,
+                            const DrVector &last_converged,
+                            unsigned int    step,
+                            double          load_factor,
+                            double         &dt,
+                            Result         &result) const;
 
     /// The residual that rounding errors of the positions alone reach,
     /// from the fictitious @p masses.

@@ -123,8 +123,7 @@ namespace rodnet
       model.assemble(u, 0.0, &applied, nullptr, false);
     applied -= loaded;
 
-    const DofLayout &layout         = model.layout();
-    double           applied_force2 = 0, applied_moment2 = 0;
+    double applied_force2 = 0, applied_moment2 = 0;
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
       if (dof_roles.kind(i) == Kind::position)
         applied_force2 += applied[i] * applied[i];
@@ -132,6 +131,22 @@ namespace rodnet
         applied_moment2 += applied[i] * applied[i];
 
     double reaction_force2 = 0, reaction_moment2 = 0;
+    add_support_reactions(u, loaded, reaction_force2, reaction_moment2);
+    for (const global_dof_index d : fixed_twists)
+      reaction_moment2 += loaded[d] * loaded[d];
+    add_junction_moments(u, applied, loaded, applied_moment2, reaction_moment2);
+
+    return {{std::sqrt(applied_force2), std::sqrt(applied_moment2)},
+            {std::sqrt(reaction_force2), std::sqrt(reaction_moment2)}};
+  }
+
+  void
+  ResidualCriterion::add_support_reactions(const VectorType &u,
+                                           const VectorType &loaded,
+                                           double           &force2,
+                                           double           &moment2) const
+  {
+    const DofLayout &layout = model.layout();
     for (const Support &s : model.supports())
       {
         // Net force and moment about the first vertex: a clamp's couple
@@ -151,13 +166,20 @@ namespace rodnet
               (model.configuration().position(u, s.vertices[k]) - origin)
                 .cross(f);
           }
-        reaction_force2 += force.squaredNorm();
-        reaction_moment2 += moment.squaredNorm();
+        force2 += force.squaredNorm();
+        moment2 += moment.squaredNorm();
       }
-    for (const global_dof_index d : fixed_twists)
-      reaction_moment2 += loaded[d] * loaded[d];
+  }
 
-    const auto &junctions = model.network().junctions();
+  void
+  ResidualCriterion::add_junction_moments(const VectorType &u,
+                                          const VectorType &applied,
+                                          const VectorType &loaded,
+                                          double           &applied_moment2,
+                                          double &reaction_moment2) const
+  {
+    const DofLayout &layout    = model.layout();
+    const auto      &junctions = model.network().junctions();
     for (unsigned int j = 0; j < junctions.size(); ++j)
       if (layout.has_rotation_dofs(j))
         {
@@ -171,9 +193,6 @@ namespace rodnet
           if (junctions[j].kind == JunctionKind::clamped)
             reaction_moment2 += junction_moment(u, j, g_reaction).squaredNorm();
         }
-
-    return {{std::sqrt(applied_force2), std::sqrt(applied_moment2)},
-            {std::sqrt(reaction_force2), std::sqrt(reaction_moment2)}};
   }
 
   ResidualParts

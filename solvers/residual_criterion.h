@@ -249,6 +249,26 @@ namespace rodnet
                const VectorType *extra_force,
                const VectorType *known_loaded = nullptr) const;
 
+    /// Adds to @p force2 and @p moment2 the squared net reaction force of
+    /// every support in the unconstrained residual @p loaded at @p u, and
+    /// its squared moment about the support's first vertex.
+    void
+    add_support_reactions(const VectorType &u,
+                          const VectorType &loaded,
+                          double           &force2,
+                          double           &moment2) const;
+
+    /// Adds to @p applied_moment2 the squared spatial moment that the
+    /// @p applied generalized force puts on every junction with rotation
+    /// DoFs, and to @p reaction_moment2 that of the residual @p loaded at
+    /// the clamped ones (their reactions).
+    void
+    add_junction_moments(const VectorType &u,
+                         const VectorType &applied,
+                         const VectorType &loaded,
+                         double           &applied_moment2,
+                         double           &reaction_moment2) const;
+
     /// The scales of @p loads: the larger applied or reaction part, each
     /// combined().
     ResidualParts

@@ -49,21 +49,21 @@ namespace rodnet
     constexpr double multiplier_regularization = 1e-2;
 
     /**
-     * The free block of @p tangent (sparse_free_block()), its diagonal
-     * shifted by -@p shift, with the multiplier rows regularized.
+     * Numbers the DoFs (@p n_dofs of them) that @p constraints leave
+     * free: block.global, block.multiplier (the @p multipliers marked) and
+     * the eigen-space of @p block. Returns per DoF its free index, -1 for
+     * a constrained DoF.
      */
-    FreeBlock
-    sparse_free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-                      const dealii::AffineConstraints<double>      &constraints,
-                      const std::vector<global_dof_index>          &multipliers,
-                      const double                                  shift)
+    std::vector<int>
+    number_free_dofs(const unsigned int                       n_dofs,
+                     const dealii::AffineConstraints<double> &constraints,
+                     const std::vector<global_dof_index>     &multipliers,
+                     FreeBlock                               &block)
     {
-      const unsigned int n_dofs = tangent.m();
-      std::vector<bool>  is_multiplier(n_dofs, false);
+      std::vector<bool> is_multiplier(n_dofs, false);
       for (const global_dof_index d : multipliers)
         is_multiplier[d] = true;
       std::vector<int> free_index(n_dofs, -1);
-      FreeBlock        block;
       for (unsigned int i = 0; i < n_dofs; ++i)
         if (!constraints.is_constrained(i))
           {
@@ -76,6 +76,49 @@ namespace rodnet
               }
             block.global.push_back(i);
           }
+      return free_index;
+    }
+
+    /**
+     * The regularized diagonal of the multiplier row @p k, whose
+     * off-diagonal entries @p row are its constraint's gradient g, and the
+     * penalty g g^T (lower triangle) on the other DoFs, appended to
+     * @p entries; the row's magnitude in block.diagonal.
+     */
+    void
+    regularize_multiplier_row(const unsigned int                         k,
+                              const std::vector<std::pair<int, double>> &row,
+                              FreeBlock                                 &block,
+                              std::vector<Eigen::Triplet<double>> &entries)
+    {
+      // K_reg = [H + rho G^T G, G^T; G, -I / rho] has the inertia of
+      // H + 2 rho G^T G plus one negative pivot per multiplier, in any
+      // elimination order.
+      double largest = 0;
+      for (const auto &[column, value] : row)
+        largest = std::max(largest, std::abs(value));
+      const double c = multiplier_regularization;
+      entries.emplace_back(k, k, largest > 0 ? -c * largest : -1.0);
+      block.diagonal[k] = largest > 0 ? c * largest : 1.0;
+      for (const auto &[i, gi] : row)
+        for (const auto &[j, gj] : row)
+          if (j <= i)
+            entries.emplace_back(i, j, gi * gj / (c * largest));
+    }
+
+    /**
+     * The free block of @p tangent (sparse_free_block()), its diagonal
+     * shifted by -@p shift, with the multiplier rows regularized.
+     */
+    FreeBlock
+    sparse_free_block(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                      const dealii::AffineConstraints<double>      &constraints,
+                      const std::vector<global_dof_index>          &multipliers,
+                      const double                                  shift)
+    {
+      FreeBlock              block;
+      const std::vector<int> free_index =
+        number_free_dofs(tangent.m(), constraints, multipliers, block);
       const unsigned int                  n = block.global.size();
       std::vector<Eigen::Triplet<double>> entries;
       block.diagonal = Eigen::VectorXd::Zero(n);
@@ -103,24 +146,10 @@ namespace rodnet
               if (column >= 0 && column != int(k) && values[e] != 0)
                 row.emplace_back(column, values[e]);
             }
-          if (!block.multiplier[k])
-            {
-              entries.emplace_back(k, k, -shift);
-              continue;
-            }
-          // K_reg = [H + rho G^T G, G^T; G, -I / rho] has the inertia of
-          // H + 2 rho G^T G plus one negative pivot per multiplier, in any
-          // elimination order.
-          double largest = 0;
-          for (const auto &[column, value] : row)
-            largest = std::max(largest, std::abs(value));
-          const double c = multiplier_regularization;
-          entries.emplace_back(k, k, largest > 0 ? -c * largest : -1.0);
-          block.diagonal[k] = largest > 0 ? c * largest : 1.0;
-          for (const auto &[i, gi] : row)
-            for (const auto &[j, gj] : row)
-              if (j <= i)
-                entries.emplace_back(i, j, gi * gj / (c * largest));
+          if (block.multiplier[k])
+            regularize_multiplier_row(k, row, block, entries);
+          else
+            entries.emplace_back(k, k, -shift);
         }
       block.matrix.resize(n, n);
       block.matrix.setFromTriplets(entries.begin(), entries.end());

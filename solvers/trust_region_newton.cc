@@ -412,6 +412,61 @@ namespace rodnet
         current = best;
       return improved;
     }
+
+    /// The result where the energy cannot be evaluated at the start.
+    NewtonSolver::Result
+    unevaluable_start()
+    {
+      NewtonSolver::Result result;
+      result.failure       = "the energy cannot be evaluated at the start";
+      result.residual_norm = NAN;
+      return result;
+    }
+
+    /// Whether @p it is in equilibrium: the problem's own test where it
+    /// has one, else the residual norm against the tolerance.
+    bool
+    balanced(const NewtonSolver::Problem &problem,
+             const Iterate               &it,
+             const Parameters            &p)
+    {
+      return problem.converged ? problem.converged(it.x, it.residual) :
+                                 it.residual.l2_norm() <= p.tolerance;
+    }
+
+    /**
+     * The first radius where the tangent is not positive definite, so that
+     * the Newton step is no measure of the distance to go: the scaled
+     * length |D^-1 r| of the residual, or if longer the length along the
+     * negative curvature mode over which the energy falls by 1e-6 of it.
+     */
+    double
+    first_radius(const Iterate         &current,
+                 const Curvature       &curvature,
+                 const Eigen::VectorXd &metric)
+    {
+      return std::max(values_of(current.residual).cwiseQuotient(metric).norm(),
+                      curvature.negative ?
+                        curvature_length(current.energy, curvature) :
+                        0.0);
+    }
+
+    /// Completes @p result with the residual norm of the last iterate
+    /// @p current: named in a failure, and the failure named where the
+    /// iterations ran out without another.
+    void
+    finish_result(const Iterate &current, NewtonSolver::Result &result)
+    {
+      result.residual_norm = current.residual.l2_norm();
+      if (!result.failure.empty())
+        result.failure +=
+          " (residual " + std::to_string(result.residual_norm) + ")";
+      if (!result.converged && result.failure.empty())
+        result.failure = "the trust region did not converge in " +
+                         std::to_string(result.iterations) +
+                         " iterations (residual " +
+                         std::to_string(result.residual_norm) + ")";
+    }
   } // namespace
 
   TrustRegionNewton::TrustRegionNewton(const Parameters &parameters)
@@ -431,21 +486,13 @@ namespace rodnet
         "the trust region runs on one process; use a line search");
     Iterate current{x, x, 0};
     if (!evaluate(problem, current))
-      {
-        result.failure       = "the energy cannot be evaluated at the start";
-        result.residual_norm = NAN;
-        return result;
-      }
-    const auto balanced = [&](const Iterate &it) {
-      return problem.converged ? problem.converged(it.x, it.residual) :
-                                 it.residual.l2_norm() <= parameters.tolerance;
-    };
+      return unevaluable_start();
     MatrixType      scaled;
     Eigen::VectorXd metric;
     double          radius = std::numeric_limits<double>::infinity();
     while (true)
       {
-        const bool at_rest = balanced(current);
+        const bool at_rest = balanced(problem, current, parameters);
         problem.tangent(current.x, tangent);
         scale_tangent(tangent, metric, scaled);
         const ConstrainedFactorization unshifted(scaled, no_constraints());
@@ -469,11 +516,7 @@ namespace rodnet
             continue;
           }
         if (!std::isfinite(radius) && !positive_definite(unshifted))
-          radius =
-            std::max(values_of(current.residual).cwiseQuotient(metric).norm(),
-                     curvature.negative ?
-                       curvature_length(current.energy, curvature) :
-                       0.0);
+          radius = first_radius(current, curvature, metric);
         const QuadraticModel model{scaled, unshifted, curvature, metric};
         if (!trust_region_iteration(problem,
                                     model,
@@ -487,16 +530,8 @@ namespace rodnet
             break;
           }
       }
-    x                    = current.x;
-    result.residual_norm = current.residual.l2_norm();
-    if (!result.failure.empty())
-      result.failure +=
-        " (residual " + std::to_string(result.residual_norm) + ")";
-    if (!result.converged && result.failure.empty())
-      result.failure = "the trust region did not converge in " +
-                       std::to_string(result.iterations) +
-                       " iterations (residual " +
-                       std::to_string(result.residual_norm) + ")";
+    x = current.x;
+    finish_result(current, result);
     return result;
   }
 } // namespace rodnet
