@@ -27,6 +27,8 @@ namespace rodnet
       : model(model)
       , mass(mass)
       , damping(damping)
+      , follows_load_factor(model.potential_follows_load_factor())
+      , follows_time(model.potential_follows_time())
   {
     // The supports' DoFs are the constraint lines without entries; the
     // junction copies' lines have theirs.
@@ -57,18 +59,25 @@ namespace rodnet
     const StepEnds                      &ends,
     const std::function<double(double)> &load_factor)
   {
+    // Only what the potential follows can move it: a model without loads,
+    // shapes or fields ramped or driven in time is not even put at the
+    // step's times.
+    if (!follows_load_factor && !follows_time)
+      return false;
     // The loads and fields at the step's ends and force points.
     std::vector<double> times = {ends.time, ends.end_time};
     for (const ForcePoint &point : ends.force_points)
       times.push_back(ends.time + point.s * (ends.end_time - ends.time));
-    model.set_time(times[0]);
+    if (follows_time)
+      model.set_time(times[0]);
     const double              lambda = load_factor(times[0]);
     const std::vector<double> fields = model.activation_time_factors();
     bool                      moved  = false;
     for (const double t : times)
       {
-        model.set_time(t);
-        moved = moved || load_factor(t) != lambda ||
+        if (follows_time)
+          model.set_time(t);
+        moved = moved || (follows_load_factor && load_factor(t) != lambda) ||
                 model.activation_time_factors() != fields;
       }
     return moved;
@@ -94,7 +103,8 @@ namespace rodnet
         force = 0;
         for (const auto &[s, weight] : ends.force_points)
           {
-            model.set_time(ends.time + s * h);
+            if (follows_time)
+              model.set_time(ends.time + s * h);
             const double lambda = load_factor(ends.time + s * h);
             double       energy = std::nan("");
             if (supports_move)
@@ -118,7 +128,8 @@ namespace rodnet
         if (supports_move)
           step_support_work = support_work(ends, force);
       }
-    model.set_time(ends.end_time);
+    if (follows_time)
+      model.set_time(ends.end_time);
   }
 
   double

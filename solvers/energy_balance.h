@@ -54,7 +54,9 @@ namespace rodnet
    * miss the work by percents where stiff modes ring. A step where nothing
    * moves costs nothing more; one where the loads, fields or supports move
    * two energy assemblies per force point (one of them with the gradient
-   * where a support moves).
+   * where a support moves). A load factor or a time that nothing in the
+   * model's potential follows moves nothing, and the model is not even put
+   * at the step's times then.
    */
   class EnergyBalance
   {
@@ -121,6 +123,9 @@ namespace rodnet
     RodModel         &model;
     const MatrixType &mass;
     const MatrixType &damping;
+    /// What the model's potential at a given state follows
+    /// (RodModel::potential_follows_load_factor(), potential_follows_time()).
+    const bool follows_load_factor, follows_time;
     /// The DoFs fixed by supports (no junction copies).
     std::vector<global_dof_index> fixed;
 
