@@ -152,6 +152,16 @@ namespace rodnet
     VectorType   velocity_change(ends.v1), impulse(ends.v1);
     velocity_change -= ends.v0;
     mass.vmult(impulse, velocity_change);
+    // What tensor bodies' inertia adds on their held rows, from M (v_{n+1}
+    // - v_n) before the damping joins it.
+    const auto body_reaction = tensor_body_reaction(model,
+                                                    tensor_bodies,
+                                                    is_fixed,
+                                                    ends.u0,
+                                                    ends.u1,
+                                                    ends.v0,
+                                                    impulse,
+                                                    h);
     if (damping.m() != 0)
       {
         VectorType mean_velocity(ends.v1), damping_force(ends.v1);
@@ -162,16 +172,7 @@ namespace rodnet
     double work = 0;
     for (const global_dof_index i : fixed)
       work += (impulse[i] / h + force[i]) * (ends.u1[i] - ends.u0[i]);
-    VectorType mass_change(ends.v1);
-    mass.vmult(mass_change, velocity_change);
-    for (const auto &[i, reaction] : tensor_body_reaction(model,
-                                                          tensor_bodies,
-                                                          is_fixed,
-                                                          ends.u0,
-                                                          ends.u1,
-                                                          ends.v0,
-                                                          mass_change,
-                                                          h))
+    for (const auto &[i, reaction] : body_reaction)
       work += reaction * (ends.u1[i] - ends.u0[i]);
     return work;
   }
