@@ -173,6 +173,11 @@ namespace rodnet
     std::vector<double>
     activation_time_factors() const;
 
+    /// Whether an activation field is driven by @p kind (the load factor,
+    /// a function of time).
+    bool
+    has_activation_driven_by(ActivationDrive::Kind kind) const;
+
     /**
      * The densities (kappa_1, kappa_2, twist rate, axial eigenstrain) the
      * activation fields give each segment (its active cell), their mean

@@ -173,6 +173,17 @@ namespace rodnet
   }
 
 
+  bool
+  Configuration::has_activation_driven_by(
+    const ActivationDrive::Kind kind) const
+  {
+    for (const ActivationShare &share : activation.shares)
+      if (share.drive.kind == kind)
+        return true;
+    return false;
+  }
+
+
   void
   Configuration::sum_activation()
   {

@@ -204,6 +204,21 @@ namespace rodnet
     activation_time_factors() const;
 
     /**
+     * Whether the potential Pi(u, lambda) at a given state u changes with
+     * the load factor lambda: nonzero dead loads or applied moments ramped
+     * by it (not fix_loads()), a ramped natural shape or activation field.
+     * Supports ramped by it move the held values of u, not Pi. The model
+     * must be finalized.
+     */
+    bool
+    potential_follows_load_factor() const;
+
+    /// Whether the potential at a given state changes with the time of
+    /// set_time(): activation fields driven by functions of time.
+    bool
+    potential_follows_time() const;
+
+    /**
      * Holds the dead loads and the applied moments at their full value at
      * every load factor, which then ramps only the prescribed displacements
      * and rotations and the ramped natural shape: a natural shape that grows

@@ -1,7 +1,8 @@
 // RodModel: a natural shape ramped with the load factor, activation
-// fields and their time.
+// fields and their time, and what the potential follows of the two.
 #include <core/rod_model.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -64,6 +65,32 @@ namespace rodnet
   RodModel::activation_time_factors() const
   {
     return configuration_->activation_time_factors();
+  }
+
+
+  bool
+  RodModel::potential_follows_load_factor() const
+  {
+    const bool ramped_loads =
+      f_ext.linfty_norm() != 0 ||
+      std::any_of(moments.begin(), moments.end(), [](const AxisLoad &m) {
+        return m.ramp == LoadRamp::ramped && m.value != 0;
+      });
+    const bool ramped_shape =
+      std::any_of(given_materials.begin(),
+                  given_materials.end(),
+                  [](const auto &material) { return material != nullptr; });
+    return (ramped_loads && !loads_fixed) || ramped_shape ||
+           configuration_->has_activation_driven_by(
+             ActivationDrive::Kind::load_factor);
+  }
+
+
+  bool
+  RodModel::potential_follows_time() const
+  {
+    return configuration_->has_activation_driven_by(
+      ActivationDrive::Kind::time);
   }
 
 

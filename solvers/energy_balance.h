@@ -2,7 +2,10 @@
 #define RODNET_SOLVERS_ENERGY_BALANCE_H
 
 #include <core/rod_model.h>
+#include <core/tensor_body_spin.h>
+#include <solvers/dof_roles.h>
 #include <solvers/integration_scheme.h>
+#include <solvers/residual_criterion.h>
 
 #include <functional>
 #include <string>
@@ -32,7 +35,15 @@ namespace rodnet
    * the Newton tolerance, the others and damping lower it. Growth beyond a
    * fraction of its scale (the largest of |E_0|, the kinetic energy, |E|
    * and |W| so far) marks an unstable integration, stopped before it runs
-   * away.
+   * away. The scale has a floor, the residual bound over the fraction: the
+   * most that the accepted steps' residuals can have added to B, sum_n
+   * |r_F| |d_x| + |r_M| |d_theta| (the force and moment norms of each
+   * step's final residual, ResidualCriterion::norms(), times the norms of
+   * its motion on the free positions and angles; a quaternion increment a
+   * turns by 2 a), since the step's energy error is r . d. A run from rest
+   * under loads near the rounding of its residual has energies of the
+   * size of that noise, and without the floor Newmark's took it for growth
+   * (tests/validation/energy_balance.cc).
    *
    * A step from t_n to t_{n+1} is balanced as its scheme's discrete
    * system is: the scheme takes grad Pi at force points
@@ -47,6 +58,8 @@ namespace rodnet
    * reaction there that the step's balance of momentum holds with,
    *   W_s = [M (v_{n+1} - v_n) / h + f + C (v_n + v_{n+1}) / 2]_fixed
    *         . (u_{n+1} - u_n)_fixed,
+   * plus the inertial force of bodies with an inertia tensor at held
+   * junction rotations beyond M's (tensor_body_reaction()),
    * f = sum_k w_k grad Pi(y_k, p_k) unconstrained: the equation of motion
    * M a + C v + grad Pi = R, with R the reaction, gives dE/dt =
    * R.v_fixed - v.Cv. With the midpoint rule's own point the balance holds
@@ -54,7 +67,9 @@ namespace rodnet
    * miss the work by percents where stiff modes ring. A step where nothing
    * moves costs nothing more; one where the loads, fields or supports move
    * two energy assemblies per force point (one of them with the gradient
-   * where a support moves).
+   * where a support moves). A load factor or a time that nothing in the
+   * model's potential follows moves nothing, and the model is not even put
+   * at the step's times then.
    */
   class EnergyBalance
   {
@@ -88,16 +103,18 @@ namespace rodnet
 
     /**
      * Adds the step last recorded, which ended with the energies
-     * @p kinetic and @p potential, to the balance, and throws
+     * @p kinetic and @p potential and the final residual's norms
+     * @p residual (StepInfo::residual), to the balance, and throws
      * SolverFailure naming @p who at @p time (and appending @p advice)
      * where the balance grew beyond the limit.
      */
     void
-    check(const std::string &who,
-          const std::string &advice,
-          double             time,
-          double             kinetic,
-          double             potential);
+    check(const std::string   &who,
+          const std::string   &advice,
+          double               time,
+          double               kinetic,
+          double               potential,
+          const ResidualParts &residual);
 
     /// The work W done on the model since start().
     double
@@ -118,11 +135,25 @@ namespace rodnet
     double
     support_work(const StepEnds &ends, const VectorType &force) const;
 
+    /// The l2 norms of the step's motion on the free positions (m) and
+    /// angles (rad: twists, 2 a of a quaternion increment a).
+    ResidualParts
+    step_motion(const StepEnds &ends) const;
+
     RodModel         &model;
     const MatrixType &mass;
     const MatrixType &damping;
-    /// The DoFs fixed by supports (no junction copies).
+    /// What the model's potential at a given state follows
+    /// (RodModel::potential_follows_load_factor(), potential_follows_time()).
+    const bool follows_load_factor, follows_time;
+    /// The DoFs fixed by supports (no junction copies), as a list and as
+    /// a mask.
     std::vector<global_dof_index> fixed;
+    std::vector<bool>             is_fixed;
+    /// What each DoF is, for the norms of a step's motion.
+    DofRoles roles;
+    /// The bodies with an inertia tensor (tensor_body_reaction()).
+    std::vector<TensorBody> tensor_bodies;
 
     bool   watching     = false;
     double growth_limit = 0;
@@ -137,6 +168,9 @@ namespace rodnet
     bool   step_moved            = false;
     double step_potential_change = 0;
     double step_support_work     = 0;
+    /// The last step's motion (step_motion()), and the residual bound.
+    ResidualParts last_motion;
+    double        residual_bound = 0;
   };
 } // namespace rodnet
 

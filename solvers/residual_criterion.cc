@@ -115,9 +115,11 @@ namespace rodnet
       loaded = *known_loaded;
     else
       model.assemble(u, load_factor, &loaded, nullptr, false, extra_force);
-    // At a zero load factor without extra force both are one assembly (a
-    // free vibration's every step): its copy gives the same difference.
-    if (load_factor == 0 && extra_force == nullptr)
+    // At a zero load factor, or one that no load follows, without extra
+    // force both are one assembly (a free vibration's every step): its
+    // copy gives the same difference.
+    if ((load_factor == 0 || !model.potential_follows_load_factor()) &&
+        extra_force == nullptr)
       applied = loaded;
     else
       model.assemble(u, 0.0, &applied, nullptr, false);

@@ -485,7 +485,8 @@ namespace rodnet
                          scheme.instability_advice(),
                          info.time,
                          info.kinetic_energy,
-                         info.potential_energy);
+                         info.potential_energy,
+                         info.residual);
   }
 
   void

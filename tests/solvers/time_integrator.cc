@@ -349,6 +349,53 @@ namespace
       }
   }
 
+  // A load factor that moves in time while nothing in the model follows it
+  // (the cantilever's tip force is 0, no field, no moving support): the
+  // energy watch and the load scale cost no assembly, and the steps cost
+  // what they cost under a constant load factor
+  // (TimeIntegrator.AssembliesOfAStep: Newmark k + 4, midpoint 2 k + 6).
+  // Before the model was asked (RodModel::potential_follows_load_factor())
+  // both took k + 9 and 2 k + 9: the watch balanced the loads' work at each
+  // force point (4 and 2 assemblies) and the load scale assembled the
+  // applied loads at load factor 0.
+  TEST(TimeIntegrator, AssembliesOfAStepUnderALoadFactorNothingFollows)
+  {
+    std::atomic<unsigned> count{0};
+    const auto            rod =
+      std::make_shared<CountingRod>(rodnet::testing::swing_stiffness, count);
+    const unsigned int n      = 20;
+    auto               model  = rodnet::testing::cantilever(n, rod, 0);
+    const auto [omega, shape] = rodnet::testing::first_mode(*model);
+    ASSERT_FALSE(model->potential_follows_load_factor());
+    ASSERT_FALSE(model->potential_follows_time());
+    for (const std::string method : {"newmark", "midpoint"})
+      {
+        TimeIntegrator::Parameters p;
+        p.integrator  = method;
+        p.time_step   = 2 * M_PI / omega / 40;
+        p.end_time    = 10 * p.time_step;
+        p.load_factor = [](const double t) { return t; };
+        TimeIntegrator integrator(*model, {rodnet::testing::swing_inertia}, p);
+        VectorType     u = shape, v = model->create_vector();
+        u *= 0.01 / shape[model->layout().vertex_dof(n, 2)];
+        unsigned int fewest = std::numeric_limits<unsigned int>::max();
+        unsigned int before = 0;
+        integrator.run(u,
+                       v,
+                       [&](const TimeIntegrator::StepInfo &info,
+                           const VectorType &,
+                           const VectorType &) {
+                         const unsigned int per_iteration =
+                           method == "midpoint" ? 2 : 1;
+                         fewest = std::min(fewest,
+                                           (count - before) / n -
+                                             per_iteration * info.iterations);
+                         before = count;
+                       });
+        EXPECT_EQ(fewest, method == "midpoint" ? 6u : 4u) << method;
+      }
+  }
+
   TEST(TimeIntegrator, RejectsBadParameters)
   {
     auto model =
