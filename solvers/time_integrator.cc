@@ -428,10 +428,17 @@ namespace rodnet
     // load time; the end's energy is wanted at the end's and at a zero
     // time step (the model's time now).
     if (model.has_internal_variables() ||
-        !(parameters.load_factor(end_time) == start.load_factor) ||
+        !same_potential_load(parameters.load_factor(end_time),
+                             start.load_factor) ||
         model.activation_time_factors() != load_time_fields)
       return std::numeric_limits<double>::quiet_NaN();
     return scheme.energy_at(x);
+  }
+
+  bool
+  TimeIntegrator::same_potential_load(const double a, const double b) const
+  {
+    return a == b || !model.potential_follows_load_factor();
   }
 
   double
@@ -443,7 +450,7 @@ namespace rodnet
     // variables, the time step, which differs (0 after a step).
     const ConvergedEnergy &known = converged_energy;
     if (known.known && !model.has_internal_variables() &&
-        load_factor == known.load_factor &&
+        same_potential_load(load_factor, known.load_factor) &&
         model.activation_time_factors() == known.time_factors && u == known.u)
       return known.value;
     return std::numeric_limits<double>::quiet_NaN();

@@ -408,6 +408,12 @@ namespace rodnet
                 const JudgedResult      &result,
                 StepInfo                &info);
 
+    /// Whether the potential is the same under the load factors @p a and
+    /// @p b: they are equal, or nothing in the model follows the load
+    /// factor (RodModel::potential_follows_load_factor()).
+    bool
+    same_potential_load(double a, double b) const;
+
     /// Pi at the converged @p x of the step @p start (before the reference
     /// reset) where its scheme assembled it at the load factor of
     /// @p end_time and the fields there (@p load_time_fields those of the

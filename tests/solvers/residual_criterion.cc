@@ -215,4 +215,34 @@ namespace
     EXPECT_EQ(tiny.force, loaded_criterion.load_scale(u, 1.0).force);
     EXPECT_LT(tiny.force, 1e-9);
   }
+
+  TEST(ResidualCriterion, ClampsOfANaturallyCurvedBeamSetTheMomentScale)
+  {
+    // A straight beam of natural curvature k0 (EI = 1) clamped at both
+    // ends is in equilibrium unloaded: each clamp holds the bending moment
+    // EI k0 as a couple of its end segment's vertex forces, with no net
+    // force. Nothing is applied, so the scales are those of the reactions:
+    // the moment sqrt(2) EI k0 of the two clamps (the moment of a couple
+    // about the support's first vertex, not its two vertex forces), and
+    // the force that moment over the model's length (1).
+    const double    k0 = 0.7;
+    RodNaturalShape natural;
+    natural.curvature1 = k0;
+    auto model         = std::make_unique<RodModel>(
+      rodnet::testing::straight_network(20),
+      std::vector<std::shared_ptr<const RodMaterial>>{
+        std::make_shared<LinearElasticRod>(RodStiffness{1e4, 1, 1, 1},
+                                           natural)});
+    model->clamp_end("start", 0, true);
+    model->clamp_end("end", 0, false);
+    model->finalize();
+    const VectorType        u = model->create_vector();
+    const ResidualCriterion criterion(*model);
+    VectorType              r = model->create_vector();
+    model->assemble(u, 1.0, &r, nullptr);
+    EXPECT_LT(criterion.norms(u, r).force, 1e-12 * k0);
+    const ResidualParts scale = criterion.load_scale(u, 1.0);
+    EXPECT_NEAR(scale.moment, std::sqrt(2.0) * k0, 1e-10 * k0);
+    EXPECT_NEAR(scale.force, scale.moment / model->length_scale(), 1e-12);
+  }
 } // namespace
