@@ -106,19 +106,25 @@ namespace rodnet
                                     const double   h)
   {
     const Matrix3 I = Matrix3::Identity(), C = cayley(v);
-    const double  k = 2 * m / (h * h);
+    const double  k = 2 * m / (h * h), n = 1 + v.squaredNorm();
     // F_c = m (vc_{n+1} - vc_n) / h, vc_{n+1} = 2 Delta x_c / h - vc_n.
     const Vector3 F = k * (dx + C * r_n - r_n - h * vc_n);
     // d(C r)/dv = -(I + C) / 2 [r + C r]_x: (I - [v]_x)^{-1} = (I + C) / 2.
-    const Matrix3 dCr = -(I + C) / 2 * cross_matrix(r_n + C * r_n);
-    // g = [r_n]_x (I + C^T) F; d(C^T F)/dv at fixed F = (I + C^T) / 2
-    // [F + C^T F]_x (C^T = cay(-2 v)).
-    const Matrix3 lever = cross_matrix(r_n) * (I + C.transpose());
-    CentreStep    s;
-    s.force << F, lever * F;
-    s.jacobian << k * I, k * dCr, k * lever,
-      k * lever * dCr + lever / 2 * cross_matrix(F + C.transpose() * F);
-    return s;
+    const Matrix3 dF_dv = -k * (I + C) / 2 * cross_matrix(r_n + C * r_n);
+    // g = B^T (r_m x F): the moment of F_c about the vertex at the
+    // midpoint arm r_m = (1 + |v|^2 / 4) (r_n + v x r_n) / (1 + |v|^2),
+    // mapped to the rows of v as the midpoint's gradients are, B^T =
+    // 2 (I - [v / 2]_x) / (1 + |v|^2 / 4); then g . v = F . (C - I) r_n.
+    const Matrix3 P   = I - cross_matrix(v / 2);
+    const Vector3 arm = r_n + v.cross(r_n), s = arm.cross(F);
+    const Matrix3 L   = 2 / n * P * cross_matrix(arm);
+    const Matrix3 dg_dv_at_F =
+      2 / n * (cross_matrix(s) / 2 + P * cross_matrix(F) * cross_matrix(r_n)) -
+      4 / (n * n) * P * s * v.transpose();
+    CentreStep step;
+    step.force << F, 2 / n * P * s;
+    step.jacobian << k * I, dF_dv, L * k, L * dF_dv + dg_dv_at_F;
+    return step;
   }
 
   BodyRotationInertia::CentreStep

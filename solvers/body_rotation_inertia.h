@@ -43,11 +43,18 @@ namespace rodnet
    * with a free vertex: the centre moves by Delta x_c = Delta x_j +
    * (C - I) r_n, r_n = R_n r_0, at the midpoint velocity vc_{n+1} =
    * 2 Delta x_c / h - vc_n, and the force F_c = m (vc_{n+1} - vc_n) / h
-   * acts on the rows of x_j and, as
-   *   g = r_n x (F_c + C^T F_c),
-   * on the rows of v; since (C - I) r_n = (I + C)(v x r_n), g . v =
-   * F_c . (C - I) r_n, so that F_c . Delta x_j + g . v = Delta (1/2 m
-   * |vc|^2) exactly; J above is then J_c about the centre, and M's
+   * acts on the rows of x_j and, as its moment about the vertex at the
+   * midpoint arm r_m mapped to the rows of v as a gradient at the
+   * midpoint increment v / 2 is (B^T, omega = B qdot),
+   *   g = 2 (I - [v / 2]_x) (r_m x F_c) / (1 + |v|^2 / 4),
+   *   r_m = (1 + |v|^2 / 4) (r_n + v x r_n) / (1 + |v|^2),
+   * on the rows of v; since (C - I) r_n = 2 (I - [v]_x)^{-1} (v x r_n) =
+   * 2 v x (r_n + v x r_n) / (1 + |v|^2), g . v = F_c . (C - I) r_n, so
+   * that F_c . Delta x_j + g . v = Delta (1/2 m |vc|^2) exactly. A force at
+   * the centre (the weight, BodyWeightFamily, whose gradient the midpoint
+   * rule takes at v / 2) then has its moment about the centre cancelled to
+   * second order, r_m = C(v / 2) r_n + O(|v|^2) (the moment of the simpler
+   * r_n x (I + C^T) F_c, also exact in energy, differs at first order); J above is then J_c about the centre, and M's
    * m (2 / h^2)(Delta x_j - h xdot_{j,n}) on x_j is taken off. A free
    * body keeps m vc and pi to the Newton tolerance. At the end of the step
    * the rows of x_j take xdot_j = vc_{n+1} - omega_{n+1} x C r_n, where
