@@ -627,7 +627,8 @@ namespace
      1,
      "entry \"Loads/Rigid bodies\": \"end\": the body has no mass; write "
      "\"<place>: mass <m> [inertia <j> | <J_t>,<J_p> | "
-     "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c>]\""},
+     "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c> | centre "
+     "<dx>,<dy>,<dz>]\""},
     {"rigid_body_unknown_word",
      with("Loads", "  set Rigid bodies = end: mass 1 spin 2\n"),
      ".prm",
@@ -708,6 +709,15 @@ namespace
      1,
      "entry \"Loads/Rigid bodies\": \"end\": a centre off the vertex turns "
      "with the body, and only the midpoint rule carries it"},
+    {"rigid_body_centre_dynamic_relaxation",
+     with("Loads", "  set Rigid bodies = end: mass 1 centre 0.1,0,0\n") +
+       section("Solver", "  set Method = dynamic relaxation\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the bending-active element of "
+     "dynamic relaxation has no junction rotation to carry a centre off the "
+     "vertex; use Solver/Method = newton or continuation"},
     {"rigid_body_centre_vertex_held_in_part",
      with("Loads", "  set Rigid bodies = end: mass 1 centre 0.1,0,0\n") +
        section("Material",
