@@ -103,8 +103,9 @@ namespace rodnet
     Matrix3
     centre_inertia() const
     {
-      return has_inertia_tensor() ? inertia_tensor :
-                                    Matrix3(axial_inertia * Matrix3::Identity());
+      return has_inertia_tensor() ?
+               inertia_tensor :
+               Matrix3(axial_inertia * Matrix3::Identity());
     }
 
     /// The inertia about the vertex, J_c + m (|r_0|^2 I - r_0 r_0^T)

@@ -6,7 +6,7 @@ namespace rodnet
   std::vector<TensorBody>
   tensor_bodies(const RodModel &model)
   {
-    std::vector<TensorBody> found;
+    std::vector<TensorBody>       found;
     const std::vector<RigidBody> &all = model.rigid_bodies();
     for (unsigned int i = 0; i < all.size(); ++i)
       if (const RigidBody &body = all[i]; body.turns_with_junction())
@@ -17,8 +17,8 @@ namespace rodnet
           TensorBody         b{i,
                        j,
                        v,
-                               {},
-                               {},
+                       {},
+                       {},
                        body.centre_inertia(),
                        body.vertex_inertia(),
                        body.mass,

@@ -52,7 +52,9 @@ namespace rodnet
 
   /// R r_0 at @p u, the centre's offset from the vertex.
   Vector3
-  centre_arm(const RodModel &model, const TensorBody &body, const VectorType &u);
+  centre_arm(const RodModel   &model,
+             const TensorBody &body,
+             const VectorType &u);
 
   /**
    * The spatial angular velocity of the junction of @p body at the

@@ -1,5 +1,6 @@
 // The weight of rigid bodies off their vertex (families/body_weight_family.h).
 #include <core/rod_model.h>
+
 #include <families/body_weight_family.h>
 
 namespace rodnet
@@ -31,8 +32,8 @@ namespace rodnet
       A(0, 0)             = a.dot(b);
       A.block<3, 1>(1, 0) = b.cross(a);
       A.block<1, 3>(0, 1) = b.cross(a).transpose();
-      A.block<3, 3>(1, 1) = -a.dot(b) * Matrix3::Identity() +
-                            a * b.transpose() + b * a.transpose();
+      A.block<3, 3>(1, 1) =
+        -a.dot(b) * Matrix3::Identity() + a * b.transpose() + b * a.transpose();
       return A;
     }
   } // namespace
@@ -54,7 +55,7 @@ namespace rodnet
     const double          scale = -state.load_factor;
     // phi = N / s, N = q^T A q, s = q^T q.
     const double s2 = q.squaredNorm(), N = q.dot(A * q);
-    local.energy    = scale * N / s2;
+    local.energy = scale * N / s2;
     if (derivatives == Derivatives::energy)
       return;
     const Eigen::Vector4d Aq = A * q;
@@ -62,10 +63,10 @@ namespace rodnet
       scale * (2 * Aq / s2 - 2 * N * q / (s2 * s2));
     const Eigen::Matrix4d qq = q * q.transpose();
     const Eigen::Matrix4d hessian =
-      scale * (2 * A / s2 -
-               4 * (Aq * q.transpose() + q * Aq.transpose()) / (s2 * s2) -
-               2 * N / (s2 * s2) * Eigen::Matrix4d::Identity() +
-               8 * N * qq / (s2 * s2 * s2));
+      scale *
+      (2 * A / s2 - 4 * (Aq * q.transpose() + q * Aq.transpose()) / (s2 * s2) -
+       2 * N / (s2 * s2) * Eigen::Matrix4d::Identity() +
+       8 * N * qq / (s2 * s2 * s2));
     local.store(gradient,
                 derivatives == Derivatives::hessian ? &hessian : nullptr);
   }

@@ -12,7 +12,8 @@ namespace rodnet
    * One item of the scene entry "Loads/Rigid bodies" as written,
    * "<place>: mass <m> [inertia <j> | <J_t>,<J_p> |
    * <J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c> |
-   * centre <dx>,<dy>,<dz>]" (doc/dynamics.md, "Rigid bodies"), before it is placed on a network.
+   * centre <dx>,<dy>,<dz>]" (doc/dynamics.md, "Rigid bodies"), before it is
+   * placed on a network.
    */
   struct RigidBodyItem
   {

@@ -2,7 +2,6 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
-#include <families/body_weight_family.h>
 #include <io/entry_numbers.h>
 #include <io/entry_tree.h>
 #include <io/run_limits.h>
@@ -17,6 +16,7 @@
 #include <materials/rod_material.h>
 
 #include <cmath>
+#include <families/body_weight_family.h>
 #include <set>
 #include <sstream>
 #include <stdexcept>

@@ -117,7 +117,7 @@ namespace rodnet
     // 2 (I - [v / 2]_x) / (1 + |v|^2 / 4); then g . v = F . (C - I) r_n.
     const Matrix3 P   = I - cross_matrix(v / 2);
     const Vector3 arm = r_n + v.cross(r_n), s = arm.cross(F);
-    const Matrix3 L   = 2 / n * P * cross_matrix(arm);
+    const Matrix3 L = 2 / n * P * cross_matrix(arm);
     const Matrix3 dg_dv_at_F =
       2 / n * (cross_matrix(s) / 2 + P * cross_matrix(F) * cross_matrix(r_n)) -
       4 / (n * n) * P * s * v.transpose();
@@ -138,22 +138,22 @@ namespace rodnet
     const Matrix3     R =
       model.junction_rotation(step.u, body.junction).toRotationMatrix();
     // About the centre, or about the held vertex the body turns about.
-    const Matrix3 J_n = R *
-                        (turns_about_vertex[b] ? body.vertex_inertia :
-                                                 body.inertia) *
-                        R.transpose();
+    const Matrix3 J_n =
+      R * (turns_about_vertex[b] ? body.vertex_inertia : body.inertia) *
+      R.transpose();
     const Vector3  omega = 2 * m.a_rate;
     const BodyStep turn  = step_force(J_n, J_n * omega, m.v, h);
     CentreStep     s;
     s.force.setZero();
     s.jacobian.setZero();
     // Less the isotropic part that M carries, (2 / h^2) 4 j (v - h rate).
-    const double k = 8 * body.isotropic / (h * h);
-    s.force.tail<3>()                   = turn.force - k * (m.v - h * m.a_rate);
-    s.jacobian.bottomRightCorner<3, 3>() = turn.jacobian - k * Matrix3::Identity();
+    const double k    = 8 * body.isotropic / (h * h);
+    s.force.tail<3>() = turn.force - k * (m.v - h * m.a_rate);
+    s.jacobian.bottomRightCorner<3, 3>() =
+      turn.jacobian - k * Matrix3::Identity();
     if (turns_about_vertex[b])
       return s;
-    const Vector3 r_n = R * body.offset;
+    const Vector3    r_n = R * body.offset;
     const CentreStep centre =
       centre_force(body.mass, r_n, m.x_rate + omega.cross(r_n), m.dx, m.v, h);
     // Less M's m (2 / h^2)(Delta x_j - h xdot_{j,n}) on x_j.
@@ -172,7 +172,7 @@ namespace rodnet
   {
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        const auto                            f    = body_step(b, step, y).force;
+        const auto                            f = body_step(b, step, y).force;
         const std::array<global_dof_index, 6> rows = body_rows(bodies[b]);
         for (unsigned int i = 0; i < 6; ++i)
           r[rows[i]] += f[i];
@@ -249,16 +249,15 @@ namespace rodnet
             // 2 rate, against the midpoint rule's of the rows: W (w -
             // midpoint) = m (xdot_j - midpoint) keeps the momentum.
             const Vector3 r_next =
-              C * (model.junction_rotation(step.u, body.junction) *
-                   body.offset);
+              C *
+              (model.junction_rotation(step.u, body.junction) * body.offset);
             const Vector3 x_rate =
               centre_velocity(b, step, x, v) - (2 * rate).cross(r_next);
             Vector3 midpoint;
             for (unsigned int c = 0; c < 3; ++c)
               midpoint[c] = v[body.position[c]];
-            const Vector3 w =
-              midpoint + momentum_weights(b).inverse() * body.mass *
-                           (x_rate - midpoint);
+            const Vector3 w = midpoint + momentum_weights(b).inverse() *
+                                           body.mass * (x_rate - midpoint);
             for (unsigned int c = 0; c < 3; ++c)
               v[body.position[c]] = w[c];
           }

@@ -54,15 +54,15 @@ namespace rodnet
    * the centre (the weight, BodyWeightFamily, whose gradient the midpoint
    * rule takes at v / 2) then has its moment about the centre cancelled to
    * second order, r_m = C(v / 2) r_n + O(|v|^2) (the moment of the simpler
-   * r_n x (I + C^T) F_c, also exact in energy, differs at first order); J above is then J_c about the centre, and M's
-   * m (2 / h^2)(Delta x_j - h xdot_{j,n}) on x_j is taken off. A free
-   * body keeps m vc and pi to the Newton tolerance. At the end of the step
-   * the rows of x_j take xdot_j = vc_{n+1} - omega_{n+1} x C r_n, where
-   * the rods' mass at the vertex would take the midpoint rule's velocity:
-   * the rows get the velocity that keeps the sum of the momenta, the
-   * rods' and the body's (momentum_weights below), so that the linear
-   * momentum is kept to round-off and the energy can only lose the
-   * (rods' mass) |difference|^2 / 2 of merging the two. With its
+   * r_n x (I + C^T) F_c, also exact in energy, differs at first order); J above
+   * is then J_c about the centre, and M's m (2 / h^2)(Delta x_j - h xdot_{j,n})
+   * on x_j is taken off. A free body keeps m vc and pi to the Newton tolerance.
+   * At the end of the step the rows of x_j take xdot_j = vc_{n+1} - omega_{n+1}
+   * x C r_n, where the rods' mass at the vertex would take the midpoint rule's
+   * velocity: the rows get the velocity that keeps the sum of the momenta, the
+   * rods' and the body's (momentum_weights below): the choice changes no
+   * linear momentum, and the energy can only lose the (rods' mass)
+   * |difference|^2 / 2 of merging the two. With its
    * vertex held the body turns about it: J is the inertia about the
    * vertex, J_c + m (|r_0|^2 I - r_0 r_0^T), and the rows of x_j are the
    * support's (check_tensor_bodies() refuses a vertex held in part or
@@ -157,7 +157,7 @@ namespace rodnet
     momentum_weights(unsigned int b) const;
 
     const RodModel         &model;
-    const MatrixType       &mass;
+    const MatrixType            &mass;
     std::vector<TensorBody> bodies;
     mutable std::vector<Matrix3> weights;
     /// Per body: whether its centre is off the vertex and the vertex held,

@@ -3,26 +3,24 @@
 // families/body_weight_family.h; doc/dynamics.md, "Rigid bodies"): a
 // compound pendulum about a held junction (isotropic and tensor inertia)
 // against sqrt(m g d / (J_c + m d^2)); a free body launched spinning, whose
-// centre moves uniformly and whose momenta and energy are kept; a body
-// twisting a rod under its weight, against the equilibrium k phi = m g d
-// cos phi; the force of the centre against central differences and its
-// exact energy balance.
+// centre moves uniformly and whose momenta and energy are kept, in free
+// flight and in free fall; the force of the centre against central differences and its exact
+// energy balance, and the weight's lever against central differences. (Its
+// statics: tests/validation/rigid_bodies.cc, WeightActsAtTheCentre.)
 #include <core/motion.h>
 #include <core/tensor_body_spin.h>
-#include <families/body_weight_family.h>
 #include <solvers/body_rotation_inertia.h>
 #include <solvers/time_integrator.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <families/body_weight_family.h>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <memory>
 #include <tests/common/assembled_derivatives.h>
 #include <tests/common/rod_models.h>
-#include <tests/common/run_scene_text.h>
-#include <tests/common/scene_text.h>
 #include <vector>
 
 namespace
@@ -98,7 +96,7 @@ namespace
                               midpoint(h, end_time, tolerance));
     const TensorBody body = tensor_bodies(model).front();
     VectorType       u = model.create_vector(), v = model.create_vector();
-    const Vector3    x_j = model.position(u, body.vertex);
+    const Vector3    x_j      = model.position(u, body.vertex);
     const Vector3    x_j_rate = centre_rate - omega_0.cross(body.offset);
     for (unsigned int i = 0; i < model.network().n_vertices(); ++i)
       if (!model.constraints().is_constrained(model.layout().vertex_dof(i, 0)))
@@ -178,17 +176,20 @@ namespace
       body.axial_inertia = body.transverse_inertia = J_c(0, 0);
     else
       body.inertia_tensor = J_c;
-    body.centre_offset = Vector3(0, -d, 0);
-    const auto   model = body_on_handle(body, true, Vector3(0, -g, 0));
+    body.centre_offset   = Vector3(0, -d, 0);
+    const auto   model   = body_on_handle(body, true, Vector3(0, -g, 0));
     const double omega_0 = std::sqrt(m * g * d / (J_c(2, 2) + m * d * d));
     const double period  = 2 * M_PI / omega_0;
     const double discrete_period = M_PI * h / std::atan(omega_0 * h / 2);
     const std::vector<BodyState> states =
-      run_body(*model, Vector3(0, 0, amplitude * omega_0), Vector3::Zero(),
-               h, 3.3 * period);
+      run_body(*model,
+               Vector3(0, 0, amplitude * omega_0),
+               Vector3::Zero(),
+               h,
+               3.3 * period);
     const double measured = period_of_swing(states);
-    const double kinetic  = (J_c(2, 2) + m * d * d) *
-                           std::pow(amplitude * omega_0, 2) / 2;
+    const double kinetic =
+      (J_c(2, 2) + m * d * d) * std::pow(amplitude * omega_0, 2) / 2;
     std::cout << name << " compound pendulum: period " << measured
               << " s against sqrt(m g d / (J + m d^2))'s " << period
               << " s (relative " << measured / period - 1
@@ -237,29 +238,32 @@ namespace
     body.centre_offset  = Vector3(0.3, -0.2, 0.1);
     const auto    model = body_on_handle(body, false, Vector3::Zero());
     const Vector3 omega_0(0.4, 1.5, -0.6), v_c(0.2, 0.1, -0.1);
-    const double  end_time             = 10;
+    const double  end_time = 10;
     const std::vector<BodyState> states =
       run_body(*model, omega_0, v_c, 0.01, end_time, 1e-11);
     const Motion &first = states.front().motion;
-    const Vector3 L_0   = body.centre_offset.cross(body.mass * v_c) +
-                        body.inertia_tensor * omega_0;
+    const Vector3 L_0 =
+      body.centre_offset.cross(body.mass * v_c) + body.inertia_tensor * omega_0;
     double momentum = 0, angular = 0, energy = 0;
     for (const BodyState &s : states)
       {
-        momentum = std::max(
-          momentum, (s.motion.linear_momentum - first.linear_momentum).norm());
-        angular = std::max(
-          angular, (s.motion.angular_momentum - first.angular_momentum).norm());
+        momentum =
+          std::max(momentum,
+                   (s.motion.linear_momentum - first.linear_momentum).norm());
+        angular =
+          std::max(angular,
+                   (s.motion.angular_momentum - first.angular_momentum).norm());
       }
-    energy               = energy_drift(states);
-    const Vector3 centre = states.back().centre;
-    const Vector3 uniform =
-      body.centre_offset + v_c * states.back().time;
-    std::cout << "free flight: linear momentum " << first.linear_momentum.transpose()
-              << " (m v_c " << (body.mass * v_c).transpose() << "), largest change "
-              << momentum << "; angular momentum " << first.angular_momentum.transpose()
-              << " (" << L_0.transpose() << "), largest change " << angular
-              << "; energy drift " << energy / first.kinetic_energy
+    energy                = energy_drift(states);
+    const Vector3 centre  = states.back().centre;
+    const Vector3 uniform = body.centre_offset + v_c * states.back().time;
+    std::cout << "free flight: linear momentum "
+              << first.linear_momentum.transpose() << " (m v_c "
+              << (body.mass * v_c).transpose() << "), largest change "
+              << momentum << "; angular momentum "
+              << first.angular_momentum.transpose() << " (" << L_0.transpose()
+              << "), largest change " << angular << "; energy drift "
+              << energy / first.kinetic_energy
               << " of it; centre at t = " << states.back().time << " s off "
               << "uniform motion by " << (centre - uniform).norm() << " m"
               << std::endl;
@@ -303,24 +307,25 @@ namespace
       return Vector3(s.motion.angular_momentum -
                      s.centre.cross(s.motion.linear_momentum));
     };
-    const Vector3 L_c = about_centre(states.front());
-    double momentum = 0, angular = 0, path = 0, kinetic = 0;
+    const Vector3 L_c      = about_centre(states.front());
+    double        momentum = 0, angular = 0, path = 0, kinetic = 0;
     for (const BodyState &s : states)
       {
-        const Vector3 p = states.front().motion.linear_momentum +
-                          body.mass * g * s.time;
+        const Vector3 p =
+          states.front().motion.linear_momentum + body.mass * g * s.time;
         momentum = std::max(momentum, (s.motion.linear_momentum - p).norm());
         angular  = std::max(angular, (about_centre(s) - L_c).norm());
         path     = std::max(path,
                         (s.centre - body.centre_offset - v_c * s.time -
                          g * s.time * s.time / 2)
                           .norm());
-        kinetic = std::max(kinetic, s.motion.kinetic_energy);
+        kinetic  = std::max(kinetic, s.motion.kinetic_energy);
       }
     std::cout << "free fall: linear momentum off p_0 + m g t by " << momentum
               << " (" << momentum / (body.mass * g.norm() * 3)
               << " of m g t); angular momentum about the centre "
-              << L_c.transpose() << " (" << (body.inertia_tensor * omega_0).transpose()
+              << L_c.transpose() << " ("
+              << (body.inertia_tensor * omega_0).transpose()
               << "), largest change " << angular / L_c.norm()
               << " of it; centre off the parabola by " << path
               << " m; energy drift " << energy_drift(states) / kinetic
@@ -335,44 +340,18 @@ namespace
 
 namespace
 {
-  // Statics through a scene: a body of 2 kg with its centre 0.2 m beyond
-  // the tip of a cantilever (L = 1, EI = 1, N = 40, g = 1e-4: linear),
-  // given as "centre 0.2,0,0" (a rotation handle at the tip, the weight's
-  // lever BodyWeightFamily): the tip deflects by the force m g and the
-  // moment m g d, w = m g L^3 / (3 EI) + m g d L^2 / (2 EI), as the end
-  // segment's "offset 0.2" does (tests/validation/rigid_bodies.cc). Without
-  // the lever the deflection is 23% short.
-  TEST(RigidBodyOffset, CantileverWithEccentricTipMass)
-  {
-    const std::string scene =
-      "subsection Geometry\n  set Segments = 40\n"
-      "  set Clamp at first segment midpoint = true\n"
-      "  set Director d1 = 0, 0, 1\nend\n" +
-      direct_material(1e6, 1, 1, 1) +
-      "subsection Supports\n  set Clamped ends = start\nend\n"
-      "subsection Loads\n  set Steps = 1\n  set Mass per length = 1e-12\n"
-      "  set Gravity = 0, 0, -1e-4\n"
-      "  set Rigid bodies = end: mass 2 centre 0.2,0,0\nend\n" +
-      end_position_output();
-    const RunSummary run = run_scene_text(scene, "rigid_body_centre_weight");
-    ASSERT_TRUE(run.failure.empty()) << run.failure;
-    const double P        = 2e-4;
-    const double expected = -(P / 3 + P * 0.2 / 2);
-    const double w        = run.rows.back()[probe_column(run, "z")];
-    std::cout << "eccentric tip mass: tip deflection " << w << ", expected "
-              << expected << ", relative error " << w / expected - 1
-              << std::endl;
-    EXPECT_NEAR(w / expected, 1, 1e-3);
-  }
-
   /// (F_c, g) of BodyRotationInertia::centre_force() at a step that moves
   /// the vertex by @p dx and turns by @p v.
   BodyRotationInertia::CentreStep
   centre_step(const Eigen::Matrix<double, 6, 1> &x)
   {
     const Vector3 r_n(0.3, -0.2, 0.5), vc_n(0.7, -0.4, 0.2);
-    return BodyRotationInertia::centre_force(
-      1.7, r_n, vc_n, x.head<3>(), x.tail<3>(), 0.05);
+    return BodyRotationInertia::centre_force(1.7,
+                                             r_n,
+                                             vc_n,
+                                             x.head<3>(),
+                                             x.tail<3>(),
+                                             0.05);
   }
 
   // The Jacobian of the centre's force with respect to (Delta x_j, v)
@@ -391,8 +370,8 @@ namespace
         differences.col(c) =
           (centre_step(x + e).force - centre_step(x - e).force) / (2 * step);
       }
-    const double error = (exact - differences).cwiseAbs().maxCoeff() /
-                         exact.cwiseAbs().maxCoeff();
+    const double error =
+      (exact - differences).cwiseAbs().maxCoeff() / exact.cwiseAbs().maxCoeff();
     std::cout << "centre force Jacobian: largest difference " << error
               << " of the largest entry" << std::endl;
     EXPECT_LT(error, 1e-8);
@@ -408,7 +387,7 @@ namespace
     const double  m = 1.7, h = 0.05;
     const Matrix3 C =
       Quaternion(1, v[0], v[1], v[2]).normalized().toRotationMatrix();
-    const Vector3 vc_1 = 2 * (dx + C * r_n - r_n) / h - vc_n;
+    const Vector3 vc_1   = 2 * (dx + C * r_n - r_n) / h - vc_n;
     const double  change = m * (vc_1.squaredNorm() - vc_n.squaredNorm()) / 2;
     const auto    f = BodyRotationInertia::centre_force(m, r_n, vc_n, dx, v, h);
     const double  work = f.force.head<3>().dot(dx) + f.force.tail<3>().dot(v);
@@ -425,9 +404,8 @@ namespace
     RigidBody body;
     body.mass          = 3;
     body.centre_offset = Vector3(0.2, 0.4, -0.3);
-    const auto model =
-      body_on_handle(body, false, Vector3(0.5, -9.81, 1.0));
-    VectorType         u   = model->create_vector();
+    const auto model   = body_on_handle(body, false, Vector3(0.5, -9.81, 1.0));
+    VectorType u       = model->create_vector();
     const TensorBody   b   = tensor_bodies(*model).front();
     const unsigned int j   = b.junction;
     const double       q[] = {0.05, 0.1, -0.2, 0.15};
