@@ -66,9 +66,11 @@ namespace rodnet
             }
           motion.angular_momentum += spatial_moment(q, p);
         }
-    // Bodies with an inertia tensor, whose rotation is not in M.
+    // Bodies that turn with their junction (an inertia tensor, a centre
+    // off the vertex), whose motion M does not carry in full.
     const BodySpin spin = tensor_body_spin(model, u, v);
     motion.kinetic_energy += spin.kinetic_energy;
+    motion.linear_momentum += spin.linear_momentum;
     motion.angular_momentum += spin.angular_momentum;
     return motion;
   }

@@ -13,18 +13,22 @@ namespace rodnet
    */
   struct Motion
   {
-    /// 1/2 v.Mv, plus the rotational energy 1/2 omega . R J_0 R^T omega of
-    /// bodies with an inertia tensor (core/tensor_body_spin.h).
+    /// 1/2 v.Mv, plus what M leaves out of bodies that turn with their
+    /// junction: the rotational energy 1/2 omega . R J_0 R^T omega of an
+    /// inertia tensor, the motion of a centre off the vertex
+    /// (core/tensor_body_spin.h).
     double kinetic_energy = 0;
     /// Pi(u, lambda): stored energy minus the work of the dead loads at the
     /// load factor lambda (RodModel::assemble()).
     double potential_energy = 0;
-    /// Sum over the position DoFs of M v.
+    /// Sum over the position DoFs of M v (a body's centre off its vertex
+    /// counted at its own velocity, m xdot_c).
     Vector3 linear_momentum = Vector3::Zero();
     /// Sum over the vertices of x_i x (M v)_i, about the origin, plus the
     /// spin of the sections, sum over the segments of (M v)_twist e, e the
     /// unit tangent, and the spin of the junctions' rotations (a hub's
-    /// j omega, a body's R J_0 R^T omega; doc/dynamics.md).
+    /// j omega, a body's R J_0 R^T omega; a centre off the vertex
+    /// x_c x m xdot_c; doc/dynamics.md).
     Vector3 angular_momentum = Vector3::Zero();
   };
 

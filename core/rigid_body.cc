@@ -34,8 +34,9 @@ namespace rodnet
       if (body.axial_inertia != 0 || body.transverse_inertia != 0 ||
           body.offset != 0)
         throw std::invalid_argument(
-          where + "comes with another inertia or an offset; give the tensor "
-                  "alone (a centre off the junction is not represented)");
+          where + "comes with another inertia or a rod end's offset; give "
+                  "the tensor alone (a centre off a junction: centre "
+                  "<dx>,<dy>,<dz>)");
       const double smallest =
         Eigen::SelfAdjointEigenSolver<Matrix3>(J).eigenvalues().minCoeff();
       if (!(smallest > 0))
@@ -66,12 +67,15 @@ namespace rodnet
           where + "at " + network.describe_vertex(v) +
           " only an isotropic rotary inertia is represented (no axis to "
           "align J_t, J_p with); give one value");
-      if (body.axial_inertia == 0 && !body.has_inertia_tensor())
+      if (body.axial_inertia == 0 && !body.turns_with_junction())
         return;
       const auto junction = network.junction_at(v);
       if (!junction || !network.junctions()[*junction].has_rotation())
         throw std::invalid_argument(
-          where + "a rotary inertia turns with a junction's rotation, and " +
+          where +
+          (body.has_centre_offset() ? "a centre off the vertex" :
+                                      "a rotary inertia") +
+          " turns with a junction's rotation, and " +
           network.describe_vertex(v) +
           (junction ? " is in the pinned junction \"" +
                         network.junctions()[*junction].name +
@@ -109,6 +113,9 @@ namespace rodnet
                          body.transverse_inertia,
                          "rotary inertia (kg m^2)");
     require_not_negative(body, body.offset, "offset (m)");
+    if (!body.centre_offset.allFinite())
+      throw std::invalid_argument(body.where +
+                                  ": the centre offset is not finite");
     if (body.has_inertia_tensor())
       check_inertia_tensor(body);
     if (body.mass == 0 && body.axial_inertia == 0 &&
@@ -117,10 +124,13 @@ namespace rodnet
                                   ": it has neither mass nor rotary inertia");
     if (const auto *v = std::get_if<unsigned int>(&body.attachment))
       return check_vertex_body(network, body, *v);
-    if (body.has_inertia_tensor())
+    if (body.turns_with_junction())
       throw std::invalid_argument(
-        body.where + ": an inertia tensor turns with a junction's rotation, "
-                     "and a rod end welded to a body has none");
+        body.where + ": " +
+        (body.has_inertia_tensor() ? "an inertia tensor" :
+                                     "a centre off the vertex") +
+        " turns with a junction's rotation, and a rod end welded to a body "
+        "has none");
     const RodEnd &end = std::get<RodEnd>(body.attachment);
     if (end.rod >= network.rods().size())
       throw std::invalid_argument(body.where + ": rod " +

@@ -39,7 +39,15 @@ namespace rodnet
    *   midpoint rule the rest (BodyRotationInertia,
    *   solvers/body_rotation_inertia.h); the other integrators refuse it.
    *
-   * A centre off the axis at a junction is not offered.
+   * - at a junction with a rotation, with its centre off the vertex:
+   *   x_c = x_j + R r_0 (@p centre_offset r_0, in global axes at the
+   *   undeformed configuration), the inertia J_c (isotropic or a tensor)
+   *   about the centre: the kinetic energy 1/2 m |xdot_c|^2 +
+   *   1/2 omega . R J_c R^T omega, xdot_c = xdot_j + omega x R r_0,
+   *   depends on R; the constant M carries m on x_j and the isotropic part
+   *   of the inertia about the vertex, J_c + m (|r_0|^2 I - r_0 r_0^T), and
+   *   the midpoint rule the rest (BodyRotationInertia); the weight acts at
+   *   the centre (BodyWeightFamily).
    */
   struct RigidBody
   {
@@ -62,6 +70,10 @@ namespace rodnet
     /// undeformed configuration, at a vertex with a junction that turns;
     /// zero for none (then axial_inertia and transverse_inertia are zero).
     Matrix3 inertia_tensor = Matrix3::Zero();
+    /// r_0 (m), the centre's offset from the vertex in global axes at the
+    /// undeformed configuration, at a vertex with a junction that turns;
+    /// zero for a centre at the vertex (and at a rod end).
+    Vector3 centre_offset = Vector3::Zero();
 
     /// Whether the body has a general inertia tensor.
     bool
@@ -70,13 +82,54 @@ namespace rodnet
       return inertia_tensor != Matrix3::Zero();
     }
 
+    /// Whether the centre is off the vertex (centre_offset).
+    bool
+    has_centre_offset() const
+    {
+      return centre_offset != Vector3::Zero();
+    }
+
+    /// Whether the body's kinetic energy depends on the rotation of its
+    /// junction (an inertia tensor or a centre off the vertex), which only
+    /// the midpoint rule carries (BodyRotationInertia).
+    bool
+    turns_with_junction() const
+    {
+      return has_inertia_tensor() || has_centre_offset();
+    }
+
+    /// J_c, the inertia about the centre in global axes at the undeformed
+    /// configuration: the tensor, or j I.
+    Matrix3
+    centre_inertia() const
+    {
+      return has_inertia_tensor() ?
+               inertia_tensor :
+               Matrix3(axial_inertia * Matrix3::Identity());
+    }
+
+    /// The inertia about the vertex, J_c + m (|r_0|^2 I - r_0 r_0^T)
+    /// (parallel axes).
+    Matrix3
+    vertex_inertia() const
+    {
+      const Vector3 &r = centre_offset;
+      return centre_inertia() +
+             mass * (r.squaredNorm() * Matrix3::Identity() - r * r.transpose());
+    }
+
     /// The isotropic rotary inertia that the mass matrix carries at a
-    /// vertex: j, or for a tensor its mean moment trace(J_0) / 3, the
-    /// rest being BodyRotationInertia's.
+    /// vertex: j, or for a body that turns with its junction the mean
+    /// moment about the vertex, trace(vertex_inertia()) / 3, the rest
+    /// being BodyRotationInertia's. About the vertex rather than the
+    /// centre: a point mass off the vertex (J_c = 0) still gives the
+    /// rotation rows a positive mass, and M's block is then the inertia
+    /// that the rows have while the vertex is held.
     double
     isotropic_inertia() const
     {
-      return has_inertia_tensor() ? inertia_tensor.trace() / 3 : axial_inertia;
+      return turns_with_junction() ? vertex_inertia().trace() / 3 :
+                                     axial_inertia;
     }
   };
 
@@ -88,7 +141,9 @@ namespace rodnet
    * turns (a pinned junction, a plain vertex), an anisotropic inertia or an
    * offset at a vertex (no axis), an end of a closed rod; an inertia tensor
    * that is not finite, symmetric and positive definite, or that comes
-   * with another inertia, an offset or a rod end.
+   * with another inertia, an offset or a rod end; a centre offset that is
+   * not finite, at a rod end, or at a vertex without a junction that
+   * turns.
    */
   void
   check_rigid_body(const RodNetwork &network, const RigidBody &body);
@@ -122,7 +177,9 @@ namespace rodnet
    * @p gravity, acting at its centre, as point forces (vertex, force): at
    * its vertex, or at a rod end split as x_c is (EndKinematics::centre:
    * the same moment about the end while the end segments keep their
-   * lengths).
+   * lengths). At a vertex with a centre offset, the force m g at the
+   * vertex: the weight's moment about it, which turns with the junction,
+   * is BodyWeightFamily's.
    */
   std::vector<std::pair<unsigned int, Vector3>>
   rigid_body_weight(const RodNetwork &network,

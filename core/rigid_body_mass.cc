@@ -13,7 +13,8 @@ namespace rodnet
     /// The block of a body at vertex @p v: m I_3 on the position, and the
     /// rotation of the junction there, omega = 2 vdot at q = (1, 0):
     /// 1/2 j |omega|^2 = 1/2 (4 j) |vdot|^2 (j the mean moment of an
-    /// inertia tensor, whose rest BodyRotationInertia adds).
+    /// inertia tensor, about the vertex for a centre off it, whose rest
+    /// BodyRotationInertia adds: RigidBody::isotropic_inertia()).
     void
     add_vertex_body(const RodModel                          &model,
                     const RigidBody                         &body,

@@ -1,5 +1,4 @@
-// The spin of rigid bodies with a general inertia tensor at junctions
-// (core/tensor_body_spin.h).
+// The spin of rigid bodies that turn with a junction (core/tensor_body_spin.h).
 #include <core/tensor_body_spin.h>
 
 namespace rodnet
@@ -7,16 +6,29 @@ namespace rodnet
   std::vector<TensorBody>
   tensor_bodies(const RodModel &model)
   {
-    std::vector<TensorBody> found;
-    for (const RigidBody &body : model.rigid_bodies())
-      if (body.has_inertia_tensor())
+    std::vector<TensorBody>       found;
+    const std::vector<RigidBody> &all = model.rigid_bodies();
+    for (unsigned int i = 0; i < all.size(); ++i)
+      if (const RigidBody &body = all[i]; body.turns_with_junction())
         {
           // check_rigid_body() put the body on a junction with a rotation.
           const unsigned int v = std::get<unsigned int>(body.attachment);
           const unsigned int j = *model.network().junction_at(v);
-          TensorBody b{j, {}, body.inertia_tensor, body.isotropic_inertia()};
+          TensorBody         b{i,
+                       j,
+                       v,
+                       {},
+                       {},
+                       body.centre_inertia(),
+                       body.vertex_inertia(),
+                       body.mass,
+                       body.centre_offset,
+                       body.isotropic_inertia()};
           for (unsigned int c = 0; c < 3; ++c)
-            b.dofs[c] = model.layout().rotation_dof(j, c + 1);
+            {
+              b.dofs[c]     = model.layout().rotation_dof(j, c + 1);
+              b.position[c] = model.layout().vertex_dof(v, c);
+            }
           found.push_back(b);
         }
     return found;
@@ -30,6 +42,12 @@ namespace rodnet
     const Matrix3 R =
       model.junction_rotation(u, body.junction).toRotationMatrix();
     return R * body.inertia * R.transpose();
+  }
+
+  Vector3
+  centre_arm(const RodModel &model, const TensorBody &body, const VectorType &u)
+  {
+    return model.junction_rotation(u, body.junction) * body.offset;
   }
 
   Vector3
@@ -57,8 +75,18 @@ namespace rodnet
         const Vector3 omega = angular_velocity(body, u, v);
         const Vector3 pi =
           spatial_inertia(model, body, u) * omega - body.isotropic * omega;
-        spin.kinetic_energy += omega.dot(pi) / 2;
-        spin.angular_momentum += pi;
+        Vector3 x_j_rate;
+        for (unsigned int c = 0; c < 3; ++c)
+          x_j_rate[c] = v[body.position[c]];
+        const Vector3 arm      = centre_arm(model, body, u);
+        const Vector3 x_j      = model.position(u, body.vertex);
+        const Vector3 x_c_rate = x_j_rate + omega.cross(arm);
+        const Vector3 p_c = body.mass * x_c_rate, p_j = body.mass * x_j_rate;
+        spin.kinetic_energy +=
+          omega.dot(pi) / 2 +
+          body.mass * (x_c_rate.squaredNorm() - x_j_rate.squaredNorm()) / 2;
+        spin.linear_momentum += p_c - p_j;
+        spin.angular_momentum += pi + (x_j + arm).cross(p_c) - x_j.cross(p_j);
       }
     return spin;
   }

@@ -16,7 +16,8 @@ namespace rodnet
   {
     const std::string syntax =
       "\"<place>: mass <m> [inertia <j> | <J_t>,<J_p> | "
-      "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c>]\"";
+      "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c> | centre "
+      "<dx>,<dy>,<dz>]\"";
 
     /// @p text as a number, NaN unless all of it is one.
     double
@@ -80,6 +81,21 @@ namespace rodnet
           }
     }
 
+    /// "<dx>,<dy>,<dz>", the centre's offset from the vertex, into @p item.
+    void
+    read_centre(const std::string &text, RigidBodyItem &item)
+    {
+      const auto values = dealii::Utilities::split_string_list(text, ',');
+      Vector3   &r      = item.centre_offset;
+      for (unsigned int c = 0; c < 3 && values.size() == 3; ++c)
+        r[c] = number(values[c]);
+      if (values.size() != 3 || !r.allFinite() || r == Vector3::Zero())
+        throw std::invalid_argument(
+          item.where + ": the centre \"" + text +
+          "\" must be three finite numbers <dx>,<dy>,<dz> (m), not all zero "
+          "(leave it out for a centre at the vertex)");
+    }
+
     /// "<J_t>,<J_p>", "<j>" or a tensor into @p item.
     void
     read_inertia(const std::string &text, RigidBodyItem &item)
@@ -128,10 +144,11 @@ namespace rodnet
     std::set<std::string> given;
     while (words >> word)
       {
-        if (word != "mass" && word != "inertia" && word != "offset")
+        if (word != "mass" && word != "inertia" && word != "offset" &&
+            word != "centre")
           throw std::invalid_argument(item.where + ": \"" + word +
-                                      "\" is none of mass, inertia, offset; "
-                                      "write " +
+                                      "\" is none of mass, inertia, offset, "
+                                      "centre; write " +
                                       syntax);
         const bool repeated = !given.insert(word).second;
         if (repeated || !(words >> value))
@@ -143,6 +160,8 @@ namespace rodnet
           item.mass = positive(value, word, item);
         else if (word == "offset")
           item.offset = positive(value, word, item);
+        else if (word == "centre")
+          read_centre(value, item);
         else
           read_inertia(value, item);
       }
@@ -155,7 +174,8 @@ namespace rodnet
   std::optional<unsigned int>
   rigid_body_handle_vertex(const RodNetwork &network, const RigidBodyItem &item)
   {
-    if (item.axial_inertia == 0 && item.inertia_tensor == Matrix3::Zero())
+    if (item.axial_inertia == 0 && item.inertia_tensor == Matrix3::Zero() &&
+        item.centre_offset == Vector3::Zero())
       return std::nullopt;
     // At a free rod end an isotropic inertia without offset turns with a
     // handle: its ghost segment has the tangent at the end itself, where
@@ -177,6 +197,7 @@ namespace rodnet
                    item.transverse_inertia,
                    item.offset};
     body.inertia_tensor  = item.inertia_tensor;
+    body.centre_offset   = item.centre_offset;
     const unsigned int v = std::get<unsigned int>(body.attachment);
     if (const std::optional<RodEnd> end = free_rod_end(network, v))
       {

@@ -11,8 +11,9 @@ namespace rodnet
   /**
    * One item of the scene entry "Loads/Rigid bodies" as written,
    * "<place>: mass <m> [inertia <j> | <J_t>,<J_p> |
-   * <J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c>]"
-   * (doc/dynamics.md, "Rigid bodies"), before it is placed on a network.
+   * <J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c> |
+   * centre <dx>,<dy>,<dz>]" (doc/dynamics.md, "Rigid bodies"), before it is
+   * placed on a network.
    */
   struct RigidBodyItem
   {
@@ -33,14 +34,18 @@ namespace rodnet
     Matrix3 inertia_tensor = Matrix3::Zero();
     /// c (m), 0 without.
     double offset = 0;
+    /// r_0 (m), the centre's offset from the vertex in global axes; zero
+    /// without.
+    Vector3 centre_offset = Vector3::Zero();
   };
 
   /**
    * Reads the item @p place: @p text of entry @p entry. Throws
    * std::invalid_argument naming the entry and the item for a word that is
-   * not mass, inertia or offset, one given twice, a missing mass, and a
-   * value that is not a positive finite number (an off-diagonal component
-   * of an inertia tensor: not a finite number).
+   * not mass, inertia, offset or centre, one given twice, a missing mass,
+   * a value that is not a positive finite number (an off-diagonal
+   * component of an inertia tensor: not a finite number), and a centre
+   * that is not three finite numbers, not all zero.
    */
   RigidBodyItem
   parse_rigid_body_item(const std::string &place,
@@ -49,10 +54,10 @@ namespace rodnet
 
   /**
    * The vertex of @p item in @p network where the body's rotary inertia
-   * needs a rotation handle: a vertex in no junction, inside a rod, or a
-   * free rod end where the inertia is isotropic or a tensor and there is
-   * no offset;
-   * none for a body without rotary inertia or at a junction. Throws as
+   * or centre off the vertex needs a rotation handle: a vertex in no
+   * junction, inside a rod, or a free rod end where the inertia is
+   * isotropic or a tensor and there is no offset;
+   * none for a body without either or at a junction. Throws as
    * select_vertex().
    */
   std::optional<unsigned int>

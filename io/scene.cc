@@ -16,6 +16,7 @@
 #include <materials/rod_material.h>
 
 #include <cmath>
+#include <families/body_weight_family.h>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -209,8 +210,8 @@ namespace rodnet
                         Anything(),
                         "\"<vertex>: mass <m> [inertia <j>|<J_t>,<J_p>|"
                         "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] "
-                        "[offset <c>]; ...\" (doc/dynamics.md). [kg, kg m^2, "
-                        "m]");
+                        "[offset <c>|centre <dx>,<dy>,<dz>]; ...\" "
+                        "(doc/dynamics.md). [kg, kg m^2, m]");
     }
 
     /// The subsection Imperfections of Loads.
@@ -717,6 +718,8 @@ namespace rodnet
     model->apply(supports_and_loads(model->network()));
     for (const RigidBodyItem &item : rigid_body_items)
       model->add_rigid_body(place_rigid_body(model->network(), item));
+    if (auto weight = body_weight_family(*model, gravity))
+      model->add_element_family(std::move(weight));
     if (natural_shape_ramp)
       ramp_natural_shape(*model);
     add_activation_fields(*model);
@@ -829,6 +832,12 @@ namespace rodnet
         "entry \"" + natural_shape_ramp_entry +
         "\": the bending-active element of dynamic relaxation has no "
         "natural shape; use Solver/Method = newton or continuation");
+    for (const RigidBodyItem &item : rigid_body_items)
+      if (item.centre_offset != Vector3::Zero())
+        throw std::invalid_argument(
+          item.where + ": the bending-active element of dynamic relaxation "
+                       "has no junction rotation to carry a centre off the "
+                       "vertex; use Solver/Method = newton or continuation");
     for (const std::vector<ActivationItem> &items : rod_activation)
       if (!items.empty())
         throw std::invalid_argument(

@@ -8,7 +8,7 @@ namespace rodnet
       : IntegrationScheme(system)
       , rigid_split(system.model, system.mass)
       , gyroscopic(system.model, system.mass)
-      , body_rotation(system.model)
+      , body_rotation(system.model, system.mass)
   {
     point = system.model.create_vector();
     for (VectorType *v : {&gradient_m,

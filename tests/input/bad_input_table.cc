@@ -627,7 +627,8 @@ namespace
      1,
      "entry \"Loads/Rigid bodies\": \"end\": the body has no mass; write "
      "\"<place>: mass <m> [inertia <j> | <J_t>,<J_p> | "
-     "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c>]\""},
+     "<J_xx>,<J_yy>,<J_zz>[,<J_yz>,<J_zx>,<J_xy>]] [offset <c> | centre "
+     "<dx>,<dy>,<dz>]\""},
     {"rigid_body_unknown_word",
      with("Loads", "  set Rigid bodies = end: mass 1 spin 2\n"),
      ".prm",
@@ -665,8 +666,75 @@ namespace
      "",
      1,
      "entry \"Loads/Rigid bodies\": \"end\": the inertia tensor comes with "
-     "another inertia or an offset; give the tensor alone (a centre off the "
-     "junction is not represented)"},
+     "another inertia or a rod end's offset; give the tensor alone (a centre "
+     "off a junction: centre <dx>,<dy>,<dz>)"},
+    // A centre off the vertex (doc/dynamics.md, "Rigid bodies"): three
+    // finite numbers, not all zero, a junction that turns, the midpoint
+    // rule.
+    {"rigid_body_centre_zero",
+     with("Loads", "  set Rigid bodies = end: mass 1 centre 0,0,0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the centre \"0,0,0\" must be "
+     "three finite numbers <dx>,<dy>,<dz> (m), not all zero (leave it out "
+     "for a centre at the vertex)"},
+    {"rigid_body_centre_two_numbers",
+     with("Loads", "  set Rigid bodies = end: mass 1 centre 0.1,0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the centre \"0.1,0\" must be "
+     "three finite numbers"},
+    {"rigid_body_centre_not_finite",
+     with("Loads", "  set Rigid bodies = end: mass 1 centre 0.1,inf,0\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": in \"end: mass 1 centre 0.1,inf,0\", "
+     "\"inf\" is not a finite number; every number of a scene must be "
+     "finite"},
+    {"rigid_body_centre_newmark",
+     with("Loads", "  set Rigid bodies = end: mass 1 centre 0.1,0,0\n") +
+       section("Material",
+               "  set Mass per length = 1\n"
+               "  set Twist inertia per length = 1\n") +
+       valid_time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Integrator = newmark\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": a centre off the vertex turns "
+     "with the body, and only the midpoint rule carries it"},
+    {"rigid_body_centre_dynamic_relaxation",
+     with("Loads", "  set Rigid bodies = end: mass 1 centre 0.1,0,0\n") +
+       section("Solver", "  set Method = dynamic relaxation\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": the bending-active element of "
+     "dynamic relaxation has no junction rotation to carry a centre off the "
+     "vertex; use Solver/Method = newton or continuation"},
+    {"rigid_body_centre_vertex_held_in_part",
+     with("Loads", "  set Rigid bodies = end: mass 1 centre 0.1,0,0\n") +
+       section("Material",
+               "  set Mass per length = 1\n"
+               "  set Twist inertia per length = 1\n") +
+       section("Supports", "  set Fixed components = end: z\n") +
+       valid_time_stepping +
+       section("Solver",
+               "  subsection Time stepping\n"
+               "    set Integrator = midpoint\n"
+               "  end\n"),
+     ".prm",
+     "",
+     1,
+     "entry \"Loads/Rigid bodies\": \"end\": its centre is off vertex 10 "
+     "of rod 0, which is held in part; a centre off the vertex is "
+     "represented at a free vertex or at one held fixed"},
     {"rigid_body_tensor_newmark",
      with("Loads", "  set Rigid bodies = end: mass 1 inertia 1,2,3\n") +
        section("Material",

@@ -163,5 +163,12 @@ namespace
               "with a junction's rotation, and vertex 0 of rod 0 is in the "
               "pinned junction \"hub\", where each rod end turns on its own");
     EXPECT_EQ(refusal("@hub: mass 1", "pinned"), "accepted");
+    // A centre off the vertex turns with the junction's rotation.
+    EXPECT_EQ(refusal("@hub: mass 1 centre 0.1,0,0", "pinned"),
+              "entry \"Loads/Rigid bodies\": \"@hub\": a centre off the "
+              "vertex turns with a junction's rotation, and vertex 0 of rod 0 "
+              "is in the pinned junction \"hub\", where each rod end turns on "
+              "its own");
+    EXPECT_EQ(refusal("@hub: mass 1 centre 0.1,0,0", ""), "accepted");
   }
 } // namespace
