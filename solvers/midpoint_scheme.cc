@@ -21,7 +21,9 @@ namespace rodnet
                           &rank_one_a,
                           &rank_one_b,
                           &difference,
-                          &product})
+                          &product,
+                          &held_difference,
+                          &held_product})
       v->reinit(point);
   }
 
@@ -150,6 +152,34 @@ namespace rodnet
   }
 
   void
+  MidpointScheme::held_columns_product(const StepStart  &step,
+                                       const VectorType &y,
+                                       MatrixType       &k)
+  {
+    // d_h, the step of the held DoFs (a moving support). The
+    // constrained tangent has no columns there, but grad Pi(m).d depends
+    // on the free DoFs through K(m)_fh d_h / 2 as well: left out, grad c
+    // was off by K_fh d_h / (2 w.d), which grows as 1 / |d| when the step
+    // is cut (a support turning a rod about its own axis: no convergence).
+    // (The junction copies' lines, with entries, are no stencil's DoFs.)
+    held_difference = 0;
+    held_product    = 0;
+    bool moves      = false;
+    for (const auto &line : system.model.constraints().get_lines())
+      if (line.entries.empty() && y[line.index] != step.u[line.index])
+        {
+          held_difference[line.index] = y[line.index] - step.u[line.index];
+          moves                       = true;
+        }
+    if (!moves)
+      return;
+    system.model.assemble(point, step.load_factor, nullptr, &k, false);
+    k.vmult(held_product, held_difference);
+    held_product *= 0.5;
+    system.model.constraints().set_zero(held_product);
+  }
+
+  void
   MidpointScheme::tangent(const StepStart  &step,
                           const VectorType &y,
                           MatrixType       &k)
@@ -158,7 +188,8 @@ namespace rodnet
     // projection off the rigid motions at m): c M P plus the dense
     // w (grad c)^T, with
     //   grad c = [grad Pi(u) - grad Pi(m) - K(m) d / 2 - 2 c w] / (w.d)
-    // (free rows; grad (w.d) = 2 M P d = 2 w), which NewtonSolver takes as
+    // (free rows, K(m) d over the held DoFs' columns too; grad (w.d) =
+    // 2 M P d = 2 w), which NewtonSolver takes as
     // a rank-one term. Without free parts P = I and c M is exact. With
     // them c M P is dense (its low-rank part -c M R (R^T M R)^+ R^T M) and
     // is left out whole, as is the change of the rigid motions R with m:
@@ -178,9 +209,11 @@ namespace rodnet
     const auto [coefficient, norm2] =
       correction_terms(step, y, gradient_m, end_energy);
 
+    held_columns_product(step, y, k);
     model.assemble(point, step.load_factor, nullptr, &k, true);
     k *= 0.5;
     k.vmult(product, difference);
+    product += held_product;
     k.add(mass_coefficient(step.h) +
             (rigid_split.has_free_parts() ? 0.0 : coefficient),
           system.constrained_mass);

@@ -150,6 +150,14 @@ namespace rodnet
      */
     static constexpr double rigid_step_limit = 1e-12;
 
+    /// K(m) d_h / 2 on the free rows into held_product, d_h the step of
+    /// the held DoFs (zero unless a support moves), with the unconstrained
+    /// tangent at m = point assembled into @p k for it.
+    void
+    held_columns_product(const StepStart  &step,
+                         const VectorType &y,
+                         MatrixType       &k);
+
     /// Pi(u_n) of the step.
     double           start_energy = 0;
     RigidMotionSplit rigid_split;
@@ -159,6 +167,8 @@ namespace rodnet
     BodyRotationInertia body_rotation;
     VectorType point, gradient_m, gradient_y, mass_difference, direction;
     VectorType rank_one_a, rank_one_b;
+    /// d_h and K(m) d_h / 2 (held_columns_product()).
+    VectorType held_difference, held_product;
     /// The midpoint of gradient_m, where gradient_known (this step's).
     VectorType gradient_point;
     bool       gradient_known = false;
