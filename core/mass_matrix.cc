@@ -32,7 +32,8 @@ namespace rodnet
     }
 
     void
-    check_inertia(const RodModel &model, const std::vector<RodInertia> &inertia)
+    check_inertia(const SolvableModel           &model,
+                  const std::vector<RodInertia> &inertia)
     {
       const std::size_t n_rods = model.network().rods().size();
       if (inertia.size() < n_rods)
@@ -108,7 +109,7 @@ namespace rodnet
   }
 
   void
-  assemble_mass_matrix(const RodModel                &model,
+  assemble_mass_matrix(const SolvableModel           &model,
                        const std::vector<RodInertia> &inertia,
                        const MassKind                 kind,
                        MatrixType                    &mass,

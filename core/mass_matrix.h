@@ -1,7 +1,7 @@
 #ifndef RODNET_CORE_MASS_MATRIX_H
 #define RODNET_CORE_MASS_MATRIX_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <materials/cross_section.h>
 
 #include <vector>
@@ -61,22 +61,22 @@ namespace rodnet
    * constrained position DoFs of those ends and the quaternion DoFs of
    * junctions carry no inertia (Lestringant & Kochmann section 2.5: none on
    * the ghost segments), so their rows are zero, but for the model's rigid
-   * bodies (RodModel::rigid_bodies(), add_rigid_body_mass()): point masses,
-   * a junction's isotropic rotary inertia, bodies welded to rod ends.
+   * bodies (SolvableModel::rigid_bodies(), add_rigid_body_mass()): point
+   * masses, a junction's isotropic rotary inertia, bodies welded to rod ends.
    *
    * With @p apply_constraints, the rows and columns of the DoFs that the
    * model's constraints() fix are zero as well, their diagonal included:
-   * K + c M with the tangent K of RodModel::assemble (constrained) then
+   * K + c M with the tangent K of SolvableModel::assemble (constrained) then
    * keeps K's diagonal on fixed rows and a zero Newton increment there.
    * Without, M is the mass of the free structure.
    *
    * Throws std::invalid_argument naming the rod for a mass, rotational or
    * rotary inertia per length that is negative or not finite, and where the
    * number of inertias is not the number of rods; std::logic_error before
-   * RodModel::finalize().
+   * SolvableModel::finalize().
    */
   void
-  assemble_mass_matrix(const RodModel                &model,
+  assemble_mass_matrix(const SolvableModel           &model,
                        const std::vector<RodInertia> &inertia,
                        MassKind                       kind,
                        MatrixType                    &mass,

@@ -16,7 +16,7 @@ namespace rodnet
     /// inertia tensor, about the vertex for a centre off it, whose rest
     /// BodyRotationInertia adds: RigidBody::isotropic_inertia()).
     void
-    add_vertex_body(const RodModel                          &model,
+    add_vertex_body(const SolvableModel                     &model,
                     const RigidBody                         &body,
                     const unsigned int                       v,
                     const dealii::AffineConstraints<double> &constraints,
@@ -42,7 +42,7 @@ namespace rodnet
     /// J_p on the rate of its tangent, J_t on its spin (EndKinematics),
     /// each the outer product of the weights.
     void
-    add_end_body(const RodModel                          &model,
+    add_end_body(const SolvableModel                     &model,
                  const RigidBody                         &body,
                  const RodEnd                            &end,
                  const dealii::AffineConstraints<double> &constraints,
@@ -72,7 +72,7 @@ namespace rodnet
   } // namespace
 
   void
-  add_rigid_body_mass(const RodModel                          &model,
+  add_rigid_body_mass(const SolvableModel                     &model,
                       const dealii::AffineConstraints<double> &constraints,
                       MatrixType                              &mass)
   {

@@ -1,13 +1,13 @@
 #ifndef RODNET_CORE_RIGID_BODY_MASS_H
 #define RODNET_CORE_RIGID_BODY_MASS_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 namespace rodnet
 {
   /**
    * Adds the inertia of the rigid bodies of @p model
-   * (RodModel::rigid_bodies()) to its mass matrix @p mass through
+   * (SolvableModel::rigid_bodies()) to its mass matrix @p mass through
    * @p constraints (as assemble_mass_matrix() distributes the segments'):
    * constant blocks, exact at the start of every step (RigidBody;
    * doc/theory.md, "Rigid bodies"). At a vertex: m I_3 on its position and
@@ -19,7 +19,7 @@ namespace rodnet
    * segment's twist.
    */
   void
-  add_rigid_body_mass(const RodModel                          &model,
+  add_rigid_body_mass(const SolvableModel                     &model,
                       const dealii::AffineConstraints<double> &constraints,
                       MatrixType                              &mass);
 } // namespace rodnet

@@ -20,6 +20,7 @@
 #include <core/rigid_body.h>
 #include <core/rod_network.h>
 #include <core/scatter_positions.h>
+#include <core/solvable_model.h>
 #include <core/stencil_coloring.h>
 #include <core/system_block.h>
 #include <elements/hinge_kernel.h>
@@ -37,9 +38,6 @@
 
 namespace rodnet
 {
-  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
-  using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
-
   /**
    * A rod network with materials, supports and dead loads: the object a
    * driver or a user's deal.II program works with. It owns the DoF layout,
@@ -68,9 +66,10 @@ namespace rodnet
    * does both). Static load stepping refuses such models.
    *
    * RodModel implements the Model interface, through which probes, output
-   * and the scene runner see it.
+   * and the scene runner see it, and the SolvableModel interface, through
+   * which the solvers do.
    */
-  class RodModel : public Model<VectorType>
+  class RodModel final : public SolvableModel
   {
   public:
     /**
@@ -196,12 +195,12 @@ namespace rodnet
      * std::invalid_argument where such a function has no finite value.
      */
     void
-    set_time(double time);
+    set_time(double time) override;
 
     /// The factors of the activation fields driven by functions of time,
     /// one per function, at the last set_time() (empty if none).
     std::vector<double>
-    activation_time_factors() const;
+    activation_time_factors() const override;
 
     /**
      * Whether the potential Pi(u, lambda) at a given state u changes with
@@ -211,12 +210,12 @@ namespace rodnet
      * must be finalized.
      */
     bool
-    potential_follows_load_factor() const;
+    potential_follows_load_factor() const override;
 
     /// Whether the potential at a given state changes with the time of
     /// set_time(): activation fields driven by functions of time.
     bool
-    potential_follows_time() const;
+    potential_follows_time() const override;
 
     /**
      * Holds the dead loads and the applied moments at their full value at
@@ -231,7 +230,7 @@ namespace rodnet
     /// The factor on the dead loads and applied moments at @p load_factor:
     /// @p load_factor, or 1 where the loads are fixed (fix_loads()).
     double
-    applied_load_factor(double load_factor) const
+    applied_load_factor(double load_factor) const override
     {
       return loads_fixed ? 1.0 : load_factor;
     }
@@ -303,7 +302,7 @@ namespace rodnet
 
     /// The rigid bodies attached (add_rigid_body()).
     const std::vector<RigidBody> &
-    rigid_bodies() const
+    rigid_bodies() const override
     {
       return bodies;
     }
@@ -319,7 +318,7 @@ namespace rodnet
 
     /// The families of the energy, in the order they are assembled.
     const std::vector<std::unique_ptr<ElementFamily>> &
-    element_families() const
+    element_families() const override
     {
       return families;
     }
@@ -355,7 +354,7 @@ namespace rodnet
              VectorType       *residual,
              MatrixType       *tangent,
              bool              apply_constraints = true,
-             const VectorType *extra_force       = nullptr) const;
+             const VectorType *extra_force       = nullptr) const override;
 
     /**
      * As assemble(), into the rows and columns @p block of a caller's
@@ -410,7 +409,9 @@ namespace rodnet
      * @p u: the increments of one step cannot (doc/junctions.md, "Gauge").
      */
     void
-    apply_boundary_values(VectorType &u, double load_factor, double time) const;
+    apply_boundary_values(VectorType &u,
+                          double      load_factor,
+                          double      time) const override;
 
     /**
      * Throws std::runtime_error naming the support where a prescribed
@@ -424,7 +425,7 @@ namespace rodnet
     check_rotation_step(double load_factor_0,
                         double time_0,
                         double load_factor_1,
-                        double time_1) const;
+                        double time_1) const override;
 
     /**
      * The same for a load step from @p load_factor_0 to @p load_factor_1
@@ -433,11 +434,12 @@ namespace rodnet
      * support where it was, and one of 240 would turn it by -120.
      */
     void
-    check_rotation_step(double load_factor_0, double load_factor_1) const;
+    check_rotation_step(double load_factor_0,
+                        double load_factor_1) const override;
 
     /// Whether a support moves by its own function of time.
     bool
-    moves_supports_in_time() const;
+    moves_supports_in_time() const override;
 
     /// The factors of the supports moving in time at @p time, one per
     /// support (empty if none moves in time).
@@ -493,7 +495,7 @@ namespace rodnet
     /// Makes @p u the reference configuration; its quaternion DoFs return
     /// to the identity (their rotation moves into the reference).
     void
-    reset_reference(VectorType &u);
+    reset_reference(VectorType &u) override;
 
     /// Reaction force of support @p s at the converged @p u.
     Vector3
@@ -536,7 +538,7 @@ namespace rodnet
      * (ConstrainedFactorization). Empty for a model without.
      */
     const std::vector<global_dof_index> &
-    multiplier_dofs() const
+    multiplier_dofs() const override
     {
       return free_multipliers;
     }
@@ -556,7 +558,7 @@ namespace rodnet
     /// Whether any element family stores internal variables (a rod's
     /// history-dependent material, or a family of its own).
     bool
-    has_internal_variables() const
+    has_internal_variables() const override
     {
       return !history.empty();
     }
@@ -570,10 +572,10 @@ namespace rodnet
      * ignored, otherwise).
      */
     void
-    set_time_step(double time_step);
+    set_time_step(double time_step) override;
 
     double
-    time_step() const
+    time_step() const override
     {
       return step_length;
     }
@@ -586,11 +588,11 @@ namespace rodnet
      * reset_reference().
      */
     void
-    commit_internal_variables(const VectorType &u);
+    commit_internal_variables(const VectorType &u) override;
 
     /// The committed internal variables.
     const InternalVariables &
-    internal_variables() const
+    internal_variables() const override
     {
       return history;
     }
@@ -598,11 +600,11 @@ namespace rodnet
     /// A copy of the reference configuration, the committed internal
     /// variables and the time step (see ModelState).
     ModelState
-    state() const;
+    state() const override;
 
     /// Installs @p state, taken from this model by state(), as it was.
     void
-    set_state(const ModelState &state);
+    set_state(const ModelState &state) override;
     /// @}
 
     /// A zero vector with the model's layout.
@@ -611,7 +613,7 @@ namespace rodnet
 
     /// A matrix with the model's sparsity pattern.
     void
-    initialize_matrix(MatrixType &matrix) const;
+    initialize_matrix(MatrixType &matrix) const override;
 
     /// The communicator of the model's vectors and matrices.
     MPI_Comm
@@ -633,12 +635,12 @@ namespace rodnet
       return *network_;
     }
     const DofLayout &
-    layout() const
+    layout() const override
     {
       return *layout_;
     }
     const Configuration &
-    configuration() const
+    configuration() const override
     {
       return *configuration_;
     }
@@ -648,7 +650,7 @@ namespace rodnet
       return *configuration_;
     }
     const dealii::AffineConstraints<double> &
-    constraints() const
+    constraints() const override
     {
       return homogeneous_constraints;
     }
@@ -658,7 +660,7 @@ namespace rodnet
       return support_list;
     }
     const HingeKernel &
-    hinge_kernel(unsigned int rod) const
+    hinge_kernel(unsigned int rod) const override
     {
       return *kernels[rod];
     }
@@ -675,7 +677,7 @@ namespace rodnet
     /// External force vector at load factor 1: the ramped dead forces
     /// (not the held ones, add_held_point_force()).
     const VectorType &
-    external_force() const
+    external_force() const override
     {
       return f_ext;
     }
@@ -829,8 +831,8 @@ namespace rodnet
     /// The displacement of vertex @p v of clamp @p c at the factors
     /// @p factor of its translation and rotation.
     Vector3
-    clamp_displacement(const Clamp        &c,
-                       unsigned int        v,
+    clamp_displacement(const Clamp         &c,
+                       unsigned int         v,
                        const SupportFactor &factor) const;
 
     /// Throws std::runtime_error naming the first prescribed rotation that
@@ -898,8 +900,8 @@ namespace rodnet
     std::map<global_dof_index, TimeFunction> timed_dofs;
     /// The time of the last set_time() (NaN: none), at which
     /// apply_boundary_values() puts the supports moving in time.
-    double support_time = std::nan("");
-    dealii::AffineConstraints<double>  homogeneous_constraints;
+    double                            support_time = std::nan("");
+    dealii::AffineConstraints<double> homogeneous_constraints;
     /// Per DoF: fixed by a support (the same DoFs as the constraints).
     std::vector<bool>                 fixed_dof_mask;
     dealii::AffineConstraints<double> no_constraints;
@@ -910,8 +912,8 @@ namespace rodnet
       unsigned int junction;
       Vector3      axis;
       double       value; ///< moment (N m) or angle (rad) at load factor 1
-      LoadRamp     ramp = LoadRamp::ramped; ///< moments only
-      TimeFunction in_time = {};            ///< rotations only
+      LoadRamp     ramp    = LoadRamp::ramped; ///< moments only
+      TimeFunction in_time = {};               ///< rotations only
     };
     std::vector<AxisLoad> moments;
     std::vector<AxisLoad> prescribed_rotations;

@@ -4,7 +4,7 @@
 namespace rodnet
 {
   std::vector<TensorBody>
-  tensor_bodies(const RodModel &model)
+  tensor_bodies(const SolvableModel &model)
   {
     std::vector<TensorBody>       found;
     const std::vector<RigidBody> &all = model.rigid_bodies();
@@ -35,9 +35,9 @@ namespace rodnet
   }
 
   Matrix3
-  spatial_inertia(const RodModel   &model,
-                  const TensorBody &body,
-                  const VectorType &u)
+  spatial_inertia(const SolvableModel &model,
+                  const TensorBody    &body,
+                  const VectorType    &u)
   {
     const Matrix3 R =
       model.junction_rotation(u, body.junction).toRotationMatrix();
@@ -45,7 +45,9 @@ namespace rodnet
   }
 
   Vector3
-  centre_arm(const RodModel &model, const TensorBody &body, const VectorType &u)
+  centre_arm(const SolvableModel &model,
+             const TensorBody    &body,
+             const VectorType    &u)
   {
     return model.junction_rotation(u, body.junction) * body.offset;
   }
@@ -65,9 +67,9 @@ namespace rodnet
   }
 
   BodySpin
-  tensor_body_spin(const RodModel   &model,
-                   const VectorType &u,
-                   const VectorType &v)
+  tensor_body_spin(const SolvableModel &model,
+                   const VectorType    &u,
+                   const VectorType    &v)
   {
     BodySpin spin;
     for (const TensorBody &body : tensor_bodies(model))

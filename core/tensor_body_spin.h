@@ -1,7 +1,7 @@
 #ifndef RODNET_CORE_TENSOR_BODY_SPIN_H
 #define RODNET_CORE_TENSOR_BODY_SPIN_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 #include <array>
 #include <vector>
@@ -19,7 +19,7 @@ namespace rodnet
    */
   struct TensorBody
   {
-    /// Its index in RodModel::rigid_bodies().
+    /// Its index in SolvableModel::rigid_bodies().
     unsigned int index;
     /// The junction whose rotation the body turns with, and its vertex.
     unsigned int junction, vertex;
@@ -41,20 +41,20 @@ namespace rodnet
 
   /// The bodies of @p model (finalized) that turn with their junction.
   std::vector<TensorBody>
-  tensor_bodies(const RodModel &model);
+  tensor_bodies(const SolvableModel &model);
 
   /// R J_c R^T at @p u, R the junction's rotation from the undeformed
   /// configuration.
   Matrix3
-  spatial_inertia(const RodModel   &model,
-                  const TensorBody &body,
-                  const VectorType &u);
+  spatial_inertia(const SolvableModel &model,
+                  const TensorBody    &body,
+                  const VectorType    &u);
 
   /// R r_0 at @p u, the centre's offset from the vertex.
   Vector3
-  centre_arm(const RodModel   &model,
-             const TensorBody &body,
-             const VectorType &u);
+  centre_arm(const SolvableModel &model,
+             const TensorBody    &body,
+             const VectorType    &u);
 
   /**
    * The spatial angular velocity of the junction of @p body at the
@@ -83,9 +83,9 @@ namespace rodnet
   /// the angular momentum about the origin x_c x m xdot_c + R J_c R^T
   /// omega.
   BodySpin
-  tensor_body_spin(const RodModel   &model,
-                   const VectorType &u,
-                   const VectorType &v);
+  tensor_body_spin(const SolvableModel &model,
+                   const VectorType    &u,
+                   const VectorType    &v);
 } // namespace rodnet
 
 #endif

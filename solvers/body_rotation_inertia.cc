@@ -65,8 +65,8 @@ namespace rodnet
     }
   } // namespace
 
-  BodyRotationInertia::BodyRotationInertia(const RodModel   &model,
-                                           const MatrixType &mass)
+  BodyRotationInertia::BodyRotationInertia(const SolvableModel &model,
+                                           const MatrixType    &mass)
       : model(model)
       , mass(mass)
       , bodies(tensor_bodies(model))
@@ -289,7 +289,8 @@ namespace rodnet
   }
 
   void
-  check_tensor_bodies(const RodModel &model, const IntegrationScheme &scheme)
+  check_tensor_bodies(const SolvableModel     &model,
+                      const IntegrationScheme &scheme)
   {
     if (!scheme.dynamic())
       return;

@@ -69,14 +69,14 @@ namespace rodnet
    * moving in time).
    *
    * The step starts from an increment q = (1, 0), as TimeIntegrator leaves
-   * it (RodModel::reset_reference()).
+   * it (SolvableModel::reset_reference()).
    */
   class BodyRotationInertia
   {
   public:
     /// @p model must be finalized and, with the unconstrained mass matrix
     /// @p mass (assembled before the first step), outlive this object.
-    BodyRotationInertia(const RodModel &model, const MatrixType &mass);
+    BodyRotationInertia(const SolvableModel &model, const MatrixType &mass);
 
     /// Adds the force of the step @p step to @p y to @p r (fixed rows too:
     /// the caller zeroes them).
@@ -156,9 +156,9 @@ namespace rodnet
     const Matrix3 &
     momentum_weights(unsigned int b) const;
 
-    const RodModel         &model;
+    const SolvableModel         &model;
     const MatrixType            &mass;
-    std::vector<TensorBody> bodies;
+    std::vector<TensorBody>      bodies;
     mutable std::vector<Matrix3> weights;
     /// Per body: whether its centre is off the vertex and the vertex held,
     /// so that it turns about the vertex.
@@ -172,7 +172,8 @@ namespace rodnet
    * rule), or whose centre is off a vertex held in part or moving in time.
    */
   void
-  check_tensor_bodies(const RodModel &model, const IntegrationScheme &scheme);
+  check_tensor_bodies(const SolvableModel     &model,
+                      const IntegrationScheme &scheme);
 } // namespace rodnet
 
 #endif

@@ -64,8 +64,8 @@ namespace rodnet
     }
   } // namespace
 
-  GyroscopicCoupling::GyroscopicCoupling(const RodModel   &model,
-                                         const MatrixType &mass)
+  GyroscopicCoupling::GyroscopicCoupling(const SolvableModel &model,
+                                         const MatrixType    &mass)
       : model(model)
       , mass(mass)
   {

@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_GYROSCOPIC_COUPLING_H
 #define RODNET_SOLVERS_GYROSCOPIC_COUPLING_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 #include <array>
 #include <vector>
@@ -40,7 +40,7 @@ namespace rodnet
     /// @p model must be finalized and outlive this object, as must @p
     /// mass, its unconstrained mass matrix, whose twist diagonal is read at
     /// the first call.
-    GyroscopicCoupling(const RodModel &model, const MatrixType &mass);
+    GyroscopicCoupling(const SolvableModel &model, const MatrixType &mass);
 
     /// Adds the force of the step from @p u_n to @p y of length @p h to
     /// @p r (fixed rows too: the caller zeroes them).
@@ -104,7 +104,7 @@ namespace rodnet
     SegmentStep
     step_of(const Segment &s, const DofValues &u_n, const DofValues &y) const;
 
-    const RodModel      &model;
+    const SolvableModel &model;
     const MatrixType    &mass;
     std::vector<Segment> segments;
     bool                 collected = false;

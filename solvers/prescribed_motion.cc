@@ -3,7 +3,7 @@
 namespace rodnet
 {
   void
-  set_prescribed_velocity(const RodModel                      &model,
+  set_prescribed_velocity(const SolvableModel                 &model,
                           const std::function<double(double)> &load_factor,
                           const double                         time,
                           const double                         time_scale,

@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_PRESCRIBED_MOTION_H
 #define RODNET_SOLVERS_PRESCRIBED_MOTION_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 #include <functional>
 
@@ -10,7 +10,7 @@ namespace rodnet
   /**
    * Puts the velocity of the prescribed motion at @p time into the
    * constrained rows of @p v: d/dt of the values that
-   * RodModel::apply_boundary_values(u, load_factor(t), t) gives the fixed
+   * SolvableModel::apply_boundary_values(u, load_factor(t), t) gives the fixed
    * DoFs of @p u (supports moving with the load factor or by functions of
    * time, clamps turning), by the one-sided second-order difference
    * (-3 u(t) + 4 u(t + e) - u(t + 2e)) / (2e), e = 1e-4 @p time_scale,
@@ -26,7 +26,7 @@ namespace rodnet
    * to it as an inertial force of order 1/h.
    */
   void
-  set_prescribed_velocity(const RodModel                      &model,
+  set_prescribed_velocity(const SolvableModel                 &model,
                           const std::function<double(double)> &load_factor,
                           double                               time,
                           double                               time_scale,

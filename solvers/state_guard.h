@@ -1,12 +1,12 @@
 #ifndef RODNET_SOLVERS_STATE_GUARD_H
 #define RODNET_SOLVERS_STATE_GUARD_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 namespace rodnet
 {
   /**
-   * Saves a RodModel's ModelState on construction and installs it again on
+   * Saves a SolvableModel's ModelState on construction and installs it again on
    * destruction, unless keep() was called: a trial (a step attempt, a
    * branch-switch search, a critical-load bisection) that fails or throws
    * leaves the model's reference configuration, internal variables and
@@ -15,7 +15,7 @@ namespace rodnet
   class StateGuard
   {
   public:
-    explicit StateGuard(RodModel &model)
+    explicit StateGuard(SolvableModel &model)
         : model(model)
         , saved(model.state())
     {}
@@ -45,7 +45,7 @@ namespace rodnet
     }
 
   private:
-    RodModel        &model;
+    SolvableModel   &model;
     const ModelState saved;
     bool             kept = false;
   };

@@ -16,8 +16,8 @@ namespace rodnet
     }
   } // namespace
 
-  StrainMonitor::StrainMonitor(const RodModel     &model,
-                               const StrainLimits &limits)
+  StrainMonitor::StrainMonitor(const SolvableModel &model,
+                               const StrainLimits  &limits)
       : model(model)
       , limits(limits)
   {

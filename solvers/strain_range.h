@@ -1,11 +1,11 @@
 #ifndef RODNET_SOLVERS_STRAIN_RANGE_H
 #define RODNET_SOLVERS_STRAIN_RANGE_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
+#include <array>
 #include <cmath>
 #include <string>
-#include <array>
 #include <vector>
 
 namespace rodnet
@@ -55,7 +55,7 @@ namespace rodnet
   public:
     /// The model's reference must be the undeformed configuration (as
     /// before the first step): it gives kappa_0.
-    StrainMonitor(const RodModel &model, const StrainLimits &limits);
+    StrainMonitor(const SolvableModel &model, const StrainLimits &limits);
 
     StrainRange
     evaluate(const VectorType &u) const;
@@ -66,7 +66,7 @@ namespace rodnet
     warning(const StrainRange &range) const;
 
   private:
-    const RodModel      &model;
+    const SolvableModel &model;
     StrainLimits         limits;
     std::vector<Vector3> undeformed_curvature; ///< per hinge
   };

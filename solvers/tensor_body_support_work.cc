@@ -6,7 +6,7 @@
 namespace rodnet
 {
   std::vector<std::pair<global_dof_index, double>>
-  tensor_body_reaction(const RodModel                &model,
+  tensor_body_reaction(const SolvableModel           &model,
                        const std::vector<TensorBody> &bodies,
                        const std::vector<bool>       &fixed,
                        const VectorType              &u0,

@@ -7,6 +7,7 @@
 #include <core/mass_matrix.h>
 #include <core/network_generators.h>
 #include <core/rod_graph.h>
+#include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/dof_roles.h>
 #include <solvers/gyroscopic_coupling.h>
