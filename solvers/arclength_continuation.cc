@@ -111,7 +111,7 @@ namespace rodnet
     };
   } // namespace
 
-  ArclengthContinuation::ArclengthContinuation(RodModel         &model,
+  ArclengthContinuation::ArclengthContinuation(SolvableModel    &model,
                                                const Parameters &parameters,
                                                std::ostream     *log)
       : model(model)

@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <solvers/equilibrium_check.h>
 #include <solvers/residual_criterion.h>
 #include <solvers/strain_range.h>
@@ -21,7 +21,7 @@ namespace rodnet
 {
   /**
    * Pseudo-arclength continuation (Keller 1977) of the equilibria of a
-   * RodModel in the load factor lambda: the path (u(s), lambda(s)) is
+   * SolvableModel in the load factor lambda: the path (u(s), lambda(s)) is
    * followed by steps of length ds along its tangent t, each corrected by
    * Newton on the bordered system
    *
@@ -137,7 +137,7 @@ namespace rodnet
     /// Throws std::invalid_argument for a model with internal variables
     /// (a viscoelastic material: its response depends on time, which a
     /// path of equilibria does not have).
-    ArclengthContinuation(RodModel         &model,
+    ArclengthContinuation(SolvableModel    &model,
                           const Parameters &parameters,
                           std::ostream     *log = nullptr);
 
@@ -435,7 +435,7 @@ namespace rodnet
     static std::string
     number(double value);
 
-    RodModel                 &model;
+    SolvableModel            &model;
     Parameters                parameters;
     std::ostream             *log;
     ResidualCriterion         criterion;

@@ -37,7 +37,7 @@ namespace rodnet
     }
   } // namespace
 
-  DofRoles::DofRoles(const RodModel &model)
+  DofRoles::DofRoles(const SolvableModel &model)
       : model(model)
   {
     const DofLayout  &layout  = model.layout();

@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_DOF_ROLES_H
 #define RODNET_SOLVERS_DOF_ROLES_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 #include <string>
 #include <utility>
@@ -33,7 +33,7 @@ namespace rodnet
     };
 
     /// @p model must be finalized and outlive this object.
-    explicit DofRoles(const RodModel &model);
+    explicit DofRoles(const SolvableModel &model);
 
     Kind
     kind(const global_dof_index dof) const
@@ -89,7 +89,7 @@ namespace rodnet
     describe(global_dof_index dof) const;
 
   private:
-    const RodModel                                    &model;
+    const SolvableModel                               &model;
     std::vector<Kind>                                  kinds;
     std::vector<unsigned int>                          owners;
     std::vector<unsigned char>                         components;

@@ -22,7 +22,7 @@ namespace rodnet
     }
   } // namespace
 
-  EnergyBalance::EnergyBalance(RodModel         &model,
+  EnergyBalance::EnergyBalance(SolvableModel    &model,
                                const MatrixType &mass,
                                const MatrixType &damping)
       : model(model)

@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_ENERGY_BALANCE_H
 #define RODNET_SOLVERS_ENERGY_BALANCE_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <core/tensor_body_spin.h>
 #include <solvers/dof_roles.h>
 #include <solvers/integration_scheme.h>
@@ -77,7 +77,7 @@ namespace rodnet
     /// @p model, its unconstrained mass matrix @p mass and damping matrix
     /// @p damping (empty: none) must outlive this object; the model must be
     /// finalized.
-    EnergyBalance(RodModel         &model,
+    EnergyBalance(SolvableModel    &model,
                   const MatrixType &mass,
                   const MatrixType &damping);
 
@@ -140,11 +140,12 @@ namespace rodnet
     ResidualParts
     step_motion(const StepEnds &ends) const;
 
-    RodModel         &model;
+    SolvableModel    &model;
     const MatrixType &mass;
     const MatrixType &damping;
     /// What the model's potential at a given state follows
-    /// (RodModel::potential_follows_load_factor(), potential_follows_time()).
+    /// (SolvableModel::potential_follows_load_factor(),
+    /// potential_follows_time()).
     const bool follows_load_factor, follows_time;
     /// The DoFs fixed by supports (no junction copies), as a list and as
     /// a mask.

@@ -22,7 +22,7 @@ namespace rodnet
     };
 
     SymmetryBorder
-    symmetry_border(const RodModel                 &model,
+    symmetry_border(const SolvableModel            &model,
                     const VectorType               &u,
                     const double                    load_factor,
                     const ConstrainedFactorization &factorization)
@@ -62,7 +62,7 @@ namespace rodnet
      * no zero pivot (where K^-1 M does not exist).
      */
     unsigned int
-    negative_beside_symmetries(const RodModel                 &model,
+    negative_beside_symmetries(const SolvableModel            &model,
                                const VectorType               &u,
                                const double                    load_factor,
                                const ConstrainedFactorization &factorization,
@@ -90,7 +90,7 @@ namespace rodnet
      * exact discrete equilibrium.
      */
     std::vector<double>
-    correction_beside_symmetries(const RodModel                 &model,
+    correction_beside_symmetries(const SolvableModel            &model,
                                  const VectorType               &u,
                                  const double                    load_factor,
                                  const ConstrainedFactorization &factorization,
@@ -141,10 +141,10 @@ namespace rodnet
   } // namespace
 
   unsigned int
-  negative_eigenvalues(const RodModel   &model,
-                       const VectorType &u,
-                       const double      load_factor,
-                       MatrixType       &tangent)
+  negative_eigenvalues(const SolvableModel &model,
+                       const VectorType    &u,
+                       const double         load_factor,
+                       MatrixType          &tangent)
   {
     model.assemble(u, load_factor, nullptr, &tangent, true);
     const ConstrainedFactorization factorization(tangent,
@@ -159,7 +159,7 @@ namespace rodnet
   }
 
   EquilibriumCheck
-  check_equilibrium(const RodModel          &model,
+  check_equilibrium(const SolvableModel     &model,
                     const ResidualCriterion &criterion,
                     const VectorType        &u,
                     const double             load_factor,

@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_EQUILIBRIUM_CHECK_H
 #define RODNET_SOLVERS_EQUILIBRIUM_CHECK_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <solvers/residual_criterion.h>
 
 #include <string>
@@ -17,10 +17,10 @@ namespace rodnet
    * the buckled elastica with EI1 = EI2 counts as stable.
    */
   unsigned int
-  negative_eigenvalues(const RodModel   &model,
-                       const VectorType &u,
-                       double            load_factor,
-                       MatrixType       &tangent);
+  negative_eigenvalues(const SolvableModel &model,
+                       const VectorType    &u,
+                       double               load_factor,
+                       MatrixType          &tangent);
 
   /// What the solvers check at a converged equilibrium besides its residual.
   struct EquilibriumCheck
@@ -48,7 +48,7 @@ namespace rodnet
    * without a warning (ResidualCriterion::rounding_hint()).
    */
   EquilibriumCheck
-  check_equilibrium(const RodModel          &model,
+  check_equilibrium(const SolvableModel     &model,
                     const ResidualCriterion &criterion,
                     const VectorType        &u,
                     double                   load_factor,

@@ -270,7 +270,7 @@ namespace rodnet
     /// The parts of the network at @p u, in the order of their union-find
     /// roots; @p part_of_rod receives the part of every rod.
     std::vector<Part>
-    parts_at(const RodModel            &model,
+    parts_at(const SolvableModel       &model,
              const VectorType          &u,
              std::vector<unsigned int> &part_of_rod)
     {
@@ -350,7 +350,7 @@ namespace rodnet
      * (w - v x w + (v . w) v) / 2, which is w / 2 at the reference.
      */
     Row
-    rigid_change(const RodModel        &model,
+    rigid_change(const SolvableModel   &model,
                  const DofRoles        &roles,
                  const VectorType      &u,
                  const global_dof_index d,
@@ -399,7 +399,7 @@ namespace rodnet
     /// The row of DoF @p d of part @p part (rigid_change()), with the turn
     /// column where the part turns: a twist changes by the turn itself.
     Row
-    candidate_change(const RodModel        &model,
+    candidate_change(const SolvableModel   &model,
                      const DofRoles        &roles,
                      const VectorType      &u,
                      const global_dof_index d,
@@ -420,7 +420,7 @@ namespace rodnet
     /// space of the rows of its fixed DoFs (their change must vanish), as
     /// orthonormal columns (t, w L). Adds its held vertices to part.held.
     Eigen::MatrixXd
-    motions_the_supports_leave(const RodModel                  &model,
+    motions_the_supports_leave(const SolvableModel             &model,
                                const DofRoles                  &roles,
                                const VectorType                &u,
                                const std::vector<unsigned int> &part_of_rod,
@@ -512,7 +512,7 @@ namespace rodnet
     /// motion of every part (parts share no DoF); @p part_of_dof receives
     /// the part of every DoF that moves, @p parts.size() for the others.
     Eigen::MatrixXd
-    motion_vectors(const RodModel                  &model,
+    motion_vectors(const SolvableModel             &model,
                    const DofRoles                  &roles,
                    const VectorType                &u,
                    const std::vector<unsigned int> &part_of_rod,
@@ -611,7 +611,7 @@ namespace rodnet
      * a motion left.
      */
     void
-    keep_motions_the_energy_leaves(const RodModel                  &model,
+    keep_motions_the_energy_leaves(const SolvableModel             &model,
                                    const DofRoles                  &roles,
                                    const VectorType                &u,
                                    const std::vector<unsigned int> &part_of_rod,
@@ -685,7 +685,7 @@ namespace rodnet
      * twists is fixed; roles.n_dofs() otherwise.
      */
     std::vector<global_dof_index>
-    turning_twists(const RodModel          &model,
+    turning_twists(const SolvableModel     &model,
                    const DofRoles          &roles,
                    const std::vector<bool> &joined)
     {
@@ -732,7 +732,7 @@ namespace rodnet
      * of the part. As DoF vectors; those that move nothing are dropped.
      */
     std::vector<VectorType>
-    symmetries_of(const RodModel                  &model,
+    symmetries_of(const SolvableModel             &model,
                   const DofRoles                  &roles,
                   const VectorType                &u,
                   const double                     load_factor,
@@ -791,7 +791,7 @@ namespace rodnet
   } // namespace
 
   std::string
-  describe_free_motions(const RodModel &model, const VectorType &u)
+  describe_free_motions(const SolvableModel &model, const VectorType &u)
   {
     const DofRoles            roles(model);
     std::vector<unsigned int> part_of_rod;
@@ -817,9 +817,9 @@ namespace rodnet
   }
 
   std::vector<VectorType>
-  symmetry_modes(const RodModel   &model,
-                 const VectorType &u,
-                 const double      load_factor)
+  symmetry_modes(const SolvableModel &model,
+                 const VectorType    &u,
+                 const double         load_factor)
   {
     const DofRoles            roles(model);
     std::vector<unsigned int> part_of_rod;
@@ -849,9 +849,9 @@ namespace rodnet
   }
 
   std::vector<global_dof_index>
-  free_frame_turns(const RodModel   &model,
-                   const VectorType &u,
-                   const double      load_factor)
+  free_frame_turns(const SolvableModel &model,
+                   const VectorType    &u,
+                   const double         load_factor)
   {
     // Where every rod is joined (a welded network), nothing to look at.
     const std::vector<bool> joined = joined_rods(model.network());

@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_FREE_MOTIONS_H
 #define RODNET_SOLVERS_FREE_MOTIONS_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <solvers/dof_roles.h>
 
 #include <string>
@@ -57,7 +57,7 @@ namespace rodnet
    * here; a static solve reports them as a singular tangent.
    */
   std::string
-  describe_free_motions(const RodModel &model, const VectorType &u);
+  describe_free_motions(const SolvableModel &model, const VectorType &u);
 
   /**
    * The symmetry modes of @p model at the equilibrium @p u and
@@ -75,9 +75,9 @@ namespace rodnet
    * zero at fixed DoFs.
    */
   std::vector<VectorType>
-  symmetry_modes(const RodModel   &model,
-                 const VectorType &u,
-                 double            load_factor);
+  symmetry_modes(const SolvableModel &model,
+                 const VectorType    &u,
+                 double               load_factor);
 
   /**
    * The rods of @p model whose material frames can all turn together about
@@ -92,9 +92,9 @@ namespace rodnet
    * the order of the rods: holding it holds the turn.
    */
   std::vector<global_dof_index>
-  free_frame_turns(const RodModel   &model,
-                   const VectorType &u,
-                   double            load_factor);
+  free_frame_turns(const SolvableModel &model,
+                   const VectorType    &u,
+                   double               load_factor);
 } // namespace rodnet
 
 #endif

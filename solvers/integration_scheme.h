@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_INTEGRATION_SCHEME_H
 #define RODNET_SOLVERS_INTEGRATION_SCHEME_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <solvers/newton_solver.h>
 
 #include <limits>
@@ -14,7 +14,7 @@ namespace rodnet
   /// its mass matrix M (empty for quasi-static runs).
   struct StepSystem
   {
-    RodModel         &model;
+    SolvableModel    &model;
     const MatrixType &mass;             ///< unconstrained
     const MatrixType &constrained_mass; ///< fixed rows and columns zero
     /// Rows with a nonzero mass diagonal.
@@ -212,7 +212,7 @@ namespace rodnet
 
     /**
      * The model's unconstrained residual at @p x and the load factor of the
-     * step set_up() last prepared (RodModel::assemble() without
+     * step set_up() last prepared (SolvableModel::assemble() without
      * constraints or extra force) if the scheme needs it later in that
      * step, then assembled once for both; else null. The tolerance's load
      * scale takes it instead of assembling it again.

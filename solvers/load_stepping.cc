@@ -91,7 +91,8 @@ namespace rodnet
       {
         // A prescribed rotation's increment from the step's start cannot
         // tell a turn of half a turn or more from a shorter one the other
-        // way (RodModel::check_rotation_step()): a shorter step turns less.
+        // way (SolvableModel::check_rotation_step()): a shorter step turns
+        // less.
         model.check_rotation_step(path.lambda, target);
       }
     catch (const std::runtime_error &e)

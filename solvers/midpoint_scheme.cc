@@ -103,7 +103,7 @@ namespace rodnet
     set_midpoint(step, y);
     // Unconstrained: grad Pi . d needs the fixed rows too, where prescribed
     // DoFs move.
-    RodModel &model = system.model;
+    SolvableModel &model = system.model;
     model.assemble(point, step.load_factor, &r, nullptr, false);
     keep_gradient(r);
     // Pi(y) of the assembly of grad Pi(y) where there is one at y (the
@@ -201,7 +201,7 @@ namespace rodnet
     // then solves the momentum balance to round-off, not only to the
     // Newton tolerance.
     set_midpoint(step, y);
-    RodModel &model = system.model;
+    SolvableModel &model = system.model;
     // Newton asks for the tangent where it has just evaluated the residual.
     if (!gradient_known || !(point == gradient_point))
       model.assemble(point, step.load_factor, &gradient_m, nullptr, false);

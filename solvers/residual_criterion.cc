@@ -33,7 +33,7 @@ namespace rodnet
     }
   } // namespace
 
-  ResidualCriterion::ResidualCriterion(const RodModel &model)
+  ResidualCriterion::ResidualCriterion(const SolvableModel &model)
       : model(model)
       , dof_roles(model)
   {

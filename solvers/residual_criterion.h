@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_RESIDUAL_CRITERION_H
 #define RODNET_SOLVERS_RESIDUAL_CRITERION_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <solvers/dof_roles.h>
 #include <solvers/newton_solver.h>
 
@@ -46,7 +46,7 @@ namespace rodnet
   };
 
   /**
-   * When a residual of a RodModel counts as converged (doc/user_guide.md,
+   * When a residual of a SolvableModel counts as converged (doc/user_guide.md,
    * "Convergence"). The residual has two parts in different units: the
    * position rows are forces (N); the twist rows are moments about the
    * segment tangents (N m), and the rows of a junction's quaternion are a
@@ -76,7 +76,7 @@ namespace rodnet
   {
   public:
     /// @p model must be finalized and outlive the criterion.
-    explicit ResidualCriterion(const RodModel &model);
+    explicit ResidualCriterion(const SolvableModel &model);
 
     /// Force and moment norms of the residual @p r at the state @p u
     /// (constrained rows and unused DoFs do not count).
@@ -290,7 +290,7 @@ namespace rodnet
     Eigen::Vector4d
     junction_quaternion(const VectorType &u, unsigned int junction) const;
 
-    const RodModel &model;
+    const SolvableModel &model;
     DofRoles        dof_roles;
     /// Fixed twist DoFs that a hinge or junction element sees.
     std::vector<global_dof_index> fixed_twists;

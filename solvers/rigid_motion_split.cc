@@ -52,8 +52,8 @@ namespace rodnet
     }
   } // namespace
 
-  RigidMotionSplit::RigidMotionSplit(const RodModel   &model,
-                                     const MatrixType &mass)
+  RigidMotionSplit::RigidMotionSplit(const SolvableModel &model,
+                                     const MatrixType    &mass)
       : model(model)
       , mass(mass)
   {

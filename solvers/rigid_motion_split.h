@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_RIGID_MOTION_SPLIT_H
 #define RODNET_SOLVERS_RIGID_MOTION_SPLIT_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 #include <array>
 #include <vector>
@@ -45,7 +45,7 @@ namespace rodnet
   public:
     /// @p model must be finalized and outlive this object, @p mass is
     /// its unconstrained mass matrix, read at the first call only.
-    RigidMotionSplit(const RodModel &model, const MatrixType &mass);
+    RigidMotionSplit(const SolvableModel &model, const MatrixType &mass);
 
     /// Whether some part of the model is free.
     bool
@@ -89,7 +89,7 @@ namespace rodnet
     void
     set_junction_turn(const VectorType &x, const MovedDof &m);
 
-    const RodModel       &model;
+    const SolvableModel  &model;
     const MatrixType     &mass;
     std::vector<MovedDof> moved;
     /// Per free part: its mass and centre of mass, its rotation Gram

@@ -37,7 +37,7 @@ namespace rodnet
    *
    * <h3>Constraints by multipliers</h3>
    * Where the model has Lagrange multipliers (@p multipliers, e.g.
-   * RodModel::multiplier_dofs()), the tangent is the KKT matrix
+   * SolvableModel::multiplier_dofs()), the tangent is the KKT matrix
    * [H, G^T; G, 0] and what counts is the Hessian H on the constraint
    * manifold, Z^T H Z with G Z = 0 (Nocedal & Wright 16.2): the KKT matrix
    * has one negative eigenvalue per constraint besides (Gould 1985), and its

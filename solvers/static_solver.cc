@@ -45,7 +45,7 @@ namespace rodnet
     }
   } // namespace
 
-  StaticSolver::StaticSolver(RodModel         &model,
+  StaticSolver::StaticSolver(SolvableModel    &model,
                              const Parameters &parameters,
                              std::ostream     *log)
       : model(model)

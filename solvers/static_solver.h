@@ -1,7 +1,7 @@
 #ifndef RODNET_SOLVERS_STATIC_SOLVER_H
 #define RODNET_SOLVERS_STATIC_SOLVER_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <solvers/equilibrium_check.h>
 #include <solvers/newton_solver.h>
 #include <solvers/residual_criterion.h>
@@ -110,7 +110,7 @@ namespace rodnet
     using Observer =
       std::function<void(const StepInfo &, const VectorType &solution)>;
 
-    StaticSolver(RodModel         &model,
+    StaticSolver(SolvableModel    &model,
                  const Parameters &parameters,
                  std::ostream     *log = nullptr);
 
@@ -422,7 +422,7 @@ namespace rodnet
     unsigned int
     negative_eigenvalues(const VectorType &u, double load_factor);
 
-    RodModel         &model;
+    SolvableModel    &model;
     Parameters        parameters;
     std::ostream     *log;
     ResidualCriterion criterion;

@@ -78,7 +78,7 @@ namespace rodnet
     /// @p model with the parameters @p p (its energy, globalization,
     /// damping or rigid bodies).
     void
-    check_scheme(const RodModel                   &model,
+    check_scheme(const SolvableModel              &model,
                  const TimeIntegrator::Parameters &p,
                  const IntegrationScheme          &scheme)
     {
@@ -147,7 +147,7 @@ namespace rodnet
     }
   } // namespace
 
-  TimeIntegrator::TimeIntegrator(RodModel                      &model,
+  TimeIntegrator::TimeIntegrator(SolvableModel                 &model,
                                  const std::vector<RodInertia> &inertia,
                                  const Parameters              &parameters,
                                  std::ostream                  *log)

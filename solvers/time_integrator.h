@@ -2,7 +2,7 @@
 #define RODNET_SOLVERS_TIME_INTEGRATOR_H
 
 #include <core/mass_matrix.h>
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 #include <solvers/energy_balance.h>
 #include <solvers/integration_scheme.h>
 #include <solvers/newton_solver.h>
@@ -22,7 +22,7 @@
 namespace rodnet
 {
   /**
-   * Implicit time stepping of a RodModel (Lestringant & Kochmann sections
+   * Implicit time stepping of a SolvableModel (Lestringant & Kochmann sections
    * 2.4-2.5): every step of length h from the state (u_n, v_n) at t_n
    * solves one nonlinear system for u = u_{n+1} by NewtonSolver, the same
    * Newton path as statics, with the model's incremental potential
@@ -54,7 +54,7 @@ namespace rodnet
    * part NewtonSolver handles by Sherman-Morrison).
    *
    * Activation fields driven by functions of time are evaluated at the
-   * time the loads are taken at (RodModel::set_time()), and at the step's
+   * time the loads are taken at (SolvableModel::set_time()), and at the step's
    * end once it has converged.
    *
    * After every converged step the internal variables of history materials
@@ -233,7 +233,7 @@ namespace rodnet
      * or not finite, or not zero in a quasi-static run. The model must be
      * finalized.
      */
-    TimeIntegrator(RodModel                      &model,
+    TimeIntegrator(SolvableModel                 &model,
                    const std::vector<RodInertia> &inertia,
                    const Parameters              &parameters,
                    std::ostream                  *log = nullptr);
@@ -410,7 +410,7 @@ namespace rodnet
 
     /// Whether the potential is the same under the load factors @p a and
     /// @p b: they are equal, or nothing in the model follows the load
-    /// factor (RodModel::potential_follows_load_factor()).
+    /// factor (SolvableModel::potential_follows_load_factor()).
     bool
     same_potential_load(double a, double b) const;
 
@@ -436,7 +436,7 @@ namespace rodnet
     double
     known_energy(const VectorType &u, double load_factor) const;
 
-    RodModel         &model;
+    SolvableModel    &model;
     Parameters        parameters;
     std::ostream     *log;
     ResidualCriterion criterion;
