@@ -238,4 +238,26 @@ namespace rodnet
       s.dofs[7 + c] = rotation_dof(junction, c);
     junction_list.push_back(s);
   }
+
+
+  global_dof_index
+  DofLayout::add_block(const std::string &owner, std::vector<DeclaredDof> dofs)
+  {
+    const global_dof_index first = n_dofs();
+    n_declared_dofs += dofs.size();
+    blocks.push_back({owner, first, std::move(dofs)});
+    // The identities are stored over all DoFs (a closed AffineConstraints
+    // answers only for indices in its set).
+    dealii::AffineConstraints<double> grown(
+      dealii::complete_index_set(n_dofs()));
+    for (const auto &line : junction_identities.get_lines())
+      {
+        grown.add_line(line.index);
+        grown.add_entries(line.index, line.entries);
+      }
+    grown.close();
+    junction_identities.clear();
+    junction_identities.copy_from(grown);
+    return first;
+  }
 } // namespace rodnet

@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <core/dof_block.h>
 #include <core/rod_network.h>
 #include <elements/hinge_kernel.h>
 #include <elements/stretch_kernel.h>
@@ -84,7 +85,9 @@ namespace rodnet
    * rods and of their segments (families/inextensibility_family.h); a
    * network without inextensible rods has none. Last come three DoFs per
    * hinge of each developable ribbon (ribbon_dof()): its generatrix slope
-   * and the multipliers of its two developability constraints.
+   * and the multipliers of its two developability constraints. After them
+   * come the blocks that element families declare for themselves
+   * (add_block(), ElementFamily::own_dofs()), in the order they are added.
    */
   class DofLayout
   {
@@ -97,12 +100,28 @@ namespace rodnet
       return handler;
     }
 
-    /// All DoFs: the DoFHandler's, the quaternion block, the multipliers.
+    /// All DoFs: the DoFHandler's, the quaternion block, the multipliers,
+    /// the ribbons' DoFs and the families' declared blocks.
     global_dof_index
     n_dofs() const
     {
       return handler.n_dofs() + 4 * n_rotations + n_multiplier_dofs +
-             3 * n_ribbon_hinges_;
+             3 * n_ribbon_hinges_ + n_declared_dofs;
+    }
+
+    /**
+     * Numbers the DoFs @p dofs that family @p owner declares for itself
+     * after all others and returns the first. The junction identities grow
+     * to the new number of DoFs.
+     */
+    global_dof_index
+    add_block(const std::string &owner, std::vector<DeclaredDof> dofs);
+
+    /// The blocks that families declared (add_block()), in their order.
+    const std::vector<DofBlock> &
+    declared_blocks() const
+    {
+      return blocks;
     }
 
     /// Number of Lagrange multipliers (segments of inextensible rods).
@@ -278,6 +297,8 @@ namespace rodnet
     std::vector<global_dof_index> ribbon_dofs;
     global_dof_index              n_ribbon_hinges_ = 0;
     global_dof_index              n_numbered_ribbons = 0;
+    std::vector<DofBlock>         blocks;
+    global_dof_index              n_declared_dofs = 0;
     dealii::AffineConstraints<double> junction_identities;
   };
 } // namespace rodnet

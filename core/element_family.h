@@ -102,6 +102,48 @@ namespace rodnet
              Derivatives         derivatives,
              LocalContribution  &local) const = 0;
 
+    /// Whether the family's energy depends on StencilState::load_factor
+    /// (a load it ramps, a gap it closes): the model's potential then
+    /// follows the load factor (RodModel::potential_follows_load_factor()).
+    virtual bool
+    follows_load_factor() const
+    {
+      return false;
+    }
+
+    /**
+     * @name DoFs of the family's own (a multiplier, a shape variable)
+     *
+     * A family may declare a block of DoFs that no other family has:
+     * own_dofs() says how many, the role of each, the vertex it belongs to,
+     * how messages name it and how it is written to output. When the family
+     * is added, the model numbers the block after all other DoFs
+     * (DofLayout::add_block()) and passes its first index to
+     * number_own_dofs(); get_dofs() then lists them like any other DoF.
+     * DofRoles, the residual check, the KKT solvers (a multiplier is one of
+     * RodModel::multiplier_dofs()) and the output read the declaration, so
+     * nothing outside the family's files knows it. A multiplier whose
+     * stencils couple it to held DoFs only would leave the tangent singular:
+     * finalize() refuses it, naming its label. The defaults are a family
+     * without DoFs of its own.
+     */
+    /// @{
+    /// The DoFs the family declares for itself.
+    virtual std::vector<DeclaredDof>
+    own_dofs() const
+    {
+      return {};
+    }
+
+    /// The first global index of the declared block (called once, when the
+    /// family is added to a model, and only if own_dofs() is not empty).
+    virtual void
+    number_own_dofs(const global_dof_index first)
+    {
+      (void)first;
+    }
+    /// @}
+
     /**
      * @name History (for families whose energy depends on committed values)
      *

@@ -10,6 +10,7 @@
 #include <families/hinge_family.h>
 #include <families/junction_family.h>
 #include <families/stretch_family.h>
+#include <map>
 #include <stdexcept>
 
 namespace rodnet
@@ -167,6 +168,13 @@ namespace rodnet
   {
     require_not_finalized("RodModel::add_element_family \"" + family->name() +
                           "\"");
+    std::vector<DeclaredDof> own = family->own_dofs();
+    if (!own.empty())
+      {
+        family->number_own_dofs(
+          layout_->add_block(family->name(), std::move(own)));
+        owned_dofs = dealii::complete_index_set(layout_->n_dofs());
+      }
     families.push_back(std::move(family));
     history = InternalVariables(families);
   }
@@ -247,6 +255,7 @@ namespace rodnet
         fixed_dofs.emplace(layout_->twist_dof(cell), 0.0);
     add_inextensibility();
     add_developable_ribbons();
+    collect_declared_multipliers();
     make_constraints();
 
     std::vector<AxisMoment> axis_moments;
@@ -341,6 +350,44 @@ namespace rodnet
         }
     families.push_back(std::make_unique<DevelopableRibbonFamily>(
       *layout_, *network_, *configuration_, kernels, materials));
+  }
+
+
+  void
+  RodModel::collect_declared_multipliers()
+  {
+    // A declared multiplier is free where a stencil couples it to a free
+    // DoF; one that sees held DoFs only has a zero row in the tangent.
+    std::map<global_dof_index, bool> sees_free;
+    for (const DofBlock &block : layout_->declared_blocks())
+      for (unsigned int i = 0; i < block.dofs.size(); ++i)
+        if (block.dofs[i].role == DofRole::multiplier)
+          sees_free[block.first + i] = false;
+    if (sees_free.empty())
+      return;
+    std::vector<global_dof_index> dofs;
+    for (const auto &family : families)
+      for (unsigned int s = 0; s < family->n_stencils(); ++s)
+        {
+          family->get_dofs(s, dofs);
+          bool free = false;
+          for (const global_dof_index d : dofs)
+            free = free || (fixed_dofs.count(d) == 0 && sees_free.count(d) == 0);
+          for (const global_dof_index d : dofs)
+            if (free && sees_free.count(d) > 0)
+              sees_free[d] = true;
+        }
+    for (const DofBlock &block : layout_->declared_blocks())
+      for (unsigned int i = 0; i < block.dofs.size(); ++i)
+        if (block.dofs[i].role == DofRole::multiplier)
+          {
+            if (!sees_free[block.first + i])
+              throw std::invalid_argument(
+                block.owner + ": " + block.dofs[i].label +
+                " constrains DoFs that the supports hold already; remove "
+                "the constraint or the support");
+            free_multipliers.push_back(block.first + i);
+          }
   }
 
 

@@ -949,12 +949,18 @@ namespace rodnet
     void
     append_internal_variable_fields(OutputFields &output) const;
 
-    /// Fixes the multipliers of inextensible segments whose ends are both
-    /// held and adds the inextensibility family for the others.
+    /// Appends the vertex fields that the families' declared DoFs are
+    /// written to (DeclaredDofOutput), at @p u.
+    void
+    append_declared_dof_fields(const VectorType                 &u,
+                               std::vector<OutputFields::Field> &fields) const;
+
     /// The force vector of @p dead_loads at load factor 1 (finalize()).
     VectorType
     force_vector(const DeadLoads &dead_loads) const;
 
+    /// Fixes the multipliers of inextensible segments whose ends are both
+    /// held and adds the inextensibility family for the others.
     void
     add_inextensibility();
 
@@ -962,6 +968,12 @@ namespace rodnet
     /// and fixes the multipliers of its hinges whose DoFs are all held.
     void
     add_developable_ribbons();
+
+    /// Adds the free multipliers of the families' declared blocks
+    /// (ElementFamily::own_dofs()) to multiplier_dofs(); throws
+    /// std::invalid_argument naming one whose stencils see held DoFs only.
+    void
+    collect_declared_multipliers();
   };
 } // namespace rodnet
 

@@ -80,7 +80,12 @@ namespace rodnet
       std::any_of(given_materials.begin(),
                   given_materials.end(),
                   [](const auto &material) { return material != nullptr; });
-    return (ramped_loads && !loads_fixed) || ramped_shape ||
+    const bool ramped_family =
+      !loads_fixed &&
+      std::any_of(families.begin(), families.end(), [](const auto &family) {
+        return family->follows_load_factor();
+      });
+    return (ramped_loads && !loads_fixed) || ramped_shape || ramped_family ||
            configuration_->has_activation_driven_by(
              ActivationDrive::Kind::load_factor);
   }

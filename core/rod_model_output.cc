@@ -264,7 +264,38 @@ namespace rodnet
     append_activation_fields(configuration_->segment_activation(),
                              output.segment_fields);
     output.vertex_fields = hinge_strain_fields(u);
+    append_declared_dof_fields(u, output.vertex_fields);
     append_internal_variable_fields(output);
     return output;
+  }
+
+
+  void
+  RodModel::append_declared_dof_fields(
+    const VectorType                 &u,
+    std::vector<OutputFields::Field> &fields) const
+  {
+    const std::size_t first_new = fields.size();
+    const unsigned    n_vertices = network_->n_vertices();
+    for (const DofBlock &block : layout_->declared_blocks())
+      for (unsigned int i = 0; i < block.dofs.size(); ++i)
+        {
+          const DeclaredDofOutput &out = block.dofs[i].output;
+          if (out.field.empty())
+            continue;
+          auto field =
+            std::find_if(fields.begin() + first_new,
+                         fields.end(),
+                         [&](const auto &f) { return f.name == out.field; });
+          if (field == fields.end())
+            field = fields.insert(
+              fields.end(),
+              {out.field,
+               out.components,
+               std::vector<double>(out.components * n_vertices),
+               out.unit});
+          field->values[out.components * block.dofs[i].vertex +
+                        out.component] += out.factor * u[block.first + i];
+        }
   }
 } // namespace rodnet

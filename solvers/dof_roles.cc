@@ -84,6 +84,17 @@ namespace rodnet
             components[d]            = c;
             at_vertex[d]             = true;
           }
+    // The families' own blocks say what their DoFs are.
+    for (const DofBlock &block : layout.declared_blocks())
+      for (unsigned int i = 0; i < block.dofs.size(); ++i)
+        {
+          const global_dof_index d = block.first + i;
+          kinds[d]  = block.dofs[i].role == DofRole::shape ? Kind::shape :
+                                                             Kind::multiplier;
+          owners[d] = block.dofs[i].vertex;
+          at_vertex[d] = true;
+          declared.emplace(d, &block.dofs[i]);
+        }
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (layout.has_rotation_dofs(j))
         for (unsigned int c = 1; c < 4; ++c)
@@ -114,6 +125,8 @@ namespace rodnet
   DofRoles::describe(const global_dof_index dof) const
   {
     const RodNetwork &network = model.network();
+    if (const auto own = declared.find(dof); own != declared.end())
+      return own->second->label;
     switch (kinds[dof])
       {
         case Kind::quaternion:

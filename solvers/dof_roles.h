@@ -3,6 +3,7 @@
 
 #include <core/solvable_model.h>
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,7 +17,8 @@ namespace rodnet
    * model fixes because it carries nothing (the copies of shared junction
    * positions, a twist that no hinge sees, the real part of a quaternion,
    * which is its gauge), or the Lagrange multiplier of an inextensible
-   * segment (a constraint row, scaled to a force). Also names DoFs, vertices
+   * segment (a constraint row, scaled to a force), or what a family
+   * declared of a DoF of its own (DeclaredDof). Also names DoFs, vertices
    * and segments the way messages and scenes do.
    */
   class DofRoles
@@ -98,6 +100,8 @@ namespace rodnet
     std::vector<bool> at_vertex;
     std::vector<std::pair<unsigned int, unsigned int>> vertex_places;
     std::vector<std::pair<unsigned int, unsigned int>> cell_places;
+    /// The declarations of the families' own DoFs (their labels).
+    std::map<global_dof_index, const DeclaredDof *> declared;
   };
 } // namespace rodnet
 

@@ -193,6 +193,7 @@ namespace
 
   /// Scenes with a validation test of their own.
   const std::set<std::string> tested_elsewhere = {
+    "bonded_loop",            // validation/bonding_scenes
     "deep_arch",              // validation/continuation
     "eigenstrain_column",     // validation/eigenstrain_column
     "fig6_building_block",    // validation/fig6_building_block
