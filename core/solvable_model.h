@@ -32,10 +32,10 @@ namespace rodnet
    * and the checks take a SolvableModel, so a second model that offers
    * the same operations runs under them unchanged.
    *
-   * The functions are virtual because they are called once per assembly,
-   * step or check, never per stencil: the loops over stencils stay inside
-   * the model. For the meaning of each operation see RodModel, whose
-   * documentation of it this interface shares.
+   * The functions can be virtual since they are called once per assembly,
+   * step or check, never per stencil; the loops over stencils stay inside
+   * the model (RodModel is final, so its own calls are not dispatched at
+   * all). RodModel documents each operation in full.
    */
   class SolvableModel : public Model<VectorType>
   {
@@ -155,6 +155,7 @@ namespace rodnet
     virtual void
     set_time_step(double time_step) = 0;
 
+    /// The time step of set_time_step().
     virtual double
     time_step() const = 0;
 
@@ -170,9 +171,12 @@ namespace rodnet
 
     /// @name What the solvers' checks read
     /// @{
+    /// The numbering of the DoFs: positions, twists, quaternions and the
+    /// families' own blocks.
     virtual const DofLayout &
     layout() const = 0;
 
+    /// The undeformed and reference data, and positions at a DoF vector.
     virtual const Configuration &
     configuration() const = 0;
 
