@@ -29,7 +29,7 @@ namespace rodnet
     /// Components of the field: 1 (scalar) or 3 (vector).
     unsigned int components = 1;
     unsigned int component  = 0;
-    double       factor    = 1;
+    double       factor     = 1;
     /// Unit of the field, as a picture's colour bar states it ("N").
     std::string unit;
   };

@@ -275,7 +275,7 @@ namespace rodnet
     const VectorType                 &u,
     std::vector<OutputFields::Field> &fields) const
   {
-    const std::size_t first_new = fields.size();
+    const std::size_t first_new  = fields.size();
     const unsigned    n_vertices = network_->n_vertices();
     for (const DofBlock &block : layout_->declared_blocks())
       for (unsigned int i = 0; i < block.dofs.size(); ++i)
@@ -288,14 +288,15 @@ namespace rodnet
                          fields.end(),
                          [&](const auto &f) { return f.name == out.field; });
           if (field == fields.end())
-            field = fields.insert(
-              fields.end(),
-              {out.field,
-               out.components,
-               std::vector<double>(out.components * n_vertices),
-               out.unit});
-          field->values[out.components * block.dofs[i].vertex +
-                        out.component] += out.factor * u[block.first + i];
+            field =
+              fields.insert(fields.end(),
+                            {out.field,
+                             out.components,
+                             std::vector<double>(out.components * n_vertices),
+                             out.unit});
+          field
+            ->values[out.components * block.dofs[i].vertex + out.component] +=
+            out.factor * u[block.first + i];
         }
   }
 } // namespace rodnet

@@ -1,12 +1,12 @@
 #include <deal.II/base/utilities.h>
 
 #include <core/rod_model.h>
-#include <families/bonding_constraint.h>
-#include <families/inextensibility_family.h>
 #include <io/vertex_selector.h>
 
 #include <algorithm>
 #include <cmath>
+#include <families/bonding_constraint.h>
+#include <families/inextensibility_family.h>
 #include <stdexcept>
 
 namespace rodnet
@@ -23,11 +23,11 @@ namespace rodnet
       for (const SegmentStencil &segment : layout.segments())
         for (const unsigned int end : segment.vertices)
           if (layout.vertex_dof(end, 0) == layout.vertex_dof(v, 0))
-            scale = std::max(scale,
-                             inextensibility_scale(
-                               model.material(segment.rod),
-                               model.configuration().rest_length(
-                                 segment.cell)));
+            scale =
+              std::max(scale,
+                       inextensibility_scale(model.material(segment.rod),
+                                             model.configuration().rest_length(
+                                               segment.cell)));
       return scale;
     }
 
@@ -120,8 +120,7 @@ namespace rodnet
     const bool         pair = data.bond.other.has_value();
     const double       k    = data.scale;
     const double       mu   = state.u[first_multiplier + s];
-    double             g    = state.u[data.dofs_a[c]] -
-                   state.load_factor * data.closed_gap[c];
+    double g = state.u[data.dofs_a[c]] - state.load_factor * data.closed_gap[c];
     if (pair)
       g -= state.u[data.dofs_b[c]];
     local.energy = k * mu * g;
@@ -129,15 +128,15 @@ namespace rodnet
       return;
     const unsigned int n = pair ? 3 : 2;
     // The multiplier's column of the Hessian: d(k g)/d(u_a, u_b, mu).
-    Eigen::VectorXd    column = Eigen::VectorXd::Zero(n);
-    column[0]                 = k;
+    Eigen::VectorXd column = Eigen::VectorXd::Zero(n);
+    column[0]              = k;
     if (pair)
       column[1] = -k;
     Eigen::VectorXd gradient = mu * column;
     gradient[n - 1]          = k * g;
-    Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(n, n);
-    hessian.col(n - 1) = column;
-    hessian.row(n - 1) = column.transpose();
+    Eigen::MatrixXd hessian  = Eigen::MatrixXd::Zero(n, n);
+    hessian.col(n - 1)       = column;
+    hessian.row(n - 1)       = column.transpose();
     local.store(gradient,
                 derivatives == Derivatives::hessian ? &hessian : nullptr);
   }
@@ -175,12 +174,9 @@ namespace rodnet
     prm.declare_entry("Bonds",
                       "",
                       dealii::Patterns::Anything(),
-                      "Vertices tied by a Lagrange multiplier, separated by "
-                      "\";\": \"a = b\" ties vertex a to vertex b, \"a = x, "
-                      "y, z\" to a point (vertices named as in \"Point "
-                      "forces\": \"0:end\", \"1:start\", \"@name\"). The gap "
-                      "closes with the load factor from the undeformed "
-                      "positions on. Empty: none. [-]");
+                      "Vertices tied by Lagrange multipliers: \"a = b; c = "
+                      "x, y, z\" (to a vertex, to a point; vertices as in "
+                      "Point forces); gaps close with the load factor. [-]");
   }
 
 

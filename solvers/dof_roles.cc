@@ -84,17 +84,7 @@ namespace rodnet
             components[d]            = c;
             at_vertex[d]             = true;
           }
-    // The families' own blocks say what their DoFs are.
-    for (const DofBlock &block : layout.declared_blocks())
-      for (unsigned int i = 0; i < block.dofs.size(); ++i)
-        {
-          const global_dof_index d = block.first + i;
-          kinds[d]  = block.dofs[i].role == DofRole::shape ? Kind::shape :
-                                                             Kind::multiplier;
-          owners[d] = block.dofs[i].vertex;
-          at_vertex[d] = true;
-          declared.emplace(d, &block.dofs[i]);
-        }
+    mark_declared_dofs(layout);
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (layout.has_rotation_dofs(j))
         for (unsigned int c = 1; c < 4; ++c)
@@ -106,6 +96,22 @@ namespace rodnet
           }
 
     set_rod_places(network, vertex_places, cell_places);
+  }
+
+  void
+  DofRoles::mark_declared_dofs(const DofLayout &layout)
+  {
+    // The families' own blocks say what their DoFs are.
+    for (const DofBlock &block : layout.declared_blocks())
+      for (unsigned int i = 0; i < block.dofs.size(); ++i)
+        {
+          const global_dof_index d = block.first + i;
+          kinds[d]     = block.dofs[i].role == DofRole::shape ? Kind::shape :
+                                                                Kind::multiplier;
+          owners[d]    = block.dofs[i].vertex;
+          at_vertex[d] = true;
+          declared.emplace(d, &block.dofs[i]);
+        }
   }
 
   std::string

@@ -91,6 +91,11 @@ namespace rodnet
     describe(global_dof_index dof) const;
 
   private:
+    /// Kind, owner and label of the DoFs that families declared
+    /// (DofLayout::declared_blocks()).
+    void
+    mark_declared_dofs(const DofLayout &layout);
+
     const SolvableModel                               &model;
     std::vector<Kind>                                  kinds;
     std::vector<unsigned int>                          owners;

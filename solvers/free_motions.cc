@@ -1,3 +1,4 @@
+#include <solvers/constraint_rows.h>
 #include <solvers/dof_roles.h>
 #include <solvers/free_motions.h>
 
@@ -267,17 +268,64 @@ namespace rodnet
       bool turns = false;
     };
 
-    /// The parts of the network at @p u, in the order of their union-find
-    /// roots; @p part_of_rod receives the part of every rod.
+    /// Whether DoFs of @p kind change under a rigid motion: not the inert
+    /// ones, nor the multipliers of inextensible segments (their lengths do
+    /// not change), nor a ribbon's generatrix slopes (shape DoFs).
+    bool
+    moves_rigidly(const Kind kind)
+    {
+      return kind != Kind::inert && kind != Kind::multiplier &&
+             kind != Kind::shape;
+    }
+
+    /// @p root (rod_parts()) with the parts joined that a constraint couples
+    /// (a bond between vertices of two parts): roots stay where nothing is
+    /// joined.
+    std::vector<unsigned int>
+    join_constrained_parts(std::vector<unsigned int>         root,
+                           const RodNetwork                 &network,
+                           const DofRoles                   &roles,
+                           const std::vector<ConstraintRow> &rows)
+    {
+      const auto find = [&](unsigned int r) {
+        while (root[r] != r)
+          r = root[r] = root[root[r]];
+        return r;
+      };
+      for (const ConstraintRow &row : rows)
+        {
+          unsigned int first = root.size();
+          for (unsigned int b = 0; b < row.dofs.size(); ++b)
+            if (moves_rigidly(roles.kind(row.dofs[b])) && row.gradient[b] != 0)
+              {
+                const unsigned int r =
+                  find(rod_of(network, roles, row.dofs[b]));
+                if (first == root.size())
+                  first = r;
+                else if (r != first)
+                  root[std::max(r, first)] = first = std::min(r, first);
+              }
+        }
+      for (unsigned int r = 0; r < root.size(); ++r)
+        root[r] = find(r);
+      return root;
+    }
+
+    /// The parts of the network at @p u (rods joined by junctions or by
+    /// @p constraints), in the order of their union-find roots;
+    /// @p part_of_rod receives the part of every rod.
     std::vector<Part>
-    parts_at(const SolvableModel       &model,
-             const VectorType          &u,
-             std::vector<unsigned int> &part_of_rod)
+    parts_at(const SolvableModel              &model,
+             const DofRoles                   &roles,
+             const std::vector<ConstraintRow> &constraints,
+             const VectorType                 &u,
+             std::vector<unsigned int>        &part_of_rod)
     {
       const RodNetwork               &network = model.network();
-      const std::vector<unsigned int> root    = rod_parts(network);
-      std::vector<Part>               parts;
-      std::vector<unsigned int>       part_of_root(root.size());
+      const std::vector<unsigned int> root =
+        join_constrained_parts(rod_parts(network), network, roles, constraints);
+      std::vector<Part>         parts;
+      std::vector<unsigned int> part_of_root(root.size());
       for (unsigned int r = 0; r < root.size(); ++r)
         if (root[r] == r)
           {
@@ -307,16 +355,6 @@ namespace rodnet
           part.length = (high - low).norm();
         }
       return parts;
-    }
-
-    /// Whether DoFs of @p kind change under a rigid motion: not the inert
-    /// ones, nor the multipliers of inextensible segments (their lengths do
-    /// not change), nor a ribbon's generatrix slopes (shape DoFs).
-    bool
-    moves_rigidly(const Kind kind)
-    {
-      return kind != Kind::inert && kind != Kind::multiplier &&
-             kind != Kind::shape;
     }
 
     /// The factor between the row of DoF @p d (rigid_change()) and its
@@ -416,19 +454,69 @@ namespace rodnet
       return row;
     }
 
-    /// The rigid motions of part @p p that no fixed DoF stops: the null
-    /// space of the rows of its fixed DoFs (their change must vanish), as
+    /**
+     * Adds to @p rows the change of each of the @p constraints on part
+     * @p p along its candidate motions, in units of the change its DoFs
+     * would make one by one; leaves out a constraint that the motions keep
+     * to rounding (the length of an inextensible segment, a ribbon's
+     * developability), which stops none of them.
+     */
+    void
+    add_constraint_changes(const SolvableModel              &model,
+                           const DofRoles                   &roles,
+                           const VectorType                 &u,
+                           const std::vector<unsigned int>  &part_of_rod,
+                           const unsigned int                p,
+                           const Part                       &part,
+                           const std::vector<ConstraintRow> &constraints,
+                           StackedRows                      &rows)
+    {
+      const int width = part.turns ? turn_columns : rigid_columns;
+      for (const ConstraintRow &constraint : constraints)
+        {
+          Row    change = Row::Zero(width);
+          double size   = 0;
+          for (unsigned int b = 0; b < constraint.dofs.size(); ++b)
+            {
+              const global_dof_index d = constraint.dofs[b];
+              if (!moves_rigidly(roles.kind(d)) ||
+                  constraint.gradient[b] == 0 ||
+                  part_of_rod[rod_of(model.network(), roles, d)] != p)
+                continue;
+              const Row dof_change =
+                candidate_change(model, roles, u, d, part) /
+                change_unit(roles, d, part.length);
+              change += constraint.gradient[b] * dof_change;
+              size += std::abs(constraint.gradient[b]) * dof_change.norm();
+            }
+          if (change.norm() > 1e-9 * size)
+            rows.add(change / size);
+        }
+    }
+
+    /// The rigid motions of part @p p that no fixed DoF and none of the
+    /// @p constraints stops: the null space of the rows of its fixed DoFs
+    /// (their change must vanish) and of the constraints it changes, as
     /// orthonormal columns (t, w L). Adds its held vertices to part.held.
     Eigen::MatrixXd
-    motions_the_supports_leave(const SolvableModel             &model,
-                               const DofRoles                  &roles,
-                               const VectorType                &u,
-                               const std::vector<unsigned int> &part_of_rod,
-                               const unsigned int               p,
-                               Part                            &part)
+    motions_the_supports_leave(const SolvableModel              &model,
+                               const DofRoles                   &roles,
+                               const std::vector<ConstraintRow> &constraints,
+                               const VectorType                 &u,
+                               const std::vector<unsigned int>  &part_of_rod,
+                               const unsigned int                p,
+                               Part                             &part)
     {
       const int   width = part.turns ? turn_columns : rigid_columns;
       StackedRows rows(width);
+      add_constraint_changes(model,
+                             roles,
+                             u,
+                             part_of_rod,
+                             p,
+                             part,
+                             constraints,
+                             rows);
       for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
         {
           if (!moves_rigidly(roles.kind(d)) ||
@@ -793,12 +881,20 @@ namespace rodnet
   std::string
   describe_free_motions(const SolvableModel &model, const VectorType &u)
   {
-    const DofRoles            roles(model);
-    std::vector<unsigned int> part_of_rod;
-    std::vector<Part>         parts = parts_at(model, u, part_of_rod);
+    const DofRoles                   roles(model);
+    std::vector<unsigned int>        part_of_rod;
+    const std::vector<ConstraintRow> constraints =
+      constraint_rows(model, roles, u);
+    std::vector<Part> parts =
+      parts_at(model, roles, constraints, u, part_of_rod);
     for (unsigned int p = 0; p < parts.size(); ++p)
-      parts[p].motions =
-        motions_the_supports_leave(model, roles, u, part_of_rod, p, parts[p]);
+      parts[p].motions = motions_the_supports_leave(model,
+                                                    roles,
+                                                    constraints,
+                                                    u,
+                                                    part_of_rod,
+                                                    p,
+                                                    parts[p]);
     keep_motions_the_energy_leaves(model, roles, u, part_of_rod, parts);
 
     std::vector<std::string> free_parts;
@@ -821,10 +917,13 @@ namespace rodnet
                  const VectorType    &u,
                  const double         load_factor)
   {
-    const DofRoles            roles(model);
-    std::vector<unsigned int> part_of_rod;
-    std::vector<Part>         parts = parts_at(model, u, part_of_rod);
-    std::vector<bool>         at_junction(model.network().rods().size());
+    const DofRoles                   roles(model);
+    std::vector<unsigned int>        part_of_rod;
+    const std::vector<ConstraintRow> constraints =
+      constraint_rows(model, roles, u);
+    std::vector<Part> parts =
+      parts_at(model, roles, constraints, u, part_of_rod);
+    std::vector<bool> at_junction(model.network().rods().size());
     for (const Junction &j : model.network().junctions())
       {
         // A rotation handle inside a rod (no rod end) belongs to no part
@@ -839,9 +938,14 @@ namespace rodnet
       {
         parts[p].turns =
           parts[p].rods.size() == 1 && !at_junction[parts[p].rods[0]];
-        parts[p].motions =
-          motions_the_supports_leave(model, roles, u, part_of_rod, p, parts[p]);
-        any = any || parts[p].motions.cols() > 0;
+        parts[p].motions = motions_the_supports_leave(model,
+                                                      roles,
+                                                      constraints,
+                                                      u,
+                                                      part_of_rod,
+                                                      p,
+                                                      parts[p]);
+        any              = any || parts[p].motions.cols() > 0;
       }
     if (!any)
       return {};
@@ -860,8 +964,11 @@ namespace rodnet
     const DofRoles                      roles(model);
     const std::vector<global_dof_index> twists =
       turning_twists(model, roles, joined);
-    std::vector<unsigned int> part_of_rod;
-    std::vector<Part>         parts = parts_at(model, u, part_of_rod);
+    std::vector<unsigned int>        part_of_rod;
+    const std::vector<ConstraintRow> constraints =
+      constraint_rows(model, roles, u);
+    std::vector<Part> parts =
+      parts_at(model, roles, constraints, u, part_of_rod);
     for (Part &part : parts)
       if (part.rods.size() == 1 && twists[part.rods[0]] != roles.n_dofs())
         {

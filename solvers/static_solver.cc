@@ -66,8 +66,9 @@ namespace rodnet
     if (!model.multiplier_dofs().empty() && parameters.newton.needs_potential())
       throw std::invalid_argument(
         "the " + parameters.newton.line_search +
-        " globalization minimizes a potential, but inextensible rods are "
-        "solved at a stationary point of their Lagrangian (a saddle of the "
+        " globalization minimizes a potential, but a model with Lagrange "
+        "multipliers (inextensible rods, ribbons, bonding constraints) is "
+        "solved at a stationary point of its Lagrangian (a saddle of the "
         "energy and the constraints); use the full step or backtracking");
     model.initialize_matrix(tangent);
   }

@@ -163,9 +163,10 @@ namespace rodnet
       // The multipliers carry no mass: the equations of motion would be
       // differential-algebraic, which the schemes here do not integrate.
       throw std::invalid_argument(
-        "time stepping: inextensible rods are not supported (their "
-        "multipliers make the equations of motion differential-algebraic); "
-        "use Newton load steps or continuation, or extensible rods");
+        "time stepping: Lagrange multipliers (of inextensible rods, "
+        "ribbons or bonding constraints) are not supported: they make the "
+        "equations of motion differential-algebraic; use Newton load steps "
+        "or continuation, or extensible rods and elastic springs");
     scheme = integration_scheme_registry().create(p.integrator, system);
     preload_scheme =
       integration_scheme_registry().create("quasi-static", system);

@@ -7,12 +7,13 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <common/assembled_derivatives.h>
+#include <common/welded_knee.h>
 #include <core/rod_model.h>
-#include <families/bonding_constraint.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/dof_roles.h>
 
 #include <algorithm>
+#include <families/bonding_constraint.h>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <random>
@@ -20,34 +21,6 @@
 namespace
 {
   using namespace rodnet;
-
-  /// Rod 0: (0,0,0)-(1,0,0)-(3,0,0); rod 1: (3,0,0)-(3,2,0)-(3,2.5,0),
-  /// welded to rod 0 at (3,0,0); rod 2: (0,1,0)-(1,1,0)-(2,1,0).
-  std::unique_ptr<RodModel>
-  bonded_model()
-  {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod({Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(3, 0, 0)},
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_rod({Vector3(3, 0, 0), Vector3(3, 2, 0), Vector3(3, 2.5, 0)},
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_rod({Vector3(0, 1, 0), Vector3(1, 1, 0), Vector3(2, 1, 0)},
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_junction("knee",
-                          JunctionKind::welded,
-                          {{0, false}, {1, true}});
-    auto material =
-      std::make_shared<LinearElasticRod>(RodStiffness{100, 2, 3, 1.5});
-    return std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>(3, material));
-  }
 
   /// The family of @p text's bonds ("a = b; c = x, y, z") on @p model.
   std::unique_ptr<ElementFamily>
@@ -77,12 +50,12 @@ namespace
 
   TEST(BondingConstraint, DerivativesMatchFiniteDifferences)
   {
-    auto model = bonded_model();
+    auto model = rodnet::testing::welded_knee_model();
     model->add_element_family(
       bonds_from_scene(*model, "2:end = 0.5, 1.5, 0.2; 1:start = 2:start"));
     model->clamp_end("clamp", 0, true);
     model->finalize();
-    const VectorType                  u = random_bonded_state(*model, 0.05);
+    const VectorType u = random_bonded_state(*model, 0.05);
     const rodnet::testing::DerivativeErrors errors =
       rodnet::testing::assembled_derivative_errors(*model, u, 0.6, 1e-6);
     std::cout << "residual error " << errors.residual << ", tangent error "
@@ -96,13 +69,14 @@ namespace
   // (max(2, 3) / 1^3 at rod 2's start, 3 / 0.5^3 at rod 1's end).
   TEST(BondingConstraint, EnergyIsTheMultipliersTimesTheScaledGaps)
   {
-    auto bare = bonded_model(), bonded = bonded_model();
+    auto bare   = rodnet::testing::welded_knee_model(),
+         bonded = rodnet::testing::welded_knee_model();
     bonded->add_element_family(
       bonds_from_scene(*bonded, "2:start = 0:end; 1:end = 3, 2.5, 1"));
     bare->finalize();
     bonded->finalize();
     ASSERT_EQ(bonded->layout().n_dofs(), bare->layout().n_dofs() + 6);
-    const VectorType u = random_bonded_state(*bonded, 0.1);
+    const VectorType u      = random_bonded_state(*bonded, 0.1);
     VectorType       u_bare = bare->create_vector();
     for (unsigned int i = 0; i < u_bare.size(); ++i)
       u_bare[i] = u[i];
@@ -112,14 +86,14 @@ namespace
     };
     const auto   &rods  = bonded->network().rods();
     const auto    first = bare->layout().n_dofs();
-    const Vector3 gap_0 = Vector3(3, 0, 0) - Vector3(0, 1, 0);
+    const Vector3 gap_0 = Vector3(3, 0, 0) - Vector3(0, 5, 0);
     const Vector3 gap_1(0, 0, 1);
     double        expected = 0;
     for (unsigned int c = 0; c < 3; ++c)
       {
         expected += 3.0 * u[first + c] *
-                    (dof(rods[2].vertices[0], c) -
-                     dof(rods[0].vertices[2], c) - lambda * gap_0[c]);
+                    (dof(rods[2].vertices[0], c) - dof(rods[0].vertices[2], c) -
+                     lambda * gap_0[c]);
         expected += 3 / 0.125 * u[first + 3 + c] *
                     (dof(rods[1].vertices[2], c) - lambda * gap_1[c]);
       }
@@ -134,9 +108,9 @@ namespace
   // the output writes -k mu as the "bond_force" at that vertex.
   TEST(BondingConstraint, DeclaredBlockIsNumberedNamedAndWritten)
   {
-    auto model = bonded_model();
-    model->add_element_family(bonds_from_scene(*model, "2:end = 2, 1, 0.5"));
-    model->clamp_end("clamp", 2, true);
+    auto model = rodnet::testing::welded_knee_model();
+    model->add_element_family(bonds_from_scene(*model, "1:end = 3, 3, 0.5"));
+    model->clamp_end("clamp", 0, true);
     model->finalize();
     const auto &blocks = model->layout().declared_blocks();
     ASSERT_EQ(blocks.size(), 1u);
@@ -144,22 +118,22 @@ namespace
     EXPECT_EQ(model->multiplier_dofs().size(), 3u);
     EXPECT_EQ(model->multiplier_dofs().back(), blocks[0].first + 2);
     const DofRoles     roles(*model);
-    const unsigned int end = model->network().rods()[2].vertices[2];
+    const unsigned int end = model->network().rods()[1].vertices[2];
     EXPECT_EQ(roles.kind(blocks[0].first + 1), DofRoles::Kind::multiplier);
     EXPECT_EQ(roles.owner(blocks[0].first + 1), end);
     EXPECT_EQ(roles.describe(blocks[0].first + 1),
-              "bond 0 (2:end = 2, 1, 0.5), its y component");
+              "bond 0 (1:end = 3, 3, 0.5), its y component");
 
-    VectorType u             = model->create_vector();
-    u[blocks[0].first + 2]   = 0.25;
-    const OutputFields out   = model->output_fields(u);
-    const auto         field = std::find_if(
-      out.vertex_fields.begin(), out.vertex_fields.end(), [](const auto &f) {
-        return f.name == "bond_force";
-      });
+    VectorType u           = model->create_vector();
+    u[blocks[0].first + 2] = 0.25;
+    const OutputFields out = model->output_fields(u);
+    const auto         field =
+      std::find_if(out.vertex_fields.begin(),
+                   out.vertex_fields.end(),
+                   [](const auto &f) { return f.name == "bond_force"; });
     ASSERT_NE(field, out.vertex_fields.end());
     EXPECT_EQ(field->components, 3u);
-    EXPECT_DOUBLE_EQ(field->values[3 * end + 2], -0.25 * 3.0);
+    EXPECT_DOUBLE_EQ(field->values[3 * end + 2], -0.25 * 3 / 0.125);
     EXPECT_EQ(field->values[3 * end + 1], 0.0);
   }
 
@@ -181,15 +155,18 @@ namespace
 
   TEST(BondingConstraint, BadBondsAreRefusedByName)
   {
-    auto model = bonded_model();
-    EXPECT_EQ(bond_refusal([&] { bonds_from_scene(*model, "0:end = 1:start"); }),
+    auto model = rodnet::testing::welded_knee_model();
+    EXPECT_EQ(bond_refusal(
+                [&] { bonds_from_scene(*model, "0:end = 1:start"); }),
               "entry \"Bonding constraints/Bonds\": bond \"0:end = "
               "1:start\" ties a vertex to itself");
-    EXPECT_NE(bond_refusal([&] { bonds_from_scene(*model, "0:end"); })
-                .find("is not \"a = b\""),
+    EXPECT_NE(bond_refusal([&] {
+                bonds_from_scene(*model, "0:end");
+              }).find("is not \"a = b\""),
               std::string::npos);
-    EXPECT_NE(bond_refusal([&] { bonds_from_scene(*model, "0:end = 7:start"); })
-                .find("Bonding constraints/Bonds"),
+    EXPECT_NE(bond_refusal([&] {
+                bonds_from_scene(*model, "0:end = 7:start");
+              }).find("Bonding constraints/Bonds"),
               std::string::npos);
 
     // A bond at a clamped vertex would leave its multipliers' rows empty.

@@ -4,6 +4,7 @@
 // two rods, a rod left off the foundation), it is added only before
 // finalize(), and bad constants and unknown family names are refused with
 // a message naming them. Derivatives: tests/assembly/global_derivatives.
+#include <common/welded_knee.h>
 #include <core/family_request.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
@@ -16,39 +17,12 @@ namespace
 {
   using namespace rodnet;
 
-  /// Rod 0: (0,0,0)-(1,0,0)-(3,0,0); rod 1: (3,0,0)-(3,2,0)-(3,2.5,0),
-  /// welded to rod 0 at (3,0,0); rod 2 far away: (0,5,0)-(1,5,0).
-  std::unique_ptr<RodModel>
-  foundation_model()
-  {
-    auto network = std::make_unique<RodNetwork>();
-    network->add_rod({Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(3, 0, 0)},
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_rod({Vector3(3, 0, 0), Vector3(3, 2, 0), Vector3(3, 2.5, 0)},
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_rod({Vector3(0, 5, 0), Vector3(1, 5, 0)},
-                     false,
-                     Vector3::UnitZ(),
-                     "simple");
-    network->add_junction("knee",
-                          JunctionKind::welded,
-                          {{0, false}, {1, true}});
-    auto material =
-      std::make_shared<LinearElasticRod>(RodStiffness{100, 2, 3, 1.5});
-    return std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>(3, material));
-  }
-
   TEST(ElasticFoundation, EnergyIsTheSumOfTheSprings)
   {
     const double  k    = 7;
     const Vector3 n    = Vector3(1, 2, 2) / 3;
-    auto          bare = foundation_model(), founded = foundation_model();
+    auto          bare = rodnet::testing::welded_knee_model(),
+         founded       = rodnet::testing::welded_knee_model();
     ElasticFoundationParameters parameters;
     parameters.stiffness = k;
     parameters.direction = Vector3(1, 2, 2);
@@ -90,7 +64,7 @@ namespace
 
   TEST(ElasticFoundation, IsAddedBeforeFinalizeOnly)
   {
-    auto model = foundation_model();
+    auto model = rodnet::testing::welded_knee_model();
     model->finalize();
     ElasticFoundationParameters parameters;
     parameters.stiffness = 1;
@@ -119,7 +93,7 @@ namespace
 
   TEST(ElasticFoundation, RefusesBadConstants)
   {
-    const auto                  model = foundation_model();
+    const auto                  model = rodnet::testing::welded_knee_model();
     const auto                 &net   = model->network();
     const auto                 &dofs  = model->layout();
     ElasticFoundationParameters parameters;
@@ -148,7 +122,8 @@ namespace
     const std::string message =
       refusal([] { element_family_registry().create("Pasternak"); });
     EXPECT_NE(message.find("unknown element family \"Pasternak\"; known "
-                           "element families: \"Elastic foundation\""),
+                           "element families: \"Bonding constraints\", "
+                           "\"Elastic foundation\""),
               std::string::npos)
       << message;
   }

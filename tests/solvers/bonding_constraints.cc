@@ -9,14 +9,19 @@
 //   force the support's reaction;
 // - two mirror-image cantilevers tip to tip, bonded, under a small load P at
 //   the joint: each carries P / 2 (the reference: a single cantilever under
-//   P / 2), and the bond holds the loaded tip up by P / 2.
+//   P / 2), and the bond holds the loaded tip up by P / 2;
+// - bonds hold like supports in the free-motion check: three bonds at
+//   points not on a line hold a free rod, two leave the rotation about
+//   the line through them, and two free rods bonded to each other move
+//   together (one part), not each held by the other.
 #include <common/solve_model.h>
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
-#include <families/bonding_constraint.h>
 #include <materials/linear_elastic_rod.h>
+#include <solvers/free_motions.h>
 
 #include <algorithm>
+#include <families/bonding_constraint.h>
 #include <gtest/gtest.h>
 #include <iostream>
 
@@ -26,7 +31,7 @@ namespace
   using namespace rodnet::testing;
 
   const double       EI = 1, EA = 1e4, GJ = 0.8, L = 1;
-  const unsigned int n  = 20;
+  const unsigned int n = 20;
 
   /// Cantilevers from each start in @p starts to the matching end, clamped
   /// at their starts.
@@ -71,11 +76,11 @@ namespace
   Vector3
   bond_force(const RodModel &model, const VectorType &u, const unsigned v)
   {
-    const OutputFields out   = model.output_fields(u);
-    const auto         field = std::find_if(
-      out.vertex_fields.begin(), out.vertex_fields.end(), [](const auto &f) {
-        return f.name == "bond_force";
-      });
+    const OutputFields out = model.output_fields(u);
+    const auto         field =
+      std::find_if(out.vertex_fields.begin(),
+                   out.vertex_fields.end(),
+                   [](const auto &f) { return f.name == "bond_force"; });
     EXPECT_NE(field, out.vertex_fields.end());
     return Vector3(field->values[3 * v],
                    field->values[3 * v + 1],
@@ -102,11 +107,12 @@ namespace
   std::pair<std::unique_ptr<RodModel>, VectorType>
   held_tip(const bool bonded, const Vector3 &point, const Vector3 &load)
   {
-    auto model = cantilevers({{Vector3::Zero(), Vector3(L, 0, 0)}});
+    auto model             = cantilevers({{Vector3::Zero(), Vector3(L, 0, 0)}});
     const unsigned int tip = vertex(*model, 0, n);
     if (bonded)
       model->add_element_family(std::make_unique<BondingConstraintFamily>(
-        *model, std::vector<Bond>{{tip, {}, point, "tip"}}));
+        *model,
+        std::vector<Bond>{{tip, {}, point, "tip"}}));
     else
       model->fix_components("pin",
                             tip,
@@ -126,10 +132,9 @@ namespace
     const auto [bonded, u_bonded] = held_tip(true, point, load);
     const auto [pinned, u_pinned] = held_tip(false, point, load);
     const unsigned int tip        = vertex(*bonded, 0, n);
-    const Vector3 force    = bond_force(*bonded, u_bonded, tip);
-    const Vector3 reaction = pinned->reaction(pinned->supports().back(),
-                                              u_pinned,
-                                              1.0);
+    const Vector3      force      = bond_force(*bonded, u_bonded, tip);
+    const Vector3      reaction =
+      pinned->reaction(pinned->supports().back(), u_pinned, 1.0);
     std::cout << "midpoint deflection "
               << displacement(*bonded, u_bonded, vertex(*bonded, 0, n / 2))[2]
               << ", bond force " << force.transpose() << ", pin reaction "
@@ -153,8 +158,7 @@ namespace
                displacement(*bonded, u_bonded, tip) - point)
                 .norm(),
               1e-10 * L);
-    EXPECT_LT(largest_difference(*bonded, u_bonded, *moved, u_moved),
-              1e-9 * L);
+    EXPECT_LT(largest_difference(*bonded, u_bonded, *moved, u_moved), 1e-9 * L);
     const Vector3 force = bond_force(*bonded, u_bonded, tip);
     const Vector3 reaction =
       moved->reaction(moved->supports().back(), u_moved, 1.0);
@@ -166,12 +170,13 @@ namespace
   // (w / L)^2 = 1e-10, is all that mirror symmetry would not share).
   TEST(BondingConstraints, TippedCantileversShareTheLoad)
   {
-    const double P    = 1e-4 * EI / (L * L);
-    auto         pair = cantilevers(
-      {{Vector3::Zero(), Vector3(L, 0, 0)}, {Vector3(2 * L, 0, 0), Vector3(L, 0, 0)}});
+    const double       P     = 1e-4 * EI / (L * L);
+    auto               pair  = cantilevers({{Vector3::Zero(), Vector3(L, 0, 0)},
+                                            {Vector3(2 * L, 0, 0), Vector3(L, 0, 0)}});
     const unsigned int tip_0 = vertex(*pair, 0, n), tip_1 = vertex(*pair, 1, n);
     pair->add_element_family(std::make_unique<BondingConstraintFamily>(
-      *pair, std::vector<Bond>{{tip_0, tip_1, Vector3::Zero(), "tips"}}));
+      *pair,
+      std::vector<Bond>{{tip_0, tip_1, Vector3::Zero(), "tips"}}));
     pair->add_point_force(tip_0, Vector3(0, 0, -P));
     const VectorType u_pair = solve(*pair, 1);
 
@@ -184,5 +189,81 @@ namespace
     for (const unsigned int tip : {tip_0, tip_1})
       EXPECT_NEAR(displacement(*pair, u_pair, tip)[2] / w_single, 1, 1e-6);
     EXPECT_NEAR(bond_force(*pair, u_pair, tip_0)[2] / (P / 2), 1, 1e-6);
+  }
+
+  /// The free motions (describe_free_motions()) of a rod (0,0,0)-(1,0,0)-
+  /// (1,1,0) without supports, bonded at the vertices of @p bonds (index
+  /// along the rod) to their own points.
+  std::string
+  free_motions_of_bonded_corner(const std::vector<unsigned int> &bonds)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod({Vector3(0, 0, 0),
+                      Vector3(0.5, 0, 0),
+                      Vector3(1, 0, 0),
+                      Vector3(1, 0.5, 0),
+                      Vector3(1, 1, 0)},
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->create_triangulation();
+    RodModel          model(std::move(network),
+                   {std::make_shared<LinearElasticRod>(
+                     RodStiffness{EA, EI, EI, GJ})});
+    std::vector<Bond> list;
+    for (const unsigned int k : bonds)
+      list.push_back({vertex(model, 0, k),
+                      {},
+                      model.network().vertex(vertex(model, 0, k)),
+                      ""});
+    model.add_element_family(
+      std::make_unique<BondingConstraintFamily>(model, list));
+    model.finalize();
+    return describe_free_motions(model, model.create_vector());
+  }
+
+  TEST(BondingConstraints, BondsHoldLikeSupportsInTheFreeMotionCheck)
+  {
+    EXPECT_EQ(free_motions_of_bonded_corner({0, 2, 4}), "");
+    const std::string two = free_motions_of_bonded_corner({0, 4});
+    EXPECT_NE(two.find("can rotate about the axis through (0.5, 0.5, 0) "
+                       "along (0.707, 0.707, 0)"),
+              std::string::npos)
+      << two;
+    EXPECT_EQ(two.find("translate"), std::string::npos) << two;
+  }
+
+  TEST(BondingConstraints, RodsBondedToEachOtherMoveTogether)
+  {
+    auto network = std::make_unique<RodNetwork>();
+    network->add_rod(generators::straight(Vector3::Zero(), Vector3(L, 0, 0), n),
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->add_rod(generators::straight(Vector3(L, 0, 0),
+                                          Vector3(L, L, 0),
+                                          n),
+                     false,
+                     Vector3::UnitZ(),
+                     "simple");
+    network->create_triangulation();
+    RodModel free_pair(std::move(network),
+                       std::vector<std::shared_ptr<const RodMaterial>>(
+                         2,
+                         std::make_shared<LinearElasticRod>(
+                           RodStiffness{EA, EI, EI, GJ})));
+    free_pair.add_element_family(std::make_unique<BondingConstraintFamily>(
+      free_pair,
+      std::vector<Bond>{{vertex(free_pair, 0, n),
+                         vertex(free_pair, 1, 0),
+                         Vector3::Zero(),
+                         ""}}));
+    free_pair.finalize();
+    const std::string message =
+      describe_free_motions(free_pair, free_pair.create_vector());
+    EXPECT_NE(message.find("rods 0 and 1 can translate in any direction and "
+                           "rotate about any axis"),
+              std::string::npos)
+      << message;
   }
 } // namespace
