@@ -71,11 +71,9 @@ namespace rodnet
   bool
   RodModel::potential_follows_load_factor() const
   {
-    const bool ramped_loads =
-      f_ext.linfty_norm() != 0 ||
-      std::any_of(moments.begin(), moments.end(), [](const AxisLoad &m) {
-        return m.ramp == LoadRamp::ramped && m.value != 0;
-      });
+    // Applied moments and the weight of bodies off their vertex are
+    // families that say whether they follow it.
+    const bool ramped_loads = f_ext.linfty_norm() != 0;
     const bool ramped_shape =
       std::any_of(given_materials.begin(),
                   given_materials.end(),

@@ -17,12 +17,12 @@
 #include <deal.II/base/mpi.h>
 
 #include <base/mpi_session.h>
-#include <io/interrupt.h>
+#include <app/interrupt.h>
 #include <io/output_directory.h>
 #include <io/scene.h>
 #include <io/scene_help.h>
-#include <io/scene_runner.h>
-#include <io/scene_study.h>
+#include <app/scene_runner.h>
+#include <app/scene_study.h>
 #include <materials/input_limits.h>
 
 #include <cmath>

@@ -3,6 +3,7 @@
 
 #include <core/element_family.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace rodnet
@@ -54,6 +55,17 @@ namespace rodnet
              const StencilState &state,
              Derivatives         derivatives,
              LocalContribution  &local) const override;
+
+    /// Whether a moment is ramped (not held) and not zero.
+    bool
+    follows_load_factor() const override
+    {
+      return std::any_of(moments.begin(),
+                         moments.end(),
+                         [](const AxisMoment &m) {
+                           return !m.held && m.moment != 0;
+                         });
+    }
 
   private:
     const DofLayout        &layout;

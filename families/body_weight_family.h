@@ -60,6 +60,13 @@ namespace rodnet
              Derivatives         derivatives,
              LocalContribution  &local) const override;
 
+    /// The weight is a dead load ramped with the load factor.
+    bool
+    follows_load_factor() const override
+    {
+      return !weights.empty();
+    }
+
   private:
     const DofLayout        &layout;
     std::vector<BodyWeight> weights;

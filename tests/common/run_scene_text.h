@@ -5,7 +5,7 @@
 
 #include <io/scene.h>
 #include <io/scene_file.h>
-#include <io/scene_runner.h>
+#include <app/scene_runner.h>
 
 #include <cstdlib>
 #include <fstream>

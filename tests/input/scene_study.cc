@@ -1,12 +1,12 @@
 // Several scenes and parameter sweeps in one rodnet-run process
-// (io/scene_study.h): the sweep syntax, each run's own setting against the
+// (app/scene_study.h): the sweep syntax, each run's own setting against the
 // cantilever formula w = P L^3 / (3 EI), the summary table, and the
 // refusals (every scene is checked before the first run).
 #include <common/run_driver.h>
 #include <common/scene_text.h>
 #include <io/csv_table.h>
 #include <io/scene_help.h>
-#include <io/scene_study.h>
+#include <app/scene_study.h>
 
 #include <filesystem>
 #include <gtest/gtest.h>

@@ -8,7 +8,7 @@
 
 #include <common/scene_text.h>
 #include <io/scene.h>
-#include <io/scene_runner.h>
+#include <app/scene_runner.h>
 #include <solvers/tangent_factorization.h>
 
 #include <fstream>

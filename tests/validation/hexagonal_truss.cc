@@ -9,7 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <io/scene.h>
-#include <io/scene_runner.h>
+#include <app/scene_runner.h>
 
 #include <algorithm>
 #include <cmath>

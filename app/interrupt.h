@@ -1,5 +1,5 @@
-#ifndef RODNET_IO_INTERRUPT_H
-#define RODNET_IO_INTERRUPT_H
+#ifndef RODNET_APP_INTERRUPT_H
+#define RODNET_APP_INTERRUPT_H
 
 #include <stdexcept>
 

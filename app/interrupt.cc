@@ -1,4 +1,4 @@
-#include <io/interrupt.h>
+#include <app/interrupt.h>
 
 #include <csignal>
 #include <string>

@@ -1,12 +1,12 @@
 #include <deal.II/base/timer.h>
 
-#include <io/interrupt.h>
+#include <app/interrupt.h>
+#include <app/scene_runner.h>
+#include <app/scene_study.h>
 #include <io/output_directory.h>
 #include <io/probe_plot.h>
 #include <io/scene_file.h>
 #include <io/scene_help.h>
-#include <io/scene_runner.h>
-#include <io/scene_study.h>
 
 #include <algorithm>
 #include <cctype>
@@ -412,7 +412,7 @@ namespace rodnet
   std::vector<StudyRun>
   sweep_runs(const std::string &scene_file, const Sweep &sweep)
   {
-    const std::string entry_name = split(sweep.entry, '/').back();
+    const std::string     entry_name = split(sweep.entry, '/').back();
     std::vector<StudyRun> runs;
     for (const std::string &value : sweep.values)
       {

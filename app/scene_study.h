@@ -1,5 +1,5 @@
-#ifndef RODNET_IO_SCENE_STUDY_H
-#define RODNET_IO_SCENE_STUDY_H
+#ifndef RODNET_APP_SCENE_STUDY_H
+#define RODNET_APP_SCENE_STUDY_H
 
 #include <io/scene.h>
 
