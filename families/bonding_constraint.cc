@@ -1,12 +1,12 @@
 #include <deal.II/base/utilities.h>
 
 #include <core/rod_model.h>
+#include <families/bonding_constraint.h>
+#include <families/inextensibility_family.h>
 #include <io/vertex_selector.h>
 
 #include <algorithm>
 #include <cmath>
-#include <families/bonding_constraint.h>
-#include <families/inextensibility_family.h>
 #include <stdexcept>
 
 namespace rodnet
@@ -82,6 +82,10 @@ namespace rodnet
           }
         else
           data.closed_gap = bond.point - network.vertex(bond.vertex);
+        if (!data.closed_gap.allFinite())
+          throw std::invalid_argument("bond \"" + bond.name +
+                                      "\": the point is not finite");
+        refuse_repeated(data);
         if (!(scale > 0 && std::isfinite(scale)))
           throw std::invalid_argument(
             "bond \"" + bond.name +
@@ -89,6 +93,28 @@ namespace rodnet
             "to scale the constraint");
         data.scale = scale;
         bonds.push_back(std::move(data));
+      }
+  }
+
+
+  void
+  BondingConstraintFamily::refuse_repeated(const BondData &data) const
+  {
+    // Two bonds of one vertex to points, or of one pair of vertices, give
+    // equal constraint rows: a singular KKT tangent.
+    for (const BondData &earlier : bonds)
+      {
+        const bool same_pair =
+          data.bond.other && earlier.bond.other &&
+          ((earlier.dofs_a == data.dofs_a && earlier.dofs_b == data.dofs_b) ||
+           (earlier.dofs_a == data.dofs_b && earlier.dofs_b == data.dofs_a));
+        const bool same_point = !data.bond.other && !earlier.bond.other &&
+                                earlier.dofs_a == data.dofs_a;
+        if (same_pair || same_point)
+          throw std::invalid_argument(
+            "bond \"" + data.bond.name + "\" ties what bond \"" +
+            earlier.bond.name +
+            "\" ties already (its constraints would be redundant)");
       }
   }
 

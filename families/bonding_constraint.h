@@ -45,8 +45,9 @@ namespace rodnet
   class BondingConstraintFamily : public ElementFamily
   {
   public:
-    /// Throws std::invalid_argument for a bond of a vertex to itself or
-    /// at a vertex whose rods have no bending rigidity.
+    /// Throws std::invalid_argument for a bond of a vertex to itself, to a
+    /// point that is not finite, a bond repeated, or one at a vertex whose
+    /// rods have no bending rigidity.
     BondingConstraintFamily(const RodModel &model, std::vector<Bond> bonds);
 
     std::string
@@ -96,6 +97,11 @@ namespace rodnet
       Vector3                         closed_gap;
       double                          scale;
     };
+
+    /// Throws std::invalid_argument where @p data ties what an earlier
+    /// bond ties (a vertex to a point twice, a pair of vertices twice).
+    void
+    refuse_repeated(const BondData &data) const;
 
     std::vector<BondData> bonds;
     global_dof_index      first_multiplier = 0;

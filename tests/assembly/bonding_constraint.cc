@@ -9,11 +9,11 @@
 #include <common/assembled_derivatives.h>
 #include <common/welded_knee.h>
 #include <core/rod_model.h>
+#include <families/bonding_constraint.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/dof_roles.h>
 
 #include <algorithm>
-#include <families/bonding_constraint.h>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <random>
@@ -168,6 +168,22 @@ namespace
                 bonds_from_scene(*model, "0:end = 7:start");
               }).find("Bonding constraints/Bonds"),
               std::string::npos);
+
+    EXPECT_EQ(bond_refusal([&] {
+                bonds_from_scene(*model, "0:start = 1:end; 1:end = 0:start");
+              }),
+              "entry \"Bonding constraints/Bonds\": bond \"1:end = "
+              "0:start\" ties what bond \"0:start = 1:end\" ties already "
+              "(its constraints would be redundant)");
+    EXPECT_NE(bond_refusal([&] {
+                bonds_from_scene(*model,
+                                 "0:start = 1, 0, 0; 0:start = 2, 0, 0");
+              }).find("ties what bond \"0:start = 1, 0, 0\" ties already"),
+              std::string::npos);
+    EXPECT_EQ(
+      bond_refusal([&] { bonds_from_scene(*model, "0:start = nan, 0, 0"); }),
+      "entry \"Bonding constraints/Bonds\": bond \"0:start = nan, 0, 0\": "
+      "the point is not finite");
 
     // A bond at a clamped vertex would leave its multipliers' rows empty.
     model->add_element_family(bonds_from_scene(*model, "0:start = 0, 0, 1"));
