@@ -44,7 +44,7 @@
 #include <io/scene.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/tangent_factorization.h>
+#include <solvers/newton/tangent_factorization.h>
 
 #include <bench/options.h>
 #include <bench/timing.h>

@@ -9,8 +9,8 @@
 #include <core/rod_model.h>
 #include <io/probes.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/dynamic_relaxation.h>
-#include <solvers/static_solver.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

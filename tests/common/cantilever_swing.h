@@ -10,7 +10,7 @@
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <io/gmsh_network.h>
 #include <io/network_file.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <fstream>

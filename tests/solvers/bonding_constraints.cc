@@ -18,7 +18,7 @@
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/free_motions.h>
+#include <solvers/checks/free_motions.h>
 
 #include <algorithm>
 #include <families/bonding_constraint.h>

@@ -1,4 +1,4 @@
-// GyroscopicCoupling (solvers/gyroscopic_coupling.h): the force of the
+// GyroscopicCoupling (solvers/time/gyroscopic_coupling.h): the force of the
 // sections' spin on the centreline over a midpoint step has no resultant
 // and does no work; when the segments keep their lengths its moment is
 // minus the turn of the spin, sum_k pbar_k (t_k - t_k,n) / h, formed here
@@ -9,8 +9,8 @@
 #include <core/rod_graph.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/dof_roles.h>
-#include <solvers/gyroscopic_coupling.h>
+#include <solvers/checks/dof_roles.h>
+#include <solvers/time/gyroscopic_coupling.h>
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -15,7 +15,7 @@
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <atomic>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <common/elastica_exact.h>
 #include <core/dr_model.h>
 #include <core/rod_generators.h>
-#include <solvers/dynamic_relaxation.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
 
 #include <chrono>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
