@@ -39,8 +39,8 @@
 // doc/performance.md).
 #include <deal.II/base/parameter_handler.h>
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <io/scene.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>

@@ -6,8 +6,8 @@
 
 #include <core/dr_model.h>
 #include <core/mass_matrix.h>
-#include <core/rod_graph.h>
 #include <core/rod_model.h>
+#include <geometry/rod_graph.h>
 #include <io/entry_tree.h>
 #include <io/natural_shape_ramp.h>
 #include <io/network_picture.h>

@@ -9,8 +9,8 @@
 // the drag on eta (DevelopableRibbonFamily::drag()), which the test adds to
 // the finite differences.
 #include <common/assembled_derivatives.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/wunderlich_ribbon.h>
 
 #include <families/developable_ribbon_family.h>

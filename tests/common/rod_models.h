@@ -1,8 +1,8 @@
 #ifndef RODNET_TESTS_ROD_MODELS_H
 #define RODNET_TESTS_ROD_MODELS_H
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/statics/static_solver.h>
 

@@ -5,9 +5,9 @@
 // from the tangents and the twist rows of M; and its Jacobian is that of
 // central differences of the force.
 #include <core/mass_matrix.h>
-#include <core/network_generators.h>
-#include <core/rod_graph.h>
 #include <core/rod_model.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_graph.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/checks/dof_roles.h>
 #include <solvers/time/gyroscopic_coupling.h>

@@ -19,7 +19,7 @@
 // - rho_inf = 1 is Newmark's average acceleration step for step.
 // r is read from a sequence x_n = Re(c lambda^n) as x_{n+1}^2 - x_n x_{n+2}
 // = |c|^2 r^{2n+2} sin^2 phi, which decays as r^{2n} whatever the phase.
-#include <core/rod_generators.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/time/time_integrator.h>
 

@@ -4,8 +4,8 @@
 // right-angle frame of Fig. 3a and the windmill of Fig. 3b.
 #include <common/junction_examples.h>
 #include <common/solve_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 #include <solvers/statics/static_solver.h>
 

@@ -1,5 +1,5 @@
-#ifndef RODNET_CORE_ROD_GRAPH_H
-#define RODNET_CORE_ROD_GRAPH_H
+#ifndef RODNET_GEOMETRY_ROD_GRAPH_H
+#define RODNET_GEOMETRY_ROD_GRAPH_H
 
 #include <core/rod_network.h>
 

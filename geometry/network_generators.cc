@@ -1,5 +1,5 @@
-#include <core/network_generators.h>
 #include <core/require_positive.h>
+#include <geometry/network_generators.h>
 
 #include <cmath>
 #include <map>

@@ -1,5 +1,5 @@
-#include <core/rod_generators.h>
-#include <core/rod_graph.h>
+#include <geometry/rod_generators.h>
+#include <geometry/rod_graph.h>
 
 #include <algorithm>
 #include <iomanip>

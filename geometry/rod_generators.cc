@@ -1,5 +1,5 @@
-#include <core/rod_generators.h>
 #include <core/require_positive.h>
+#include <geometry/rod_generators.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#ifndef RODNET_CORE_NETWORK_GENERATORS_H
-#define RODNET_CORE_NETWORK_GENERATORS_H
+#ifndef RODNET_GEOMETRY_NETWORK_GENERATORS_H
+#define RODNET_GEOMETRY_NETWORK_GENERATORS_H
 
-#include <core/rod_graph.h>
+#include <geometry/rod_graph.h>
 
 namespace rodnet
 {
