@@ -47,6 +47,14 @@ namespace rodnet
     /// How messages name it: "bond 0 (0:end = 1:start), its x force".
     std::string       label;
     DeclaredDofOutput output;
+    /**
+     * What finalize() does with a multiplier whose stencils see held DoFs
+     * only (a row of zeros in the tangent): hold it at zero (true: the
+     * supports keep its constraint already, as they keep the length of a
+     * segment between two clamped vertices) or refuse the model, naming
+     * the label (false: the user asked for a constraint that cannot act).
+     */
+    bool held_where_supports_hold = false;
   };
 
   /// The DoFs a family declared, numbered from @p first on.

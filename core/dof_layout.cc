@@ -26,8 +26,6 @@ namespace rodnet
         add_hinge_stencils(r, rods[r], handle_inside[r]);
       }
     add_junction_stencils(network);
-    Assert(n_numbered_ribbons == n_ribbon_hinges_,
-           dealii::ExcInternalError());
   }
 
 
@@ -66,7 +64,6 @@ namespace rodnet
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (network.junctions()[j].has_rotation())
         rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
-    number_multipliers(network);
 
     // x_end = x_junction for every other rod end at a junction; the
     // stencils then take the junction vertex's DoFs for the end.
@@ -87,35 +84,6 @@ namespace rodnet
           vertex_dofs[v] = vertex_dofs[junction.vertex];
         }
     junction_identities.close();
-  }
-
-
-  void
-  DofLayout::number_multipliers(const RodNetwork &network)
-  {
-    multiplier_dofs.assign(network.triangulation().n_active_cells(),
-                           dealii::numbers::invalid_dof_index);
-    const global_dof_index first = handler.n_dofs() + 4 * n_rotations;
-    for (const Rod &rod : network.rods())
-      if (rod.inextensible)
-        for (const unsigned int cell : rod.segments)
-          multiplier_dofs[cell] = first + n_multiplier_dofs++;
-
-    // The hinges of developable rods, as add_hinge_stencils() makes them:
-    // every vertex of a closed rod, the inner ones of an open rod, but
-    // those of handles inside it.
-    std::vector<unsigned int> handles(network.rods().size(), 0);
-    for (const Junction &junction : network.junctions())
-      if (junction.interior)
-        ++handles[junction.interior->rod];
-    for (unsigned int r = 0; r < network.rods().size(); ++r)
-      {
-        const Rod &rod = network.rods()[r];
-        if (!rod.developable)
-          continue;
-        const unsigned int n = rod.vertices.size();
-        n_ribbon_hinges_ += (rod.closed ? n : (n > 2 ? n - 2 : 0)) - handles[r];
-      }
   }
 
 
@@ -171,10 +139,6 @@ namespace rodnet
         h.dofs[3] = twist_dofs[h.segment_prev];
         h.dofs[7] = twist_dofs[h.segment_next];
         hinge_list.push_back(h);
-        ribbon_dofs.push_back(dealii::numbers::invalid_dof_index);
-        if (rod.developable)
-          ribbon_dofs.back() = handler.n_dofs() + 4 * n_rotations +
-                               n_multiplier_dofs + 3 * n_numbered_ribbons++;
       }
   }
 

@@ -80,14 +80,12 @@ namespace rodnet
    * Quaternion DoFs store q - (1, 0, 0, 0), so that the zero vector is the
    * reference configuration.
    *
-   * After the quaternions come the Lagrange multipliers of inextensible rods
-   * (Rod::inextensible), one per segment of such a rod, in the order of the
-   * rods and of their segments (families/inextensibility_family.h); a
-   * network without inextensible rods has none. Last come three DoFs per
-   * hinge of each developable ribbon (ribbon_dof()): its generatrix slope
-   * and the multipliers of its two developability constraints. After them
-   * come the blocks that element families declare for themselves
-   * (add_block(), ElementFamily::own_dofs()), in the order they are added.
+   * After the quaternions come the blocks that element families declare
+   * for themselves (add_block(), ElementFamily::own_dofs()), in the order
+   * the families are added: the multipliers of inextensible rods
+   * (families/inextensibility_family.h), the developable ribbons' slopes
+   * and multipliers (families/developable_ribbon_family.h), a user's
+   * bonding constraints (families/bonding_constraint.h).
    */
   class DofLayout
   {
@@ -100,13 +98,12 @@ namespace rodnet
       return handler;
     }
 
-    /// All DoFs: the DoFHandler's, the quaternion block, the multipliers,
-    /// the ribbons' DoFs and the families' declared blocks.
+    /// All DoFs: the DoFHandler's, the quaternion block and the families'
+    /// declared blocks.
     global_dof_index
     n_dofs() const
     {
-      return handler.n_dofs() + 4 * n_rotations + n_multiplier_dofs +
-             3 * n_ribbon_hinges_ + n_declared_dofs;
+      return handler.n_dofs() + 4 * n_rotations + n_declared_dofs;
     }
 
     /**
@@ -122,53 +119,6 @@ namespace rodnet
     declared_blocks() const
     {
       return blocks;
-    }
-
-    /// Number of Lagrange multipliers (segments of inextensible rods).
-    global_dof_index
-    n_multipliers() const
-    {
-      return n_multiplier_dofs;
-    }
-
-    /// Whether the segment on active cell @p cell has a multiplier.
-    bool
-    has_multiplier(unsigned int cell) const
-    {
-      return multiplier_dofs[cell] != dealii::numbers::invalid_dof_index;
-    }
-
-    /// The multiplier DoF of the segment on @p cell (has_multiplier()).
-    global_dof_index
-    multiplier_dof(unsigned int cell) const
-    {
-      return multiplier_dofs[cell];
-    }
-
-    /// Whether hinge @p h (index into hinges()) is one of a developable
-    /// ribbon (Rod::developable), with ribbon DoFs.
-    bool
-    has_ribbon_dofs(unsigned int h) const
-    {
-      return ribbon_dofs[h] != dealii::numbers::invalid_dof_index;
-    }
-
-    /**
-     * Ribbon DoF @p c of hinge @p h (has_ribbon_dofs()): 0 the generatrix
-     * slope eta, 1 and 2 the multipliers of the developability constraints
-     * kappa_2 = 0 and kappa_3 = eta kappa_1 (Korner et al. eq. 4.6).
-     */
-    global_dof_index
-    ribbon_dof(unsigned int h, unsigned int c) const
-    {
-      return ribbon_dofs[h] + c;
-    }
-
-    /// Number of hinges with ribbon DoFs.
-    global_dof_index
-    n_ribbon_hinges() const
-    {
-      return n_ribbon_hinges_;
     }
 
     /// DoFs of the DoFHandler (positions and twists) alone.
@@ -249,12 +199,6 @@ namespace rodnet
     void
     share_junction_vertices(const RodNetwork &network);
 
-    /// One multiplier DoF per segment of every inextensible rod, after the
-    /// quaternions, and room for three ribbon DoFs per hinge of every
-    /// developable rod after them (numbered by add_hinge_stencils()).
-    void
-    number_multipliers(const RodNetwork &network);
-
     /// The segment stencils of rod @p r.
     void
     add_segment_stencils(unsigned int r, const Rod &rod);
@@ -288,17 +232,10 @@ namespace rodnet
     std::vector<SegmentStencil>                  segment_list;
     std::vector<JunctionStencil>                 junction_list;
     /// First quaternion DoF per junction, invalid where it has none.
-    std::vector<global_dof_index> rotation_dofs;
-    unsigned int                  n_rotations = 0;
-    /// Multiplier DoF per cell, invalid where the segment has none.
-    std::vector<global_dof_index>     multiplier_dofs;
-    global_dof_index                  n_multiplier_dofs = 0;
-    /// First ribbon DoF per hinge, invalid where it has none.
-    std::vector<global_dof_index> ribbon_dofs;
-    global_dof_index              n_ribbon_hinges_ = 0;
-    global_dof_index              n_numbered_ribbons = 0;
-    std::vector<DofBlock>         blocks;
-    global_dof_index              n_declared_dofs = 0;
+    std::vector<global_dof_index>     rotation_dofs;
+    unsigned int                      n_rotations = 0;
+    std::vector<DofBlock>             blocks;
+    global_dof_index                  n_declared_dofs = 0;
     dealii::AffineConstraints<double> junction_identities;
   };
 } // namespace rodnet

@@ -124,8 +124,8 @@ namespace rodnet
      * RodModel::multiplier_dofs()) and the output read the declaration, so
      * nothing outside the family's files knows it. A multiplier whose
      * stencils couple it to held DoFs only would leave the tangent singular:
-     * finalize() refuses it, naming its label. The defaults are a family
-     * without DoFs of its own.
+     * finalize() holds it at zero or refuses it, naming its label, as the
+     * declaration says. The defaults are a family without DoFs of its own.
      */
     /// @{
     /// The DoFs the family declares for itself.
@@ -141,6 +141,16 @@ namespace rodnet
     number_own_dofs(const global_dof_index first)
     {
       (void)first;
+    }
+
+    /// Which of the declared DoFs the model holds at zero (called once by
+    /// finalize(), one flag per DoF of own_dofs(); see
+    /// DeclaredDof::held_where_supports_hold): a family may leave out the
+    /// stencils that then carry nothing.
+    virtual void
+    hold_own_dofs(const std::vector<bool> &held)
+    {
+      (void)held;
     }
     /// @}
 

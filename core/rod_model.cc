@@ -4,12 +4,12 @@
 
 #include <core/rod_model.h>
 #include <core/stencil_coloring.h>
-
 #include <families/axis_moment_family.h>
 #include <families/developable_ribbon_family.h>
 #include <families/hinge_family.h>
 #include <families/junction_family.h>
 #include <families/stretch_family.h>
+
 #include <map>
 #include <stdexcept>
 
@@ -59,14 +59,35 @@ namespace rodnet
                                       *layout_,
                                       raw_pointers(kernels),
                                       raw_pointers(junction_kernels));
-    families.push_back(
-      std::make_unique<HingeFamily>(*layout_, kernels, materials));
-    families.push_back(
-      std::make_unique<JunctionFamily>(*layout_, junction_kernels, materials));
-    families.push_back(std::make_unique<StretchFamily>(*layout_, materials));
-
-    history = InternalVariables(families);
+    add_built_in_families();
     add_junction_supports();
+  }
+
+  void
+  RodModel::add_built_in_families()
+  {
+    add_element_family(
+      std::make_unique<HingeFamily>(*layout_, kernels, materials));
+    add_element_family(
+      std::make_unique<JunctionFamily>(*layout_, junction_kernels, materials));
+    add_element_family(
+      std::make_unique<StretchFamily>(*layout_, *network_, materials));
+    if (InextensibilityFamily::applies_to(*network_))
+      {
+        auto family     = std::make_unique<InextensibilityFamily>(*layout_,
+                                                              *network_,
+                                                              *configuration_,
+                                                              materials);
+        inextensibility = family.get();
+        add_element_family(std::move(family));
+      }
+    if (DevelopableRibbonFamily::applies_to(*network_))
+      add_element_family(
+        std::make_unique<DevelopableRibbonFamily>(*layout_,
+                                                  *network_,
+                                                  *configuration_,
+                                                  kernels,
+                                                  materials));
   }
 
   void
@@ -173,6 +194,7 @@ namespace rodnet
       {
         family->number_own_dofs(
           layout_->add_block(family->name(), std::move(own)));
+        block_owners.push_back(family.get());
         owned_dofs = dealii::complete_index_set(layout_->n_dofs());
       }
     families.push_back(std::move(family));
@@ -253,8 +275,6 @@ namespace rodnet
     for (unsigned int cell = 0; cell < twist_seen.size(); ++cell)
       if (!twist_seen[cell])
         fixed_dofs.emplace(layout_->twist_dof(cell), 0.0);
-    add_inextensibility();
-    add_developable_ribbons();
     collect_declared_multipliers();
     make_constraints();
 
@@ -293,76 +313,20 @@ namespace rodnet
 
 
   void
-  RodModel::add_inextensibility()
-  {
-    if (layout_->n_multipliers() == 0)
-      return;
-    // A segment between two held vertices keeps its length by the
-    // supports; a multiplier there would see no free DoF.
-    const auto held = [&](const unsigned int v) {
-      for (unsigned int c = 0; c < 3; ++c)
-        if (fixed_dofs.count(layout_->vertex_dof(v, c)) == 0)
-          return false;
-      return true;
-    };
-    std::vector<bool> skipped(network_->triangulation().n_active_cells(),
-                              false);
-    for (const SegmentStencil &segment : layout_->segments())
-      if (layout_->has_multiplier(segment.cell))
-        {
-          const global_dof_index dof = layout_->multiplier_dof(segment.cell);
-          if (held(segment.vertices[0]) && held(segment.vertices[1]))
-            {
-              skipped[segment.cell] = true;
-              fixed_dofs[dof]       = 0.0;
-            }
-          else
-            free_multipliers.push_back(dof);
-        }
-    auto family     = std::make_unique<InextensibilityFamily>(*layout_,
-                                                          *configuration_,
-                                                          materials,
-                                                          skipped);
-    inextensibility = family.get();
-    families.push_back(std::move(family));
-  }
-
-
-  void
-  RodModel::add_developable_ribbons()
-  {
-    if (layout_->n_ribbon_hinges() == 0)
-      return;
-    // A hinge whose DoFs are all held keeps its strains by the supports;
-    // its constraints would see no free DoF.
-    const auto &hinges = layout_->hinges();
-    for (unsigned int h = 0; h < hinges.size(); ++h)
-      if (layout_->has_ribbon_dofs(h))
-        {
-          bool held = true;
-          for (const global_dof_index d : hinges[h].dofs)
-            held = held && fixed_dofs.count(d) > 0;
-          for (unsigned int c = 1; c < 3; ++c)
-            if (held)
-              fixed_dofs[layout_->ribbon_dof(h, c)] = 0.0;
-            else
-              free_multipliers.push_back(layout_->ribbon_dof(h, c));
-        }
-    families.push_back(std::make_unique<DevelopableRibbonFamily>(
-      *layout_, *network_, *configuration_, kernels, materials));
-  }
-
-
-  void
   RodModel::collect_declared_multipliers()
   {
-    // A declared multiplier is free where a stencil couples it to a free
-    // DoF; one that sees held DoFs only has a zero row in the tangent.
+    // A declared multiplier is free where a stencil couples it to a DoF
+    // that is neither held nor declared; one that sees held DoFs only has
+    // a zero row in the tangent.
     std::map<global_dof_index, bool> sees_free;
+    std::vector<bool>                declared(layout_->n_dofs(), false);
     for (const DofBlock &block : layout_->declared_blocks())
       for (unsigned int i = 0; i < block.dofs.size(); ++i)
-        if (block.dofs[i].role == DofRole::multiplier)
-          sees_free[block.first + i] = false;
+        {
+          declared[block.first + i] = true;
+          if (block.dofs[i].role == DofRole::multiplier)
+            sees_free[block.first + i] = false;
+        }
     if (sees_free.empty())
       return;
     std::vector<global_dof_index> dofs;
@@ -372,33 +336,57 @@ namespace rodnet
           family->get_dofs(s, dofs);
           bool free = false;
           for (const global_dof_index d : dofs)
-            free = free || (fixed_dofs.count(d) == 0 && sees_free.count(d) == 0);
+            free = free || (fixed_dofs.count(d) == 0 && !declared[d]);
           for (const global_dof_index d : dofs)
             if (free && sees_free.count(d) > 0)
               sees_free[d] = true;
         }
-    for (const DofBlock &block : layout_->declared_blocks())
-      for (unsigned int i = 0; i < block.dofs.size(); ++i)
-        if (block.dofs[i].role == DofRole::multiplier)
+    hold_or_free_declared_multipliers(sees_free);
+  }
+
+
+  void
+  RodModel::hold_or_free_declared_multipliers(
+    const std::map<global_dof_index, bool> &sees_free)
+  {
+    const std::vector<DofBlock> &blocks = layout_->declared_blocks();
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        const DofBlock   &block = blocks[b];
+        std::vector<bool> held(block.dofs.size(), false);
+        for (unsigned int i = 0; i < block.dofs.size(); ++i)
           {
-            if (!sees_free[block.first + i])
+            const global_dof_index d   = block.first + i;
+            const DeclaredDof     &dof = block.dofs[i];
+            if (dof.role != DofRole::multiplier)
+              continue;
+            if (sees_free.at(d))
+              free_multipliers.push_back(d);
+            else if (dof.held_where_supports_hold)
+              {
+                held[i]       = true;
+                fixed_dofs[d] = 0.0;
+              }
+            else
               throw std::invalid_argument(
-                block.owner + ": " + block.dofs[i].label +
+                block.owner + ": " + dof.label +
                 " constrains DoFs that the supports hold already; remove "
                 "the constraint or the support");
-            free_multipliers.push_back(block.first + i);
           }
+        block_owners[b]->hold_own_dofs(held);
+      }
+    // The families that left out stencils keep no internal variables for
+    // them.
+    history = InternalVariables(families);
   }
 
 
   double
   RodModel::constraint_force(const unsigned int cell, const VectorType &u) const
   {
-    if (inextensibility == nullptr || !layout_->has_multiplier(cell))
+    if (inextensibility == nullptr)
       return 0.0;
-    return inextensibility->scale(cell) * u[layout_->multiplier_dof(cell)] *
-           configuration_->segment_length(DofValues(u), cell) /
-           configuration_->rest_length(cell);
+    return inextensibility->axial_force(cell, DofValues(u), *configuration_);
   }
 
 

@@ -24,11 +24,11 @@
 #include <core/stencil_coloring.h>
 #include <core/system_block.h>
 #include <elements/hinge_kernel.h>
+#include <families/inextensibility_family.h>
 #include <materials/rod_material.h>
 
 #include <array>
 #include <cmath>
-#include <families/inextensibility_family.h>
 #include <functional>
 #include <map>
 #include <memory>
@@ -529,9 +529,10 @@ namespace rodnet
     /// @name Inextensible rods (Rod::inextensible)
     /// @{
     /**
-     * The free Lagrange multiplier DoFs of the inextensible rods' segments
-     * and of the developable ribbons' hinges (DofLayout::ribbon_dof(), after
-     * finalize()): the constraint rows of the tangent, which is then
+     * The free Lagrange multiplier DoFs that families declared (after
+     * finalize(); ElementFamily::own_dofs()): of the inextensible rods'
+     * segments, the developable ribbons' hinges, the bonding constraints.
+     * They are the constraint rows of the tangent, which is then
      * the KKT matrix of the constrained minimization
      * (families/inextensibility_family.h). The stability counts and the
      * eigen-solvers work on the constraint manifold with them
@@ -926,9 +927,13 @@ namespace rodnet
     dealii::TrilinosWrappers::SparsityPattern sparsity;
     /// DoFs that no stencil of any family sees (make_sparsity_pattern()).
     std::vector<global_dof_index> unseen_dofs;
-    /// The inextensibility family, if any rod is inextensible (finalize()).
+    /// The inextensibility family, if any rod is inextensible (its axial
+    /// forces are written as the output's; add_built_in_families()).
     const InextensibilityFamily  *inextensibility = nullptr;
     std::vector<global_dof_index> free_multipliers;
+    /// The family that declared each of the layout's blocks
+    /// (DofLayout::declared_blocks()), in their order.
+    std::vector<ElementFamily *> block_owners;
 
     /// The axial force of every segment at @p u (output_fields()).
     OutputFields::Field
@@ -959,21 +964,26 @@ namespace rodnet
     VectorType
     force_vector(const DeadLoads &dead_loads) const;
 
-    /// Fixes the multipliers of inextensible segments whose ends are both
-    /// held and adds the inextensibility family for the others.
+    /// The families of every rod model (bending, junctions, stretching)
+    /// and those the network's rods ask for (inextensibility, developable
+    /// ribbons), each added like a user's (add_element_family()).
     void
-    add_inextensibility();
-
-    /// Adds the developable ribbon family if a rod is a developable ribbon
-    /// and fixes the multipliers of its hinges whose DoFs are all held.
-    void
-    add_developable_ribbons();
+    add_built_in_families();
 
     /// Adds the free multipliers of the families' declared blocks
-    /// (ElementFamily::own_dofs()) to multiplier_dofs(); throws
-    /// std::invalid_argument naming one whose stencils see held DoFs only.
+    /// (ElementFamily::own_dofs()) to multiplier_dofs(). One whose stencils
+    /// see held DoFs only is held at zero (and its family told,
+    /// ElementFamily::hold_own_dofs()) where its declaration allows it;
+    /// else throws std::invalid_argument naming it.
     void
     collect_declared_multipliers();
+
+    /// Holds at zero, or refuses, the declared multipliers that see no
+    /// free DoF (@p sees_free, per declared multiplier), adds the others to
+    /// multiplier_dofs() (collect_declared_multipliers()).
+    void
+    hold_or_free_declared_multipliers(
+      const std::map<global_dof_index, bool> &sees_free);
   };
 } // namespace rodnet
 

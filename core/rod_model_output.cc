@@ -111,7 +111,7 @@ namespace rodnet
     unsigned int        stencil = 0;
     for (const SegmentStencil &segment : layout_->segments())
       {
-        if (layout_->has_multiplier(segment.cell))
+        if (network_->rods()[segment.rod].inextensible)
           {
             force.values[segment.cell] = constraint_force(segment.cell, u);
             continue;
@@ -226,7 +226,7 @@ namespace rodnet
     unsigned int stencil  = 0;
     for (const SegmentStencil &segment : segments)
       {
-        if (layout_->has_multiplier(segment.cell))
+        if (network_->rods()[segment.rod].inextensible)
           continue;
         const auto names =
           materials[segment.rod]->segment_internal_variable_names();

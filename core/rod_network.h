@@ -68,7 +68,8 @@ namespace rodnet
     bool inextensible = false;
     /// Whether the rod is an inextensible developable ribbon (its material
     /// has a RodMaterial::developable_ribbon()): a generatrix slope DoF and
-    /// two constraint multipliers per hinge (DofLayout::ribbon_dof()).
+    /// two constraint multipliers per hinge
+    /// (families/developable_ribbon_family.h).
     bool developable = false;
     /// Of a closed rod: half turns of the undeformed material frame about
     /// the tangent once around the rod, spread evenly over its segments; an

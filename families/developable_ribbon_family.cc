@@ -1,5 +1,4 @@
 #include <core/configuration.h>
-
 #include <families/developable_ribbon_family.h>
 
 #include <stdexcept>
@@ -39,19 +38,29 @@ namespace rodnet
     /// In ribbon_hinge_at_vertex(): no ribbon hinge at the vertex.
     constexpr unsigned int no_ribbon_hinge = static_cast<unsigned int>(-1);
 
-    /// Per vertex of the network (@p n_vertices of them), the hinge of
-    /// @p layout with ribbon DoFs centred there, or no_ribbon_hinge: the
-    /// neighbours whose eta enter a hinge's eta'.
+    /// Per vertex of @p network, the hinge of @p layout on a developable
+    /// rod centred there, or no_ribbon_hinge: the neighbours whose eta
+    /// enter a hinge's eta'.
     std::vector<unsigned int>
-    ribbon_hinge_at_vertex(const DofLayout   &layout,
-                           const unsigned int n_vertices)
+    ribbon_hinge_at_vertex(const DofLayout &layout, const RodNetwork &network)
     {
       const auto               &hinges = layout.hinges();
-      std::vector<unsigned int> hinge_at(n_vertices, no_ribbon_hinge);
+      std::vector<unsigned int> hinge_at(network.n_vertices(), no_ribbon_hinge);
       for (unsigned int h = 0; h < hinges.size(); ++h)
-        if (layout.has_ribbon_dofs(h))
+        if (network.rods()[hinges[h].rod].developable)
           hinge_at[hinges[h].vertices[1]] = h;
       return hinge_at;
+    }
+
+    /// Per vertex of @p network, its index along its rod (for labels).
+    std::vector<unsigned int>
+    indices_along_rods(const RodNetwork &network)
+    {
+      std::vector<unsigned int> along(network.n_vertices(), 0);
+      for (const Rod &rod : network.rods())
+        for (unsigned int k = 0; k < rod.vertices.size(); ++k)
+          along[rod.vertices[k]] = k;
+      return along;
     }
 
     /**
@@ -182,15 +191,26 @@ namespace rodnet
   {
     const auto                     &hinges = layout.hinges();
     const std::vector<unsigned int> hinge_at =
-      ribbon_hinge_at_vertex(layout, network.n_vertices());
+      ribbon_hinge_at_vertex(layout, network);
+    const std::vector<unsigned int> along = indices_along_rods(network);
+    // The block: three DoFs per ribbon hinge, in the order of the hinges.
+    first_of_hinge.assign(hinges.size(), dealii::numbers::invalid_dof_index);
+    global_dof_index n_own = 0;
+    for (unsigned int h = 0; h < hinges.size(); ++h)
+      if (network.rods()[hinges[h].rod].developable)
+        {
+          first_of_hinge[h] = n_own;
+          n_own += 3;
+        }
     for (unsigned int h = 0; h < hinges.size(); ++h)
       {
-        if (!layout.has_ribbon_dofs(h))
+        if (first_of_hinge[h] == dealii::numbers::invalid_dof_index)
           continue;
         const HingeStencil &hinge = hinges[h];
         Stencil             stencil;
-        stencil.hinge = h;
-        stencil.law   = materials[hinge.rod]->developable_ribbon();
+        stencil.hinge     = h;
+        stencil.along_rod = along[hinge.vertices[1]];
+        stencil.law       = materials[hinge.rod]->developable_ribbon();
         if (stencil.law == nullptr)
           throw std::logic_error("rod " + std::to_string(hinge.rod) +
                                  " is developable, its material is not");
@@ -225,17 +245,17 @@ namespace rodnet
     const double next_sign = configuration.closes_with_a_flip(hinge) ? -1 : 1;
     const double l_prev    = configuration.rest_length(hinge.segment_prev);
     const double l_next    = configuration.rest_length(hinge.segment_next);
-    stencil.etas           = {layout.ribbon_dof(h, 0)};
+    stencil.etas           = {first_of_hinge[h]};
     stencil.difference     = {0.0};
     const double span = (has_prev ? l_prev : 0.0) + (has_next ? l_next : 0.0);
     if (has_prev)
       {
-        stencil.etas.push_back(layout.ribbon_dof(prev, 0));
+        stencil.etas.push_back(first_of_hinge[prev]);
         stencil.difference.push_back(-prev_sign / span);
       }
     if (has_next)
       {
-        stencil.etas.push_back(layout.ribbon_dof(next, 0));
+        stencil.etas.push_back(first_of_hinge[next]);
         stencil.difference.push_back(next_sign / span);
       }
     // One-sided at an end: the hinge's own eta takes the missing
@@ -263,8 +283,56 @@ namespace rodnet
     const auto    &hinge   = layout.hinges()[stencil.hinge].dofs;
     dofs.assign(hinge.begin(), hinge.end());
     dofs.insert(dofs.end(), stencil.etas.begin(), stencil.etas.end());
-    dofs.push_back(layout.ribbon_dof(stencil.hinge, 1));
-    dofs.push_back(layout.ribbon_dof(stencil.hinge, 2));
+    dofs.push_back(first_of_hinge[stencil.hinge] + 1);
+    dofs.push_back(first_of_hinge[stencil.hinge] + 2);
+  }
+
+
+  std::vector<DeclaredDof>
+  DevelopableRibbonFamily::own_dofs() const
+  {
+    std::vector<DeclaredDof> dofs;
+    for (const Stencil &stencil : stencils)
+      {
+        const HingeStencil &hinge = layout.hinges()[stencil.hinge];
+        const std::string   place = "rod " + std::to_string(hinge.rod) +
+                                  " vertex " +
+                                  std::to_string(stencil.along_rod);
+        DeclaredDof slope;
+        slope.role   = DofRole::shape;
+        slope.vertex = hinge.vertices[1];
+        slope.label  = place + " (its generatrix slope)";
+        dofs.push_back(slope);
+        DeclaredDof developability = slope;
+        developability.role        = DofRole::multiplier;
+        developability.label       = place + " (its developability)";
+        developability.held_where_supports_hold = true;
+        dofs.push_back(developability);
+        dofs.push_back(developability);
+      }
+    return dofs;
+  }
+
+
+  bool
+  DevelopableRibbonFamily::applies_to(const RodNetwork &network)
+  {
+    for (const Rod &rod : network.rods())
+      if (rod.developable)
+        return true;
+    return false;
+  }
+
+
+  void
+  DevelopableRibbonFamily::number_own_dofs(const global_dof_index first)
+  {
+    for (global_dof_index &start : first_of_hinge)
+      if (start != dealii::numbers::invalid_dof_index)
+        start += first;
+    for (Stencil &stencil : stencils)
+      for (global_dof_index &eta : stencil.etas)
+        eta += first;
   }
 
 
@@ -277,8 +345,8 @@ namespace rodnet
       eta_prime += stencil.difference[j] * state.u[stencil.etas[j]];
     return {state.u[stencil.etas[0]],
             eta_prime,
-            state.u[layout.ribbon_dof(stencil.hinge, 1)],
-            state.u[layout.ribbon_dof(stencil.hinge, 2)]};
+            state.u[first_of_hinge[stencil.hinge] + 1],
+            state.u[first_of_hinge[stencil.hinge] + 2]};
   }
 
 

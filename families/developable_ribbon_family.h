@@ -21,10 +21,13 @@ namespace rodnet
    * straight and flat when unstressed: natural strains are refused),
    * eta_i the generatrix slope DoF of the hinge, mu_2 and mu_3 the
    * multipliers of the developability constraints kappa_2 = 0,
-   * kappa_3 = eta kappa_1 (eq. 4.6; DofLayout::ribbon_dof()), E the
+   * kappa_3 = eta kappa_1 (eq. 4.6), E the
    * law's energy (eq. 4.7) and k = (D w) / l^2 a scale that makes the
-   * constraint rows forces (l the hinge's Voronoi length). The centerline's
-   * inextensibility is the InextensibilityFamily's.
+   * constraint rows forces (l the hinge's Voronoi length). eta_i, mu_2 and
+   * mu_3 are the family's own DoFs (own_dofs(): three per hinge of a
+   * developable rod, in the order of DofLayout::hinges()); a hinge whose
+   * DoFs the supports hold has its multipliers held at zero. The
+   * centerline's inextensibility is the InextensibilityFamily's.
    *
    * eta' is the central difference (eta_{i+1} - eta_{i-1}) / (2 l) of the
    * neighbouring hinges of the rod; at a hinge with one neighbour (the
@@ -80,6 +83,19 @@ namespace rodnet
              Derivatives         derivatives,
              LocalContribution  &local) const override;
 
+    /// Per ribbon hinge its slope eta (a shape DoF), then the multipliers
+    /// mu_2 and mu_3, labelled "rod 0 vertex 3 (its generatrix slope)" and
+    /// "rod 0 vertex 3 (its developability)".
+    std::vector<DeclaredDof>
+    own_dofs() const override;
+
+    void
+    number_own_dofs(global_dof_index first) override;
+
+    /// Whether any rod of @p network is a developable ribbon.
+    static bool
+    applies_to(const RodNetwork &network);
+
     /// The drag on the eta DoF of stencil @p s in the Hessian:
     /// drag_factor D w / l.
     double
@@ -91,7 +107,8 @@ namespace rodnet
   private:
     struct Stencil
     {
-      unsigned int hinge; ///< index into DofLayout::hinges()
+      unsigned int hinge;     ///< index into DofLayout::hinges()
+      unsigned int along_rod; ///< the hinge vertex's index along its rod
       /// The distinct eta DoFs: the hinge's, then its neighbours'.
       std::vector<global_dof_index> etas;
       /// eta' = sum_j difference[j] eta_DoF[j] (signs and lengths in).
@@ -122,6 +139,10 @@ namespace rodnet
     const DofLayout                                 &layout;
     const std::vector<std::unique_ptr<HingeKernel>> &kernels;
     std::vector<Stencil>                             stencils;
+    /// Per hinge of the layout, the index of its eta (mu_2 and mu_3
+    /// follow): in the block until number_own_dofs(), then global; invalid
+    /// for hinges of other rods.
+    std::vector<global_dof_index> first_of_hinge;
   };
 } // namespace rodnet
 

@@ -1,8 +1,7 @@
 #include <core/configuration.h>
 #include <elements/stretch_kernel.h>
-#include <materials/developable_ribbon_law.h>
-
 #include <families/inextensibility_family.h>
+#include <materials/developable_ribbon_law.h>
 
 namespace rodnet
 {
@@ -11,8 +10,7 @@ namespace rodnet
   {
     // A developable ribbon's hinges are priced by its law.
     if (const DevelopableRibbonLaw *law = material.developable_ribbon())
-      return law->bending_modulus() /
-             (rest_length * rest_length * rest_length);
+      return law->bending_modulus() / (rest_length * rest_length * rest_length);
     // The hinge's tangent at zero strain is the rigidity over the length.
     const MaterialResponse<3> response =
       material.hinge_energy(Eigen::Vector3d::Zero(), rest_length);
@@ -22,31 +20,86 @@ namespace rodnet
 
   InextensibilityFamily::InextensibilityFamily(
     const DofLayout                                       &layout,
+    const RodNetwork                                      &network,
     const Configuration                                   &configuration,
-    const std::vector<std::shared_ptr<const RodMaterial>> &materials,
-    const std::vector<bool>                               &skipped)
+    const std::vector<std::shared_ptr<const RodMaterial>> &materials)
       : layout(layout)
+      , stencil_of_cell(network.triangulation().n_active_cells(),
+                        dealii::numbers::invalid_unsigned_int)
   {
-    const auto &segments = layout.segments();
+    const auto  &segments = layout.segments();
+    unsigned int along    = 0;
     for (unsigned int s = 0; s < segments.size(); ++s)
       {
+        const unsigned int rod  = segments[s].rod;
         const unsigned int cell = segments[s].cell;
-        if (cell_scales.size() <= cell)
-          cell_scales.resize(cell + 1, 0.0);
-        if (!layout.has_multiplier(cell) || skipped[cell])
+        along = s > 0 && segments[s - 1].rod == rod ? along + 1 : 0;
+        if (!network.rods()[rod].inextensible)
           continue;
         const double scale =
-          inextensibility_scale(*materials[segments[s].rod],
+          inextensibility_scale(*materials[rod],
                                 configuration.rest_length(cell));
         if (!(scale > 0 && std::isfinite(scale)))
           throw std::invalid_argument(
-            "inextensible rod " + std::to_string(segments[s].rod) +
+            "inextensible rod " + std::to_string(rod) +
             ": its material has no positive bending rigidity to scale the "
             "inextensibility constraint of segment " +
             std::to_string(cell));
-        stencils.push_back({s, layout.multiplier_dof(cell), scale});
-        cell_scales[cell] = scale;
+        stencil_of_cell[cell] = stencils.size();
+        stencils.push_back({s, stencils.size(), scale, along});
       }
+  }
+
+
+  bool
+  InextensibilityFamily::applies_to(const RodNetwork &network)
+  {
+    for (const Rod &rod : network.rods())
+      if (rod.inextensible)
+        return true;
+    return false;
+  }
+
+
+  std::vector<DeclaredDof>
+  InextensibilityFamily::own_dofs() const
+  {
+    std::vector<DeclaredDof> dofs;
+    for (unsigned int t = 0; t < stencils.size(); ++t)
+      {
+        const SegmentStencil &segment = layout.segments()[stencils[t].segment];
+        DeclaredDof           dof;
+        dof.vertex = segment.vertices[0];
+        dof.label  = "rod " + std::to_string(segment.rod) + " segment " +
+                    std::to_string(stencils[t].along_rod) + " (its length)";
+        dof.held_where_supports_hold = true;
+        dofs.push_back(std::move(dof));
+      }
+    return dofs;
+  }
+
+
+  void
+  InextensibilityFamily::number_own_dofs(const global_dof_index first)
+  {
+    for (Stencil &stencil : stencils)
+      stencil.multiplier += first;
+  }
+
+
+  void
+  InextensibilityFamily::hold_own_dofs(const std::vector<bool> &held)
+  {
+    std::vector<Stencil> kept;
+    for (unsigned int t = 0; t < stencils.size(); ++t)
+      {
+        const unsigned int cell = layout.segments()[stencils[t].segment].cell;
+        stencil_of_cell[cell] =
+          held[t] ? dealii::numbers::invalid_unsigned_int : kept.size();
+        if (!held[t])
+          kept.push_back(stencils[t]);
+      }
+    stencils = std::move(kept);
   }
 
 
@@ -106,6 +159,23 @@ namespace rodnet
   double
   InextensibilityFamily::scale(const unsigned int cell) const
   {
-    return cell < cell_scales.size() ? cell_scales[cell] : 0.0;
+    return cell < stencil_of_cell.size() &&
+               stencil_of_cell[cell] != dealii::numbers::invalid_unsigned_int ?
+             stencils[stencil_of_cell[cell]].scale :
+             0.0;
+  }
+
+
+  double
+  InextensibilityFamily::axial_force(const unsigned int   cell,
+                                     const DofValues     &u,
+                                     const Configuration &configuration) const
+  {
+    const double k = scale(cell);
+    if (k == 0)
+      return 0.0;
+    return k * u[stencils[stencil_of_cell[cell]].multiplier] *
+           configuration.segment_length(u, cell) /
+           configuration.rest_length(cell);
   }
 } // namespace rodnet

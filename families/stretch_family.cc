@@ -1,17 +1,17 @@
 #include <elements/stretch_kernel.h>
-
 #include <families/stretch_family.h>
 
 namespace rodnet
 {
   StretchFamily::StretchFamily(
     const DofLayout                                       &layout,
+    const RodNetwork                                      &network,
     const std::vector<std::shared_ptr<const RodMaterial>> &materials)
       : layout(layout)
       , materials(materials)
   {
     for (unsigned int s = 0; s < layout.segments().size(); ++s)
-      if (!layout.has_multiplier(layout.segments()[s].cell))
+      if (!network.rods()[layout.segments()[s].rod].inextensible)
         segments.push_back(s);
   }
 

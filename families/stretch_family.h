@@ -14,16 +14,19 @@ namespace rodnet
    * segment (elements/stretch_kernel.h), less the eigenstrain of
    * activation fields (Configuration::segment_eigenstrain()), priced by its
    * rod's material. The
-   * segments of inextensible rods, which keep their length by a multiplier
-   * (DofLayout::has_multiplier()), store no energy and are left out.
+   * segments of inextensible rods (Rod::inextensible), which keep their
+   * length by a multiplier (InextensibilityFamily), store no energy and are
+   * left out.
    * Internal variables: the material's segment variables, per segment.
    */
   class StretchFamily : public ElementFamily
   {
   public:
-    /// Per rod: @p materials (must outlive the family).
+    /// The segments of the extensible rods of @p network; per rod:
+    /// @p materials (must outlive the family).
     StretchFamily(
       const DofLayout                                       &layout,
+      const RodNetwork                                      &network,
       const std::vector<std::shared_ptr<const RodMaterial>> &materials);
 
     std::string

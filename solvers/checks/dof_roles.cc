@@ -45,7 +45,7 @@ namespace rodnet
     kinds.assign(layout.n_dofs(), Kind::inert);
     owners.assign(layout.n_dofs(), 0);
     components.assign(layout.n_dofs(), 0);
-    at_vertex.assign(layout.n_dofs(), false);
+    declared.assign(layout.n_dofs(), nullptr);
     for (unsigned int v = 0; v < network.n_vertices(); ++v)
       for (unsigned int c = 0; c < 3; ++c)
         {
@@ -66,24 +66,6 @@ namespace rodnet
         if (seen[cell])
           kinds[layout.twist_dof(cell)] = Kind::twist;
       }
-    for (unsigned int cell = 0; cell < n_cells; ++cell)
-      if (layout.has_multiplier(cell))
-        {
-          kinds[layout.multiplier_dof(cell)]  = Kind::multiplier;
-          owners[layout.multiplier_dof(cell)] = cell;
-        }
-    // A ribbon hinge's generatrix slope, a shape DoF, and its constraints'
-    // multipliers belong to the hinge's vertex.
-    for (unsigned int h = 0; h < layout.hinges().size(); ++h)
-      if (layout.has_ribbon_dofs(h))
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            const global_dof_index d = layout.ribbon_dof(h, c);
-            kinds[d]                 = c == 0 ? Kind::shape : Kind::multiplier;
-            owners[d]                = layout.hinges()[h].vertices[1];
-            components[d]            = c;
-            at_vertex[d]             = true;
-          }
     mark_declared_dofs(layout);
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (layout.has_rotation_dofs(j))
@@ -106,11 +88,10 @@ namespace rodnet
       for (unsigned int i = 0; i < block.dofs.size(); ++i)
         {
           const global_dof_index d = block.first + i;
-          kinds[d]     = block.dofs[i].role == DofRole::shape ? Kind::shape :
-                                                                Kind::multiplier;
-          owners[d]    = block.dofs[i].vertex;
-          at_vertex[d] = true;
-          declared.emplace(d, &block.dofs[i]);
+          kinds[d]    = block.dofs[i].role == DofRole::shape ? Kind::shape :
+                                                               Kind::multiplier;
+          owners[d]   = block.dofs[i].vertex;
+          declared[d] = &block.dofs[i];
         }
   }
 
@@ -131,8 +112,8 @@ namespace rodnet
   DofRoles::describe(const global_dof_index dof) const
   {
     const RodNetwork &network = model.network();
-    if (const auto own = declared.find(dof); own != declared.end())
-      return own->second->label;
+    if (declared[dof] != nullptr)
+      return declared[dof]->label;
     switch (kinds[dof])
       {
         case Kind::quaternion:
@@ -156,20 +137,9 @@ namespace rodnet
           }
         default:
           {
-            if (at_vertex[dof])
-              {
-                const auto [r, k] = vertex_places[owners[dof]];
-                return "rod " + std::to_string(r) + " vertex " +
-                       std::to_string(k) +
-                       (kinds[dof] == Kind::shape ?
-                          " (its generatrix slope)" :
-                          " (its developability)");
-              }
             const auto [r, s] = cell_places[owners[dof]];
             return "rod " + std::to_string(r) + " segment " +
-                   std::to_string(s) +
-                   (kinds[dof] == Kind::multiplier ? " (its length)" :
-                                                     " (its twist)");
+                   std::to_string(s) + " (its twist)";
           }
       }
   }

@@ -3,7 +3,6 @@
 
 #include <core/solvable_model.h>
 
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,9 +42,8 @@ namespace rodnet
       return kinds[dof];
     }
 
-    /// The vertex (position DoFs, a ribbon hinge's DoFs), cell (twists,
-    /// multipliers of segments) or junction (quaternion components) DoF
-    /// @p dof belongs to.
+    /// The vertex (position DoFs, the DoFs that families declare), cell
+    /// (twists) or junction (quaternion components) DoF @p dof belongs to.
     unsigned int
     owner(const global_dof_index dof) const
     {
@@ -100,13 +98,11 @@ namespace rodnet
     std::vector<Kind>                                  kinds;
     std::vector<unsigned int>                          owners;
     std::vector<unsigned char>                         components;
-    /// Whether a DoF's owner is a vertex although it is no position (the
-    /// ribbon DoFs of a hinge).
-    std::vector<bool> at_vertex;
     std::vector<std::pair<unsigned int, unsigned int>> vertex_places;
     std::vector<std::pair<unsigned int, unsigned int>> cell_places;
-    /// The declarations of the families' own DoFs (their labels).
-    std::map<global_dof_index, const DeclaredDof *> declared;
+    /// Per DoF, its declaration if a family declared it (its label), else
+    /// null.
+    std::vector<const DeclaredDof *> declared;
   };
 } // namespace rodnet
 

@@ -9,11 +9,13 @@
 // the drag on eta (DevelopableRibbonFamily::drag()), which the test adds to
 // the finite differences.
 #include <common/assembled_derivatives.h>
+#include <common/ribbon_dofs.h>
 #include <core/rod_model.h>
+#include <families/developable_ribbon_family.h>
 #include <geometry/rod_generators.h>
 #include <materials/wunderlich_ribbon.h>
+#include <solvers/checks/dof_roles.h>
 
-#include <families/developable_ribbon_family.h>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -155,7 +157,7 @@ namespace
       u[i] += small(random);
     for (unsigned int h = 0; h < layout.hinges().size(); ++h)
       for (unsigned int c = 0; c < 3; ++c)
-        u[layout.ribbon_dof(h, c)] = 0.2 * unit(random);
+        u[rodnet::testing::ribbon_dof(model, h, c)] = 0.2 * unit(random);
     return u;
   }
 
@@ -163,7 +165,9 @@ namespace
   {
     const auto       model  = ribbon_model(GetParam());
     const DofLayout &layout = model->layout();
-    ASSERT_GT(layout.n_ribbon_hinges(), 0u);
+    ASSERT_GT(rodnet::testing::declared_block(*model, "developable ribbons")
+                .dofs.size(),
+              0u);
     const VectorType u = random_state(*model);
 
     // The drag on each eta: factor D w / l_v.
@@ -172,9 +176,9 @@ namespace
       (12 * (1 - constants.poisson_ratio * constants.poisson_ratio));
     std::vector<double> drag(u.size(), 0.0);
     for (unsigned int h = 0; h < layout.hinges().size(); ++h)
-      drag[layout.ribbon_dof(h, 0)] = DevelopableRibbonFamily::drag_factor * D *
-                                      constants.width /
-                                      model->configuration().voronoi_length(h);
+      drag[rodnet::testing::ribbon_dof(*model, h, 0)] =
+        DevelopableRibbonFamily::drag_factor * D * constants.width /
+        model->configuration().voronoi_length(h);
 
     const auto errors =
       rodnet::testing::assembled_derivative_errors(*model, u, 1.0, 1e-7, drag);
@@ -219,10 +223,12 @@ namespace
         MatrixType       k;
         model->initialize_matrix(k);
         model->assemble(u, 1.0, nullptr, &k, false);
-        const double across = std::abs(
-          k.el(layout.ribbon_dof(closing, 0), layout.ribbon_dof(next, 0)));
-        const double own = std::abs(
-          k.el(layout.ribbon_dof(closing, 0), layout.ribbon_dof(closing, 0)));
+        const double across =
+          std::abs(k.el(rodnet::testing::ribbon_dof(*model, closing, 0),
+                        rodnet::testing::ribbon_dof(*model, next, 0)));
+        const double own =
+          std::abs(k.el(rodnet::testing::ribbon_dof(*model, closing, 0),
+                        rodnet::testing::ribbon_dof(*model, closing, 0)));
         std::cout << "coupling " << coupling << ": across " << across
                   << ", own " << own << std::endl;
         if (coupling == 0)
@@ -259,9 +265,32 @@ namespace
     // 12 segments, 13 vertices, 11 hinges; 12 segment multipliers.
     const auto       model  = ribbon_model(Shape::open);
     const DofLayout &layout = model->layout();
-    EXPECT_EQ(layout.n_ribbon_hinges(), 11u);
-    EXPECT_EQ(layout.n_multipliers(), 12u);
+    EXPECT_EQ(rodnet::testing::declared_block(*model, "developable ribbons")
+                .dofs.size(),
+              33u);
+    EXPECT_EQ(
+      rodnet::testing::declared_block(*model, "inextensibility").dofs.size(),
+      12u);
     EXPECT_EQ(model->multiplier_dofs().size(), 12u + 22u);
     EXPECT_EQ(layout.n_dofs(), layout.n_field_dofs() + 12 + 33);
+    // The blocks follow the positions and twists (no junction here): the
+    // multipliers of the segments first, then the ribbon DoFs.
+    EXPECT_EQ(rodnet::testing::declared_block(*model, "inextensibility").first,
+              layout.n_field_dofs());
+    EXPECT_EQ(
+      rodnet::testing::declared_block(*model, "developable ribbons").first,
+      layout.n_field_dofs() + 12);
+    // Their roles and labels, as the solvers' messages give them.
+    const DofRoles roles(*model);
+    EXPECT_EQ(roles.kind(rodnet::testing::ribbon_dof(*model, 3, 0)),
+              DofRoles::Kind::shape);
+    EXPECT_EQ(roles.kind(rodnet::testing::ribbon_dof(*model, 3, 2)),
+              DofRoles::Kind::multiplier);
+    EXPECT_EQ(roles.describe(rodnet::testing::ribbon_dof(*model, 3, 0)),
+              "rod 0 vertex 4 (its generatrix slope)");
+    EXPECT_EQ(roles.describe(rodnet::testing::ribbon_dof(*model, 3, 1)),
+              "rod 0 vertex 4 (its developability)");
+    EXPECT_EQ(roles.describe(layout.n_field_dofs() + 5),
+              "rod 0 segment 5 (its length)");
   }
 } // namespace

@@ -18,6 +18,7 @@
 #include <solvers/newton/tangent_factorization.h>
 #include <solvers/stability/stability.h>
 
+#include "ribbon_dofs.h"
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -93,7 +94,7 @@ namespace rodnet::moebius
         band.strains.push_back(model.hinge_kernel(0).strains(
           config.hinge_dofs(DofValues(u), layout.hinges()[h]),
           config.hinge_reference(h)));
-        band.etas.push_back(u[layout.ribbon_dof(h, 0)]);
+        band.etas.push_back(u[rodnet::testing::ribbon_dof(model, h, 0)]);
         if (config.closes_with_a_flip(layout.hinges()[h]))
           band.flipped_hinge = h;
       }
@@ -200,7 +201,7 @@ namespace rodnet::moebius
           std::atan2(d1.cross(band.d1[j]).dot(t), d1.dot(band.d1[j]));
       }
     for (unsigned int h = 0; h < m; ++h)
-      u[layout.ribbon_dof(h, 0)] = band.etas[(h + m - 1) % m];
+      u[rodnet::testing::ribbon_dof(model, h, 0)] = band.etas[(h + m - 1) % m];
     return u;
   }
 
