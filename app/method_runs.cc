@@ -1,6 +1,6 @@
 #include <app/method_runs.h>
 #include <core/motion.h>
-#include <solvers/lowest_eigenpairs.h>
+#include <solvers/stability/lowest_eigenpairs.h>
 
 #include <cmath>
 #include <stdexcept>

@@ -6,10 +6,10 @@
 #include <core/rod_model.h>
 #include <io/probes.h>
 #include <io/scene.h>
-#include <solvers/arclength_continuation.h>
-#include <solvers/dynamic_relaxation.h>
-#include <solvers/static_solver.h>
-#include <solvers/time_integrator.h>
+#include <solvers/continuation/arclength_continuation.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
+#include <solvers/statics/static_solver.h>
+#include <solvers/time/time_integrator.h>
 
 #include <memory>
 #include <optional>

@@ -57,12 +57,12 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <core/dr_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <io/scene.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/dynamic_relaxation.h>
-#include <solvers/static_solver.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
+#include <solvers/statics/static_solver.h>
 
 #include <array>
 #include <bench/options.h>

@@ -35,7 +35,7 @@
 
 #include <core/mass_matrix.h>
 #include <io/scene.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Eigenvalues>
 #include <bench/options.h>

@@ -14,7 +14,7 @@
 // "csv='frame_stability_map.csv'; out='doc/frame_stability_map.png'"
 // bench/frame_stability_map.gp.
 #include <solvers/solver_failure.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include "options.h"
 #include <chrono>

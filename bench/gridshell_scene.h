@@ -9,7 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <io/scene.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <sstream>
 #include <stdexcept>

@@ -34,7 +34,7 @@
 // kernel, from the coarsest; default all) [--frame-max N] [--windmill-max n]
 // (finest mesh of each study; 0 skips the study)
 #include <core/rod_model.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <bench/options.h>
 #include <bench/timing.h>

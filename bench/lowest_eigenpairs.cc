@@ -13,9 +13,9 @@
 // Usage: lowest_eigenpairs [--cells n] [--modes k] [--repeats n]
 //        (defaults 12, 6 and 3).
 #include <io/scene.h>
-#include <solvers/lowest_eigenpairs.h>
-#include <solvers/stability.h>
-#include <solvers/static_solver.h>
+#include <solvers/stability/lowest_eigenpairs.h>
+#include <solvers/stability/stability.h>
+#include <solvers/statics/static_solver.h>
 
 #include <bench/gridshell_scene.h>
 #include <bench/options.h>

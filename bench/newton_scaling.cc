@@ -39,12 +39,12 @@
 // doc/performance.md).
 #include <deal.II/base/parameter_handler.h>
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <io/scene.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/tangent_factorization.h>
+#include <solvers/newton/tangent_factorization.h>
 
 #include <bench/options.h>
 #include <bench/timing.h>

@@ -30,7 +30,7 @@
 // Usage: p1_dynamic_relaxation [--repeats n] [--threads n] [--search 0|1]
 // [--max-n N] (largest N; default 200) [--peers file] (the peer figures;
 // default ../shared/BENCHMARKS.md beside the source tree)
-#include <solvers/dynamic_relaxation.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
 
 #include <bench/options.h>
 #include <bench/p1_problem.h>

@@ -38,7 +38,7 @@
 // solver, TangentFactorization; default auto) [--only-n n] (one of the N
 // above only, e.g. to profile it) [--peers file] (the peer figures; default
 // ../shared/BENCHMARKS.md)
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <bench/options.h>
 #include <bench/p1_problem.h>

@@ -19,8 +19,8 @@
 #define RODNET_BENCH_P1_PROBLEM_H
 
 #include <core/dr_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <io/scene.h>
 #include <materials/cross_section.h>
 #include <materials/linear_elastic_rod.h>

@@ -18,9 +18,9 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <io/scene.h>
-#include <solvers/equilibrium_check.h>
-#include <solvers/free_motions.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/equilibrium_check.h>
+#include <solvers/checks/free_motions.h>
+#include <solvers/statics/static_solver.h>
 
 #include <bench/gridshell_scene.h>
 #include <bench/options.h>

@@ -37,7 +37,7 @@ namespace rodnet
    *   undeformed configuration), which depends on R: the constant M
    *   carries its isotropic part j = trace(J_0) / 3 as above, and the
    *   midpoint rule the rest (BodyRotationInertia,
-   *   solvers/body_rotation_inertia.h); the other integrators refuse it.
+   *   solvers/time/body_rotation_inertia.h); the other integrators refuse it.
    *
    * - at a junction with a rotation, with its centre off the vertex:
    *   x_c = x_j + R r_0 (@p centre_offset r_0, in global axes at the

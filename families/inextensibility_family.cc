@@ -46,7 +46,8 @@ namespace rodnet
             "inextensibility constraint of segment " +
             std::to_string(cell));
         stencil_of_cell[cell] = stencils.size();
-        stencils.push_back({s, stencils.size(), scale, along});
+        stencils.push_back(
+          {s, static_cast<global_dof_index>(stencils.size()), scale, along});
       }
   }
 

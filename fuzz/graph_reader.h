@@ -1,8 +1,8 @@
 #ifndef RODNET_FUZZ_GRAPH_READER_H
 #define RODNET_FUZZ_GRAPH_READER_H
 
-#include <core/rod_graph.h>
 #include <core/rod_network.h>
+#include <geometry/rod_graph.h>
 
 #include "fuzz_input.h"
 

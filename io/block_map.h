@@ -1,7 +1,7 @@
 #ifndef RODNET_IO_BLOCK_MAP_H
 #define RODNET_IO_BLOCK_MAP_H
 
-#include <core/rod_graph.h>
+#include <geometry/rod_graph.h>
 #include <io/generator_registry.h>
 
 #include <string>

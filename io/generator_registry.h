@@ -4,8 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <base/registry.h>
-#include <core/rod_graph.h>
 #include <elements/quaternion.h>
+#include <geometry/rod_graph.h>
 #include <io/problem_size.h>
 #include <io/read_notes.h>
 

@@ -1,4 +1,4 @@
-#include <core/rod_graph.h>
+#include <geometry/rod_graph.h>
 #include <io/gmsh_line_mesh.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #ifndef RODNET_IO_GMSH_NETWORK_H
 #define RODNET_IO_GMSH_NETWORK_H
 
-#include <core/rod_graph.h>
+#include <geometry/rod_graph.h>
 #include <io/read_notes.h>
 
 #include <string>

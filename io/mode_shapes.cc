@@ -1,6 +1,6 @@
 #include <io/mode_shapes.h>
 #include <io/vtu_output.h>
-#include <solvers/lowest_eigenpairs.h>
+#include <solvers/stability/lowest_eigenpairs.h>
 
 #include <fstream>
 #include <stdexcept>

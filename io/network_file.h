@@ -1,7 +1,7 @@
 #ifndef RODNET_IO_NETWORK_FILE_H
 #define RODNET_IO_NETWORK_FILE_H
 
-#include <core/rod_graph.h>
+#include <geometry/rod_graph.h>
 
 #include <string>
 

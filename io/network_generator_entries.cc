@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <core/network_generators.h>
+#include <geometry/network_generators.h>
 #include <io/block_map.h>
 #include <io/gmsh_network.h>
 #include <io/network_file.h>

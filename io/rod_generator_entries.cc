@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <core/rod_generators.h>
+#include <geometry/rod_generators.h>
 #include <io/gmsh_rods.h>
 #include <io/rod_generator_entries.h>
 #include <io/scene_entries.h>

@@ -6,8 +6,8 @@
 
 #include <core/dr_model.h>
 #include <core/mass_matrix.h>
-#include <core/rod_graph.h>
 #include <core/rod_model.h>
+#include <geometry/rod_graph.h>
 #include <io/entry_tree.h>
 #include <io/natural_shape_ramp.h>
 #include <io/network_picture.h>
@@ -20,10 +20,10 @@
 #include <io/solution_methods.h>
 #include <io/substrate.h>
 #include <materials/cross_section.h>
-#include <solvers/arclength_continuation.h>
-#include <solvers/dynamic_relaxation.h>
-#include <solvers/static_solver.h>
-#include <solvers/time_integrator.h>
+#include <solvers/continuation/arclength_continuation.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
+#include <solvers/statics/static_solver.h>
+#include <solvers/time/time_integrator.h>
 
 #include <array>
 #include <functional>

@@ -1,8 +1,8 @@
 #include <io/solution_methods.h>
-#include <solvers/arclength_continuation.h>
-#include <solvers/dynamic_relaxation.h>
-#include <solvers/static_solver.h>
-#include <solvers/time_integrator.h>
+#include <solvers/continuation/arclength_continuation.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
+#include <solvers/statics/static_solver.h>
+#include <solvers/time/time_integrator.h>
 
 #include <stdexcept>
 

@@ -11,7 +11,7 @@
 #include <core/rod_model.h>
 #include <families/bonding_constraint.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/dof_roles.h>
+#include <solvers/checks/dof_roles.h>
 
 #include <algorithm>
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <common/rod_models.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

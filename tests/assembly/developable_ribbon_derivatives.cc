@@ -10,11 +10,11 @@
 // the finite differences.
 #include <common/assembled_derivatives.h>
 #include <common/ribbon_dofs.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <families/developable_ribbon_family.h>
+#include <geometry/rod_generators.h>
 #include <materials/wunderlich_ribbon.h>
-#include <solvers/dof_roles.h>
+#include <solvers/checks/dof_roles.h>
 
 #include <gtest/gtest.h>
 #include <random>

@@ -9,8 +9,8 @@
 // checks the DoF maps, the chain rule, the constraint handling and the loop
 // over element families together.
 #include <common/assembled_derivatives.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <families/elastic_foundation.h>

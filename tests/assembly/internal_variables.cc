@@ -8,10 +8,10 @@
 // reference is reset; time steps are checked. A family of its own with
 // history (a Maxwell element) is committed by the model like the rods'
 // families, and its energy reads the committed value.
-#include <core/network_generators.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <elements/stretch_kernel.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
 

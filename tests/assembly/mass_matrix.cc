@@ -9,9 +9,9 @@
 // quaternion DoFs, the constrained variant and the errors; and the spin of
 // the director frames that the twist inertia approximates.
 #include <core/mass_matrix.h>
-#include <core/network_generators.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <Eigen/Eigenvalues>

@@ -5,12 +5,12 @@
 // reactions balance the loads), the Voronoi lumping q h / 2 at rod ends and
 // q h inside, the bounding-box diagonal.
 #include <core/dr_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <io/probes.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/dynamic_relaxation.h>
-#include <solvers/static_solver.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

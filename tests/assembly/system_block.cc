@@ -9,7 +9,7 @@
 
 #include <common/rod_models.h>
 #include <core/system_block.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -7,11 +7,11 @@
 // random state.
 #include <deal.II/base/multithread_info.h>
 
-#include <core/network_generators.h>
-#include <core/rod_generators.h>
-#include <core/rod_graph.h>
 #include <core/rod_model.h>
 #include <core/stencil_coloring.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_generators.h>
+#include <geometry/rod_graph.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <gtest/gtest.h>

@@ -7,10 +7,10 @@
 #define RODNET_TESTS_COMMON_CANTILEVER_SWING_H
 
 #include <core/mass_matrix.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>

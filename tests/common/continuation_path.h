@@ -7,7 +7,7 @@
 
 #include <io/scene.h>
 #include <io/vertex_selector.h>
-#include <solvers/arclength_continuation.h>
+#include <solvers/continuation/arclength_continuation.h>
 
 #include <string>
 #include <vector>

@@ -11,9 +11,9 @@
 #define RODNET_TESTS_COMMON_FREE_FRAME_H
 
 #include <core/mass_matrix.h>
-#include <core/network_generators.h>
-#include <core/rod_graph.h>
 #include <core/rod_model.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_graph.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <memory>

@@ -1,7 +1,7 @@
 #ifndef RODNET_TESTS_GROUP_COUNTS_H
 #define RODNET_TESTS_GROUP_COUNTS_H
 
-#include <core/rod_graph.h>
+#include <geometry/rod_graph.h>
 
 #include <algorithm>
 #include <string>

@@ -3,8 +3,8 @@
 #ifndef RODNET_TESTS_COMMON_HELD_BAR_H
 #define RODNET_TESTS_COMMON_HELD_BAR_H
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 
 #include <memory>
 #include <vector>

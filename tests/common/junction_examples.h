@@ -6,8 +6,8 @@
 #ifndef RODNET_TESTS_COMMON_JUNCTION_EXAMPLES_H
 #define RODNET_TESTS_COMMON_JUNCTION_EXAMPLES_H
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <cmath>

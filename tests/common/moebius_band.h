@@ -14,9 +14,9 @@
 #include <core/rod_model.h>
 #include <io/scene.h>
 #include <materials/wunderlich_ribbon.h>
-#include <solvers/arclength_continuation.h>
-#include <solvers/stability.h>
-#include <solvers/tangent_factorization.h>
+#include <solvers/continuation/arclength_continuation.h>
+#include <solvers/newton/tangent_factorization.h>
+#include <solvers/stability/stability.h>
 
 #include "ribbon_dofs.h"
 #include <cmath>

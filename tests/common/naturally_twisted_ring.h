@@ -3,8 +3,8 @@
 #ifndef RODNET_TESTS_COMMON_NATURALLY_TWISTED_RING_H
 #define RODNET_TESTS_COMMON_NATURALLY_TWISTED_RING_H
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <memory>

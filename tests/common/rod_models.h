@@ -1,10 +1,10 @@
 #ifndef RODNET_TESTS_ROD_MODELS_H
 #define RODNET_TESTS_ROD_MODELS_H
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <memory>
 

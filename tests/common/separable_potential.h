@@ -2,7 +2,7 @@
 #define RODNET_TESTS_COMMON_SEPARABLE_POTENTIAL_H
 
 #include <common/diagonal_tangent.h>
-#include <solvers/newton_solver.h>
+#include <solvers/newton/newton_solver.h>
 
 #include <functional>
 #include <string>

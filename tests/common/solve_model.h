@@ -2,7 +2,7 @@
 #define RODNET_TESTS_SOLVE_MODEL_H
 
 #include <core/rod_model.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 namespace rodnet::testing
 {

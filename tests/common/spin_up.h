@@ -21,10 +21,10 @@
 #ifndef RODNET_TESTS_COMMON_SPIN_UP_H
 #define RODNET_TESTS_COMMON_SPIN_UP_H
 
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Dense>
 #include <cmath>

@@ -1,10 +1,10 @@
 // An outside program that uses the installed rodnet package: a clamped
 // cantilever under a small tip load, checked against P L^3 / (3 EI).
 #include <base/mpi_session.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <iostream>

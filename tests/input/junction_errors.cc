@@ -2,8 +2,8 @@
 // junction: ends that do not meet, a pinned junction of one rod, a non-unit
 // prescribed quaternion or axis, a prescribed rotation of a pinned junction,
 // a moment on a clamp, a zero-length segment at a junction.
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <gtest/gtest.h>

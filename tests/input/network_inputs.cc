@@ -2,13 +2,13 @@
 // the network generators, read from a node/edge list (.net) and from Gmsh
 // line meshes (.msh 2.2 and 4.1). Bad input fails with a message that names
 // the node, beam or file line.
-#include <core/network_generators.h>
-#include <core/rod_graph.h>
 #include <core/rod_model.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_graph.h>
 #include <io/gmsh_network.h>
 #include <io/network_file.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <fstream>

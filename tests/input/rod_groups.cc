@@ -5,7 +5,7 @@
 // refused naming the subsection.
 #include <common/group_counts.h>
 #include <common/scene_text.h>
-#include <core/network_generators.h>
+#include <geometry/network_generators.h>
 #include <io/scene_file.h>
 
 #include <cmath>

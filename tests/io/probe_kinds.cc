@@ -5,8 +5,8 @@
 // prescribed vertex displacements, by Pythagoras.
 
 #include <core/dr_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <io/probes.h>
 #include <materials/linear_elastic_rod.h>
 

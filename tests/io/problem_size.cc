@@ -6,10 +6,10 @@
 // which counts them, against measured peaks.
 #include <deal.II/base/parameter_handler.h>
 
+#include <app/scene_runner.h>
 #include <common/scene_text.h>
 #include <io/scene.h>
-#include <app/scene_runner.h>
-#include <solvers/tangent_factorization.h>
+#include <solvers/newton/tangent_factorization.h>
 
 #include <fstream>
 #include <gtest/gtest.h>

@@ -7,8 +7,8 @@
 
 #include <common/run_scene_text.h>
 #include <core/dr_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <io/vtu_output.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>

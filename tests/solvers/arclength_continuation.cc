@@ -9,9 +9,9 @@
 #include <common/held_bar.h>
 #include <common/rod_models.h>
 #include <materials/standard_linear_solid.h>
-#include <solvers/arclength_continuation.h>
-#include <solvers/free_motions.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/free_motions.h>
+#include <solvers/continuation/arclength_continuation.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -15,10 +15,10 @@
 //   the line through them, and two free rods bonded to each other move
 //   together (one part), not each held by the other.
 #include <common/solve_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/free_motions.h>
+#include <solvers/checks/free_motions.h>
 
 #include <algorithm>
 #include <families/bonding_constraint.h>

@@ -7,8 +7,8 @@
 // until 2026-12-05 it was accepted against the start's out-of-balance, with
 // residuals up to 3e-4 of the loads where 1e-9 was asked.
 #include <common/rod_models.h>
-#include <solvers/residual_criterion.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/residual_criterion.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -6,8 +6,8 @@
 // frames, which the energy does not see, is found (free_frame_turns()) so
 // that the solvers can hold it.
 #include <common/rod_models.h>
-#include <solvers/free_motions.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/free_motions.h>
+#include <solvers/statics/static_solver.h>
 
 #include <families/elastic_foundation.h>
 #include <gtest/gtest.h>

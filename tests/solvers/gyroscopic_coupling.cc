@@ -1,16 +1,16 @@
-// GyroscopicCoupling (solvers/gyroscopic_coupling.h): the force of the
+// GyroscopicCoupling (solvers/time/gyroscopic_coupling.h): the force of the
 // sections' spin on the centreline over a midpoint step has no resultant
 // and does no work; when the segments keep their lengths its moment is
 // minus the turn of the spin, sum_k pbar_k (t_k - t_k,n) / h, formed here
 // from the tangents and the twist rows of M; and its Jacobian is that of
 // central differences of the force.
 #include <core/mass_matrix.h>
-#include <core/network_generators.h>
-#include <core/rod_graph.h>
 #include <core/rod_model.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_graph.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/dof_roles.h>
-#include <solvers/gyroscopic_coupling.h>
+#include <solvers/checks/dof_roles.h>
+#include <solvers/time/gyroscopic_coupling.h>
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -5,10 +5,10 @@
 // and the solvers that need a potential or a mass refuse the model.
 #include <common/rod_models.h>
 #include <common/solve_model.h>
-#include <solvers/equilibrium_check.h>
-#include <solvers/lowest_eigenpairs.h>
-#include <solvers/static_solver.h>
-#include <solvers/time_integrator.h>
+#include <solvers/checks/equilibrium_check.h>
+#include <solvers/stability/lowest_eigenpairs.h>
+#include <solvers/statics/static_solver.h>
+#include <solvers/time/time_integrator.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

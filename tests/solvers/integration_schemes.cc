@@ -6,8 +6,8 @@
 #include <common/held_bar.h>
 #include <core/mass_matrix.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/integration_scheme_registry.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/integration_scheme_registry.h>
+#include <solvers/time/time_integrator.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The continuation's limit-point estimates on lambda(s) = 2 - (s - 1)^2,
 // whose limit point is lambda = 2 at s = 1: both are exact for a parabola.
-#include <solvers/limit_point_estimate.h>
+#include <solvers/continuation/limit_point_estimate.h>
 
 #include <gtest/gtest.h>
 

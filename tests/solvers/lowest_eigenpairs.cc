@@ -8,8 +8,8 @@
 
 #include <common/rod_models.h>
 #include <io/scene.h>
-#include <solvers/lowest_eigenpairs.h>
-#include <solvers/static_solver.h>
+#include <solvers/stability/lowest_eigenpairs.h>
+#include <solvers/statics/static_solver.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>

@@ -8,7 +8,7 @@
 
 #include <common/held_bar.h>
 #include <solvers/state_guard.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <gtest/gtest.h>
 #include <optional>

@@ -5,7 +5,7 @@
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <solvers/newton_solver.h>
+#include <solvers/newton/newton_solver.h>
 
 #include <gtest/gtest.h>
 #include <iostream>

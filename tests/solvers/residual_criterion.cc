@@ -5,8 +5,8 @@
 // segment.
 #include <common/naturally_twisted_ring.h>
 #include <common/rod_models.h>
-#include <solvers/residual_criterion.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/residual_criterion.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

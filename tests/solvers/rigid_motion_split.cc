@@ -1,11 +1,11 @@
-// RigidMotionSplit (solvers/rigid_motion_split.h): the force w it leaves of
+// RigidMotionSplit (solvers/time/rigid_motion_split.h): the force w it leaves of
 // M d has no resultant and no moment on a free part (sums formed here from
 // the positions and tangents), w.d is the M-norm of what is left of d, and
 // a rigid step leaves nothing, also where a rotation is no motion of the
 // part (a straight rod about its line) and its column is rounding.
 #include <core/mass_matrix.h>
-#include <solvers/dof_roles.h>
-#include <solvers/rigid_motion_split.h>
+#include <solvers/checks/dof_roles.h>
+#include <solvers/time/rigid_motion_split.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 // case that needed it: P1 of BENCHMARKS.md (gravity cantilever, 1000
 // segments) in one load step, against the elastica's tip.
 #include <common/rod_models.h>
-#include <solvers/residual_criterion.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/residual_criterion.h>
+#include <solvers/statics/static_solver.h>
 
 #include <bench/p1_problem.h>
 #include <gtest/gtest.h>

@@ -6,10 +6,10 @@
 // named in a warning.
 #include <common/rod_models.h>
 #include <common/scene_text.h>
-#include <solvers/lowest_eigenpairs.h>
-#include <solvers/stability.h>
-#include <solvers/static_solver.h>
-#include <solvers/time_integrator.h>
+#include <solvers/stability/lowest_eigenpairs.h>
+#include <solvers/stability/stability.h>
+#include <solvers/statics/static_solver.h>
+#include <solvers/time/time_integrator.h>
 
 #include <algorithm>
 #include <cmath>

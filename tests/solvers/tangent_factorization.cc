@@ -13,12 +13,12 @@
 
 #include <common/diagonal_tangent.h>
 #include <common/rod_models.h>
-#include <core/network_generators.h>
-#include <core/rod_graph.h>
-#include <solvers/epetra_entries.h>
-#include <solvers/newton_solver.h>
-#include <solvers/saddle_point_order.h>
-#include <solvers/tangent_factorization.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_graph.h>
+#include <solvers/newton/epetra_entries.h>
+#include <solvers/newton/newton_solver.h>
+#include <solvers/newton/saddle_point_order.h>
+#include <solvers/newton/tangent_factorization.h>
 
 #include <algorithm>
 #include <cmath>

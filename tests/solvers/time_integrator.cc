@@ -11,11 +11,11 @@
 #include <common/cantilever_swing.h>
 #include <common/held_bar.h>
 #include <core/mass_matrix.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <atomic>
 #include <cmath>

@@ -11,7 +11,7 @@
 // stretch rates the rotation of the segments induces, second order in the
 // amplitude, which at 0.01 L (EA w'^2 / EI ~ 2 here) tripled the decrement.
 #include <materials/linear_elastic_rod.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 // stability limit, which must be cut rather than produce NaN.
 #include <common/elastica_exact.h>
 #include <core/dr_model.h>
-#include <core/rod_generators.h>
-#include <solvers/dynamic_relaxation.h>
+#include <geometry/rod_generators.h>
+#include <solvers/relaxation/dynamic_relaxation.h>
 
 #include <chrono>
 #include <cmath>

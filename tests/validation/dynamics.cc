@@ -6,7 +6,7 @@
 // against P L^3 / (3 I) J(t).
 #include <materials/linear_elastic_rod.h>
 #include <materials/standard_linear_solid.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

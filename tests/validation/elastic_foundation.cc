@@ -9,9 +9,9 @@
 // A stiff ring on the foundation alone, without supports, is held by it and
 // tilts as a rigid body.
 #include <common/solve_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
 #include <families/elastic_foundation.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The energy balance of dynamic runs whose loads and supports move in time
-// (solvers/energy_balance.h; doc/dynamics.md, "Failures"): the total
+// (solvers/time/energy_balance.h; doc/dynamics.md, "Failures"): the total
 // energy E against the work W that the loads and the moving supports do,
 // against the work-energy theorem E(t) - E(0) = W(t) and against the
 // static work of a slowly applied load, and the watch that stops a run
@@ -8,9 +8,9 @@
 #include <core/rigid_body.h>
 #include <core/tensor_body_spin.h>
 #include <elements/quaternion.h>
-#include <solvers/energy_balance.h>
 #include <solvers/solver_failure.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/energy_balance.h>
+#include <solvers/time/time_integrator.h>
 
 #include <array>
 #include <cmath>

@@ -13,9 +13,9 @@
 // translation of a stressed rod in equilibrium.
 #include <core/mass_matrix.h>
 #include <core/motion.h>
-#include <solvers/dof_roles.h>
+#include <solvers/checks/dof_roles.h>
 #include <solvers/solver_failure.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>

@@ -18,8 +18,8 @@
 // eps |u| (doc/nonlinear_solvers.md, "Accepted steps").
 #include <common/rod_models.h>
 #include <common/run_scene_text.h>
-#include <solvers/residual_criterion.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/residual_criterion.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// The generalized-alpha integrator (solvers/generalized_alpha_scheme.h)
+// The generalized-alpha integrator (solvers/time/generalized_alpha_scheme.h)
 // against Chung & Hulbert's analysis (J. Appl. Mech. 60, 1993): for the
 // linear oscillator qddot + omega^2 q = 0 one step maps (q, v, a) by an
 // amplification matrix A(omega h) that follows from the method's defining
@@ -19,9 +19,9 @@
 // - rho_inf = 1 is Newmark's average acceleration step for step.
 // r is read from a sequence x_n = Re(c lambda^n) as x_{n+1}^2 - x_n x_{n+2}
 // = |c|^2 r^{2n+2} sin^2 phi, which decays as r^{2n} whatever the phase.
-#include <core/rod_generators.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Dense>
 #include <cmath>

@@ -4,10 +4,10 @@
 // right-angle frame of Fig. 3a and the windmill of Fig. 3b.
 #include <common/junction_examples.h>
 #include <common/solve_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

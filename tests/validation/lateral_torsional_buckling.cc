@@ -9,7 +9,7 @@
 // eigenvalue is only accurate to eps |K|. Now N = 200 must be at least as
 // accurate as N = 100.
 #include <common/rod_models.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 // generator and from a Gmsh mesh of the same arc, where the plain clamp
 // (half a segment in, along the first chord) is first order.
 #include <common/scene_text.h>
-#include <core/rod_generators.h>
+#include <geometry/rod_generators.h>
 
 #include <array>
 #include <cmath>

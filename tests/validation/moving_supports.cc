@@ -14,7 +14,7 @@
 // - a prescribed rotation of half a turn within one step is a failed step
 //   (halved), not a silent wrong twist.
 #include <materials/linear_elastic_rod.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/time_integrator.h>
 
 #include <cmath>
 #include <fstream>

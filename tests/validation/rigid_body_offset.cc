@@ -1,5 +1,5 @@
 // Rigid bodies with their centre off the junction, x_c = x_j + R r_0
-// (RigidBody::centre_offset; solvers/body_rotation_inertia.h,
+// (RigidBody::centre_offset; solvers/time/body_rotation_inertia.h,
 // families/body_weight_family.h; doc/dynamics.md, "Rigid bodies"): a
 // compound pendulum about a held junction (isotropic and tensor inertia)
 // against sqrt(m g d / (J_c + m d^2)); a free body launched spinning, whose
@@ -9,8 +9,8 @@
 // statics: tests/validation/rigid_bodies.cc, WeightActsAtTheCentre.)
 #include <core/motion.h>
 #include <core/tensor_body_spin.h>
-#include <solvers/body_rotation_inertia.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/body_rotation_inertia.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Dense>
 #include <algorithm>

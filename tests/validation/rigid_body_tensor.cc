@@ -1,5 +1,5 @@
 // Rigid bodies with a general inertia tensor at a junction under the
-// midpoint rule (solvers/body_rotation_inertia.h; doc/dynamics.md, "Rigid
+// midpoint rule (solvers/time/body_rotation_inertia.h; doc/dynamics.md, "Rigid
 // bodies"): a torque-free asymmetric top, J_0 = diag(1, 2, 3) kg m^2 on a
 // rotation handle at the end of a massless stiff rod, spinning about its
 // largest axis (the wobble frequency of Euler's equations linearized about
@@ -10,8 +10,8 @@
 // central differences.
 #include <core/motion.h>
 #include <core/tensor_body_spin.h>
-#include <solvers/body_rotation_inertia.h>
-#include <solvers/time_integrator.h>
+#include <solvers/time/body_rotation_inertia.h>
+#include <solvers/time/time_integrator.h>
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -12,7 +12,7 @@
 // is held in the plane z = 0, where the roll-up is stable up to the half
 // circle M = pi EI / L: the tip at (0, 2 L / pi), turned by pi.
 #include <common/rod_models.h>
-#include <solvers/static_solver.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

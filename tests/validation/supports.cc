@@ -8,8 +8,8 @@
 #include <common/run_scene_text.h>
 #include <common/scene_text.h>
 #include <common/solve_model.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
 
 #include <cmath>

@@ -19,11 +19,11 @@
 // R = EI = GJ = 1.
 #include <common/naturally_twisted_ring.h>
 #include <common/run_scene_text.h>
-#include <core/rod_generators.h>
 #include <core/rod_model.h>
+#include <geometry/rod_generators.h>
 #include <materials/linear_elastic_rod.h>
-#include <solvers/equilibrium_check.h>
-#include <solvers/static_solver.h>
+#include <solvers/checks/equilibrium_check.h>
+#include <solvers/statics/static_solver.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

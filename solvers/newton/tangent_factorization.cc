@@ -1,0 +1,372 @@
+#include <deal.II/base/mpi.h>
+
+#include <core/scatter_positions.h>
+#include <solvers/newton/epetra_entries.h>
+#include <solvers/newton/klu_factorization.h>
+#include <solvers/newton/tangent_factorization.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_LinearProblem.h>
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+extern "C"
+{
+  void
+  dgbtrf_(const int *m,
+          const int *n,
+          const int *kl,
+          const int *ku,
+          double    *ab,
+          const int *ldab,
+          int       *ipiv,
+          int       *info);
+  void
+  dgbtrs_(const char   *trans,
+          const int    *n,
+          const int    *kl,
+          const int    *ku,
+          const int    *nrhs,
+          const double *ab,
+          const int    *ldab,
+          const int    *ipiv,
+          double       *b,
+          const int    *ldb,
+          int          *info);
+}
+
+namespace rodnet
+{
+  namespace
+  {
+    using VectorType = TangentFactorization::VectorType;
+    using MatrixType = TangentFactorization::MatrixType;
+
+    /// Trilinos Amesos KLU, where the tangent is spread over several
+    /// processes (Amesos gathers it onto one); its pivot tolerance is
+    /// KLU's default (see make_klu_factorization()).
+    class AmesosKluFactorization : public TangentFactorization
+    {
+    public:
+      explicit AmesosKluFactorization(const MatrixType &matrix)
+          : problem(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()),
+                    nullptr,
+                    nullptr)
+      {
+        Amesos factory;
+        solver.reset(factory.Create("Amesos_Klu", problem));
+        if (solver == nullptr || solver->SymbolicFactorization() != 0)
+          throw std::runtime_error(
+            "KLU (Trilinos Amesos) could not analyse the tangent");
+      }
+
+      void
+      factorize() override
+      {
+        if (solver->NumericFactorization() != 0)
+          throw std::runtime_error(
+            "the tangent is singular (KLU found no pivot)");
+      }
+
+      using TangentFactorization::solve;
+
+      void
+      solve(const VectorType &b, VectorType &x) override
+      {
+        problem.SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
+        problem.SetLHS(&x.trilinos_vector());
+        if (solver->Solve() != 0)
+          throw std::runtime_error("KLU's solve failed");
+      }
+
+      std::string
+      name() const override
+      {
+        return "klu";
+      }
+
+      /// Amesos does not tell.
+      double
+      factor_entries() const override
+      {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+
+    private:
+      Epetra_LinearProblem               problem;
+      std::unique_ptr<Amesos_BaseSolver> solver;
+    };
+
+
+    /// The lower and upper half-widths of the band of @p m's pattern, its
+    /// rows and columns renumbered by @p new_index (none: as they are).
+    std::pair<int, int>
+    band_widths(const Epetra_CrsMatrix &m, const std::vector<int> &new_index)
+    {
+      int lower = 0, upper = 0;
+      for_each_entry(m, [&](int row, int column, double) {
+        if (!new_index.empty())
+          {
+            row    = new_index[row];
+            column = new_index[column];
+          }
+        lower = std::max(lower, row - column);
+        upper = std::max(upper, column - row);
+      });
+      return {lower, upper};
+    }
+
+    /**
+     * The reverse Cuthill-McKee numbering of @p m's (symmetrized) pattern
+     * (George & Liu 1981, ch. 4): each connected part breadth first from a
+     * row of least degree, the neighbours of a row by increasing degree, the
+     * whole order reversed; new_index[old row]. It brings the multipliers
+     * of inextensible rods, numbered after all other DoFs, next to their
+     * segments, so that a rod's tangent is a narrow band again.
+     */
+    std::vector<int>
+    reverse_cuthill_mckee(const Epetra_CrsMatrix &m)
+    {
+      const int                     n = m.NumMyRows();
+      std::vector<std::vector<int>> adjacent(n);
+      for_each_entry(m, [&](const int row, const int column, double) {
+        if (row != column)
+          {
+            adjacent[row].push_back(column);
+            adjacent[column].push_back(row);
+          }
+      });
+      for (std::vector<int> &a : adjacent)
+        {
+          std::sort(a.begin(), a.end());
+          a.erase(std::unique(a.begin(), a.end()), a.end());
+        }
+      const auto by_degree = [&](const int a, const int b) {
+        return adjacent[a].size() < adjacent[b].size();
+      };
+      std::vector<int> starts(n);
+      std::iota(starts.begin(), starts.end(), 0);
+      std::stable_sort(starts.begin(), starts.end(), by_degree);
+      std::vector<int>  order;
+      std::vector<bool> placed(n, false);
+      std::vector<int>  next;
+      for (const int start : starts)
+        {
+          if (placed[start])
+            continue;
+          placed[start] = true;
+          order.push_back(start);
+          for (std::size_t head = order.size() - 1; head < order.size(); ++head)
+            {
+              next.clear();
+              for (const int j : adjacent[order[head]])
+                if (!placed[j])
+                  {
+                    placed[j] = true;
+                    next.push_back(j);
+                  }
+              std::stable_sort(next.begin(), next.end(), by_degree);
+              order.insert(order.end(), next.begin(), next.end());
+            }
+        }
+      std::vector<int> new_index(n);
+      for (int k = 0; k < n; ++k)
+        new_index[order[n - 1 - k]] = k;
+      return new_index;
+    }
+
+
+    /**
+     * LAPACK's band LU with partial pivoting. The band is stored as
+     * LAPACK's dgbtrf asks (2 kl + ku + 1 rows: kl more for the fill of
+     * the row exchanges), column by column.
+     */
+    class BandFactorization : public TangentFactorization
+    {
+    public:
+      /// The band of @p matrix with its rows and columns renumbered by
+      /// @p new_index (empty: as they are), of half-widths @p kl_ku there.
+      BandFactorization(const MatrixType         &matrix,
+                        const std::pair<int, int> kl_ku,
+                        std::vector<int>          new_index = {})
+          : matrix(matrix.trilinos_matrix())
+          , n(this->matrix.NumMyRows())
+          , kl(kl_ku.first)
+          , ku(kl_ku.second)
+          , ldab(2 * kl + ku + 1)
+          , pivots(n)
+          , new_index(std::move(new_index))
+      {
+        // Each stored entry's place in the band, in the order of the
+        // compressed rows: a factorization then copies the values without
+        // asking the matrix for its rows and their global columns.
+        for_each_entry(this->matrix,
+                       [&](const int row, const int column, double) {
+                         places.push_back(place(row, column));
+                       });
+      }
+
+      void
+      factorize() override
+      {
+        band.assign(std::size_t(ldab) * n, 0.0);
+        int    *offsets = nullptr, *columns = nullptr;
+        double *values = nullptr;
+        matrix.ExtractCrsDataPointers(offsets, columns, values);
+        if (values != nullptr && std::size_t(offsets[n]) == places.size())
+          for (std::size_t k = 0; k < places.size(); ++k)
+            band[places[k]] = values[k];
+        else // storage not optimized: row by row
+          for_each_entry(matrix,
+                         [&](const int    row,
+                             const int    column,
+                             const double value) {
+                           band[place(row, column)] = value;
+                         });
+        int info = 0;
+        dgbtrf_(&n, &n, &kl, &ku, band.data(), &ldab, pivots.data(), &info);
+        if (info != 0)
+          throw std::runtime_error(
+            "the tangent is singular (band LU: zero pivot in row " +
+            std::to_string(info) + ")");
+      }
+
+      using TangentFactorization::solve;
+
+      void
+      solve(const VectorType &b, VectorType &x) override
+      {
+        x            = b;
+        double *data = x.trilinos_vector()[0];
+        if (!new_index.empty())
+          {
+            renumbered.resize(n);
+            for (int i = 0; i < n; ++i)
+              renumbered[new_index[i]] = data[i];
+            data = renumbered.data();
+          }
+        const int one  = 1;
+        int       info = 0;
+        dgbtrs_("N",
+                &n,
+                &kl,
+                &ku,
+                &one,
+                band.data(),
+                &ldab,
+                pivots.data(),
+                data,
+                &n,
+                &info);
+        if (info != 0)
+          throw std::runtime_error("the band LU solve failed");
+        if (!new_index.empty())
+          for (int i = 0; i < n; ++i)
+            x.trilinos_vector()[0][i] = renumbered[new_index[i]];
+      }
+
+      std::string
+      name() const override
+      {
+        return "band";
+      }
+
+      /// The band as LAPACK stores it, room for the row exchanges included.
+      double
+      factor_entries() const override
+      {
+        return band.size();
+      }
+
+    private:
+      /// Where entry (@p row, @p column) is in LAPACK's band storage.
+      std::size_t
+      place(int row, int column) const
+      {
+        if (!new_index.empty())
+          {
+            row    = new_index[row];
+            column = new_index[column];
+          }
+        return std::size_t(kl + ku + row - column) + std::size_t(column) * ldab;
+      }
+
+      const Epetra_CrsMatrix  &matrix;
+      const int                n, kl, ku, ldab;
+      std::vector<int>         pivots;
+      std::vector<std::size_t> places;
+      std::vector<double>      band;
+      /// The band's numbering of the rows, empty where it is the matrix's.
+      std::vector<int>    new_index;
+      std::vector<double> renumbered;
+    };
+  } // namespace
+
+
+  std::unique_ptr<TangentFactorization>
+  TangentFactorization::create(const MatrixType  &matrix,
+                               const std::string &kind)
+  {
+    if (kind != "klu" && kind != "band" && kind != "auto")
+      throw std::invalid_argument("unknown linear solver \"" + kind +
+                                  "\"; known: auto, klu, band");
+    const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
+                               matrix.get_mpi_communicator()) == 1;
+    if (kind == "band" && !one_process)
+      throw std::invalid_argument(
+        "the band LU (Linear solver = band) runs on one process only");
+    if (!one_process)
+      return std::make_unique<AmesosKluFactorization>(matrix);
+    if (kind == "klu")
+      return make_klu_factorization(matrix);
+    const Epetra_CrsMatrix &m      = matrix.trilinos_matrix();
+    const auto              narrow = [](const std::pair<int, int> &widths) {
+      return widths.first <= max_auto_band_width &&
+             widths.second <= max_auto_band_width;
+    };
+    const std::pair<int, int> widths = band_widths(m, {});
+    if (narrow(widths))
+      return std::make_unique<BandFactorization>(matrix, widths);
+    // Renumbered, the band may be narrow (a rod with multipliers).
+    std::vector<int>          new_index         = reverse_cuthill_mckee(m);
+    const std::pair<int, int> renumbered_widths = band_widths(m, new_index);
+    if (narrow(renumbered_widths))
+      return std::make_unique<BandFactorization>(matrix,
+                                                 renumbered_widths,
+                                                 std::move(new_index));
+    if (kind == "band")
+      return std::make_unique<BandFactorization>(matrix, widths);
+    return make_klu_factorization(matrix);
+  }
+
+
+  std::shared_ptr<TangentFactorization>
+  TangentFactorizationCache::get(const MatrixType  &matrix,
+                                 const std::string &kind)
+  {
+    const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
+    CsrArrays               csr;
+    double                 *values = nullptr;
+    m.ExtractCrsDataPointers(csr.offsets, csr.columns, values);
+    csr.n_rows             = m.NumMyRows();
+    const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
+                               matrix.get_mpi_communicator()) == 1;
+    const bool          readable = one_process && csr.offsets != nullptr;
+    const std::uint64_t key =
+      readable ? ScatterPositions::fingerprint(csr, nullptr) : 0;
+    if (factorization == nullptr || !readable || &m != this->matrix ||
+        key != pattern || kind != this->kind)
+      {
+        factorization = TangentFactorization::create(matrix, kind);
+        this->matrix  = &m;
+        pattern       = key;
+        this->kind    = kind;
+      }
+    return factorization;
+  }
+} // namespace rodnet

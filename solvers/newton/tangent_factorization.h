@@ -1,0 +1,116 @@
+#ifndef RODNET_SOLVERS_NEWTON_TANGENT_FACTORIZATION_H
+#define RODNET_SOLVERS_NEWTON_TANGENT_FACTORIZATION_H
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace rodnet
+{
+  /**
+   * The direct solver of Newton's linear systems K x = b with the tangent
+   * K: factorized once per Newton iteration, then used for one or more
+   * solves. Two kinds:
+   *  - "klu": SuiteSparse KLU, sparse LU for any pattern; its symbolic
+   *    analysis (the fill-reducing order) is done once, at construction,
+   *    and its pivots stay on the diagonal, where that order wants them,
+   *    unless the diagonal is tiny (make_klu_factorization()). On several
+   *    processes Trilinos Amesos KLU.
+   *  - "band": LAPACK's band LU with partial pivoting (dgbtrf, dgbtrs) on
+   *    the tangent's band. A rod's DoFs are numbered along it, so its
+   *    tangent is a narrow band (half-width 11 for one rod), which the
+   *    band LU factorizes 4-5 times faster than KLU (doc/performance.md);
+   *    a network's junction DoFs come last and widen the band.
+   * "auto" takes the band where its half-widths are at most
+   * max_auto_band_width, as numbered or renumbered by reverse Cuthill-McKee
+   * (the multipliers of inextensible rods come after all other DoFs: a
+   * rod's KKT tangent is a narrow band once they sit next to their
+   * segments, and KLU's fill on its zero diagonal grows fast), KLU otherwise
+   * (doc/performance.md). "band" renumbers where that narrows the band.
+   */
+  class TangentFactorization
+  {
+  public:
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+    using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+    virtual ~TangentFactorization() = default;
+
+    /// The largest lower or upper half-width of the band for which "auto"
+    /// takes the band LU.
+    static constexpr int max_auto_band_width = 32;
+
+    /**
+     * A factorization of the matrices of @p matrix's pattern (its values
+     * are read at each factorize()): @p kind "klu", "band" or "auto".
+     * Throws std::invalid_argument for another kind, and for "band" on
+     * more than one process.
+     */
+    static std::unique_ptr<TangentFactorization>
+    create(const MatrixType &matrix, const std::string &kind);
+
+    /// Factorizes the matrix's current values. Throws std::runtime_error
+    /// naming the solver where the matrix is singular.
+    virtual void
+    factorize() = 0;
+
+    /// Solves K x = b with the last factorization.
+    virtual void
+    solve(const VectorType &b, VectorType &x) = 0;
+
+    /// Solves K x = b and K y = c with the last factorization, the same
+    /// values as two solve() calls; KLU takes both in one pass over its
+    /// factors (the midpoint rule's Sherman-Morrison solve beside Newton's).
+    virtual void
+    solve(const VectorType &b,
+          VectorType       &x,
+          const VectorType &c,
+          VectorType       &y)
+    {
+      solve(b, x);
+      solve(c, y);
+    }
+
+    /// "klu" or "band".
+    virtual std::string
+    name() const = 0;
+
+    /// The entries the last factorization stores: those of KLU's L and U
+    /// (their diagonals included), or the band as LAPACK stores it; NaN
+    /// where the solver does not tell (Amesos, on several processes), 0
+    /// before the first factorization.
+    virtual double
+    factor_entries() const = 0;
+  };
+
+  /**
+   * A tangent's factorization kept from one Newton solve to the next (load
+   * steps, time steps, the rounds of one step): KLU's symbolic analysis
+   * and the band's width and places are found once for as long as the
+   * tangent is the same matrix with the same pattern. The pattern is
+   * compared by a fingerprint of its compressed rows at each get(); on
+   * several processes, where there are none to read, every get() makes a
+   * new factorization.
+   */
+  class TangentFactorizationCache
+  {
+  public:
+    using MatrixType = TangentFactorization::MatrixType;
+
+    /// TangentFactorization::create(@p matrix, @p kind), or the kept one
+    /// if it was made for the same matrix, pattern and kind.
+    std::shared_ptr<TangentFactorization>
+    get(const MatrixType &matrix, const std::string &kind);
+
+  private:
+    std::shared_ptr<TangentFactorization> factorization;
+    const void                           *matrix  = nullptr;
+    std::uint64_t                         pattern = 0;
+    std::string                           kind;
+  };
+} // namespace rodnet
+
+#endif

@@ -1,0 +1,24 @@
+#ifndef RODNET_SOLVERS_TIME_INTEGRATION_SCHEME_REGISTRY_H
+#define RODNET_SOLVERS_TIME_INTEGRATION_SCHEME_REGISTRY_H
+
+#include <base/registry.h>
+#include <solvers/time/integration_scheme.h>
+
+namespace rodnet
+{
+  /// Integration schemes by name, made on a StepSystem.
+  using IntegrationSchemeRegistry =
+    Registry<IntegrationScheme, const StepSystem &>;
+
+  /**
+   * The time integrators (TimeIntegrator::Parameters::integrator, the scene
+   * entry "Integrator"), in the order of registration, which is the order
+   * of the selection and its help in --help: "quasi-static", "backward
+   * euler", "newmark", "midpoint", "generalized alpha". A new scheme adds
+   * its line to integration_scheme_registry.cc.
+   */
+  const IntegrationSchemeRegistry &
+  integration_scheme_registry();
+} // namespace rodnet
+
+#endif
