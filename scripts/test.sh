@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start 2: set up, build, and pass every test: the whole suite against
 # deal.II's Release library, then all but the slow validation tests and
-# five slow whole-run tests (label "slow_sanitized", tests/CMakeLists.txt)
+# seven slow tests (label "slow_sanitized", tests/CMakeLists.txt)
 # against its Debug library (libdeal.ii.g.so), where deal.II's internal checks are
 # active, built with AddressSanitizer and UndefinedBehaviorSanitizer.
 set -euo pipefail
