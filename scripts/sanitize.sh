@@ -2,7 +2,8 @@
 # The Debug build with AddressSanitizer and UndefinedBehaviorSanitizer
 # (gcc, against deal.II's Debug library libdeal.ii.g.so, whose internal
 # checks are active too), and every test but the slow validation runs and
-# seven slow tests (label "debug"; those seven: ctest -L slow_sanitized). Any sanitizer finding fails its test: UBSan stops at the
+# seven slow tests (label "debug"; those seven: ctest -L slow_sanitized).
+# Any sanitizer finding fails its test: UBSan stops at the
 # first, ASan at the first error and LeakSanitizer at exit. Third-party
 # leaks are suppressed in cmake/sanitizers/ (doc/sanitizers_and_fuzzing.md).
 # Debugging information: line tables only, which the sanitizers' stack
