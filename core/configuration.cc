@@ -118,7 +118,8 @@ namespace rodnet
       }
 
     // The reference twist of kernels that track it is that of the
-    // undeformed configuration, which has zero displacement.
+    // undeformed configuration, which has zero displacement and turns no
+    // junction (the junction family declares the quaternions later).
     const dealii::TrilinosWrappers::MPI::Vector zero =
       zero_displacement(*layout);
     for (unsigned int i = 0; i < hinge_refs.size(); ++i)
@@ -137,10 +138,9 @@ namespace rodnet
             Vector3::Zero());
       }
     for (unsigned int i = 0; i < junction_refs.size(); ++i)
-      junction_refs[i].twist =
-        junction_kernels[i]->strains(junction_dofs(zero,
-                                                   layout->junctions()[i]),
-                                     junction_refs[i])[2];
+      junction_refs[i].twist = junction_kernels[i]->strains(
+        junction_dofs_at_reference_rotation(zero, layout->junctions()[i]),
+        junction_refs[i])[2];
   }
 
   bool
@@ -192,15 +192,25 @@ namespace rodnet
   }
 
   HingeVector
-  Configuration::junction_dofs(const DofValues       &u,
-                               const JunctionStencil &junction) const
+  Configuration::junction_dofs_at_reference_rotation(
+    const DofValues       &u,
+    const JunctionStencil &junction) const
   {
     HingeVector local;
     local.segment<3>(0) = position(u, junction.vertices[0]);
     local.segment<3>(3) = position(u, junction.vertices[1]);
     local[6] = u[junction.dofs[6]] - twist_at_reference[junction.segment];
+    local.tail<4>() << 1.0, 0.0, 0.0, 0.0;
+    return local;
+  }
+
+  HingeVector
+  Configuration::junction_dofs(const DofValues       &u,
+                               const JunctionStencil &junction) const
+  {
+    HingeVector local = junction_dofs_at_reference_rotation(u, junction);
     // Quaternion DoFs hold q - (1, 0, 0, 0).
-    local[7] = 1.0 + u[junction.dofs[7]];
+    local[7] += u[junction.dofs[7]];
     for (unsigned int c = 1; c < 4; ++c)
       local[7 + c] = u[junction.dofs[7 + c]];
     return local;

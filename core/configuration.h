@@ -70,6 +70,13 @@ namespace rodnet
     HingeVector
     junction_dofs(const DofValues &u, const JunctionStencil &junction) const;
 
+    /// junction_dofs() with the quaternion q = (1, 0, 0, 0) of the
+    /// reference, whatever @p u holds (or before the junction family has
+    /// declared the quaternions' DoFs).
+    HingeVector
+    junction_dofs_at_reference_rotation(const DofValues       &u,
+                                        const JunctionStencil &junction) const;
+
     /// Reference data of junction element number @p e.
     const JunctionReference &
     junction_reference(unsigned int e) const

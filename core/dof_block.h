@@ -17,7 +17,15 @@ namespace rodnet
     shape,
     /// A Lagrange multiplier: its row is a constraint scaled to a force, it
     /// is a row of the KKT tangent (RodModel::multiplier_dofs()).
-    multiplier
+    multiplier,
+    /**
+     * A component of the unit quaternion of the junction at the DoF's
+     * vertex (Lestringant & Kochmann section 2.2). A block declares the four
+     * components (w, x, y, z) of a junction as consecutive DoFs, stored as
+     * q - (1, 0, 0, 0) so that zero is the reference; their rows are
+     * moments. DofLayout::rotation_dof() finds them by junction.
+     */
+    rotation
   };
 
   /// How a declared DoF shows in the output: its value times @p factor is

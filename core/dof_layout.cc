@@ -3,6 +3,9 @@
 
 #include <core/dof_layout.h>
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace rodnet
 {
   DofLayout::DofLayout(const RodNetwork &network)
@@ -59,11 +62,11 @@ namespace rodnet
   void
   DofLayout::share_junction_vertices(const RodNetwork &network)
   {
+    // The junction family declares the quaternions (add_block()).
     rotation_dofs.assign(network.junctions().size(),
                          dealii::numbers::invalid_dof_index);
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
-      if (network.junctions()[j].has_rotation())
-        rotation_dofs[j] = handler.n_dofs() + 4 * n_rotations++;
+      junction_of_vertex[network.junctions()[j].vertex] = j;
 
     // x_end = x_junction for every other rod end at a junction; the
     // stencils then take the junction vertex's DoFs for the end.
@@ -149,9 +152,9 @@ namespace rodnet
     const auto &rods = network.rods();
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       {
-        if (!has_rotation_dofs(j))
-          continue;
         const Junction &junction = network.junctions()[j];
+        if (!junction.has_rotation())
+          continue;
         for (const RodEnd &end : junction.ends)
           {
             const Rod &rod = rods[end.rod];
@@ -198,8 +201,9 @@ namespace rodnet
         s.dofs[3 + c] = vertex_dofs[s.vertices[1]][c];
       }
     s.dofs[6] = twist_dofs[s.segment];
-    for (unsigned int c = 0; c < 4; ++c)
-      s.dofs[7 + c] = rotation_dof(junction, c);
+    // The quaternion's DoFs, s.dofs[7..10], come with its block.
+    s.dofs[7] = s.dofs[8] = s.dofs[9] = s.dofs[10] =
+      dealii::numbers::invalid_dof_index;
     junction_list.push_back(s);
   }
 
@@ -207,9 +211,10 @@ namespace rodnet
   global_dof_index
   DofLayout::add_block(const std::string &owner, std::vector<DeclaredDof> dofs)
   {
-    const global_dof_index first = n_dofs();
-    n_declared_dofs += dofs.size();
-    blocks.push_back({owner, first, std::move(dofs)});
+    DofBlock block{owner, n_dofs(), std::move(dofs)};
+    number_rotations(block);
+    n_declared_dofs += block.dofs.size();
+    blocks.push_back(std::move(block));
     // The identities are stored over all DoFs (a closed AffineConstraints
     // answers only for indices in its set).
     dealii::AffineConstraints<double> grown(
@@ -222,6 +227,41 @@ namespace rodnet
     grown.close();
     junction_identities.clear();
     junction_identities.copy_from(grown);
-    return first;
+    return blocks.back().first;
+  }
+
+
+  void
+  DofLayout::number_rotations(const DofBlock &block)
+  {
+    // Checked whole before anything is recorded: a refused block leaves
+    // the layout as it was.
+    std::vector<std::pair<unsigned int, global_dof_index>> firsts;
+    for (unsigned int i = 0; i < block.dofs.size(); ++i)
+      {
+        const DeclaredDof &dof = block.dofs[i];
+        if (dof.role != DofRole::rotation)
+          continue;
+        const auto junction = junction_of_vertex.find(dof.vertex);
+        const bool taken =
+          junction != junction_of_vertex.end() &&
+          (has_rotation_dofs(junction->second) ||
+           std::any_of(firsts.begin(), firsts.end(), [&](const auto &f) {
+             return f.first == junction->second;
+           }));
+        if (junction == junction_of_vertex.end() || taken ||
+            i + 4 > block.dofs.size())
+          throw std::logic_error(block.owner + ": " + dof.label +
+                                 " is not the first of four components of "
+                                 "a junction's rotation not yet declared");
+        firsts.emplace_back(junction->second, block.first + i);
+        i += 3;
+      }
+    for (const auto &[j, first] : firsts)
+      rotation_dofs[j] = first;
+    for (JunctionStencil &s : junction_list)
+      if (has_rotation_dofs(s.junction))
+        for (unsigned int c = 0; c < 4; ++c)
+          s.dofs[7 + c] = rotation_dof(s.junction, c);
   }
 } // namespace rodnet

@@ -11,6 +11,7 @@
 #include <elements/stretch_kernel.h>
 
 #include <array>
+#include <unordered_map>
 #include <vector>
 
 namespace rodnet
@@ -58,9 +59,9 @@ namespace rodnet
   /**
    * The degrees of freedom of a rod network: a DoFHandler<1,3> with
    * FESystem(FE_Q<1,3>(1)^3, FE_DGQ<1,3>(0)), i.e. the displacement of
-   * every vertex and one twist angle per segment, followed by a block of
-   * four quaternion DoFs per junction that carries a rotation; and the
-   * stencils that the assembler loops over. Index maps come from here only;
+   * every vertex and one twist angle per segment, followed by the blocks
+   * that element families declare for themselves; and the stencils that the
+   * assembler loops over. Index maps come from here only;
    * kernels see local vectors in their documented order.
    *
    * Rod ends tied at a junction keep their own triangulation vertices:
@@ -77,15 +78,17 @@ namespace rodnet
    * A rotation handle inside a rod has a junction element on each of the
    * two segments that meet at its vertex and no hinge there.
    *
-   * Quaternion DoFs store q - (1, 0, 0, 0), so that the zero vector is the
-   * reference configuration.
-   *
-   * After the quaternions come the blocks that element families declare
-   * for themselves (add_block(), ElementFamily::own_dofs()), in the order
-   * the families are added: the multipliers of inextensible rods
+   * The blocks that element families declare for themselves (add_block(),
+   * ElementFamily::own_dofs()) follow the DoFHandler's DoFs, in the order
+   * the families are added: the junctions' quaternions
+   * (families/junction_family.h; DofRole::rotation, stored as
+   * q - (1, 0, 0, 0) so that the zero vector is the reference
+   * configuration), the multipliers of inextensible rods
    * (families/inextensibility_family.h), the developable ribbons' slopes
    * and multipliers (families/developable_ribbon_family.h), a user's
-   * bonding constraints (families/bonding_constraint.h).
+   * bonding constraints (families/bonding_constraint.h). The layout reads
+   * the rotation DoFs of a declared block to complete the junction stencils
+   * and to answer rotation_dof().
    */
   class DofLayout
   {
@@ -98,18 +101,20 @@ namespace rodnet
       return handler;
     }
 
-    /// All DoFs: the DoFHandler's, the quaternion block and the families'
-    /// declared blocks.
+    /// All DoFs: the DoFHandler's and the families' declared blocks.
     global_dof_index
     n_dofs() const
     {
-      return handler.n_dofs() + 4 * n_rotations + n_declared_dofs;
+      return handler.n_dofs() + n_declared_dofs;
     }
 
     /**
      * Numbers the DoFs @p dofs that family @p owner declares for itself
      * after all others and returns the first. The junction identities grow
-     * to the new number of DoFs.
+     * to the new number of DoFs. Rotation DoFs (DofRole::rotation) complete
+     * the junction stencils of their junction; a rotation whose vertex is
+     * no junction's, or declared twice, or with fewer than four components,
+     * is a programming error (std::logic_error).
      */
     global_dof_index
     add_block(const std::string &owner, std::vector<DeclaredDof> dofs);
@@ -129,14 +134,14 @@ namespace rodnet
     }
 
     /// DoF of quaternion component @p c (w, x, y, z) of junction @p j,
-    /// which must carry a rotation.
+    /// whose rotation a family must have declared.
     global_dof_index
     rotation_dof(unsigned int j, unsigned int c) const
     {
       return rotation_dofs[j] + c;
     }
 
-    /// Whether junction @p j carries quaternion DoFs.
+    /// Whether junction @p j carries quaternion DoFs (declared ones).
     bool
     has_rotation_dofs(unsigned int j) const
     {
@@ -194,8 +199,7 @@ namespace rodnet
     number_field_dofs(const RodNetwork &network);
 
     /// Constrains the position DoFs of the rod ends at each junction to
-    /// those of its vertex, which the stencils use, and gives each junction
-    /// with a rotation its quaternion DoFs.
+    /// those of its vertex, which the stencils use.
     void
     share_junction_vertices(const RodNetwork &network);
 
@@ -210,7 +214,8 @@ namespace rodnet
                        const Rod               &rod,
                        const std::vector<bool> &handle_inside);
 
-    /// The junction elements of every junction with a rotation.
+    /// The junction elements of every junction with a rotation (their
+    /// quaternion DoFs come with its declared block: number_rotations()).
     void
     add_junction_stencils(const RodNetwork &network);
 
@@ -224,6 +229,11 @@ namespace rodnet
                          unsigned int segment,
                          bool         ghost_first);
 
+    /// Records the rotation DoFs of the newly numbered @p block and
+    /// completes the junction stencils with them.
+    void
+    number_rotations(const DofBlock &block);
+
     dealii::FESystem<1, 3>                       fe;
     dealii::DoFHandler<1, 3>                     handler;
     std::vector<std::array<global_dof_index, 3>> vertex_dofs;
@@ -232,11 +242,12 @@ namespace rodnet
     std::vector<SegmentStencil>                  segment_list;
     std::vector<JunctionStencil>                 junction_list;
     /// First quaternion DoF per junction, invalid where it has none.
-    std::vector<global_dof_index>     rotation_dofs;
-    unsigned int                      n_rotations = 0;
-    std::vector<DofBlock>             blocks;
-    global_dof_index                  n_declared_dofs = 0;
-    dealii::AffineConstraints<double> junction_identities;
+    std::vector<global_dof_index> rotation_dofs;
+    /// The junction at each junction vertex.
+    std::unordered_map<unsigned int, unsigned int> junction_of_vertex;
+    std::vector<DofBlock>                          blocks;
+    global_dof_index                               n_declared_dofs = 0;
+    dealii::AffineConstraints<double>              junction_identities;
   };
 } // namespace rodnet
 

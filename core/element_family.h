@@ -10,6 +10,7 @@
 #include <core/internal_variables.h>
 
 #include <Eigen/Dense>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -109,6 +110,24 @@ namespace rodnet
     follows_load_factor() const
     {
       return false;
+    }
+
+    /**
+     * The axial force (N, tension positive) that the family's constraint on
+     * the length of the segment on cell @p cell carries at @p u in
+     * @p configuration (an inextensible segment's multiplier), if the family
+     * constrains segment lengths; RodModel::constraint_force() writes it.
+     * The default: none.
+     */
+    virtual std::optional<double>
+    segment_constraint_force(const unsigned int   cell,
+                             const DofValues     &u,
+                             const Configuration &configuration) const
+    {
+      (void)cell;
+      (void)u;
+      (void)configuration;
+      return std::nullopt;
     }
 
     /**

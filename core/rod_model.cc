@@ -2,13 +2,9 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <core/built_in_families.h>
 #include <core/rod_model.h>
 #include <core/stencil_coloring.h>
-#include <families/axis_moment_family.h>
-#include <families/developable_ribbon_family.h>
-#include <families/hinge_family.h>
-#include <families/junction_family.h>
-#include <families/stretch_family.h>
 
 #include <map>
 #include <stdexcept>
@@ -66,28 +62,16 @@ namespace rodnet
   void
   RodModel::add_built_in_families()
   {
-    add_element_family(
-      std::make_unique<HingeFamily>(*layout_, kernels, materials));
-    add_element_family(
-      std::make_unique<JunctionFamily>(*layout_, junction_kernels, materials));
-    add_element_family(
-      std::make_unique<StretchFamily>(*layout_, *network_, materials));
-    if (InextensibilityFamily::applies_to(*network_))
-      {
-        auto family     = std::make_unique<InextensibilityFamily>(*layout_,
-                                                              *network_,
-                                                              *configuration_,
-                                                              materials);
-        inextensibility = family.get();
+    const ModelParts             parts{*layout_,
+                           *network_,
+                           *configuration_,
+                           kernels,
+                           junction_kernels,
+                           materials};
+    const BuiltInFamilyRegistry &registry = built_in_family_registry();
+    for (const std::string &name : registry.names())
+      if (std::unique_ptr<ElementFamily> family = registry.create(name, parts))
         add_element_family(std::move(family));
-      }
-    if (DevelopableRibbonFamily::applies_to(*network_))
-      add_element_family(
-        std::make_unique<DevelopableRibbonFamily>(*layout_,
-                                                  *network_,
-                                                  *configuration_,
-                                                  kernels,
-                                                  materials));
   }
 
   void
@@ -278,13 +262,6 @@ namespace rodnet
     collect_declared_multipliers();
     make_constraints();
 
-    std::vector<AxisMoment> axis_moments;
-    for (const AxisLoad &m : moments)
-      axis_moments.push_back(
-        {m.junction, m.axis, m.value, m.ramp == LoadRamp::held});
-    if (!axis_moments.empty())
-      families.push_back(
-        std::make_unique<AxisMomentFamily>(*layout_, std::move(axis_moments)));
     make_sparsity_pattern();
 
     f_ext  = force_vector(loads);
@@ -384,9 +361,13 @@ namespace rodnet
   double
   RodModel::constraint_force(const unsigned int cell, const VectorType &u) const
   {
-    if (inextensibility == nullptr)
-      return 0.0;
-    return inextensibility->axial_force(cell, DofValues(u), *configuration_);
+    for (const auto &family : families)
+      if (const std::optional<double> force =
+            family->segment_constraint_force(cell,
+                                             DofValues(u),
+                                             *configuration_))
+        return *force;
+    return 0.0;
   }
 
 

@@ -24,7 +24,6 @@
 #include <core/stencil_coloring.h>
 #include <core/system_block.h>
 #include <elements/hinge_kernel.h>
-#include <families/inextensibility_family.h>
 #include <materials/rod_material.h>
 
 #include <array>
@@ -69,6 +68,8 @@ namespace rodnet
    * and the scene runner see it, and the SolvableModel interface, through
    * which the solvers do.
    */
+  class AxisMomentFamily;
+
   class RodModel final : public SolvableModel
   {
   public:
@@ -547,8 +548,9 @@ namespace rodnet
     /**
      * Axial force (N, tension positive) of the segment on cell @p cell of
      * an inextensible rod at @p u: its multiplier times the constraint's
-     * scale (InextensibilityFamily); 0 where the segment has no free
-     * multiplier (both ends held).
+     * scale (the first family's ElementFamily::segment_constraint_force(),
+     * InextensibilityFamily's); 0 where the segment has no free multiplier
+     * (both ends held) or no family constrains its length.
      */
     double
     constraint_force(unsigned int cell, const VectorType &u) const;
@@ -927,9 +929,9 @@ namespace rodnet
     dealii::TrilinosWrappers::SparsityPattern sparsity;
     /// DoFs that no stencil of any family sees (make_sparsity_pattern()).
     std::vector<global_dof_index> unseen_dofs;
-    /// The inextensibility family, if any rod is inextensible (its axial
-    /// forces are written as the output's; add_built_in_families()).
-    const InextensibilityFamily  *inextensibility = nullptr;
+    /// The applied moments about fixed axes, once one is added
+    /// (add_moment()).
+    AxisMomentFamily             *axis_moment_family = nullptr;
     std::vector<global_dof_index> free_multipliers;
     /// The family that declared each of the layout's blocks
     /// (DofLayout::declared_blocks()), in their order.

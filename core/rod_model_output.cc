@@ -259,7 +259,11 @@ namespace rodnet
        component_is_part_of_vector,
        component_is_scalar}};
     output.segment_fields = segment_strain_fields(u);
-    if (inextensibility != nullptr)
+    // The axial force of an inextensible rod is its constraint's.
+    const auto &rods = network_->rods();
+    if (std::any_of(rods.begin(), rods.end(), [](const Rod &rod) {
+          return rod.inextensible;
+        }))
       output.segment_fields.push_back(axial_forces(u));
     append_activation_fields(configuration_->segment_activation(),
                              output.segment_fields);

@@ -3,6 +3,7 @@
 // junction rotations and moments, their resolution into fixed DoFs with
 // the checks that no DoF is held at two values and no rod is held
 // entirely, and the reactions (doc/junctions.md, "Supports").
+#include <core/axis_moment_family.h>
 #include <core/rod_model.h>
 #include <elements/junction_moment.h>
 
@@ -260,6 +261,15 @@ namespace rodnet
                                   " junction has no free rotation to load");
     require_unit_axis(axis, "moment at junction " + in_quotes(j.name));
     moments.push_back({junction, axis, moment, ramp});
+    // The first moment brings the family of moments (a scene without
+    // moments does not pay for it).
+    if (axis_moment_family == nullptr)
+      {
+        auto family        = std::make_unique<AxisMomentFamily>(*layout_);
+        axis_moment_family = family.get();
+        add_element_family(std::move(family));
+      }
+    axis_moment_family->add({junction, axis, moment, ramp == LoadRamp::held});
   }
 
   void
@@ -315,8 +325,8 @@ namespace rodnet
       network_->vertex(vertex) - network_->vertex(clamp.vertices[0]);
     Vector3 translation;
     for (unsigned int c = 0; c < 3; ++c)
-      translation[c] = factor(clamp.translation_in_time[c]) *
-                       clamp.translation[c];
+      translation[c] =
+        factor(clamp.translation_in_time[c]) * clamp.translation[c];
     return translation +
            rotation_about(clamp.axis,
                           factor(clamp.rotation_in_time) * clamp.angle) *
@@ -360,11 +370,11 @@ namespace rodnet
     for (auto first = holds.begin(); first != holds.end();
          first      = holds.upper_bound(first->first))
       {
-        const Hold *set   = nullptr;
-        const auto  range = holds.equal_range(first->first);
-        for (auto h = range.first; h != range.second; ++h)
+             const Hold *set   = nullptr;
+             const auto  range = holds.equal_range(first->first);
+             for (auto h = range.first; h != range.second; ++h)
           {
-            if (h->second.yields)
+                 if (h->second.yields)
               continue;
             if (set != nullptr && !agree(*set, h->second))
               throw std::invalid_argument(
@@ -377,8 +387,8 @@ namespace rodnet
             if (set == nullptr)
               set = &h->second;
           }
-        fixed_dofs[first->first] = set != nullptr ? set->value : 0.0;
-        if (set != nullptr && set->in_time.given())
+             fixed_dofs[first->first] = set != nullptr ? set->value : 0.0;
+             if (set != nullptr && set->in_time.given())
           timed_dofs[first->first] = set->in_time;
       }
 
@@ -387,9 +397,10 @@ namespace rodnet
     for (Clamp &clamp : clamps)
       for (unsigned int c = 0; c < 3; ++c)
         {
-          const global_dof_index dof = layout_->vertex_dof(clamp.vertices[0], c);
-          clamp.translation[c]       = fixed_dofs.at(dof);
-          const auto timed           = timed_dofs.find(dof);
+          const global_dof_index dof =
+            layout_->vertex_dof(clamp.vertices[0], c);
+          clamp.translation[c] = fixed_dofs.at(dof);
+          const auto timed     = timed_dofs.find(dof);
           if (timed != timed_dofs.end())
             clamp.translation_in_time[c] = timed->second;
         }
@@ -400,7 +411,10 @@ namespace rodnet
           fixed_dofs[layout_->vertex_dof(clamp.vertices[1], c)] = 0.0;
         for (const Clamp &other : clamps)
           if (other.segment == clamp.segment &&
-              (!same_rotation(clamp.axis, clamp.angle, other.axis, other.angle) ||
+              (!same_rotation(clamp.axis,
+                              clamp.angle,
+                              other.axis,
+                              other.angle) ||
                (clamp.angle != 0 &&
                 clamp.rotation_in_time != other.rotation_in_time)))
             throw std::invalid_argument(
@@ -554,7 +568,7 @@ namespace rodnet
                                  " turns by " + number(turn * 180 / M_PI) +
                                  " degrees " + step +
                                  ", and a step turns by less than 180 "
-                                 "degrees; " +
+                                   "degrees; " +
                                  remedy);
     };
     for (const AxisLoad &p : prescribed_rotations)

@@ -106,6 +106,16 @@ namespace rodnet
                 const DofValues     &u,
                 const Configuration &configuration) const;
 
+    /// axial_force(), for every segment: the family constrains segment
+    /// lengths.
+    std::optional<double>
+    segment_constraint_force(unsigned int         cell,
+                             const DofValues     &u,
+                             const Configuration &configuration) const override
+    {
+      return axial_force(cell, u, configuration);
+    }
+
   private:
     struct Stencil
     {

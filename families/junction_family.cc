@@ -4,4 +4,31 @@
 namespace rodnet
 {
   template class BendingFamily<JunctionStencils>;
+
+  JunctionFamily::JunctionFamily(
+    const DofLayout                                       &layout,
+    const RodNetwork                                      &network,
+    const std::vector<std::unique_ptr<JunctionKernel>>    &kernels,
+    const std::vector<std::shared_ptr<const RodMaterial>> &materials)
+      : BendingFamily<JunctionStencils>(layout, kernels, materials)
+      , network(network)
+  {
+  }
+
+  std::vector<DeclaredDof>
+  JunctionFamily::own_dofs() const
+  {
+    std::vector<DeclaredDof> dofs;
+    for (const Junction &junction : network.junctions())
+      if (junction.has_rotation())
+        for (unsigned int c = 0; c < 4; ++c)
+          {
+            DeclaredDof component;
+            component.role   = DofRole::rotation;
+            component.vertex = junction.vertex;
+            component.label  = "junction \"" + junction.name + "\"";
+            dofs.push_back(component);
+          }
+    return dofs;
+  }
 } // namespace rodnet

@@ -4,7 +4,6 @@
 #include <core/configuration.h>
 #include <core/dof_layout.h>
 #include <elements/junction_kernel.h>
-
 #include <families/bending_family.h>
 
 namespace rodnet
@@ -34,8 +33,31 @@ namespace rodnet
       &Configuration::junction_natural_strains;
   };
 
-  /// The junction family: bending and twisting of every junction element.
-  using JunctionFamily = BendingFamily<JunctionStencils>;
+  /**
+   * The junction family: bending and twisting of every junction element,
+   * and the DoFs of the junctions' rotations, which it declares as its own
+   * block (four DoFs of DofRole::rotation per junction with a rotation,
+   * numbered in the order of the junctions).
+   */
+  class JunctionFamily : public BendingFamily<JunctionStencils>
+  {
+  public:
+    /// Per rod: @p kernels and @p materials; the junctions of @p network
+    /// (all must outlive the family).
+    JunctionFamily(
+      const DofLayout                                       &layout,
+      const RodNetwork                                      &network,
+      const std::vector<std::unique_ptr<JunctionKernel>>    &kernels,
+      const std::vector<std::shared_ptr<const RodMaterial>> &materials);
+
+    /// The quaternion (w, x, y, z) of each junction with a rotation,
+    /// labelled as messages name the junction.
+    std::vector<DeclaredDof>
+    own_dofs() const override;
+
+  private:
+    const RodNetwork &network;
+  };
 } // namespace rodnet
 
 #endif

@@ -17,6 +17,22 @@ namespace rodnet
       return seen;
     }
 
+    /// The kind of a DoF that a family declares as @p role; the components
+    /// of a rotation are marked by junction afterwards.
+    DofRoles::Kind
+    kind_of(const DofRole role)
+    {
+      switch (role)
+        {
+          case DofRole::shape:
+            return DofRoles::Kind::shape;
+          case DofRole::multiplier:
+            return DofRoles::Kind::multiplier;
+          default:
+            return DofRoles::Kind::inert;
+        }
+    }
+
     /// (rod, place along it) of each vertex and each cell of @p network.
     void
     set_rod_places(
@@ -67,6 +83,8 @@ namespace rodnet
           kinds[layout.twist_dof(cell)] = Kind::twist;
       }
     mark_declared_dofs(layout);
+    // A quaternion's vector part turns the junction; its real part is the
+    // gauge of the unit norm.
     for (unsigned int j = 0; j < network.junctions().size(); ++j)
       if (layout.has_rotation_dofs(j))
         for (unsigned int c = 1; c < 4; ++c)
@@ -88,10 +106,9 @@ namespace rodnet
       for (unsigned int i = 0; i < block.dofs.size(); ++i)
         {
           const global_dof_index d = block.first + i;
-          kinds[d]    = block.dofs[i].role == DofRole::shape ? Kind::shape :
-                                                               Kind::multiplier;
-          owners[d]   = block.dofs[i].vertex;
-          declared[d] = &block.dofs[i];
+          kinds[d]                 = kind_of(block.dofs[i].role);
+          owners[d]                = block.dofs[i].vertex;
+          declared[d]              = &block.dofs[i];
         }
   }
 

@@ -112,20 +112,24 @@ namespace
     model->add_element_family(bonds_from_scene(*model, "1:end = 3, 3, 0.5"));
     model->clamp_end("clamp", 0, true);
     model->finalize();
+    // The knee's quaternion, then the bonds.
     const auto &blocks = model->layout().declared_blocks();
-    ASSERT_EQ(blocks.size(), 1u);
-    EXPECT_EQ(blocks[0].first + 3, model->layout().n_dofs());
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_EQ(blocks[0].owner, "junction elements");
+    const DofBlock &bonds = blocks[1];
+    EXPECT_EQ(bonds.owner, "bonding constraints");
+    EXPECT_EQ(bonds.first + 3, model->layout().n_dofs());
     EXPECT_EQ(model->multiplier_dofs().size(), 3u);
-    EXPECT_EQ(model->multiplier_dofs().back(), blocks[0].first + 2);
+    EXPECT_EQ(model->multiplier_dofs().back(), bonds.first + 2);
     const DofRoles     roles(*model);
     const unsigned int end = model->network().rods()[1].vertices[2];
-    EXPECT_EQ(roles.kind(blocks[0].first + 1), DofRoles::Kind::multiplier);
-    EXPECT_EQ(roles.owner(blocks[0].first + 1), end);
-    EXPECT_EQ(roles.describe(blocks[0].first + 1),
+    EXPECT_EQ(roles.kind(bonds.first + 1), DofRoles::Kind::multiplier);
+    EXPECT_EQ(roles.owner(bonds.first + 1), end);
+    EXPECT_EQ(roles.describe(bonds.first + 1),
               "bond 0 (1:end = 3, 3, 0.5), its y component");
 
     VectorType u           = model->create_vector();
-    u[blocks[0].first + 2] = 0.25;
+    u[bonds.first + 2]     = 0.25;
     const OutputFields out = model->output_fields(u);
     const auto         field =
       std::find_if(out.vertex_fields.begin(),

@@ -8,7 +8,9 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <common/ribbon_dofs.h>
 #include <common/rod_models.h>
+#include <solvers/checks/dof_roles.h>
 #include <solvers/statics/static_solver.h>
 
 #include <cmath>
@@ -20,10 +22,10 @@ namespace
 {
   constexpr unsigned int n_layout_segments = 4;
 
-  /// Three rods of length 1 from a hub at the origin, welded there, in the
-  /// plane z = 0 (d1 = e_z).
+  /// Three rods of length 1 from a hub at the origin, welded there (or
+  /// tied as @p kind says), in the plane z = 0 (d1 = e_z).
   std::unique_ptr<RodNetwork>
-  star()
+  star(const JunctionKind kind = JunctionKind::welded)
   {
     auto network = std::make_unique<RodNetwork>();
     for (const Vector3 &end :
@@ -34,9 +36,7 @@ namespace
                        false,
                        Vector3::UnitZ(),
                        "simple");
-    network->add_junction("hub",
-                          JunctionKind::welded,
-                          {{0, true}, {1, true}, {2, true}});
+    network->add_junction("hub", kind, {{0, true}, {1, true}, {2, true}});
     return network;
   }
 
@@ -216,3 +216,133 @@ namespace
               model->layout().n_dofs());
   }
 } // namespace
+
+TEST(DealIILayout, TheJunctionFamilyDeclaresTheQuaternions)
+{
+  // Two rotations: the welded hub, and a handle inside rod 1.
+  auto network = star();
+  network->create_triangulation();
+  network->add_rotation_handle("knob", network->rods()[1].vertices[2]);
+  auto model =
+    rodnet::testing::elastic_model(std::move(network), {1e3, 1.0, 1.0, 0.8});
+  model->clamp_end("clamp", 0, false);
+  model->finalize();
+  const DofLayout  &layout = model->layout();
+  const RodNetwork &net    = model->network();
+  const DofBlock   &block =
+    rodnet::testing::declared_block(*model, "junction elements");
+
+  // Right after the DoFHandler's: 3 rods of 5 own vertices (3 DoFs each)
+  // and 12 segment twists.
+  EXPECT_EQ(layout.n_field_dofs(), 3u * 5u * 3u + 12u);
+  EXPECT_EQ(block.first, layout.n_field_dofs());
+  ASSERT_EQ(block.dofs.size(), 8u);
+
+  const DofRoles roles(*model);
+  for (unsigned int j = 0; j < 2; ++j)
+    for (unsigned int c = 0; c < 4; ++c)
+      {
+        const global_dof_index d   = block.first + 4 * j + c;
+        const DeclaredDof     &dof = block.dofs[4 * j + c];
+        EXPECT_EQ(layout.rotation_dof(j, c), d);
+        EXPECT_EQ(dof.role, DofRole::rotation);
+        EXPECT_EQ(dof.vertex, net.junctions()[j].vertex);
+        EXPECT_EQ(roles.describe(d),
+                  "junction \"" + net.junctions()[j].name + "\"");
+        // The real part is the gauge of the unit norm, held at zero.
+        EXPECT_EQ(roles.kind(d),
+                  c == 0 ? DofRoles::Kind::inert : DofRoles::Kind::quaternion);
+        EXPECT_EQ(model->constraints().is_constrained(d), c == 0);
+        if (c > 0)
+          {
+            EXPECT_EQ(roles.owner(d), j);
+            EXPECT_EQ(roles.component(d), c);
+          }
+      }
+
+  // Three elements at the hub, two at the handle, each reading its
+  // junction's quaternion.
+  ASSERT_EQ(layout.junctions().size(), 5u);
+  for (const JunctionStencil &element : layout.junctions())
+    for (unsigned int c = 0; c < 4; ++c)
+      EXPECT_EQ(element.dofs[7 + c], layout.rotation_dof(element.junction, c));
+}
+
+TEST(DealIILayout, APinnedJunctionHasNoQuaternion)
+{
+  auto model = rodnet::testing::elastic_model(star(JunctionKind::pinned),
+                                              {1e3, 1.0, 1.0, 0.8});
+  EXPECT_FALSE(model->layout().has_rotation_dofs(0));
+  EXPECT_TRUE(model->layout().junctions().empty());
+  EXPECT_EQ(model->layout().n_dofs(), model->layout().n_field_dofs());
+  EXPECT_THROW(rodnet::testing::declared_block(*model, "junction elements"),
+               std::logic_error);
+}
+
+namespace
+{
+  /// A family that declares a rotation at a vertex of its choice and has no
+  /// stencils.
+  class StrayRotation : public ElementFamily
+  {
+  public:
+    explicit StrayRotation(const unsigned int vertex)
+        : vertex(vertex)
+    {
+    }
+
+    std::string
+    name() const override
+    {
+      return "stray rotation";
+    }
+
+    unsigned int
+    n_stencils() const override
+    {
+      return 0;
+    }
+
+    void
+    get_dofs(unsigned int, std::vector<global_dof_index> &) const override
+    {
+    }
+
+    void
+    evaluate(unsigned int,
+             const StencilState &,
+             Derivatives,
+             LocalContribution &) const override
+    {
+    }
+
+    std::vector<DeclaredDof>
+    own_dofs() const override
+    {
+      std::vector<DeclaredDof> q(4);
+      for (DeclaredDof &component : q)
+        {
+          component.role   = DofRole::rotation;
+          component.vertex = vertex;
+          component.label  = "stray";
+        }
+      return q;
+    }
+
+  private:
+    unsigned int vertex;
+  };
+} // namespace
+
+TEST(DealIILayout, ARotationOffAJunctionOrDeclaredTwiceIsRefused)
+{
+  auto model = rodnet::testing::elastic_model(star(), {1e3, 1.0, 1.0, 0.8});
+  const unsigned int inside = model->network().rods()[0].vertices[2];
+  EXPECT_THROW(model->add_element_family(
+                 std::make_unique<StrayRotation>(inside)),
+               std::logic_error);
+  // The hub's rotation is the junction family's already.
+  EXPECT_THROW(model->add_element_family(std::make_unique<StrayRotation>(
+                 model->network().junctions()[0].vertex)),
+               std::logic_error);
+}

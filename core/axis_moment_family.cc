@@ -1,14 +1,12 @@
+#include <core/axis_moment_family.h>
 #include <elements/junction_moment.h>
 
 #include <cmath>
-#include <families/axis_moment_family.h>
 
 namespace rodnet
 {
-  AxisMomentFamily::AxisMomentFamily(const DofLayout        &layout,
-                                     std::vector<AxisMoment> moments)
+  AxisMomentFamily::AxisMomentFamily(const DofLayout &layout)
       : layout(layout)
-      , moments(std::move(moments))
   {
   }
 

@@ -1,5 +1,5 @@
-#ifndef RODNET_FAMILIES_AXIS_MOMENT_FAMILY_H
-#define RODNET_FAMILIES_AXIS_MOMENT_FAMILY_H
+#ifndef RODNET_CORE_AXIS_MOMENT_FAMILY_H
+#define RODNET_CORE_AXIS_MOMENT_FAMILY_H
 
 #include <core/element_family.h>
 
@@ -32,7 +32,16 @@ namespace rodnet
   class AxisMomentFamily : public ElementFamily
   {
   public:
-    AxisMomentFamily(const DofLayout &layout, std::vector<AxisMoment> moments);
+    /// No moments yet (add()); @p layout must outlive the family.
+    explicit AxisMomentFamily(const DofLayout &layout);
+
+    /// Adds the moment @p moment, a stencil of its own (before the model
+    /// is finalized).
+    void
+    add(const AxisMoment &moment)
+    {
+      moments.push_back(moment);
+    }
 
     std::string
     name() const override
