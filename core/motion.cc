@@ -9,11 +9,11 @@
 namespace rodnet
 {
   Motion
-  motion_of(const RodModel   &model,
-            const MatrixType &mass,
-            const VectorType &u,
-            const VectorType &v,
-            const double      load_factor)
+  motion_of(const SolvableModel &model,
+            const MatrixType    &mass,
+            const VectorType    &u,
+            const VectorType    &v,
+            const double         load_factor)
   {
     Motion motion;
     motion.kinetic_energy   = kinetic_energy(mass, v);

@@ -1,12 +1,12 @@
 #ifndef RODNET_CORE_MOTION_H
 #define RODNET_CORE_MOTION_H
 
-#include <core/rod_model.h>
+#include <core/solvable_model.h>
 
 namespace rodnet
 {
   /**
-   * Energies and momenta of a RodModel in motion, at the state (u, v) of a
+   * Energies and momenta of a model in motion, at the state (u, v) of a
    * dynamic time integrator: what the probes "kinetic energy", "potential
    * energy", "total energy", "linear momentum" and "angular momentum" read
    * (doc/dynamics.md, "Energy and momenta").
@@ -19,7 +19,7 @@ namespace rodnet
     /// (core/tensor_body_spin.h).
     double kinetic_energy = 0;
     /// Pi(u, lambda): stored energy minus the work of the dead loads at the
-    /// load factor lambda (RodModel::assemble()).
+    /// load factor lambda (SolvableModel::assemble()).
     double potential_energy = 0;
     /// Sum over the position DoFs of M v (a body's centre off its vertex
     /// counted at its own velocity, m xdot_c).
@@ -39,11 +39,11 @@ namespace rodnet
    * the sizes of @p v and @p mass differ.
    */
   Motion
-  motion_of(const RodModel   &model,
-            const MatrixType &mass,
-            const VectorType &u,
-            const VectorType &v,
-            double            load_factor);
+  motion_of(const SolvableModel &model,
+            const MatrixType    &mass,
+            const VectorType    &u,
+            const VectorType    &v,
+            double               load_factor);
 } // namespace rodnet
 
 #endif

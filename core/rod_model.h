@@ -748,6 +748,17 @@ namespace rodnet
     void
     resolve_position_holds();
 
+    /// Each held position DoF into fixed_dofs (and timed_dofs): the value
+    /// of its holds that do not yield; throws naming two that disagree.
+    void
+    resolve_held_components();
+
+    /// The clamps' translations from their end vertices' holds, their inner
+    /// vertices and segment twists into fixed_dofs; throws naming two clamps
+    /// that turn one rod end differently.
+    void
+    resolve_clamps();
+
     /// The force that support @p s exerts at its @p k-th vertex, from the
     /// unconstrained residual @p r.
     Vector3

@@ -359,6 +359,13 @@ namespace rodnet
   void
   RodModel::resolve_position_holds()
   {
+    resolve_held_components();
+    resolve_clamps();
+  }
+
+  void
+  RodModel::resolve_held_components()
+  {
     const auto same_value = [this](const double a, const double b) {
       return std::abs(a - b) <= 1e-12 * (length + std::abs(a) + std::abs(b));
     };
@@ -391,7 +398,11 @@ namespace rodnet
              if (set != nullptr && set->in_time.given())
           timed_dofs[first->first] = set->in_time;
       }
+  }
 
+  void
+  RodModel::resolve_clamps()
+  {
     // A clamp moves with its end vertex, and whatever else holds its inner
     // vertex must move with it.
     for (Clamp &clamp : clamps)
