@@ -14,6 +14,7 @@
 #include <io/unread_geometry_entries.h>
 #include <io/vertex_selector.h>
 #include <materials/rod_material.h>
+#include <solvers/time/integration_scheme_registry.h>
 
 #include <cmath>
 #include <families/body_weight_family.h>
@@ -432,7 +433,9 @@ namespace rodnet
     const bool        static_checks =
       solution_method == "newton" || solution_method == "continuation" ||
       (solution_method == "time stepping" &&
-       prm.get({"Solver", "Time stepping"}, "Integrator") == "quasi-static");
+       !integration_scheme_registry()
+          .traits(prm.get({"Solver", "Time stepping"}, "Integrator"))
+          .dynamic);
     const bool   time_stepping = solution_method == "time stepping";
     const double bytes_per_dof =
       memory_per_dof(static_checks,

@@ -525,4 +525,20 @@ namespace rodnet
     finish_result(current, result);
     return result;
   }
+
+  NewtonSolver::Result
+  TrustRegionGlobalization::solve(
+    const NewtonSolver::Problem    &problem,
+    NewtonSolver::VectorType       &x,
+    NewtonSolver::MatrixType       &tangent,
+    TangentFactorizationCache      *factorizations,
+    const NewtonSolver::Parameters &parameters) const
+  {
+    // The trust region factorizes shifted scaled tangents of its own.
+    (void)factorizations;
+    TrustRegionNewton::Parameters trust;
+    trust.tolerance      = parameters.tolerance;
+    trust.max_iterations = parameters.max_iterations;
+    return TrustRegionNewton(trust).solve(problem, x, tangent);
+  }
 } // namespace rodnet
