@@ -817,8 +817,8 @@ namespace rodnet
                                     *v);
   }
 
-  std::unique_ptr<DrModel>
-  Scene::build_dr_model() const
+  void
+  Scene::refuse_for_dr_element() const
   {
     if (midpoint_clamp)
       throw std::invalid_argument(
@@ -847,6 +847,18 @@ namespace rodnet
           "entry \"" + items.front().entry +
           "\": the bending-active element of dynamic relaxation has no "
           "natural shape; use Solver/Method = newton or continuation");
+    for (const SceneMaterial &group : scene_materials)
+      if (group.inextensible)
+        throw std::invalid_argument(
+          "entry \"" + group.subsection +
+          "/Inextensible\": the "
+          "bending-active element of dynamic relaxation has no constraints; "
+          "use Solver/Method = newton or continuation");
+  }
+
+  void
+  Scene::refuse_for_dr_loading() const
+  {
     if (fixed_loads)
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "
@@ -857,13 +869,13 @@ namespace rodnet
         "entry \"Loads/Imperfections/Magnitude\": dynamic relaxation ramps "
         "its loads only, and cannot hold the imperfections; set Magnitude = "
         "ramped or use Solver/Method = newton or continuation");
-    for (const SceneMaterial &group : scene_materials)
-      if (group.inextensible)
-        throw std::invalid_argument(
-          "entry \"" + group.subsection +
-          "/Inextensible\": the "
-          "bending-active element of dynamic relaxation has no constraints; "
-          "use Solver/Method = newton or continuation");
+  }
+
+  std::unique_ptr<DrModel>
+  Scene::build_dr_model() const
+  {
+    refuse_for_dr_element();
+    refuse_for_dr_loading();
     auto [network, materials] = build_network();
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)
