@@ -18,6 +18,17 @@ namespace rodnet
     std::string phrase;
   };
 
+  /// The arguments of one NewtonSolver::solve() and the solver's
+  /// parameters.
+  struct NewtonSolve
+  {
+    const NewtonSolver::Problem    &problem;
+    NewtonSolver::VectorType       &x;
+    NewtonSolver::MatrixType       &tangent;
+    TangentFactorizationCache      *factorizations;
+    const NewtonSolver::Parameters &parameters;
+  };
+
   /**
    * A globalization of Newton's method, selected by name
    * (NewtonSolver::Parameters::line_search, the scene entry "Line search"):
@@ -30,14 +41,10 @@ namespace rodnet
   public:
     virtual ~NewtonGlobalization() = default;
 
-    /// NewtonSolver::solve() with @p parameters; the caller has checked
-    /// that the problem has the potential the traits ask for.
+    /// NewtonSolver::solve(); the caller has checked that the problem has
+    /// the potential the traits ask for.
     virtual NewtonSolver::Result
-    solve(const NewtonSolver::Problem    &problem,
-          NewtonSolver::VectorType       &x,
-          NewtonSolver::MatrixType       &tangent,
-          TangentFactorizationCache      *factorizations,
-          const NewtonSolver::Parameters &parameters) const = 0;
+    solve(const NewtonSolve &call) const = 0;
   };
 
   /// Newton's globalizations by name, with their traits.

@@ -35,10 +35,7 @@ namespace rodnet
         result.residual_norm = NAN;
         return result;
       }
-    return globalization->solve(problem,
-                                x,
-                                tangent,
-                                factorizations,
-                                parameters);
+    return globalization->solve(
+      {problem, x, tangent, factorizations, parameters});
   }
 } // namespace rodnet

@@ -174,13 +174,14 @@ namespace rodnet
   }
 
   NewtonSolver::Result
-  NoxLineSearch::solve(const NewtonSolver::Problem    &problem,
-                       VectorType                     &x,
-                       MatrixType                     &tangent,
-                       TangentFactorizationCache      *factorizations,
-                       const NewtonSolver::Parameters &parameters) const
+  NoxLineSearch::solve(const NewtonSolve &call) const
   {
-    using Result = NewtonSolver::Result;
+    using Result                                   = NewtonSolver::Result;
+    const NewtonSolver::Problem    &problem        = call.problem;
+    VectorType                     &x              = call.x;
+    MatrixType                     &tangent        = call.tangent;
+    TangentFactorizationCache      *factorizations = call.factorizations;
+    const NewtonSolver::Parameters &parameters     = call.parameters;
     const Teuchos::RCP<Teuchos::ParameterList> nox =
       nox_parameters(method, user_defined);
     Teuchos::RCP<NoxGroup>             group;

@@ -26,11 +26,7 @@ namespace rodnet
                              user_defined = Teuchos::null);
 
     NewtonSolver::Result
-    solve(const NewtonSolver::Problem    &problem,
-          NewtonSolver::VectorType       &x,
-          NewtonSolver::MatrixType       &tangent,
-          TangentFactorizationCache      *factorizations,
-          const NewtonSolver::Parameters &parameters) const override;
+    solve(const NewtonSolve &call) const override;
 
   private:
     std::string                                       method;

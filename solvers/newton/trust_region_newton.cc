@@ -527,18 +527,13 @@ namespace rodnet
   }
 
   NewtonSolver::Result
-  TrustRegionGlobalization::solve(
-    const NewtonSolver::Problem    &problem,
-    NewtonSolver::VectorType       &x,
-    NewtonSolver::MatrixType       &tangent,
-    TangentFactorizationCache      *factorizations,
-    const NewtonSolver::Parameters &parameters) const
+  TrustRegionGlobalization::solve(const NewtonSolve &call) const
   {
-    // The trust region factorizes shifted scaled tangents of its own.
-    (void)factorizations;
+    // The trust region factorizes shifted scaled tangents of its own: no
+    // use for call.factorizations.
     TrustRegionNewton::Parameters trust;
-    trust.tolerance      = parameters.tolerance;
-    trust.max_iterations = parameters.max_iterations;
-    return TrustRegionNewton(trust).solve(problem, x, tangent);
+    trust.tolerance      = call.parameters.tolerance;
+    trust.max_iterations = call.parameters.max_iterations;
+    return TrustRegionNewton(trust).solve(call.problem, call.x, call.tangent);
   }
 } // namespace rodnet

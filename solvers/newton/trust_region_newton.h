@@ -106,11 +106,7 @@ namespace rodnet
   {
   public:
     NewtonSolver::Result
-    solve(const NewtonSolver::Problem    &problem,
-          NewtonSolver::VectorType       &x,
-          NewtonSolver::MatrixType       &tangent,
-          TangentFactorizationCache      *factorizations,
-          const NewtonSolver::Parameters &parameters) const override;
+    solve(const NewtonSolve &call) const override;
   };
 } // namespace rodnet
 
