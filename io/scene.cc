@@ -2,6 +2,7 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <core/vertex_selector.h>
 #include <io/entry_numbers.h>
 #include <io/entry_tree.h>
 #include <io/run_limits.h>
@@ -12,7 +13,6 @@
 #include <io/substrate.h>
 #include <io/time_drive.h>
 #include <io/unread_geometry_entries.h>
-#include <io/vertex_selector.h>
 #include <materials/rod_material.h>
 #include <solvers/time/integration_scheme_registry.h>
 
