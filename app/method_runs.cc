@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 namespace rodnet
 {
@@ -103,18 +104,6 @@ namespace rodnet
       "stable",
       "in_range",
       "jump"};
-
-    /// The values of continuation_columns at the point @p info.
-    std::vector<double>
-    continuation_checks(const ArclengthContinuation::StepInfo &info)
-    {
-      return {info.arclength,
-              double(info.branch),
-              double(info.check.negative_eigenvalues),
-              double(info.check.stable),
-              double(info.strain.in_range),
-              double(info.kind == ArclengthContinuation::PointKind::jump)};
-    }
 
     /// The check columns of probes.csv in a time-stepping run. Dynamic
     /// steps do not check stability: inertia holds their tangent.
@@ -225,132 +214,145 @@ namespace rodnet
       parameters.strain_limits.fiber_distance      = scene.fiber_distances();
       return parameters;
     }
+
+    /// The parameters of @p Solver that @p scene and @p probes ask for.
+    template <class Solver>
+    typename Solver::Parameters
+    equilibrium_parameters(const Scene &scene, const ProbeList &probes)
+    {
+      if constexpr (std::is_same_v<Solver, StaticSolver>)
+        return static_parameters(scene, probes);
+      else
+        return continuation_parameters(scene);
+    }
+
+    /// The values of the check columns of a Newton load step.
+    std::vector<double>
+    equilibrium_checks(const StaticSolver::StepInfo &info)
+    {
+      return {double(info.check.stable), double(info.strain.in_range)};
+    }
+
+    /// The values of continuation_columns at the point @p info.
+    std::vector<double>
+    equilibrium_checks(const ArclengthContinuation::StepInfo &info)
+    {
+      return {info.arclength,
+              double(info.branch),
+              double(info.check.negative_eigenvalues),
+              double(info.check.stable),
+              double(info.strain.in_range),
+              double(info.kind == ArclengthContinuation::PointKind::jump)};
+    }
   } // namespace
 
 
-  NewtonRun::NewtonRun(const Scene     &scene,
-                       RodModel        &model,
-                       const ProbeList &probes,
-                       std::ostream    *log)
+  template <class Solver>
+  EquilibriumRun<Solver>::EquilibriumRun(const Scene     &scene,
+                                         RodModel        &model,
+                                         const ProbeList &probes,
+                                         std::ostream    *log)
       : MethodRun(model, probes)
-      , parameters(static_parameters(scene, probes))
+      , parameters(equilibrium_parameters<Solver>(scene, probes))
       , u(model.create_vector())
       , solver(model, parameters, log)
   {
   }
 
 
+  template <class Solver>
   std::vector<std::string>
-  NewtonRun::check_columns() const
+  EquilibriumRun<Solver>::check_columns() const
   {
-    return {"stable", "in_range"};
+    if constexpr (std::is_same_v<Solver, StaticSolver>)
+      return {"stable", "in_range"};
+    else
+      return continuation_columns;
   }
 
 
+  template <class Solver>
   void
-  NewtonRun::describe(std::ostream *log) const
+  EquilibriumRun<Solver>::describe(std::ostream *log) const
   {
-    if (log != nullptr)
+    if (log == nullptr)
+      return;
+    if constexpr (std::is_same_v<Solver, StaticSolver>)
       *log << "rodnet: " << model.network().rods().size() << " rod(s), "
            << model.layout().n_dofs() << " DoFs, "
            << model.layout().hinges().size() << " hinges" << std::endl;
-  }
-
-
-  void
-  NewtonRun::run(StepRecorder<VectorType> &recorder, RunSummary &summary)
-  {
-    // Step 0: the unloaded state, where every run starts; it is not
-    // checked (NaN in the check columns).
-    recorder.record(0,
-                    0.0,
-                    0.0,
-                    evaluate_probes(probes,
-                                    model,
-                                    u,
-                                    0.0,
-                                    parameters.track_lowest_eigenvalue ?
-                                      solver.lowest_eigenvalue(u, 0.0) :
-                                      std::nan("")),
-                    u,
-                    {std::nan(""), std::nan("")});
-    solver.run(u,
-               record_equilibria<StaticSolver>(
-                 recorder,
-                 probes,
-                 model,
-                 summary,
-                 [](const StaticSolver::StepInfo &info, const VectorType &) {
-                   return info.lowest_eigenvalue;
-                 },
-                 [](const StaticSolver::StepInfo &info) {
-                   return std::vector<double>{double(info.check.stable),
-                                              double(info.strain.in_range)};
-                 }));
-  }
-
-
-  void
-  NewtonRun::finish(RunSummary &summary) const
-  {
-    summary.critical_load_factor = solver.critical_load_factor();
-  }
-
-
-  ContinuationRun::ContinuationRun(const Scene     &scene,
-                                   RodModel        &model,
-                                   const ProbeList &probes,
-                                   std::ostream    *log)
-      : MethodRun(model, probes)
-      , u(model.create_vector())
-      , solver(model, continuation_parameters(scene), log)
-  {
-  }
-
-
-  std::vector<std::string>
-  ContinuationRun::check_columns() const
-  {
-    return continuation_columns;
-  }
-
-
-  void
-  ContinuationRun::describe(std::ostream *log) const
-  {
-    if (log != nullptr)
+    else
       *log << "rodnet (continuation): " << model.network().rods().size()
            << " rod(s), " << model.layout().n_dofs() << " DoFs" << std::endl;
   }
 
 
+  template <class Solver>
   void
-  ContinuationRun::run(StepRecorder<VectorType> &recorder, RunSummary &summary)
+  EquilibriumRun<Solver>::run(StepRecorder<VectorType> &recorder,
+                              RunSummary               &summary)
   {
+    // Newton's step 0: the unloaded state, where every run starts; it is
+    // not checked (NaN in the check columns). A path records its start.
+    if constexpr (std::is_same_v<Solver, StaticSolver>)
+      recorder.record(0,
+                      0.0,
+                      0.0,
+                      evaluate_probes(probes,
+                                      model,
+                                      u,
+                                      0.0,
+                                      parameters.track_lowest_eigenvalue ?
+                                        solver.lowest_eigenvalue(u, 0.0) :
+                                        std::nan("")),
+                      u,
+                      {std::nan(""), std::nan("")});
     solver.run(u,
-               record_equilibria<ArclengthContinuation>(
+               record_equilibria<Solver>(
                  recorder,
                  probes,
                  model,
                  summary,
-                 [&](const ArclengthContinuation::StepInfo &info,
-                     const VectorType                      &solution) {
-                   return lowest_eigenvalue_if_asked(probes,
-                                                     model,
-                                                     solution,
-                                                     info.load_factor,
-                                                     tangent);
+                 [this](const typename Solver::StepInfo &info,
+                        const VectorType                &solution) {
+                   return lowest_eigenvalue_at(info, solution);
                  },
-                 continuation_checks));
+                 [](const typename Solver::StepInfo &info) {
+                   return equilibrium_checks(info);
+                 }));
   }
 
 
-  void
-  ContinuationRun::finish(RunSummary &summary) const
+  template <class Solver>
+  double
+  EquilibriumRun<Solver>::lowest_eigenvalue_at(
+    const typename Solver::StepInfo &info,
+    const VectorType                &solution)
   {
-    if (!solver.bifurcations().empty())
+    if constexpr (std::is_same_v<Solver, StaticSolver>)
+      return info.lowest_eigenvalue;
+    else
+      return lowest_eigenvalue_if_asked(probes,
+                                        model,
+                                        solution,
+                                        info.load_factor,
+                                        tangent);
+  }
+
+
+  template <class Solver>
+  void
+  EquilibriumRun<Solver>::finish(RunSummary &summary) const
+  {
+    if constexpr (std::is_same_v<Solver, StaticSolver>)
+      summary.critical_load_factor = solver.critical_load_factor();
+    else if (!solver.bifurcations().empty())
       summary.critical_load_factor = solver.bifurcations().front();
   }
+
+
+  template class EquilibriumRun<StaticSolver>;
+  template class EquilibriumRun<ArclengthContinuation>;
 
 
   RelaxationRun::RelaxationRun(const Scene     &scene,

@@ -83,16 +83,22 @@ namespace rodnet
     const ProbeList &probes;
   };
 
-  /// Newton load stepping (Solver/Method = newton), StaticSolver.
-  class NewtonRun : public MethodRun<RodModel, VectorType>
+  /**
+   * The methods that follow equilibria of a RodModel with @p Solver and
+   * write mode shapes: Newton load stepping (NewtonRun, StaticSolver) and
+   * path following (ContinuationRun, ArclengthContinuation). Defined for
+   * these two in method_runs.cc.
+   */
+  template <class Solver>
+  class EquilibriumRun : public MethodRun<RodModel, VectorType>
   {
   public:
     static constexpr bool writes_modes = true;
 
-    NewtonRun(const Scene     &scene,
-              RodModel        &model,
-              const ProbeList &probes,
-              std::ostream    *log);
+    EquilibriumRun(const Scene     &scene,
+                   RodModel        &model,
+                   const ProbeList &probes,
+                   std::ostream    *log);
 
     std::vector<std::string>
     check_columns() const;
@@ -100,51 +106,39 @@ namespace rodnet
     void
     describe(std::ostream *log) const;
 
-    /// Records the unloaded state and every converged load step.
+    /// Records every converged state: Newton's unloaded state and load
+    /// steps, every point of the path.
     void
     run(StepRecorder<VectorType> &recorder, RunSummary &summary);
 
-    /// The critical load factor the solver found, if any.
+    /// The critical load factor: the one StaticSolver found, or the path's
+    /// first bifurcation, if any.
     void
     finish(RunSummary &summary) const;
 
   private:
-    const StaticSolver::Parameters parameters;
-    VectorType                     u;
-    StaticSolver                   solver;
-  };
+    /// The lowest eigenvalue at the converged @p solution of the step
+    /// @p info, for the probes: StaticSolver tracks it where they ask;
+    /// along a path it is computed here (NaN where no probe asks).
+    double
+    lowest_eigenvalue_at(const typename Solver::StepInfo &info,
+                         const VectorType                &solution);
 
-  /// Path following (Solver/Method = continuation), ArclengthContinuation.
-  class ContinuationRun : public MethodRun<RodModel, VectorType>
-  {
-  public:
-    static constexpr bool writes_modes = true;
-
-    ContinuationRun(const Scene     &scene,
-                    RodModel        &model,
-                    const ProbeList &probes,
-                    std::ostream    *log);
-
-    std::vector<std::string>
-    check_columns() const;
-
-    void
-    describe(std::ostream *log) const;
-
-    /// Records every point of the path.
-    void
-    run(StepRecorder<VectorType> &recorder, RunSummary &summary);
-
-    /// The first bifurcation as the critical load factor, if any.
-    void
-    finish(RunSummary &summary) const;
-
-  private:
-    VectorType            u;
-    ArclengthContinuation solver;
-    /// The tangent for the probes' lowest eigenvalue.
+    const typename Solver::Parameters parameters;
+    VectorType                        u;
+    Solver                            solver;
+    /// The tangent of lowest_eigenvalue_at() along a path.
     MatrixType tangent;
   };
+
+  extern template class EquilibriumRun<StaticSolver>;
+  extern template class EquilibriumRun<ArclengthContinuation>;
+
+  /// Newton load stepping (Solver/Method = newton), StaticSolver.
+  using NewtonRun = EquilibriumRun<StaticSolver>;
+
+  /// Path following (Solver/Method = continuation), ArclengthContinuation.
+  using ContinuationRun = EquilibriumRun<ArclengthContinuation>;
 
   /// Dynamic relaxation of the bending-active element (Solver/Method =
   /// dynamic relaxation), on a DrModel.

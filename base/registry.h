@@ -115,6 +115,28 @@ namespace rodnet
       return find(name).description;
     }
 
+    /// The names joined by "|", in the order of names(): the choices of a
+    /// dealii::Patterns::Selection.
+    std::string
+    selection() const
+    {
+      std::string joined;
+      for (const std::string &name : names())
+        joined += (joined.empty() ? "" : "|") + name;
+      return joined;
+    }
+
+    /// "name: description. " for every name, in the order of names(): the
+    /// help of a selection.
+    std::string
+    listing() const
+    {
+      std::string text;
+      for (const std::string &name : names())
+        text += name + ": " + description(name) + ". ";
+      return text;
+    }
+
   private:
     struct Entry
     {
@@ -142,6 +164,57 @@ namespace rodnet
     std::map<std::string, Entry> entries;
     /// The names in the order of registration.
     std::vector<std::string> registered;
+  };
+
+  /**
+   * A Registry whose entries carry traits as well: what a caller needs to
+   * know of an extension before it can make one (whether a time integrator
+   * has inertia, whether a line search needs a potential). Each entry is
+   * registered with its traits.
+   */
+  template <class Traits, class Product, class... Arguments>
+  class TraitRegistry : public Registry<Product, Arguments...>
+  {
+  public:
+    using Base    = Registry<Product, Arguments...>;
+    using Factory = typename Base::Factory;
+    using Base::Base;
+
+    /// Registers @p factory with its @p traits under @p name.
+    void
+    add(const std::string &name,
+        const std::string &description,
+        const Traits      &traits,
+        Factory            factory)
+    {
+      Base::add(name, description, std::move(factory));
+      traits_of.emplace(name, traits);
+    }
+
+    /// Registers @p Extension, made from the arguments of create(), with
+    /// its @p traits under @p name.
+    template <class Extension>
+    void
+    add(const std::string &name,
+        const std::string &description,
+        const Traits      &traits)
+    {
+      Base::template add<Extension>(name, description);
+      traits_of.emplace(name, traits);
+    }
+
+    /// The traits of @p name; throws std::invalid_argument listing the
+    /// known names for an unknown one.
+    const Traits &
+    traits(const std::string &name) const
+    {
+      // description() refuses an unknown name with the registry's message.
+      Base::description(name);
+      return traits_of.at(name);
+    }
+
+  private:
+    std::map<std::string, Traits> traits_of;
   };
 } // namespace rodnet
 

@@ -569,8 +569,7 @@ namespace rodnet
       total += dr_beam_energy(
         stiffness[e.rod],
         e.reference.rest_length,
-        DrBeamKinematics(local_dofs(e, u), e.reference).strains(),
-        nullptr);
+        DrBeamKinematics(local_dofs(e, u), e.reference).strains());
     return total;
   }
 

@@ -5,6 +5,7 @@
 
 #include <elements/quaternion.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
@@ -302,6 +303,16 @@ namespace rodnet
     rods() const
     {
       return rod_list;
+    }
+
+    /// Whether the flag @p flag of Rod (&Rod::inextensible,
+    /// &Rod::developable) is set on any rod.
+    bool
+    any_rod(const bool Rod::*flag) const
+    {
+      return std::any_of(rod_list.begin(),
+                         rod_list.end(),
+                         [flag](const Rod &rod) { return rod.*flag; });
     }
 
     /// Undeformed position of triangulation vertex @p v.

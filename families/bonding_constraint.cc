@@ -1,9 +1,9 @@
 #include <deal.II/base/utilities.h>
 
 #include <core/rod_model.h>
+#include <core/vertex_selector.h>
 #include <families/bonding_constraint.h>
 #include <families/inextensibility_family.h>
-#include <io/vertex_selector.h>
 
 #include <algorithm>
 #include <cmath>

@@ -317,10 +317,7 @@ namespace rodnet
   bool
   DevelopableRibbonFamily::applies_to(const RodNetwork &network)
   {
-    for (const Rod &rod : network.rods())
-      if (rod.developable)
-        return true;
-    return false;
+    return network.any_rod(&Rod::developable);
   }
 
 

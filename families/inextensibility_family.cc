@@ -55,10 +55,7 @@ namespace rodnet
   bool
   InextensibilityFamily::applies_to(const RodNetwork &network)
   {
-    for (const Rod &rod : network.rods())
-      if (rod.inextensible)
-        return true;
-    return false;
+    return network.any_rod(&Rod::inextensible);
   }
 
 

@@ -1,7 +1,7 @@
 // The distance between two vertices: the end-to-end distance of a rod, the
 // span of an arch, the opening of a gap.
+#include <core/vertex_selector.h>
 #include <io/probe.h>
-#include <io/vertex_selector.h>
 
 namespace rodnet
 {

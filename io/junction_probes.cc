@@ -2,8 +2,8 @@
 // it transmits (or the reaction moment of a clamped rod end).
 #include <deal.II/base/utilities.h>
 
+#include <core/vertex_selector.h>
 #include <io/probe.h>
-#include <io/vertex_selector.h>
 
 #include <cmath>
 #include <stdexcept>

@@ -2,8 +2,8 @@
 // network (doc/dynamics.md, "Rigid bodies").
 #include <deal.II/base/utilities.h>
 
+#include <core/vertex_selector.h>
 #include <io/rigid_body_entries.h>
-#include <io/vertex_selector.h>
 
 #include <cmath>
 #include <set>

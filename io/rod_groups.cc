@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <io/nearest_names.h>
+#include <base/nearest_names.h>
 #include <io/rod_groups.h>
 
 #include <algorithm>

@@ -2,6 +2,7 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <core/vertex_selector.h>
 #include <io/entry_numbers.h>
 #include <io/entry_tree.h>
 #include <io/run_limits.h>
@@ -12,8 +13,8 @@
 #include <io/substrate.h>
 #include <io/time_drive.h>
 #include <io/unread_geometry_entries.h>
-#include <io/vertex_selector.h>
 #include <materials/rod_material.h>
+#include <solvers/time/integration_scheme_registry.h>
 
 #include <cmath>
 #include <families/body_weight_family.h>
@@ -432,7 +433,9 @@ namespace rodnet
     const bool        static_checks =
       solution_method == "newton" || solution_method == "continuation" ||
       (solution_method == "time stepping" &&
-       prm.get({"Solver", "Time stepping"}, "Integrator") == "quasi-static");
+       !integration_scheme_registry()
+          .traits(prm.get({"Solver", "Time stepping"}, "Integrator"))
+          .dynamic);
     const bool   time_stepping = solution_method == "time stepping";
     const double bytes_per_dof =
       memory_per_dof(static_checks,
@@ -814,8 +817,8 @@ namespace rodnet
                                     *v);
   }
 
-  std::unique_ptr<DrModel>
-  Scene::build_dr_model() const
+  void
+  Scene::refuse_for_dr_element() const
   {
     if (midpoint_clamp)
       throw std::invalid_argument(
@@ -844,6 +847,18 @@ namespace rodnet
           "entry \"" + items.front().entry +
           "\": the bending-active element of dynamic relaxation has no "
           "natural shape; use Solver/Method = newton or continuation");
+    for (const SceneMaterial &group : scene_materials)
+      if (group.inextensible)
+        throw std::invalid_argument(
+          "entry \"" + group.subsection +
+          "/Inextensible\": the "
+          "bending-active element of dynamic relaxation has no constraints; "
+          "use Solver/Method = newton or continuation");
+  }
+
+  void
+  Scene::refuse_for_dr_loading() const
+  {
     if (fixed_loads)
       throw std::invalid_argument(
         "entry \"Loads/Fixed loads\": dynamic relaxation ramps its loads "
@@ -854,13 +869,13 @@ namespace rodnet
         "entry \"Loads/Imperfections/Magnitude\": dynamic relaxation ramps "
         "its loads only, and cannot hold the imperfections; set Magnitude = "
         "ramped or use Solver/Method = newton or continuation");
-    for (const SceneMaterial &group : scene_materials)
-      if (group.inextensible)
-        throw std::invalid_argument(
-          "entry \"" + group.subsection +
-          "/Inextensible\": the "
-          "bending-active element of dynamic relaxation has no constraints; "
-          "use Solver/Method = newton or continuation");
+  }
+
+  std::unique_ptr<DrModel>
+  Scene::build_dr_model() const
+  {
+    refuse_for_dr_element();
+    refuse_for_dr_loading();
     auto [network, materials] = build_network();
     std::vector<RodStiffness> stiffness;
     for (unsigned int r = 0; r < materials.size(); ++r)

@@ -396,6 +396,18 @@ namespace rodnet
               std::vector<std::shared_ptr<const RodMaterial>>>
     build_network() const;
 
+    /// Throws naming the entry for what the bending-active element of
+    /// dynamic relaxation cannot model: a clamp at a segment's midpoint,
+    /// element families, natural shapes, constraints, a rigid body's
+    /// centre off its vertex.
+    void
+    refuse_for_dr_element() const;
+
+    /// Throws naming the entry for loads that dynamic relaxation, which
+    /// ramps every load, cannot apply: fixed or held ones.
+    void
+    refuse_for_dr_loading() const;
+
     /// Throws naming the entry unless the start of every rod is clamped
     /// (the rods begin half a segment behind it, see
     /// "Clamp at first segment midpoint").

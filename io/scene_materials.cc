@@ -1,7 +1,7 @@
 #include <deal.II/base/patterns.h>
 
+#include <base/nearest_names.h>
 #include <io/entry_tree.h>
-#include <io/nearest_names.h>
 #include <io/rod_groups.h>
 #include <io/scene.h>
 #include <io/scene_entries.h>

@@ -5,6 +5,7 @@
 #include <io/parsed_function.h>
 #include <io/scene.h>
 #include <io/scene_entries.h>
+#include <solvers/time/integration_scheme_registry.h>
 
 #include <cmath>
 
@@ -105,7 +106,7 @@ namespace rodnet
       return;
     // Throws for a material group in use without its inertia.
     inertia();
-    if (p.integrator == "midpoint")
+    if (integration_scheme_registry().traits(p.integrator).needs_stored_energy)
       for (const unsigned int g : rod_material)
         {
           const RodMaterial &m = *scene_materials[g].material;

@@ -4,9 +4,9 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <core/vertex_selector.h>
 #include <io/scene_entries.h>
 #include <io/substrate.h>
-#include <io/vertex_selector.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>

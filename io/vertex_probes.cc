@@ -1,7 +1,7 @@
 // Probes of a vertex: its position and the reaction of the support that
 // holds it.
+#include <core/vertex_selector.h>
 #include <io/probe.h>
-#include <io/vertex_selector.h>
 
 #include <stdexcept>
 

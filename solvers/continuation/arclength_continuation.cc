@@ -199,12 +199,6 @@ namespace rodnet
     JudgedResult result;
     VectorType   r = model.create_vector(), r_lambda = r, fixed_rate = r, a = r,
                b = r, change = r;
-    const auto constraint_value = [&]() {
-      change = u;
-      change -= base.u;
-      return (constraint.n_u ? dot_w(*constraint.n_u, change) : 0.0) +
-             constraint.n_lambda * (lambda - base.lambda) - constraint.length;
-    };
     try
       {
         model.apply_boundary_values(u, lambda);
@@ -217,7 +211,8 @@ namespace rodnet
             model.assemble(u, lambda, &r, &tangent);
             result.residual      = criterion.norms(u, r);
             result.residual_norm = r.l2_norm();
-            const double g       = constraint_value();
+            const double g =
+              constraint_value(base, constraint, u, lambda, change);
             if (corrector_end.reached(g, result))
               return result;
             // Block elimination of the bordered system: K a = -R,
@@ -235,12 +230,8 @@ namespace rodnet
             // does not change: those components are rounding, left out.
             project_out(a, base.symmetries);
             project_out(b, base.symmetries);
-            double dlambda = -g / constraint.n_lambda;
-            if (constraint.n_u)
-              dlambda =
-                -(g + dot_w(*constraint.n_u, a)) /
-                (constraint.n_lambda + dot_w(*constraint.n_u, fixed_rate) -
-                 dot_w(*constraint.n_u, b));
+            const double dlambda =
+              load_factor_correction(constraint, g, a, b, fixed_rate);
             u.add(1.0, a, -dlambda, b);
             lambda += dlambda;
             model.apply_boundary_values(u, lambda);
@@ -252,6 +243,34 @@ namespace rodnet
         result.failure   = e.what();
       }
     return result;
+  }
+
+  double
+  ArclengthContinuation::constraint_value(const PathPoint  &base,
+                                          const Constraint &constraint,
+                                          const VectorType &u,
+                                          const double      lambda,
+                                          VectorType       &change) const
+  {
+    change = u;
+    change -= base.u;
+    return (constraint.n_u ? dot_w(*constraint.n_u, change) : 0.0) +
+           constraint.n_lambda * (lambda - base.lambda) - constraint.length;
+  }
+
+  double
+  ArclengthContinuation::load_factor_correction(
+    const Constraint &constraint,
+    const double      g,
+    const VectorType &a,
+    const VectorType &b,
+    const VectorType &fixed_rate) const
+  {
+    if (!constraint.n_u)
+      return -g / constraint.n_lambda;
+    return -(g + dot_w(*constraint.n_u, a)) /
+           (constraint.n_lambda + dot_w(*constraint.n_u, fixed_rate) -
+            dot_w(*constraint.n_u, b));
   }
 
   void

@@ -203,6 +203,26 @@ namespace rodnet
             VectorType       &u,
             double           &lambda);
 
+    /// The value n.(u - u0, lambda - lambda0) - length of @p constraint at
+    /// (@p u, @p lambda) from @p base's (u0, lambda0); @p change is
+    /// scratch.
+    double
+    constraint_value(const PathPoint  &base,
+                     const Constraint &constraint,
+                     const VectorType &u,
+                     double            lambda,
+                     VectorType       &change) const;
+
+    /// The load factor change dlambda of the corrector's step du = a -
+    /// dlambda b that makes @p constraint, whose value is @p g, hold to
+    /// first order (the fixed DoFs move by dlambda @p fixed_rate).
+    double
+    load_factor_correction(const Constraint &constraint,
+                           double            g,
+                           const VectorType &a,
+                           const VectorType &b,
+                           const VectorType &fixed_rate) const;
+
     /// The path's tangent at the converged @p p (its reference reset),
     /// oriented along @p previous (W inner product), or with lambda
     /// increasing if there is none.

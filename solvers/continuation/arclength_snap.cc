@@ -1,5 +1,6 @@
 #include <solvers/checks/equilibrium_check.h>
 #include <solvers/continuation/arclength_continuation.h>
+#include <solvers/newton/newton_globalization.h>
 #include <solvers/statics/static_solver.h>
 
 #include <algorithm>
@@ -117,8 +118,7 @@ namespace rodnet
     else
       return true;
     tried += (tried.empty() ? "" : "; ") +
-             (line_search == "full step" ? std::string("Newton in full steps") :
-                                           "the " + line_search) +
+             line_search_registry().traits(line_search).phrase +
              " from the fold's state: " + outcome;
     model.set_state(*fold.state);
     return false;

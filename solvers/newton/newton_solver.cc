@@ -1,193 +1,15 @@
-#include <solvers/newton/energy_line_search.h>
+#include <solvers/newton/newton_globalization.h>
 #include <solvers/newton/newton_solver.h>
-#include <solvers/newton/nox_group.h>
-#include <solvers/newton/trust_region_newton.h>
 
-#include <NOX.H>
-#include <Teuchos_ParameterList.hpp>
-#include <Teuchos_RCP.hpp>
-#include <Teuchos_oblackholestream.hpp>
 #include <cmath>
-#include <cstdlib>
-#include <exception>
 #include <stdexcept>
 
 namespace rodnet
 {
-  namespace
-  {
-    using VectorType = NewtonSolver::VectorType;
-    using MatrixType = NewtonSolver::MatrixType;
-
-    /// NOX's view of Problem::converged: the iterate and its residual (the
-    /// deal.II vectors of our group), judged by the problem's own test.
-    class CallbackTest : public NOX::StatusTest::Generic
-    {
-    public:
-      explicit CallbackTest(const NewtonSolver::Problem &problem)
-          : problem(problem)
-      {
-      }
-
-      NOX::StatusTest::StatusType
-      checkStatus(const NOX::Solver::Generic      &solver,
-                  const NOX::StatusTest::CheckType check) override
-      {
-        const NOX::Abstract::Group &group = solver.getSolutionGroup();
-        if (check == NOX::StatusTest::None || !group.isF())
-          return status = NOX::StatusTest::Unevaluated;
-        status = problem.converged(NoxVector::values(group.getX()),
-                                   NoxVector::values(group.getF())) ?
-                   NOX::StatusTest::Converged :
-                   NOX::StatusTest::Unconverged;
-        return status;
-      }
-
-      NOX::StatusTest::StatusType
-      getStatus() const override
-      {
-        return status;
-      }
-
-      std::ostream &
-      print(std::ostream &stream, int indent = 0) const override
-      {
-        return stream << std::string(indent, ' ') << status
-                      << " residual test of the problem" << std::endl;
-      }
-
-    private:
-      const NewtonSolver::Problem &problem;
-      NOX::StatusTest::StatusType  status = NOX::StatusTest::Unevaluated;
-    };
-
-    std::string
-    nox_line_search_name(const std::string &name)
-    {
-      if (name == "energy")
-        return "User Defined";
-      if (name == "backtrack")
-        return "Backtrack";
-      if (name == "polynomial")
-        return "Polynomial";
-      if (name == "full step" || name == "trust region")
-        return "Full Step";
-      throw std::invalid_argument(
-        "unknown line search \"" + name +
-        "\"; known: energy, backtrack, polynomial, full step, trust region");
-    }
-
-    /// NOX's parameters: a Newton direction, the named line search.
-    Teuchos::RCP<Teuchos::ParameterList>
-    nox_parameters(const NewtonSolver::Parameters &parameters)
-    {
-      auto list = Teuchos::rcp(new Teuchos::ParameterList);
-      list->set("Nonlinear Solver", "Line Search Based");
-      Teuchos::ParameterList &printing = list->sublist("Printing");
-      // NOX says nothing: its failures (a residual it cannot compute, a
-      // line search that gives up) come back as an unconverged result that
-      // the solvers report in their own words; some of its messages ignore
-      // the print types, so its streams go nowhere. RODNET_NOX_DEBUG in the
-      // environment prints NOX's iteration history and errors.
-      if (std::getenv("RODNET_NOX_DEBUG") != nullptr)
-        printing.set("Output Information",
-                     NOX::Utils::OuterIteration + NOX::Utils::Error);
-      else
-        {
-          const Teuchos::RCP<std::ostream> nowhere =
-            Teuchos::rcp(new Teuchos::oblackholestream);
-          printing.set("Output Information", 0);
-          printing.set("Output Stream", nowhere);
-          printing.set("Error Stream", nowhere);
-        }
-      Teuchos::ParameterList &search = list->sublist("Line Search");
-      search.set("Method", nox_line_search_name(parameters.line_search));
-      if (parameters.line_search == "energy")
-        search.set<Teuchos::RCP<NOX::LineSearch::UserDefinedFactory>>(
-          "User Defined Line Search Factory",
-          Teuchos::rcp(new EnergyLineSearchFactory));
-      list->sublist("Direction").set("Method", "Newton");
-      return list;
-    }
-
-    /// Stop when the state is not finite, when converged (the problem's
-    /// test, or |R| below the tolerance), or after max_iterations.
-    Teuchos::RCP<NOX::StatusTest::Generic>
-    status_tests(const NewtonSolver::Problem    &problem,
-                 const NewtonSolver::Parameters &parameters)
-    {
-      Teuchos::RCP<NOX::StatusTest::Generic> converged;
-      if (problem.converged)
-        converged = Teuchos::rcp(new CallbackTest(problem));
-      else
-        converged = Teuchos::rcp(
-          new NOX::StatusTest::NormF(parameters.tolerance,
-                                     NOX::StatusTest::NormF::Unscaled));
-      auto status =
-        Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
-      status->addStatusTest(Teuchos::rcp(new NOX::StatusTest::FiniteValue));
-      status->addStatusTest(converged);
-      status->addStatusTest(
-        Teuchos::rcp(new NOX::StatusTest::MaxIters(parameters.max_iterations)));
-      return status;
-    }
-
-    /// The message of the exception being handled (in a catch block).
-    std::string
-    current_exception_text()
-    {
-      try
-        {
-          throw;
-        }
-      catch (const std::exception &e)
-        {
-          return e.what();
-        }
-      catch (const char *text)
-        {
-          return text;
-        }
-      catch (...)
-        {
-          return "unknown exception";
-        }
-    }
-
-    /// The result of a finished solve, with the reason of a failure.
-    NewtonSolver::Result
-    judge(const NOX::Solver::Generic       &solver,
-          const NOX::StatusTest::StatusType outcome,
-          const NoxGroup                   &state,
-          const NewtonSolver::Parameters   &parameters)
-    {
-      const NOX::Abstract::Group &group = solver.getSolutionGroup();
-      NewtonSolver::Result        result;
-      result.iterations    = solver.getNumIterations();
-      result.residual_norm = group.isF() ? group.getNormF() : NAN;
-      result.converged     = outcome == NOX::StatusTest::Converged &&
-                         std::isfinite(result.residual_norm);
-      if (result.converged)
-        return result;
-      if (!state.failure().empty())
-        result.failure = state.failure();
-      else if (!std::isfinite(result.residual_norm))
-        result.failure = "the residual is not finite";
-      else if (result.iterations >= parameters.max_iterations)
-        result.failure =
-          "no convergence in " + std::to_string(parameters.max_iterations) +
-          " iterations (residual " + std::to_string(result.residual_norm) + ")";
-      else
-        result.failure = "the line search failed (residual " +
-                         std::to_string(result.residual_norm) + ")";
-      return result;
-    }
-  } // namespace
-
   NewtonSolver::NewtonSolver(const Parameters &parameters)
       : parameters(parameters)
+      , globalization(line_search_registry().create(parameters.line_search))
   {
-    nox_line_search_name(parameters.line_search);
     if (parameters.linear_solver != "auto" &&
         parameters.linear_solver != "klu" && parameters.linear_solver != "band")
       throw std::invalid_argument("unknown linear solver \"" +
@@ -195,62 +17,25 @@ namespace rodnet
                                   "\"; known: auto, klu, band");
   }
 
+  NewtonSolver::~NewtonSolver() = default;
+
   NewtonSolver::Result
   NewtonSolver::solve(const Problem             &problem,
                       VectorType                &x,
                       MatrixType                &tangent,
                       TangentFactorizationCache *factorizations) const
   {
-    if (parameters.needs_potential() && (!problem.energy || problem.rank_one))
+    const LineSearchTraits &traits =
+      line_search_registry().traits(parameters.line_search);
+    if (traits.needs_potential && (!problem.energy || problem.rank_one))
       {
         Result result;
-        result.failure =
-          (parameters.line_search == "energy" ? "the energy line search" :
-                                                "the trust region") +
-          std::string(" needs the potential of the problem, "
-                      "which this solve does not have");
+        result.failure = traits.phrase + " needs the potential of the problem, "
+                                         "which this solve does not have";
         result.residual_norm = NAN;
         return result;
       }
-    if (parameters.line_search == "trust region")
-      {
-        TrustRegionNewton::Parameters trust;
-        trust.tolerance      = parameters.tolerance;
-        trust.max_iterations = parameters.max_iterations;
-        return TrustRegionNewton(trust).solve(problem, x, tangent);
-      }
-    const Teuchos::RCP<Teuchos::ParameterList> nox = nox_parameters(parameters);
-    Teuchos::RCP<NoxGroup>                     group;
-    Teuchos::RCP<NOX::Solver::Generic>         solver;
-    NOX::StatusTest::StatusType outcome = NOX::StatusTest::Failed;
-    try
-      {
-        group   = Teuchos::rcp(new NoxGroup(
-          problem,
-          x,
-          tangent,
-          factorizations != nullptr ?
-              factorizations->get(tangent, parameters.linear_solver) :
-              TangentFactorization::create(tangent, parameters.linear_solver)));
-        solver  = NOX::Solver::buildSolver(group,
-                                          status_tests(problem, parameters),
-                                          nox);
-        outcome = solver->solve();
-      }
-    catch (...)
-      {
-        // NOX reports a residual or tangent our group could not compute by
-        // throwing a C string ("fill failed"); the reason is the one our
-        // group recorded. x keeps the initial guess.
-        Result result;
-        result.failure =
-          !group.is_null() && !group->failure().empty() ?
-            group->failure() :
-            "the nonlinear solver aborted: " + current_exception_text();
-        result.residual_norm = NAN;
-        return result;
-      }
-    x = NoxVector::values(solver->getSolutionGroup().getX());
-    return judge(*solver, outcome, *group, parameters);
+    return globalization->solve(
+      {problem, x, tangent, factorizations, parameters});
   }
 } // namespace rodnet

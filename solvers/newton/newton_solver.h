@@ -9,17 +9,18 @@
 #include <solvers/newton/tangent_factorization.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 
 namespace rodnet
 {
+  class NewtonGlobalization;
+
   /**
-   * Newton's method with a line search, run by Trilinos NOX ("Line Search
-   * Based" solver) on deal.II's Trilinos vectors and matrix through our own
-   * NOX group (NoxGroup), with linear solves by SuiteSparse KLU or LAPACK's
-   * band LU (TangentFactorization). deal.II 9.4 has no NOX wrapper; this is the
-   * thin interface between the two.
+   * Newton's method, globalized as Parameters::line_search says: a line
+   * search run by Trilinos NOX (NoxLineSearch) or the trust region
+   * (TrustRegionNewton), each registered by name in line_search_registry().
    */
   class NewtonSolver
   {
@@ -33,21 +34,20 @@ namespace rodnet
       /// unless the problem brings its own test (Problem::converged).
       double       tolerance      = 1e-10;
       unsigned int max_iterations = 25;
-      /// "energy" (EnergyLineSearch: needs Problem::energy), "backtrack",
-      /// "polynomial" (NOX's, on |residual|), "full step" or "trust region"
-      /// (TrustRegionNewton: needs Problem::energy, not run by NOX).
+      /// A name of line_search_registry(): "energy" (EnergyLineSearch:
+      /// needs Problem::energy), "backtrack", "polynomial" (NOX's, on
+      /// |residual|), "full step" or "trust region" (TrustRegionNewton:
+      /// needs Problem::energy, not run by NOX).
       std::string line_search = "full step";
       /// The direct solver of the Newton systems: "auto", "klu" or "band"
       /// (TangentFactorization).
       std::string linear_solver = "auto";
 
       /// Whether the globalization judges steps by the problem's potential
-      /// (the energy line search and the trust region).
+      /// (the energy line search and the trust region): its registered
+      /// trait (LineSearchTraits).
       bool
-      needs_potential() const
-      {
-        return line_search == "energy" || line_search == "trust region";
-      }
+      needs_potential() const;
 
       /// Declares the entries of these parameters ("Line search", "Max
       /// iterations") in the current subsection of @p prm, with their defaults
@@ -125,7 +125,11 @@ namespace rodnet
         converged;
     };
 
+    /// Refuses an unknown line search or linear solver with
+    /// std::invalid_argument.
     explicit NewtonSolver(const Parameters &parameters);
+
+    ~NewtonSolver();
 
     /**
      * Solves residual(x) = 0 from the initial guess @p x, which holds the
@@ -141,7 +145,8 @@ namespace rodnet
           TangentFactorizationCache *factorizations = nullptr) const;
 
   private:
-    Parameters parameters;
+    Parameters                                 parameters;
+    std::unique_ptr<const NewtonGlobalization> globalization;
   };
 } // namespace rodnet
 

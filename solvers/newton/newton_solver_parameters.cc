@@ -1,5 +1,6 @@
 #include <deal.II/base/patterns.h>
 
+#include <solvers/newton/newton_globalization.h>
 #include <solvers/newton/newton_solver.h>
 
 namespace rodnet
@@ -7,22 +8,27 @@ namespace rodnet
   void
   NewtonSolver::Parameters::declare_parameters(dealii::ParameterHandler &prm)
   {
+    const LineSearchRegistry &searches = line_search_registry();
     prm.declare_entry("Line search",
                       "full step",
-                      dealii::Patterns::Selection(
-                        "energy|backtrack|polynomial|full step|trust region"),
-                      "Newton's globalization (doc/nonlinear_solvers.md). "
-                      "[-]");
+                      dealii::Patterns::Selection(searches.selection()),
+                      "Newton's globalization (doc/nonlinear_solvers.md). " +
+                        searches.listing() + "[-]");
     prm.declare_entry("Linear solver",
                       "auto",
                       dealii::Patterns::Selection("auto|klu|band"),
                       "Newton's direct solver: SuiteSparse KLU, LAPACK band "
                       "LU (one process); auto: band if 32 wide at most. [-]");
-    prm.declare_entry(
-      "Max iterations",
-      "25",
-      dealii::Patterns::Integer(1),
-      "Newton iterations per step before the step is cut. [-]");
+    prm.declare_entry("Max iterations",
+                      "25",
+                      dealii::Patterns::Integer(1),
+                      "Newton iterations per step before the step is cut. [-]");
+  }
+
+  bool
+  NewtonSolver::Parameters::needs_potential() const
+  {
+    return line_search_registry().traits(line_search).needs_potential;
   }
 
   void

@@ -525,4 +525,15 @@ namespace rodnet
     finish_result(current, result);
     return result;
   }
+
+  NewtonSolver::Result
+  TrustRegionGlobalization::solve(const NewtonSolve &call) const
+  {
+    // The trust region factorizes shifted scaled tangents of its own: no
+    // use for call.factorizations.
+    TrustRegionNewton::Parameters trust;
+    trust.tolerance      = call.parameters.tolerance;
+    trust.max_iterations = call.parameters.max_iterations;
+    return TrustRegionNewton(trust).solve(call.problem, call.x, call.tangent);
+  }
 } // namespace rodnet

@@ -1,6 +1,7 @@
 #ifndef RODNET_SOLVERS_NEWTON_TRUST_REGION_NEWTON_H
 #define RODNET_SOLVERS_NEWTON_TRUST_REGION_NEWTON_H
 
+#include <solvers/newton/newton_globalization.h>
 #include <solvers/newton/newton_solver.h>
 
 namespace rodnet
@@ -97,6 +98,15 @@ namespace rodnet
 
   private:
     Parameters parameters;
+  };
+
+  /// TrustRegionNewton as Newton's globalization "trust region", with the
+  /// tolerance and iterations of NewtonSolver::Parameters.
+  class TrustRegionGlobalization : public NewtonGlobalization
+  {
+  public:
+    NewtonSolver::Result
+    solve(const NewtonSolve &call) const override;
   };
 } // namespace rodnet
 

@@ -90,6 +90,47 @@ namespace rodnet
       return order;
     }
 
+    /// Whether the residual |R s_last| of each of the first @p count Ritz
+    /// pairs of @p order (s an eigenvector of T in @p ritz, s_last its last
+    /// block, R the coupling @p r to the next block) is below
+    /// @p tolerance |theta|.
+    bool
+    ritz_residuals_small(
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> &ritz,
+      const std::vector<Eigen::Index>                      &order,
+      const unsigned int                                    count,
+      const Eigen::MatrixXd                                &r,
+      const double                                          tolerance)
+    {
+      const Eigen::Index b = r.cols();
+      for (unsigned int i = 0; i < count; ++i)
+        {
+          const double theta = ritz.eigenvalues()[order[i]];
+          const double residual =
+            (r * ritz.eigenvectors().col(order[i]).tail(b)).norm();
+          if (!(residual <= tolerance * std::abs(theta)))
+            return false;
+        }
+      return true;
+    }
+
+    /// The first @p count Ritz pairs of @p order: the eigenvalues theta of
+    /// T in @p ritz and the vectors Q s over the basis @p q.
+    RitzPairs
+    ritz_pairs(const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> &ritz,
+               const std::vector<Eigen::Index>                      &order,
+               const unsigned int                                    count,
+               const Eigen::MatrixXd                                &q)
+    {
+      RitzPairs pairs{Eigen::VectorXd(count), Eigen::MatrixXd(q.rows(), count)};
+      for (unsigned int i = 0; i < count; ++i)
+        {
+          pairs.theta[i]       = ritz.eigenvalues()[order[i]];
+          pairs.vectors.col(i) = q * ritz.eigenvectors().col(order[i]);
+        }
+      return pairs;
+    }
+
     /**
      * Block Lanczos with full reorthogonalization on (K_ff - sigma I)^-1
      * (@p factorization): the Krylov basis Q grows by one block per solve
@@ -137,25 +178,11 @@ namespace rodnet
           const auto         order = order_of(ritz.eigenvalues(), wanted);
           const unsigned int count =
             std::min<Eigen::Index>(n, ritz.eigenvalues().size());
-          bool converged = grown >= std::min<Eigen::Index>(size, n);
-          for (unsigned int i = 0; i < count && converged; ++i)
-            {
-              const double theta = ritz.eigenvalues()[order[i]];
-              const double residual =
-                (r * ritz.eigenvectors().col(order[i]).tail(b)).norm();
-              converged = residual <= tolerance * std::abs(theta);
-            }
+          const bool converged =
+            grown >= std::min<Eigen::Index>(size, n) &&
+            ritz_residuals_small(ritz, order, count, r, tolerance);
           if (converged || grown >= size)
-            {
-              RitzPairs pairs{Eigen::VectorXd(count),
-                              Eigen::MatrixXd(size, count)};
-              for (unsigned int i = 0; i < count; ++i)
-                {
-                  pairs.theta[i]       = ritz.eigenvalues()[order[i]];
-                  pairs.vectors.col(i) = q * ritz.eigenvectors().col(order[i]);
-                }
-              return pairs;
-            }
+            return ritz_pairs(ritz, order, count, q);
           if (grown + b > max_columns)
             throw SolverFailure("the sparse eigen-solver did not converge in " +
                                 std::to_string(grown) + " Lanczos vectors");
@@ -304,6 +331,34 @@ namespace rodnet
       throw SolverFailure("the sparse eigen-solver found no shift below "
                           "the tangent's eigenvalues");
     }
+
+    /// The size of the eigen-space: the free DoFs but the multipliers.
+    unsigned int
+    eigenspace_size(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                    const dealii::AffineConstraints<double>      &constraints,
+                    const std::vector<global_dof_index>          &multipliers)
+    {
+      unsigned int n_free = 0;
+      for (unsigned int i = 0; i < tangent.m(); ++i)
+        n_free += !constraints.is_constrained(i);
+      for (const global_dof_index d : multipliers)
+        n_free -= !constraints.is_constrained(d);
+      return n_free;
+    }
+
+    /// How many eigenvalues of K_ff lie below @p tau: the negative inertia
+    /// of K_ff - tau I (doc of lowest_eigenpairs(), step 3).
+    unsigned int
+    eigenvalues_below(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+                      const dealii::AffineConstraints<double>      &constraints,
+                      const std::vector<global_dof_index>          &multipliers,
+                      const double                                  tau,
+                      Eigenpairs                                   &pairs)
+    {
+      return factorize(tangent, constraints, multipliers, tau, pairs)
+        ->inertia(0.0)
+        .negative;
+    }
   } // namespace
 
   Eigenpairs
@@ -339,6 +394,7 @@ namespace rodnet
     return pairs;
   }
 
+
   Eigenpairs
   lowest_eigenpairs(const dealii::TrilinosWrappers::SparseMatrix &tangent,
                     const dealii::AffineConstraints<double>      &constraints,
@@ -346,12 +402,8 @@ namespace rodnet
                     const std::vector<global_dof_index>          &multipliers,
                     const double                                  tolerance)
   {
-    // The eigen-space: the free DoFs but the multipliers.
-    unsigned int n_free = 0;
-    for (unsigned int i = 0; i < tangent.m(); ++i)
-      n_free += !constraints.is_constrained(i);
-    for (const global_dof_index d : multipliers)
-      n_free -= !constraints.is_constrained(d);
+    const unsigned int n_free =
+      eigenspace_size(tangent, constraints, multipliers);
     if (n_free == 0)
       throw std::invalid_argument("every DoF is constrained: no eigenpair");
     // The dense solver also where k is a fair part of the spectrum: the
@@ -384,9 +436,7 @@ namespace rodnet
         const double tau =
           lambda[wanted - 1] + 1e-6 * (lambda[wanted - 1] - sigma);
         const unsigned int below =
-          factorize(tangent, constraints, multipliers, tau, pairs)
-            ->inertia(0.0)
-            .negative;
+          eigenvalues_below(tangent, constraints, multipliers, tau, pairs);
         if (below <= wanted || wanted == n_free)
           {
             const unsigned int count = std::min(k, wanted);

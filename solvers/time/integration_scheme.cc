@@ -1,7 +1,20 @@
 #include <solvers/time/integration_scheme.h>
+#include <solvers/time/integration_scheme_registry.h>
 
 namespace rodnet
 {
+  bool
+  IntegrationScheme::dynamic() const
+  {
+    return integration_scheme_registry().traits(name()).dynamic;
+  }
+
+  bool
+  IntegrationScheme::needs_stored_energy() const
+  {
+    return integration_scheme_registry().traits(name()).needs_stored_energy;
+  }
+
   void
   IntegrationScheme::set_up(const StepStart       &step,
                             NewtonSolver::Problem &problem)

@@ -93,20 +93,15 @@ namespace rodnet
       return std::numeric_limits<double>::quiet_NaN();
     }
 
-    /// Whether the scheme has inertia (needs the mass matrix).
-    virtual bool
-    dynamic() const
-    {
-      return true;
-    }
+    /// Whether the scheme has inertia (needs the mass matrix): its
+    /// registered trait (IntegrationSchemeTraits).
+    bool
+    dynamic() const;
 
     /// Whether the scheme needs a stored energy, which materials with
-    /// internal variables do not have.
-    virtual bool
-    needs_stored_energy() const
-    {
-      return false;
-    }
+    /// internal variables do not have: its registered trait.
+    bool
+    needs_stored_energy() const;
 
     /// Whether set_up() gives the step's incremental potential
     /// (NewtonSolver::Problem::energy), which the energy line search needs.

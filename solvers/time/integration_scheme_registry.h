@@ -6,9 +6,22 @@
 
 namespace rodnet
 {
-  /// Integration schemes by name, made on a StepSystem.
-  using IntegrationSchemeRegistry =
-    Registry<IntegrationScheme, const StepSystem &>;
+  /// What a scene must know of an integrator before there is a model to
+  /// make its scheme on.
+  struct IntegrationSchemeTraits
+  {
+    /// Whether it has inertia (needs the mass matrix and every material's
+    /// density).
+    bool dynamic = true;
+    /// Whether it conserves a stored energy, which materials with internal
+    /// variables (viscoelastic laws) do not have.
+    bool needs_stored_energy = false;
+  };
+
+  /// Integration schemes by name, made on a StepSystem, with their traits.
+  using IntegrationSchemeRegistry = TraitRegistry<IntegrationSchemeTraits,
+                                                  IntegrationScheme,
+                                                  const StepSystem &>;
 
   /**
    * The time integrators (TimeIntegrator::Parameters::integrator, the scene

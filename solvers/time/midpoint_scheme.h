@@ -45,12 +45,6 @@ namespace rodnet
     }
 
     bool
-    needs_stored_energy() const override
-    {
-      return true;
-    }
-
-    bool
     carries_inertia_tensors() const override
     {
       return true;

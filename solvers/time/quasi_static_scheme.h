@@ -18,12 +18,6 @@ namespace rodnet
       return "quasi-static";
     }
 
-    bool
-    dynamic() const override
-    {
-      return false;
-    }
-
     double
     mass_coefficient(double) const override
     {

@@ -178,13 +178,10 @@ namespace rodnet
       void
       parse_parameters(const dealii::ParameterHandler &prm);
 
-      /// Whether the integrator has inertia: all but "quasi-static", which
-      /// needs no density.
+      /// Whether the integrator has inertia (its registered trait): all but
+      /// "quasi-static", which needs no density.
       bool
-      dynamic() const
-      {
-        return integrator != "quasi-static";
-      }
+      dynamic() const;
 
       /// The time of the state a run starts from: start_time, or with a
       /// preload the start of its first step, start_time - preload_time -

@@ -18,17 +18,12 @@ namespace rodnet
     declare_steps(dealii::ParameterHandler &prm)
     {
       const IntegrationSchemeRegistry &schemes = integration_scheme_registry();
-      std::string                      names, help;
-      for (const std::string &name : schemes.names())
-        {
-          names += (names.empty() ? "" : "|") + name;
-          help += name + ": " + schemes.description(name) + ". ";
-        }
       prm.declare_entry("Integrator",
                         "newmark",
-                        Selection(names),
-                        help + "All but quasi-static need the inertia of every "
-                               "material in use. [-]");
+                        Selection(schemes.selection()),
+                        schemes.listing() +
+                          "All but quasi-static need the inertia of every "
+                          "material in use. [-]");
       // No lower bound in the pattern: a bad step is reported by the
       // scene with what is wrong, rather than as a pattern mismatch.
       prm.declare_entry("Time step",
@@ -110,6 +105,12 @@ namespace rodnet
   {
     declare_steps(prm);
     declare_dynamics(prm);
+  }
+
+  bool
+  TimeIntegrator::Parameters::dynamic() const
+  {
+    return integration_scheme_registry().traits(integrator).dynamic;
   }
 
   void

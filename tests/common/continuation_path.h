@@ -5,8 +5,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <core/vertex_selector.h>
 #include <io/scene.h>
-#include <io/vertex_selector.h>
 #include <solvers/continuation/arclength_continuation.h>
 
 #include <string>

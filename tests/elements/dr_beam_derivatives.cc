@@ -69,8 +69,7 @@ namespace
   {
     return dr_beam_energy(stiffness,
                           reference.rest_length,
-                          DrBeamKinematics(dofs, reference).strains(),
-                          nullptr);
+                          DrBeamKinematics(dofs, reference).strains());
   }
 
   /// Stored components (n_x, n_y) of the unit normal @p n with n_z >= 0:
@@ -449,10 +448,7 @@ namespace
     {
       double sum = 0;
       for (unsigned int k = 0; k < references.size(); ++k)
-        sum += dr_beam_energy(stiffness,
-                              references[k].rest_length,
-                              strains(k),
-                              nullptr);
+        sum += dr_beam_energy(stiffness, references[k].rest_length, strains(k));
       return sum;
     }
 

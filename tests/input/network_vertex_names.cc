@@ -8,7 +8,7 @@
 
 #include <common/run_driver.h>
 #include <common/scene_text.h>
-#include <io/vertex_selector.h>
+#include <core/vertex_selector.h>
 
 #include <gtest/gtest.h>
 #include <sstream>

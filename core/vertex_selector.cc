@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
-#include <io/nearest_names.h>
-#include <io/vertex_selector.h>
+#include <base/nearest_names.h>
+#include <core/vertex_selector.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,5 +1,5 @@
-#ifndef RODNET_IO_NEAREST_NAMES_H
-#define RODNET_IO_NEAREST_NAMES_H
+#ifndef RODNET_BASE_NEAREST_NAMES_H
+#define RODNET_BASE_NEAREST_NAMES_H
 
 #include <string>
 #include <vector>

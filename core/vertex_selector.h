@@ -1,5 +1,5 @@
-#ifndef RODNET_IO_VERTEX_SELECTOR_H
-#define RODNET_IO_VERTEX_SELECTOR_H
+#ifndef RODNET_CORE_VERTEX_SELECTOR_H
+#define RODNET_CORE_VERTEX_SELECTOR_H
 
 #include <core/rod_network.h>
 

@@ -1,4 +1,4 @@
-#include <io/nearest_names.h>
+#include <base/nearest_names.h>
 
 #include <algorithm>
 #include <numeric>
