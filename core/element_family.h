@@ -7,6 +7,7 @@
 
 #include <core/configuration.h>
 #include <core/dof_layout.h>
+#include <core/internal_variable_fields.h>
 #include <core/internal_variables.h>
 
 #include <Eigen/Dense>
@@ -113,22 +114,36 @@ namespace rodnet
     }
 
     /**
-     * The axial force (N, tension positive) that the family's constraint on
-     * the length of the segment on cell @p cell carries at @p u in
-     * @p configuration (an inextensible segment's multiplier), if the family
-     * constrains segment lengths; RodModel::constraint_force() writes it.
-     * The default: none.
+     * @name What the family shows of a state (RodModel::output_fields())
+     * The defaults show nothing.
+     */
+    /// @{
+    /**
+     * The axial force (N, tension positive) that the family carries in the
+     * segment on cell @p cell at @p state (with its committed internal
+     * variables, over no time step), if its stencils price that segment's
+     * length: the stretching of an extensible segment, the constraint of an
+     * inextensible one. The output takes the first family's answer.
      */
     virtual std::optional<double>
-    segment_constraint_force(const unsigned int   cell,
-                             const DofValues     &u,
-                             const Configuration &configuration) const
+    segment_axial_force(const unsigned int  cell,
+                        const StencilState &state) const
     {
       (void)cell;
-      (void)u;
-      (void)configuration;
+      (void)state;
       return std::nullopt;
     }
+
+    /// Writes the committed internal variables of the stencils it draws
+    /// (@p history) into @p fields, by name, at their vertex or cell.
+    virtual void
+    write_internal_variables(const InternalVariables &history,
+                             InternalVariableFields  &fields) const
+    {
+      (void)history;
+      (void)fields;
+    }
+    /// @}
 
     /**
      * @name DoFs of the family's own (a multiplier, a shape variable)

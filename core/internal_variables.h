@@ -25,17 +25,6 @@ namespace rodnet
   class InternalVariables
   {
   public:
-    /// The rods' own families by their place among the families, which
-    /// the RodModel makes first: hinges, junction elements (which carry
-    /// the hinge variables of their rod's material, since the same hinge
-    /// law acts on them) and segments.
-    enum class Owner
-    {
-      hinge,
-      junction_element,
-      segment
-    };
-
     InternalVariables() = default;
 
     /// One block of families[f]->n_internal_variables(s) values, all
@@ -70,19 +59,6 @@ namespace rodnet
     block(const ElementFamily &family, unsigned int s)
     {
       return const_cast<double *>(std::as_const(*this).block(family, s));
-    }
-
-    /// As above, for the rods' own families.
-    unsigned int
-    size(Owner owner, unsigned int s) const
-    {
-      return size(static_cast<unsigned int>(owner), s);
-    }
-
-    const double *
-    block(Owner owner, unsigned int s) const
-    {
-      return block_at(static_cast<unsigned int>(owner), s);
     }
 
   private:

@@ -359,13 +359,12 @@ namespace rodnet
 
 
   double
-  RodModel::constraint_force(const unsigned int cell, const VectorType &u) const
+  RodModel::axial_force(const unsigned int cell, const VectorType &u) const
   {
+    const StencilState state{u, *configuration_, history, 0.0, 0.0};
     for (const auto &family : families)
       if (const std::optional<double> force =
-            family->segment_constraint_force(cell,
-                                             DofValues(u),
-                                             *configuration_))
+            family->segment_axial_force(cell, state))
         return *force;
     return 0.0;
   }

@@ -546,14 +546,15 @@ namespace rodnet
     }
 
     /**
-     * Axial force (N, tension positive) of the segment on cell @p cell of
-     * an inextensible rod at @p u: its multiplier times the constraint's
-     * scale (the first family's ElementFamily::segment_constraint_force(),
-     * InextensibilityFamily's); 0 where the segment has no free multiplier
-     * (both ends held) or no family constrains its length.
+     * Axial force (N, tension positive) of the segment on cell @p cell at
+     * @p u: the first family's ElementFamily::segment_axial_force() (the
+     * material's, at the committed internal variables, of an extensible
+     * segment; the multiplier times the constraint's scale of an
+     * inextensible one, 0 where both its ends are held); 0 where no family
+     * prices the segment's length.
      */
     double
-    constraint_force(unsigned int cell, const VectorType &u) const;
+    axial_force(unsigned int cell, const VectorType &u) const;
     /// @}
 
     /// @name History-dependent materials

@@ -12,40 +12,6 @@ namespace rodnet
 {
   namespace
   {
-    /// Output field name of an internal variable labelled "name (unit)":
-    /// the name with underscores for blanks.
-    std::string
-    field_name(const std::string &label)
-    {
-      std::string name = label.substr(0, label.find(" ("));
-      std::replace(name.begin(), name.end(), ' ', '_');
-      return name;
-    }
-
-    /// The unit of an internal variable labelled "name (unit)"; "-" where
-    /// the label gives none.
-    std::string
-    field_unit(const std::string &label)
-    {
-      const std::size_t open = label.find(" (");
-      if (open == std::string::npos || label.back() != ')')
-        return "-";
-      return label.substr(open + 2, label.size() - open - 3);
-    }
-
-    /// Appends the fields of @p named (name -> (unit, values)) to
-    /// @p fields, defined at the hinges only where @p at_hinges.
-    void
-    append_scalar_fields(
-      const std::map<std::string, std::pair<std::string, std::vector<double>>>
-                                       &named,
-      std::vector<OutputFields::Field> &fields,
-      const bool                        at_hinges = false)
-    {
-      for (const auto &[name, values] : named)
-        fields.push_back({name, 1, values.second, values.first, at_hinges});
-    }
-
     /// Appends to @p fields the activation fields' densities per segment
     /// (Configuration::segment_activation()), if any.
     void
@@ -67,21 +33,6 @@ namespace rodnet
           fields.push_back(field);
         }
     }
-
-    /// The values of the field of the internal variable labelled @p label
-    /// in @p named, made with @p n zeros and the label's unit if new.
-    std::vector<double> &
-    internal_variable_field(
-      std::map<std::string, std::pair<std::string, std::vector<double>>> &named,
-      const std::string                                                  &label,
-      const std::size_t                                                   n)
-    {
-      return named
-        .try_emplace(field_name(label),
-                     field_unit(label),
-                     std::vector<double>(n))
-        .first->second.second;
-    }
   } // namespace
 
   dealii::Vector<double>
@@ -99,37 +50,13 @@ namespace rodnet
   OutputFields::Field
   RodModel::axial_forces(const VectorType &u) const
   {
-    // Inextensible segments: the multipliers; the others: the material's
-    // stress at its committed internal variables, over no time step.
-    using Owner = InternalVariables::Owner;
+    const unsigned int  n_cells = network_->triangulation().n_active_cells();
     OutputFields::Field force{"axial_force",
                               1,
-                              std::vector<double>(
-                                network_->triangulation().n_active_cells()),
+                              std::vector<double>(n_cells),
                               "N"};
-    StretchStrain       stretch;
-    unsigned int        stencil = 0;
-    for (const SegmentStencil &segment : layout_->segments())
-      {
-        if (network_->rods()[segment.rod].inextensible)
-          {
-            force.values[segment.cell] = constraint_force(segment.cell, u);
-            continue;
-          }
-        const double l0 = configuration_->rest_length(segment.cell);
-        evaluate_stretch(configuration_->segment_dofs(u, segment),
-                         l0,
-                         stretch,
-                         false);
-        const double *committed =
-          history.empty() ? nullptr : history.block(Owner::segment, stencil);
-        force.values[segment.cell] =
-          materials[segment.rod]
-            ->segment_increment(stretch.strain, l0, committed, 0.0, nullptr)
-            .stress[0] /
-          l0;
-        ++stencil;
-      }
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
+      force.values[cell] = axial_force(cell, u);
     return force;
   }
 
@@ -201,45 +128,15 @@ namespace rodnet
   void
   RodModel::append_internal_variable_fields(OutputFields &output) const
   {
-    // Hinge variables at the hinge's vertex, segment ones per cell, zero
-    // where a rod's material has no such variable. (Junction elements
-    // share their vertex with several rods and are not drawn.)
+    // Each family draws its stencils' variables, zero where a rod's
+    // material has no such variable.
     if (history.empty())
       return;
-    using Owner = InternalVariables::Owner;
-    std::map<std::string, std::pair<std::string, std::vector<double>>>
-                vertex_history, cell_history;
-    const auto &hinges = layout_->hinges();
-    for (unsigned int h = 0; h < hinges.size(); ++h)
-      {
-        const auto names =
-          materials[hinges[h].rod]->hinge_internal_variable_names();
-        for (unsigned int m = 0; m < names.size(); ++m)
-          internal_variable_field(
-            vertex_history,
-            names[m],
-            network_->n_vertices())[hinges[h].vertices[1]] =
-            history.block(Owner::hinge, h)[m];
-      }
-    // The segment stencils skip the segments of inextensible rods.
-    const auto  &segments = layout_->segments();
-    unsigned int stencil  = 0;
-    for (const SegmentStencil &segment : segments)
-      {
-        if (network_->rods()[segment.rod].inextensible)
-          continue;
-        const auto names =
-          materials[segment.rod]->segment_internal_variable_names();
-        for (unsigned int m = 0; m < names.size(); ++m)
-          internal_variable_field(
-            cell_history,
-            names[m],
-            network_->triangulation().n_active_cells())[segment.cell] =
-            history.block(Owner::segment, stencil)[m];
-        ++stencil;
-      }
-    append_scalar_fields(vertex_history, output.vertex_fields, true);
-    append_scalar_fields(cell_history, output.segment_fields);
+    InternalVariableFields fields(network_->n_vertices(),
+                                  network_->triangulation().n_active_cells());
+    for (const auto &family : families)
+      family->write_internal_variables(history, fields);
+    fields.append_to(output.vertex_fields, output.segment_fields);
   }
 
 

@@ -63,6 +63,12 @@ namespace rodnet
                               const StencilState &state,
                               double             *updated) const override;
 
+    /// The material's hinge variables at the middle vertex of each
+    /// stencil, where Stencils::drawn.
+    void
+    write_internal_variables(const InternalVariables &history,
+                             InternalVariableFields  &fields) const override;
+
   private:
     /// The stencils of this kind in the layout.
     const auto &

@@ -83,6 +83,30 @@ namespace rodnet
   {
     bending_increment(stencil_at(s, state), state.time_step, updated);
   }
+
+
+  template <class Stencils>
+  void
+  BendingFamily<Stencils>::write_internal_variables(
+    const InternalVariables &history,
+    InternalVariableFields  &fields) const
+  {
+    if constexpr (Stencils::drawn)
+      for (unsigned int s = 0; s < n_stencils(); ++s)
+        {
+          const auto &stencil = stencils()[s];
+          const auto  names =
+            materials[stencil.rod]->hinge_internal_variable_names();
+          for (unsigned int m = 0; m < names.size(); ++m)
+            fields.at_vertices(names[m])[stencil.vertices[1]] =
+              history.block(*this, s)[m];
+        }
+    else
+      {
+        (void)history;
+        (void)fields;
+      }
+  }
 } // namespace rodnet
 
 #endif

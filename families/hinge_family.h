@@ -4,7 +4,6 @@
 #include <core/configuration.h>
 #include <core/dof_layout.h>
 #include <elements/hinge_kernel.h>
-
 #include <families/bending_family.h>
 
 namespace rodnet
@@ -20,6 +19,8 @@ namespace rodnet
     using Reference = HingeReference;
 
     static constexpr const char *name = "hinges";
+    /// Its internal variables are drawn at the hinge's vertex.
+    static constexpr bool drawn = true;
 
     static constexpr auto stencils        = &DofLayout::hinges;
     static constexpr auto dofs            = &Configuration::hinge_dofs;

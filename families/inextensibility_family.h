@@ -109,11 +109,10 @@ namespace rodnet
     /// axial_force(), for every segment: the family constrains segment
     /// lengths.
     std::optional<double>
-    segment_constraint_force(unsigned int         cell,
-                             const DofValues     &u,
-                             const Configuration &configuration) const override
+    segment_axial_force(unsigned int        cell,
+                        const StencilState &state) const override
     {
-      return axial_force(cell, u, configuration);
+      return axial_force(cell, state.u, state.configuration);
     }
 
   private:

@@ -23,6 +23,8 @@ namespace rodnet
     using Reference = JunctionReference;
 
     static constexpr const char *name = "junction elements";
+    /// Not drawn: a junction's vertex is shared by several rods.
+    static constexpr bool drawn = false;
 
     static constexpr auto stencils  = &DofLayout::junctions;
     static constexpr auto dofs      = &Configuration::junction_dofs;

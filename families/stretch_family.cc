@@ -10,9 +10,14 @@ namespace rodnet
       : layout(layout)
       , materials(materials)
   {
+    stencil_of_cell.assign(network.triangulation().n_active_cells(),
+                           dealii::numbers::invalid_unsigned_int);
     for (unsigned int s = 0; s < layout.segments().size(); ++s)
       if (!network.rods()[layout.segments()[s].rod].inextensible)
-        segments.push_back(s);
+        {
+          stencil_of_cell[layout.segments()[s].cell] = segments.size();
+          segments.push_back(s);
+        }
   }
 
 
@@ -76,10 +81,11 @@ namespace rodnet
   }
 
 
-  void
-  StretchFamily::update_internal_variables(const unsigned int  s,
-                                           const StencilState &state,
-                                           double             *updated) const
+  MaterialResponse<1>
+  StretchFamily::response_without_derivatives(const unsigned int  s,
+                                              const StencilState &state,
+                                              const double        time_step,
+                                              double             *updated) const
   {
     const SegmentStencil &stencil = segment(s);
     const double          l0 = state.configuration.rest_length(stencil.cell);
@@ -88,11 +94,49 @@ namespace rodnet
                      l0,
                      stretch,
                      false);
-    materials[stencil.rod]->segment_increment(
+    return materials[stencil.rod]->segment_increment(
       stretch.strain - state.configuration.segment_eigenstrain(stencil.cell),
       l0,
       state.history.block(*this, s),
-      state.time_step,
+      time_step,
       updated);
+  }
+
+
+  void
+  StretchFamily::update_internal_variables(const unsigned int  s,
+                                           const StencilState &state,
+                                           double             *updated) const
+  {
+    response_without_derivatives(s, state, state.time_step, updated);
+  }
+
+
+  std::optional<double>
+  StretchFamily::segment_axial_force(const unsigned int  cell,
+                                     const StencilState &state) const
+  {
+    const unsigned int s = stencil_of_cell[cell];
+    if (s == dealii::numbers::invalid_unsigned_int)
+      return std::nullopt;
+    // The stress of the elastic strain, as in evaluate(), over no time
+    // step: N = dw/d(strain) / l0.
+    return response_without_derivatives(s, state, 0.0, nullptr).stress[0] /
+           state.configuration.rest_length(segment(s).cell);
+  }
+
+
+  void
+  StretchFamily::write_internal_variables(const InternalVariables &history,
+                                          InternalVariableFields  &fields) const
+  {
+    for (unsigned int s = 0; s < n_stencils(); ++s)
+      {
+        const SegmentStencil &stencil = segment(s);
+        const auto            names =
+          materials[stencil.rod]->segment_internal_variable_names();
+        for (unsigned int m = 0; m < names.size(); ++m)
+          fields.at_cells(names[m])[stencil.cell] = history.block(*this, s)[m];
+      }
   }
 } // namespace rodnet

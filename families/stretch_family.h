@@ -56,7 +56,27 @@ namespace rodnet
                               const StencilState &state,
                               double             *updated) const override;
 
+    /// The material's axial force (N) at the committed internal variables,
+    /// for the extensible segments.
+    std::optional<double>
+    segment_axial_force(unsigned int        cell,
+                        const StencilState &state) const override;
+
+    /// The material's segment variables per cell.
+    void
+    write_internal_variables(const InternalVariables &history,
+                             InternalVariableFields  &fields) const override;
+
   private:
+    /// The material's response of stencil @p s at @p state's committed
+    /// internal variables over @p time_step (the updated ones into
+    /// @p updated where not null), its stress only.
+    MaterialResponse<1>
+    response_without_derivatives(unsigned int        s,
+                                 const StencilState &state,
+                                 double              time_step,
+                                 double             *updated) const;
+
     /// The segment of stencil @p s.
     const SegmentStencil &
     segment(unsigned int s) const
@@ -66,7 +86,10 @@ namespace rodnet
 
     const DofLayout &layout;
     /// Indices into layout.segments() of the extensible segments.
-    std::vector<unsigned int>                              segments;
+    std::vector<unsigned int> segments;
+    /// Per cell, its stencil, or invalid for a segment of an inextensible
+    /// rod.
+    std::vector<unsigned int>                              stencil_of_cell;
     const std::vector<std::shared_ptr<const RodMaterial>> &materials;
   };
 } // namespace rodnet

@@ -8,6 +8,7 @@
 // reference is reset; time steps are checked. A family of its own with
 // history (a Maxwell element) is committed by the model like the rods'
 // families, and its energy reads the committed value.
+#include <common/family_named.h>
 #include <core/rod_model.h>
 #include <elements/stretch_kernel.h>
 #include <geometry/network_generators.h>
@@ -21,7 +22,7 @@
 namespace
 {
   using namespace rodnet;
-  using Owner = InternalVariables::Owner;
+  using rodnet::testing::family_named;
 
   const double relaxation_time = 0.5;
   const double time_step       = 0.2;
@@ -137,8 +138,9 @@ namespace
     const VectorType u1 = u;
     perturb(u, random, 0.05);
     // Nothing but a commit changes the stored values.
-    const double *first  = model->internal_variables().block(Owner::segment, 0);
-    const double  stored = first[0];
+    const double *first =
+      model->internal_variables().block(family_named(*model, "segments"), 0);
+    const double stored = first[0];
     model->assemble(u, 0.0, nullptr, nullptr);
     EXPECT_EQ(first[0], stored);
     model->commit_internal_variables(u);
@@ -154,7 +156,9 @@ namespace
         evaluate_stretch(c.segment_dofs(u1, segments[s]), l0, e1, false);
         evaluate_stretch(c.segment_dofs(u, segments[s]), l0, e2, false);
         const double alpha1 = (1 - w) * e1.strain;
-        EXPECT_NEAR(model->internal_variables().block(Owner::segment, s)[0],
+        EXPECT_NEAR(model->internal_variables().block(family_named(*model,
+                                                                   "segments"),
+                                                      s)[0],
                     w * alpha1 + (1 - w) * e2.strain,
                     1e-14)
           << "segment " << s;
@@ -175,7 +179,9 @@ namespace
            c.natural_strains(h)) /
           l;
         for (unsigned int m = 0; m < 3; ++m)
-          EXPECT_NEAR(model->internal_variables().block(Owner::hinge, h)[m],
+          EXPECT_NEAR(model->internal_variables().block(family_named(*model,
+                                                                     "hinges"),
+                                                        h)[m],
                       w * (1 - w) * k1[m] + (1 - w) * k2[m],
                       1e-12)
             << "hinge " << h << " mode " << m;
@@ -192,11 +198,12 @@ namespace
         const Vector3 k2 = kernel.strains(c.junction_dofs(u, junctions[e]),
                                           c.junction_reference(e)) /
                            l;
-        ASSERT_EQ(model->internal_variables().size(Owner::junction_element, e),
+        ASSERT_EQ(model->internal_variables()
+                    .size(family_named(*model, "junction elements"), e),
                   3u);
         for (unsigned int m = 0; m < 3; ++m)
-          EXPECT_NEAR(model->internal_variables().block(Owner::junction_element,
-                                                        e)[m],
+          EXPECT_NEAR(model->internal_variables()
+                        .block(family_named(*model, "junction elements"), e)[m],
                       w * (1 - w) * k1[m] + (1 - w) * k2[m],
                       1e-12)
             << "junction element " << e << " mode " << m;

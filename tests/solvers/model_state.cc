@@ -3,10 +3,10 @@
 // value by value, to the state before it; in particular a time step whose
 // commit of internal variables throws halfway leaves the model at the end
 // of the previous step, not with half its variables advanced.
+#include <common/family_named.h>
+#include <common/held_bar.h>
 #include <core/rod_model.h>
 #include <materials/standard_linear_solid.h>
-
-#include <common/held_bar.h>
 #include <solvers/state_guard.h>
 #include <solvers/time/time_integrator.h>
 
@@ -36,8 +36,11 @@ namespace
     {
       if (armed && updated != nullptr && ++commits == 3)
         throw std::runtime_error("commit failed");
-      return StandardLinearSolid::segment_increment(
-        strain, rest_length, previous, time_step, updated);
+      return StandardLinearSolid::segment_increment(strain,
+                                                    rest_length,
+                                                    previous,
+                                                    time_step,
+                                                    updated);
     }
 
     bool                 armed   = false;
@@ -74,8 +77,8 @@ namespace
         EXPECT_EQ(ra.frame_next.coeffs(), rb.frame_next.coeffs());
         EXPECT_EQ(ra.twist, rb.twist) << "hinge " << h;
       }
-    using Owner = InternalVariables::Owner;
-    const auto expect_same_blocks = [&](const Owner owner, const unsigned n) {
+    const auto expect_same_blocks = [&](const ElementFamily &owner,
+                                        const unsigned       n) {
       for (unsigned int i = 0; i < n; ++i)
         {
           ASSERT_EQ(a.committed.size(owner, i), b.committed.size(owner, i));
@@ -85,8 +88,10 @@ namespace
               << "block " << i << ", variable " << k;
         }
     };
-    expect_same_blocks(Owner::hinge, layout.hinges().size());
-    expect_same_blocks(Owner::segment, layout.segments().size());
+    expect_same_blocks(rodnet::testing::family_named(model, "hinges"),
+                       layout.hinges().size());
+    expect_same_blocks(rodnet::testing::family_named(model, "segments"),
+                       layout.segments().size());
   }
 
   // A guarded trial that resets the reference to a bent state and sets a
@@ -94,10 +99,10 @@ namespace
   // trial did change it (so that the comparison can fail).
   TEST(ModelState, GuardRestoresStateOnThrow)
   {
-    auto model = held_bar(std::make_shared<StandardLinearSolid>(
-                            RodStiffness{1, 1, 1, 1}, 0.3, 1.0),
-                          n_segments,
-                          Vector3(0, 0.5, 0));
+    auto model = held_bar(
+      std::make_shared<StandardLinearSolid>(RodStiffness{1, 1, 1, 1}, 0.3, 1.0),
+      n_segments,
+      Vector3(0, 0.5, 0));
     VectorType bent = model->create_vector();
     model->apply_boundary_values(bent, 1.0);
     const ModelState          before = model->state();
@@ -111,13 +116,13 @@ namespace
         throw std::runtime_error("trial failed");
       }
     catch (const std::runtime_error &)
-      {}
+      {
+      }
     ASSERT_TRUE(during.has_value());
     EXPECT_EQ(during->time_step, 0.25);
-    EXPECT_NE(during->configuration.hinge_reference(n_segments - 2)
-                .frame_next.coeffs(),
-              before.configuration.hinge_reference(n_segments - 2)
-                .frame_next.coeffs());
+    EXPECT_NE(
+      during->configuration.hinge_reference(n_segments - 2).frame_next.coeffs(),
+      before.configuration.hinge_reference(n_segments - 2).frame_next.coeffs());
     expect_same_state(*model, model->state(), before, bent);
   }
 
@@ -128,10 +133,9 @@ namespace
   // and the hinges and two segments held the second step's variables.
   TEST(ModelState, ThrowingCommitLeavesPreviousStep)
   {
-    auto material = std::make_shared<FailingCommit>(RodStiffness{1, 1, 1, 1},
-                                                    0.3,
-                                                    1.0);
-    auto model    = held_bar(material, n_segments, Vector3(0.01, 0.02, 0));
+    auto material =
+      std::make_shared<FailingCommit>(RodStiffness{1, 1, 1, 1}, 0.3, 1.0);
+    auto model = held_bar(material, n_segments, Vector3(0.01, 0.02, 0));
     TimeIntegrator::Parameters p;
     p.integrator  = "quasi-static";
     p.time_step   = 0.1;
@@ -147,16 +151,17 @@ namespace
                                 [&](const TimeIntegrator::StepInfo &,
                                     const VectorType &x,
                                     const VectorType &) {
-                                  after_first = model->state();
-                                  u_first     = x;
+                                  after_first     = model->state();
+                                  u_first         = x;
                                   material->armed = true;
                                 }),
                  std::runtime_error);
     ASSERT_TRUE(after_first.has_value());
     EXPECT_EQ(material->commits, 3u);
     // The first step committed nonzero variables: the comparison can fail.
-    EXPECT_NE(after_first->committed.block(InternalVariables::Owner::segment,
-                                           n_segments - 1)[0],
+    EXPECT_NE(after_first->committed.block(
+                rodnet::testing::family_named(*model, "segments"),
+                n_segments - 1)[0],
               0.0);
     expect_same_state(*model, model->state(), *after_first, u);
     VectorType change = u;
