@@ -46,7 +46,7 @@ main(int argc, char **argv)
               "segments\n",
               cells,
               cells,
-              model->network().triangulation().n_active_cells());
+              model->network().n_segments());
 
   PictureState state;
   bench::print_time("fields", bench::time_repeats(repeats, [&] {

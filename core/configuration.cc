@@ -82,7 +82,7 @@ namespace rodnet
       : network(&network_)
       , layout(&layout_)
   {
-    const unsigned int n_cells = network->triangulation().n_active_cells();
+    const unsigned int n_cells = network->n_segments();
     rest_lengths.resize(n_cells);
     frames.resize(n_cells);
     twist_at_reference.assign(n_cells, 0.0);

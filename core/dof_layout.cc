@@ -1,4 +1,5 @@
 #include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
 
 #include <core/dof_layout.h>
@@ -9,7 +10,17 @@
 namespace rodnet
 {
   DofLayout::DofLayout(const RodNetwork &network)
-      : fe(dealii::FE_Q<1, 3>(1), 3, dealii::FE_DGQ<1, 3>(0), 1)
+      : fe_collection(
+          dealii::FESystem<1, 3>(dealii::FE_Q<1, 3>(1),
+                                 3,
+                                 dealii::FE_DGQ<1, 3>(0),
+                                 1),
+          // The same structure of base elements, as deal.II's comparison
+          // of the two elements at a shared vertex requires.
+          dealii::FESystem<1, 3>(dealii::FE_Nothing<1, 3>(),
+                                 3,
+                                 dealii::FE_Nothing<1, 3>(),
+                                 1))
       , handler(network.triangulation())
   {
     number_field_dofs(network);
@@ -35,14 +46,18 @@ namespace rodnet
   void
   DofLayout::number_field_dofs(const RodNetwork &network)
   {
-    handler.distribute_dofs(fe);
+    for (const auto &cell : handler.active_cell_iterators())
+      if (!RodNetwork::is_segment(*cell))
+        cell->set_active_fe_index(1);
+    handler.distribute_dofs(fe_collection);
 
     constexpr auto invalid = dealii::numbers::invalid_dof_index;
     vertex_dofs.assign(network.n_vertices(), {{invalid, invalid, invalid}});
-    twist_dofs.assign(network.triangulation().n_active_cells(), invalid);
+    twist_dofs.assign(network.n_segments(), invalid);
 
-    std::vector<global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : handler.active_cell_iterators())
+    const dealii::FiniteElement<1, 3> &fe = segment_fe();
+    std::vector<global_dof_index>      cell_dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : segment_cells())
       {
         cell->get_dof_indices(cell_dofs);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)

@@ -3,6 +3,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/hp/fe_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 
 #include <core/dof_block.h>
@@ -58,8 +60,9 @@ namespace rodnet
 
   /**
    * The degrees of freedom of a rod network: a DoFHandler<1,3> with
-   * FESystem(FE_Q<1,3>(1)^3, FE_DGQ<1,3>(0)), i.e. the displacement of
-   * every vertex and one twist angle per segment, followed by the blocks
+   * FESystem(FE_Q<1,3>(1)^3, FE_DGQ<1,3>(0)) on the segments, i.e. the
+   * displacement of every vertex and one twist angle per segment (and
+   * nothing on the links of RodNetwork::create_triangulation()), followed by the blocks
    * that element families declare for themselves; and the stencils that the
    * assembler loops over. Index maps come from here only;
    * kernels see local vectors in their documented order.
@@ -95,10 +98,31 @@ namespace rodnet
   public:
     explicit DofLayout(const RodNetwork &network);
 
+    /// The DoFHandler of the positions and twists: the segments' element
+    /// (active FE index 0) and FE_Nothing on the links that tie the rods
+    /// into one mesh (index 1, RodNetwork::create_triangulation()).
     const dealii::DoFHandler<1, 3> &
     dof_handler() const
     {
       return handler;
+    }
+
+    /// The segments' finite element, FESystem(FE_Q<1,3>(1)^3,
+    /// FE_DGQ<1,3>(0)), for FEValues on segment_cells().
+    const dealii::FiniteElement<1, 3> &
+    segment_fe() const
+    {
+      return fe_collection[0];
+    }
+
+    /// The DoFHandler's cells that are segments, without the links: what a
+    /// loop with FEValues over the rods takes.
+    auto
+    segment_cells() const
+    {
+      return dealii::filter_iterators(
+        handler.active_cell_iterators(),
+        dealii::IteratorFilters::ActiveFEIndexEqualTo(0));
     }
 
     /// All DoFs: the DoFHandler's and the families' declared blocks.
@@ -234,7 +258,7 @@ namespace rodnet
     void
     number_rotations(const DofBlock &block);
 
-    dealii::FESystem<1, 3>                       fe;
+    dealii::hp::FECollection<1, 3>               fe_collection;
     dealii::DoFHandler<1, 3>                     handler;
     std::vector<std::array<global_dof_index, 3>> vertex_dofs;
     std::vector<global_dof_index>                twist_dofs;

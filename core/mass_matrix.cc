@@ -125,8 +125,7 @@ namespace rodnet
     // Gauss points integrate N_a N_b of the linear shape functions exactly
     // (rho A l0 / 6 [[2, 1], [1, 2]]); the trapezoidal rule puts each row
     // sum on the diagonal (rho A l0 / 2 at each end): the lumped mass.
-    const dealii::DoFHandler<1, 3> &dof_handler = model.layout().dof_handler();
-    const dealii::FiniteElement<1, 3> &fe       = dof_handler.get_fe();
+    const dealii::FiniteElement<1, 3> &fe = model.layout().segment_fe();
     const dealii::Quadrature<1>        quadrature =
       kind == MassKind::consistent ?
                dealii::Quadrature<1>(dealii::QGauss<1>(2)) :
@@ -147,7 +146,7 @@ namespace rodnet
     dealii::FullMatrix<double> cell_mass(fe.n_dofs_per_cell(),
                                          fe.n_dofs_per_cell());
     std::vector<global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : model.layout().segment_cells())
       {
         fe_values.reinit(cell);
         segment_mass(fe_values, inertia[cell->material_id()], cell_mass);

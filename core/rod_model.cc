@@ -251,7 +251,7 @@ namespace rodnet
 
     // A segment twist that no hinge sees (a rod of one segment) has no
     // stiffness: fix it rather than leave the tangent singular.
-    std::vector<bool> twist_seen(network_->triangulation().n_active_cells());
+    std::vector<bool> twist_seen(network_->n_segments());
     for (const HingeStencil &h : layout_->hinges())
       twist_seen[h.segment_prev] = twist_seen[h.segment_next] = true;
     for (const JunctionStencil &e : layout_->junctions())

@@ -50,7 +50,7 @@ namespace rodnet
   OutputFields::Field
   RodModel::axial_forces(const VectorType &u) const
   {
-    const unsigned int  n_cells = network_->triangulation().n_active_cells();
+    const unsigned int  n_cells = network_->n_segments();
     OutputFields::Field force{"axial_force",
                               1,
                               std::vector<double>(n_cells),
@@ -64,7 +64,7 @@ namespace rodnet
   std::vector<OutputFields::Field>
   RodModel::segment_strain_fields(const VectorType &u) const
   {
-    const unsigned int  n_cells = network_->triangulation().n_active_cells();
+    const unsigned int  n_cells = network_->n_segments();
     OutputFields::Field strain{"axial_strain",
                                1,
                                std::vector<double>(n_cells),
@@ -133,7 +133,7 @@ namespace rodnet
     if (history.empty())
       return;
     InternalVariableFields fields(network_->n_vertices(),
-                                  network_->triangulation().n_active_cells());
+                                  network_->n_segments());
     for (const auto &family : families)
       family->write_internal_variables(history, fields);
     fields.append_to(output.vertex_fields, output.segment_fields);

@@ -154,28 +154,22 @@ namespace rodnet
         if (ends[k].rod == e.rod && ends[k].at_start == e.at_start)
           throw std::invalid_argument(where + " lists the " +
                                       describe_rod_end(e) + " twice");
-      for (const Junction &j : network.junctions())
-        for (const RodEnd &other : j.ends)
-          if (other.rod == e.rod && other.at_start == e.at_start)
-            throw std::invalid_argument(where + ": the " + describe_rod_end(e) +
-                                        " is already in junction \"" + j.name +
-                                        "\"");
+      // A rod end's vertex belongs to a junction only as one of its ends.
+      if (const auto j = network.junction_at(network.end_vertex(e)))
+        throw std::invalid_argument(where + ": the " + describe_rod_end(e) +
+                                    " is already in junction \"" +
+                                    network.junctions()[*j].name + "\"");
     }
 
     /// The ends @p ends of the junction @p where meet: within round-off
-    /// of the size of @p network.
+    /// of @p size, the diagonal of @p network's bounding box.
     void
     check_junction_ends_meet(const RodNetwork          &network,
                              const std::string         &where,
-                             const std::vector<RodEnd> &ends)
+                             const std::vector<RodEnd> &ends,
+                             const double               size)
     {
-      Vector3 low = network.vertex(0), high = low;
-      for (unsigned int v = 0; v < network.n_vertices(); ++v)
-        {
-          low  = low.cwiseMin(network.vertex(v));
-          high = high.cwiseMax(network.vertex(v));
-        }
-      const double  tolerance = 1e-9 * std::max((high - low).norm(), 1e-300);
+      const double  tolerance = 1e-9 * std::max(size, 1e-300);
       const Vector3 position  = network.vertex(network.end_vertex(ends[0]));
       for (const RodEnd &e : ends)
         {
@@ -278,10 +272,14 @@ namespace rodnet
     rod.director_hint = director_hint;
     rod.hinge_kernel  = hinge_kernel;
     rod.natural_shape = natural_shape;
+    if (points.empty())
+      low = high = rod_points[0];
     for (const Vector3 &p : rod_points)
       {
         rod.vertices.push_back(points.size());
         points.push_back(p);
+        low  = low.cwiseMin(p);
+        high = high.cwiseMax(p);
       }
     rod_list.push_back(rod);
   }
@@ -344,9 +342,8 @@ namespace rodnet
   {
     const std::string where =
       "junction \"" + name + "\" (" + to_string(kind) + ")";
-    for (const Junction &j : junction_list)
-      if (j.name == name)
-        throw std::invalid_argument(where + ": the name is used twice");
+    if (junction_by_name.count(name) > 0)
+      throw std::invalid_argument(where + ": the name is used twice");
     if (ends.empty())
       throw std::invalid_argument(where + " joins no rod end");
     // A welded junction on a single end is a rotation handle at a free
@@ -358,7 +355,7 @@ namespace rodnet
 
     for (unsigned int i = 0; i < ends.size(); ++i)
       check_junction_end(*this, where, ends, i);
-    check_junction_ends_meet(*this, where, ends);
+    check_junction_ends_meet(*this, where, ends, (high - low).norm());
 
     name_vertex(name, end_vertex(ends[0]));
     Junction junction;
@@ -366,8 +363,19 @@ namespace rodnet
     junction.kind   = kind;
     junction.ends   = ends;
     junction.vertex = end_vertex(ends[0]);
+    return record_junction(junction);
+  }
+
+  unsigned int
+  RodNetwork::record_junction(const Junction &junction)
+  {
+    const unsigned int j = junction_list.size();
+    junction_by_name.emplace(junction.name, j);
+    junction_of_vertex.emplace(junction.vertex, j);
+    for (const RodEnd &end : junction.ends)
+      junction_of_vertex.emplace(end_vertex(end), j);
     junction_list.push_back(junction);
-    return junction_list.size() - 1;
+    return j;
   }
 
   void
@@ -404,10 +412,10 @@ namespace rodnet
   unsigned int
   RodNetwork::junction_index(const std::string &name) const
   {
-    for (unsigned int j = 0; j < junction_list.size(); ++j)
-      if (junction_list[j].name == name)
-        return j;
-    throw std::invalid_argument("there is no junction \"" + name + "\"");
+    const auto it = junction_by_name.find(name);
+    if (it == junction_by_name.end())
+      throw std::invalid_argument("there is no junction \"" + name + "\"");
+    return it->second;
   }
 
   namespace
@@ -417,11 +425,16 @@ namespace rodnet
     RodVertex
     locate(const std::vector<Rod> &rods, const unsigned int v)
     {
-      for (unsigned int r = 0; r < rods.size(); ++r)
-        if (v >= rods[r].vertices.front() && v <= rods[r].vertices.back())
-          return {r, v - rods[r].vertices.front()};
-      throw std::invalid_argument("vertex " + std::to_string(v) +
-                                  " does not exist");
+      // The first rod that starts after v, then the one before it.
+      const auto after = std::upper_bound(
+        rods.begin(), rods.end(), v, [](const unsigned int w, const Rod &rod) {
+          return w < rod.vertices.front();
+        });
+      if (after == rods.begin() || v > std::prev(after)->vertices.back())
+        throw std::invalid_argument("vertex " + std::to_string(v) +
+                                    " does not exist");
+      const unsigned int r = std::distance(rods.begin(), after) - 1;
+      return {r, v - rods[r].vertices.front()};
     }
   } // namespace
 
@@ -436,15 +449,10 @@ namespace rodnet
   std::optional<unsigned int>
   RodNetwork::junction_at(const unsigned int v) const
   {
-    for (unsigned int j = 0; j < junction_list.size(); ++j)
-      {
-        if (junction_list[j].vertex == v)
-          return j;
-        for (const RodEnd &end : junction_list[j].ends)
-          if (end_vertex(end) == v)
-            return j;
-      }
-    return std::nullopt;
+    const auto it = junction_of_vertex.find(v);
+    if (it == junction_of_vertex.end())
+      return std::nullopt;
+    return it->second;
   }
 
   unsigned int
@@ -459,18 +467,38 @@ namespace rodnet
     const bool at_start = where.index == 0;
     if (!rod.closed && (at_start || v == rod.vertices.back()))
       return add_junction(name, JunctionKind::welded, {{where.rod, at_start}});
-    for (const Junction &j : junction_list)
-      if (j.name == name)
-        throw std::invalid_argument("rotation handle \"" + name +
-                                    "\": the name is used twice");
+    if (junction_by_name.count(name) > 0)
+      throw std::invalid_argument("rotation handle \"" + name +
+                                  "\": the name is used twice");
     name_vertex(name, v);
     Junction handle;
     handle.name     = name;
     handle.kind     = JunctionKind::welded;
     handle.interior = where;
     handle.vertex   = v;
-    junction_list.push_back(handle);
-    return junction_list.size() - 1;
+    return record_junction(handle);
+  }
+
+  void
+  RodNetwork::add_links(std::vector<dealii::CellData<1>> &cells) const
+  {
+    // Each open rod's end vertex is in one segment: with its link it is in
+    // two cells, as deal.II allows in dimension 1. Closed rods stay pieces
+    // of their own.
+    const Rod *previous = nullptr;
+    for (const Rod &rod : rod_list)
+      if (!rod.closed)
+        {
+          if (previous != nullptr)
+            {
+              dealii::CellData<1> link;
+              link.vertices    = {previous->vertices.back(),
+                                  rod.vertices.front()};
+              link.material_id = link_material_id;
+              cells.push_back(link);
+            }
+          previous = &rod;
+        }
   }
 
   void
@@ -501,6 +529,8 @@ namespace rodnet
             cells.push_back(cell);
           }
       }
+    segment_count = cells.size();
+    add_links(cells);
     tria.create_triangulation(vertices, cells, dealii::SubCellData());
 
     // The kernels rely on cells running along their rod.

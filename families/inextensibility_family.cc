@@ -24,7 +24,7 @@ namespace rodnet
     const Configuration                                   &configuration,
     const std::vector<std::shared_ptr<const RodMaterial>> &materials)
       : layout(layout)
-      , stencil_of_cell(network.triangulation().n_active_cells(),
+      , stencil_of_cell(network.n_segments(),
                         dealii::numbers::invalid_unsigned_int)
   {
     const auto  &segments = layout.segments();

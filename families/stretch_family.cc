@@ -10,7 +10,7 @@ namespace rodnet
       : layout(layout)
       , materials(materials)
   {
-    stencil_of_cell.assign(network.triangulation().n_active_cells(),
+    stencil_of_cell.assign(network.n_segments(),
                            dealii::numbers::invalid_unsigned_int);
     for (unsigned int s = 0; s < layout.segments().size(); ++s)
       if (!network.rods()[layout.segments()[s].rod].inextensible)

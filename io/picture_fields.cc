@@ -53,7 +53,7 @@ namespace rodnet
   std::vector<OutputFields::Field>
   network_fields(const RodNetwork &network, const PictureGroups &groups)
   {
-    const unsigned int  n_segments = network.triangulation().n_active_cells();
+    const unsigned int  n_segments = network.n_segments();
     OutputFields::Field rod{"rod", 1, std::vector<double>(n_segments), "-"};
     OutputFields::Field group{"group",
                               1,
@@ -139,7 +139,7 @@ namespace rodnet
     for (const OutputFields::Field &field : fields.segment_fields)
       sources.push_back({&field, true});
     // A field that does not fit the network would be read past its end.
-    const unsigned int n_segments = network.triangulation().n_active_cells();
+    const unsigned int n_segments = network.n_segments();
     for (const Source &source : sources)
       {
         const OutputFields::Field &field = *source.field;

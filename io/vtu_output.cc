@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1_eulerian.h>
 #include <deal.II/fe/mapping_q_eulerian.h>
+#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
@@ -91,12 +92,13 @@ namespace rodnet
       fe = std::make_unique<dealii::FESystem<1, 3>>(dealii::FE_Q<1, 3>(1),
                                                     components);
     dofs.distribute_dofs(*fe);
-    const auto &tria = network.triangulation();
-    index.resize(per_segment ? tria.n_active_cells() : tria.n_vertices());
+    index.resize(per_segment ? network.n_segments() : network.n_vertices());
     std::vector<dealii::types::global_dof_index> cell_dofs(
       fe->n_dofs_per_cell());
     for (const auto &cell : dofs.active_cell_iterators())
       {
+        if (!RodNetwork::is_segment(*cell))
+          continue;
         cell->get_dof_indices(cell_dofs);
         for (unsigned int i = 0; i < cell_dofs.size(); ++i)
           {
@@ -152,9 +154,8 @@ namespace rodnet
   VtuOutput::field_vector(const OutputFields::Field &field,
                           const bool                 per_segment)
   {
-    const auto        &tria = network.triangulation();
     const unsigned int n =
-      per_segment ? tria.n_active_cells() : tria.n_vertices();
+      per_segment ? network.n_segments() : network.n_vertices();
     if (!(field.components == 1 || field.components == 3) ||
         field.values.size() != field.components * n)
       throw std::invalid_argument(
@@ -162,7 +163,13 @@ namespace rodnet
         std::to_string(field.values.size()) + " values for " +
         std::to_string(n) + (per_segment ? " segments" : " vertices"));
     if (field.components == 1 && per_segment)
-      return dealii::Vector<double>(field.values.begin(), field.values.end());
+      {
+        // Cell data has a value per cell, also for the links that follow
+        // the segments (they are not drawn).
+        dealii::Vector<double> values(network.triangulation().n_active_cells());
+        std::copy(field.values.begin(), field.values.end(), values.begin());
+        return values;
+      }
     const FieldSpace      &target = space(per_segment, field.components);
     dealii::Vector<double> values(target.dofs.n_dofs());
     for (unsigned int k = 0; k < n; ++k)
@@ -184,6 +191,11 @@ namespace rodnet
     // holds (reserved: no reallocation).
     dealii::DataOut<1, 3> data_out;
     data_out.attach_triangulation(network.triangulation());
+    // The segments, not the links that tie the rods into one mesh.
+    data_out.set_cell_selection(
+      [](const dealii::Triangulation<1, 3>::cell_iterator &cell) {
+        return cell->is_active() && RodNetwork::is_segment(*cell);
+      });
     std::vector<dealii::Vector<double>> values;
     values.reserve(1 + fields.vertex_fields.size() +
                    fields.segment_fields.size());

@@ -9,7 +9,7 @@ namespace rodnet
     std::vector<bool>
     twists_seen(const RodNetwork &network, const DofLayout &layout)
     {
-      std::vector<bool> seen(network.triangulation().n_active_cells(), false);
+      std::vector<bool> seen(network.n_segments(), false);
       for (const HingeStencil &h : layout.hinges())
         seen[h.segment_prev] = seen[h.segment_next] = true;
       for (const JunctionStencil &e : layout.junctions())
@@ -41,7 +41,7 @@ namespace rodnet
       std::vector<std::pair<unsigned int, unsigned int>> &cell_places)
     {
       vertex_places.resize(network.n_vertices());
-      cell_places.resize(network.triangulation().n_active_cells());
+      cell_places.resize(network.n_segments());
       for (unsigned int r = 0; r < network.rods().size(); ++r)
         {
           const Rod &rod = network.rods()[r];
@@ -74,7 +74,7 @@ namespace rodnet
       kinds[copy.index] = Kind::inert;
 
     // A twist that no hinge or junction element sees carries nothing.
-    const unsigned int      n_cells = network.triangulation().n_active_cells();
+    const unsigned int      n_cells = network.n_segments();
     const std::vector<bool> seen    = twists_seen(network, layout);
     for (unsigned int cell = 0; cell < n_cells; ++cell)
       {

@@ -13,6 +13,7 @@
 #include <solvers/checks/dof_roles.h>
 #include <solvers/statics/static_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -78,6 +79,81 @@ TEST(DealIILayout, EveryCellsMaterialIdIsItsRod)
       }
 }
 
+TEST(DealIILayout, LinksTieTheOpenRodsIntoOnePieceAndCarryNoDofs)
+{
+  // The star's three rods, a ring and a separate rod: links from rod 0's
+  // end to rod 1's start, 1 to 2 and 2 to 4; the ring (rod 3) stays apart.
+  auto network = star();
+  network->add_rod(generators::ring(Vector3(5, 0, 0), 1.0, Vector3::UnitX(), Vector3::UnitY(), 6),
+                   true,
+                   Vector3::UnitZ(),
+                   "simple");
+  network->add_rod(generators::straight(Vector3(0, 0, 3),
+                                        Vector3(1, 0, 3),
+                                        n_layout_segments),
+                   false,
+                   Vector3::UnitZ(),
+                   "simple");
+  const auto model = rodnet::testing::elastic_model(std::move(network),
+                                                    {1e3, 1.0, 1.0, 0.8});
+  const RodNetwork &n      = model->network();
+  const auto       &rods   = n.rods();
+  const unsigned int n_seg = 4 * n_layout_segments + 6;
+  ASSERT_EQ(n.n_segments(), n_seg);
+  ASSERT_EQ(n.triangulation().n_active_cells(), n_seg + 3);
+
+  const std::vector<std::pair<unsigned int, unsigned int>> linked = {
+    {0, 1}, {1, 2}, {2, 4}};
+  using Cell = dealii::TriaActiveIterator<dealii::CellAccessor<1, 3>>;
+  for (unsigned int k = 0; k < linked.size(); ++k)
+    {
+      const Cell link(&n.triangulation(), 0, n_seg + k);
+      EXPECT_FALSE(RodNetwork::is_segment(*link));
+      EXPECT_EQ(link->material_id(), RodNetwork::link_material_id);
+      EXPECT_EQ(link->vertex_index(0), rods[linked[k].first].vertices.back());
+      EXPECT_EQ(link->vertex_index(1), rods[linked[k].second].vertices.front());
+    }
+
+  // deal.II sees the open rods as one piece: a walk over face neighbours
+  // from cell 0 reaches every cell but the ring's six.
+  std::vector<bool> reached(n.triangulation().n_active_cells(), false);
+  std::vector<Cell> front = {Cell(&n.triangulation(), 0, 0)};
+  reached[0]              = true;
+  while (!front.empty())
+    {
+      const Cell cell = front.back();
+      front.pop_back();
+      for (const unsigned int f : cell->face_indices())
+        if (!cell->at_boundary(f) && !reached[cell->neighbor(f)->index()])
+          {
+            reached[cell->neighbor(f)->index()] = true;
+            front.push_back(cell->neighbor(f));
+          }
+    }
+  EXPECT_EQ(std::count(reached.begin(), reached.end(), true), n_seg + 3 - 6);
+
+  // No DoFs on links: three per vertex and one twist per segment, and
+  // segment_cells() walks the segments in their order.
+  const DofLayout &layout = model->layout();
+  EXPECT_EQ(layout.n_field_dofs(), 3 * n.n_vertices() + n_seg);
+  unsigned int expected_index = 0;
+  for (const auto &cell : layout.segment_cells())
+    {
+      EXPECT_EQ(cell->active_cell_index(), expected_index++);
+      EXPECT_EQ(cell->get_fe().n_dofs_per_cell(), 7u);
+    }
+  EXPECT_EQ(expected_index, n_seg);
+  using DofCell = dealii::DoFHandler<1, 3>::active_cell_iterator;
+  for (unsigned int k = 0; k < linked.size(); ++k)
+    {
+      const DofCell link(&n.triangulation(),
+                         0,
+                         n_seg + k,
+                         &layout.dof_handler());
+      EXPECT_EQ(link->get_fe().n_dofs_per_cell(), 0u);
+    }
+}
+
 TEST(DealIILayout, AJunctionIsAnIdentityConstraintOfTheOtherEnds)
 {
   const SolvedStar   star;
@@ -99,7 +175,7 @@ TEST(DealIILayout, AJunctionIsAnIdentityConstraintOfTheOtherEnds)
         {
           dealii::types::global_dof_index own =
             dealii::numbers::invalid_dof_index;
-          for (const auto &cell : layout.dof_handler().active_cell_iterators())
+          for (const auto &cell : layout.segment_cells())
             if (cell->material_id() == r && cell->vertex_index(0) == v)
               own = cell->vertex_dof_index(0, c);
           ASSERT_TRUE(identities.is_constrained(own));
@@ -118,12 +194,12 @@ TEST(DealIILayout, AJunctionIsAnIdentityConstraintOfTheOtherEnds)
     model.position(star.u, hub) - network.vertex(hub);
   ASSERT_GT(hub_displacement.norm(), 1e-3);
   const dealii::Vector<double>        values = model.field_values(star.u);
-  dealii::FEValues<1, 3>              fe_values(layout.dof_handler().get_fe(),
+  dealii::FEValues<1, 3>              fe_values(layout.segment_fe(),
                                    dealii::QTrapezoid<1>(),
                                    dealii::update_values);
   std::vector<dealii::Vector<double>> at_points(2, dealii::Vector<double>(4));
   unsigned int                        n_hub_ends = 0;
-  for (const auto &cell : layout.dof_handler().active_cell_iterators())
+  for (const auto &cell : layout.segment_cells())
     for (unsigned int k = 0; k < 2; ++k)
       if (network.vertex(cell->vertex_index(k)).isApprox(network.vertex(hub)))
         {

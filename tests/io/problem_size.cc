@@ -48,7 +48,7 @@ namespace
     const double rods  = model->network().rods().size();
     EXPECT_EQ(scene->size().rods, rods) << geometry;
     EXPECT_EQ(scene->size().segments,
-              model->network().triangulation().n_active_cells())
+              model->network().n_segments())
       << geometry;
     EXPECT_EQ(scene->size().dofs(), model->layout().n_dofs()) << geometry;
   }
