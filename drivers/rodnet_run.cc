@@ -248,9 +248,17 @@ rodnet_run_main(int argc, char **argv)
   // MPI (for Trilinos) only now: a refused command line need not wait for
   // it. Open MPI's fast options for a process no launcher started.
   rodnet::MPISession mpi(argc, argv);
-  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 1)
+  if (const unsigned int n_processes =
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      n_processes != 1)
     {
-      std::cerr << "rodnet-run: runs on one MPI process for now\n";
+      // One message, not one per process.
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cerr << "rodnet-run: started on " << n_processes
+                  << " MPI processes, but a scene runs on one process: the "
+                     "network is not distributed over processes yet; run it "
+                     "without mpirun (or with -np 1). Nothing was run or "
+                     "written.\n";
       return 1;
     }
   // After MPI_Init, which installs handlers of its own.
