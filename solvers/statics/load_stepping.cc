@@ -100,6 +100,8 @@ namespace rodnet
         result.failure = e.what();
         return result;
       }
+    const bool    recover_from_mode = parameters.branch_switch_amplitude > 0;
+    dealii::Timer timer;
     if (parameters.predict)
       {
         // With an increment to follow, extrapolate it; without one (first
@@ -115,14 +117,39 @@ namespace rodnet
           {
             result = solve_at(trial, target, nullptr, &u);
             if (!result.converged)
-              trial = u;
+              {
+                trial = u;
+                report_failed_attempt(
+                  target, "the prediction", result, "the last equilibrium", timer);
+              }
           }
       }
     if (!result.converged)
-      result = solve_at(trial, target);
-    if (!result.converged && parameters.branch_switch_amplitude > 0)
+      {
+        result = solve_at(trial, target);
+        if (!result.converged && recover_from_mode)
+          report_failed_attempt(
+            target, "the last equilibrium", result, "its buckling mode", timer);
+      }
+    if (!result.converged && recover_from_mode)
       followed_mode = step_from_mode(u, path.lambda, target, trial, result);
     return result;
+  }
+
+  void
+  StaticSolver::report_failed_attempt(const double        target,
+                                      const std::string  &start,
+                                      const JudgedResult &result,
+                                      const std::string  &next,
+                                      const dealii::Timer &timer) const
+  {
+    if (log == nullptr)
+      return;
+    char time[32];
+    std::snprintf(time, sizeof(time), "%.3g s", timer.wall_time());
+    *log << "  step to load factor " << target << ": Newton from " << start
+         << " failed: " << result.failure << "; " << time
+         << " in this step so far; trying from " << next << std::endl;
   }
 
   bool

@@ -1,6 +1,8 @@
 #ifndef RODNET_SOLVERS_STATICS_STATIC_SOLVER_H
 #define RODNET_SOLVERS_STATICS_STATIC_SOLVER_H
 
+#include <deal.II/base/timer.h>
+
 #include <core/solvable_model.h>
 #include <solvers/checks/equilibrium_check.h>
 #include <solvers/checks/residual_criterion.h>
@@ -364,6 +366,17 @@ namespace rodnet
                  double            target,
                  VectorType       &trial,
                  bool             &followed_mode);
+
+    /// Writes to the log that the step's Newton solve from @p start failed
+    /// (why: @p result's failure), the wall time the step took so far by
+    /// @p timer, and that it tries again from @p next: a hard step can take
+    /// several Newton solves, and a user sees where the time goes.
+    void
+    report_failed_attempt(double               target,
+                          const std::string   &start,
+                          const JudgedResult  &result,
+                          const std::string   &next,
+                          const dealii::Timer &timer) const;
 
     /// The branch-switch start of attempt_step(). Where it converges,
     /// @p result becomes that solve's and the model's reference is

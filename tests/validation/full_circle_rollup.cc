@@ -159,6 +159,15 @@ namespace
     // on the stiff stub, and the steps restart from the buckling mode.
     EXPECT_NE(log.find("converged from the buckling mode"), std::string::npos)
       << log;
+    // Before it, the log says which solve failed, how long the step has
+    // taken and what comes next (a hard step's recovery is not silent).
+    const auto said = log.find("Newton from the last equilibrium failed: ");
+    ASSERT_NE(said, std::string::npos) << log;
+    const std::string line = log.substr(said, log.find('\n', said) - said);
+    EXPECT_NE(line.find("s in this step so far; trying from its buckling mode"),
+              std::string::npos)
+      << line;
+    EXPECT_LT(said, log.find("converged from the buckling mode")) << log;
     expect_on_the_circle(run);
   }
 
