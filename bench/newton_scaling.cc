@@ -6,7 +6,7 @@
 // iteration from u = 0 is
 //   assemble: RodModel::assemble(u, 1, &r, &K) on the constrained system,
 //   solve:    the Newton solver's direct solver (TangentFactorization:
-//             band LU or KLU, --linear-solver), its numeric
+//             band LU, KLU or MUMPS, --linear-solver), its numeric
 //             factorization and the triangular solves (its one-time set-up,
 //             KLU's symbolic analysis, counts in "setup"),
 // timed separately, median (min-max), for N = 1e2 ... 1e6 vertices
@@ -24,13 +24,15 @@
 // lattice: the states the run goes through, whose tangents are indefinite
 // once the net sags far from equilibrium. Per iteration: the residual,
 // assemble / factorize / solve and the fill of the factor (its entries
-// over those of the tangent). The median and the largest time per DoF of
+// over those of the tangent; MUMPS stores one triangle, KLU L and U); per
+// lattice the time of making the factorization ("analysis": MUMPS's; KLU
+// analyses in its first factorize). The median and the largest time per DoF of
 // a lattice over those of the previous one show a superlinear jump: with
 // KLU's default pivot tolerance (before issue 33) the fill and the time of
 // the later iterations grew with the size (doc/performance.md).
 //
 // Usage: newton_scaling [--threads n] [--repeats n] [--max-vertices n]
-// [--linear-solver auto|klu|band] [--max-cells n] [--iterations n]
+// [--linear-solver auto|klu|band|mumps] [--max-cells n] [--iterations n]
 // (defaults 1, 5, 100000, auto, 40 and 5; N = 1e6 gets 3 repeats;
 // --max-vertices below 100 leaves out the rods, --max-cells below 10 the
 // lattices). The rods stop at 1e5 by default because building the model
@@ -110,7 +112,9 @@ namespace
         , du(model.create_vector())
     {
       model.initialize_matrix(K);
-      direct = TangentFactorization::create(K, linear_solver);
+      const double start = bench::now();
+      direct             = TangentFactorization::create(K, linear_solver);
+      analysis           = bench::now() - start;
     }
 
     TimedNewton(TimedNewton &&) = delete;
@@ -134,6 +138,9 @@ namespace
     VectorType                            u, r, du;
     MatrixType                            K;
     std::unique_ptr<TangentFactorization> direct;
+    /// The time of making the factorization: MUMPS's analysis (KLU's
+    /// comes with its first factorize()).
+    double analysis;
   };
 
   struct Result
@@ -340,13 +347,16 @@ namespace
   /// The first @p iterations full Newton steps of the first load step
   /// (load factor 0.5) of the lattice of @p cells cells; fewer where the
   /// state leaves what the model can assemble (a segment turned by 180
-  /// degrees), which is printed.
+  /// degrees), which is printed. @p analysis: the time of making the
+  /// factorization.
   std::vector<LatticeIteration>
   lattice_iterations(RodModel          &model,
                      const unsigned int iterations,
-                     const std::string &linear_solver)
+                     const std::string &linear_solver,
+                     double            &analysis)
   {
-    TimedNewton                   newton(model, linear_solver);
+    TimedNewton newton(model, linear_solver);
+    analysis = newton.analysis;
     std::vector<LatticeIteration> result;
     try
       {
@@ -378,17 +388,20 @@ namespace
   report_lattice(const unsigned int                   cells,
                  const double                         n_dofs,
                  const double                         setup,
+                 const double                         analysis,
                  const std::vector<LatticeIteration> &iterations)
   {
     std::vector<double> totals;
     char                line[300];
     std::snprintf(line,
                   sizeof(line),
-                  "lattice %3u x %-3u DoFs %8.0f  setup %.3g s\n",
+                  "lattice %3u x %-3u DoFs %8.0f  setup %.3g s  analysis "
+                  "%.3g s\n",
                   cells,
                   cells,
                   n_dofs,
-                  setup);
+                  setup,
+                  analysis);
     std::cout << line;
     for (std::size_t k = 0; k < iterations.size(); ++k)
       {
@@ -429,7 +442,8 @@ namespace
   {
     std::cout << "\nNewton iterations of the welded lattice under gravity, "
                  "the first "
-              << options.iterations << " of its first load step; times in s\n";
+              << options.iterations << " of its first load step; linear solver "
+              << options.linear_solver << "; times in s\n";
     std::vector<double> dofs, median, largest;
     for (const unsigned int cells : {10u, 20u, 40u, 57u, 80u, 111u})
       {
@@ -438,11 +452,14 @@ namespace
         const double start = bench::now();
         const auto   model = lattice_model(cells);
         const double setup = bench::now() - start;
-        const auto   iterations =
-          lattice_iterations(*model, options.iterations, options.linear_solver);
+        double       analysis;
+        const auto   iterations = lattice_iterations(*model,
+                                                   options.iterations,
+                                                   options.linear_solver,
+                                                   analysis);
         dofs.push_back(model->layout().n_dofs());
         const auto [m, l] =
-          report_lattice(cells, dofs.back(), setup, iterations);
+          report_lattice(cells, dofs.back(), setup, analysis, iterations);
         median.push_back(m);
         largest.push_back(l);
       }

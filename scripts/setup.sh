@@ -12,6 +12,7 @@ packages=(
   numdiff                   # tolerant comparison of numeric outputs
   gnuplot-nox               # PNG plots of probes and benchmark charts
   libsuitesparse-dev        # KLU, the sparse LU of Newton's systems
+  libmumps-dev              # MUMPS, their multifrontal LDL^T (Linear solver = mumps)
   libpng-dev                # the tests read the pictures runs draw
   python3-minimal           # writes the pop-up's Gmsh meshes (bench/fig9_popup_mesh.py)
 )

@@ -3,6 +3,7 @@
 #include <core/scatter_positions.h>
 #include <solvers/newton/epetra_entries.h>
 #include <solvers/newton/klu_factorization.h>
+#include <solvers/newton/mumps_factorization.h>
 #include <solvers/newton/tangent_factorization.h>
 
 #include <Amesos.h>
@@ -312,9 +313,11 @@ namespace rodnet
   TangentFactorization::create(const MatrixType  &matrix,
                                const std::string &kind)
   {
+    if (kind == "mumps")
+      return std::make_unique<MumpsFactorization>(matrix);
     if (kind != "klu" && kind != "band" && kind != "auto")
       throw std::invalid_argument("unknown linear solver \"" + kind +
-                                  "\"; known: auto, klu, band");
+                                  "\"; known: auto, klu, band, mumps");
     const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
                                matrix.get_mpi_communicator()) == 1;
     if (kind == "band" && !one_process)

@@ -13,7 +13,7 @@ namespace rodnet
   /**
    * The direct solver of Newton's linear systems K x = b with the tangent
    * K: factorized once per Newton iteration, then used for one or more
-   * solves. Two kinds:
+   * solves. Three kinds:
    *  - "klu": SuiteSparse KLU, sparse LU for any pattern; its symbolic
    *    analysis (the fill-reducing order) is done once, at construction,
    *    and its pivots stay on the diagonal, where that order wants them,
@@ -24,6 +24,11 @@ namespace rodnet
    *    tangent is a narrow band (half-width 11 for one rod), which the
    *    band LU factorizes 4-5 times faster than KLU (doc/performance.md);
    *    a network's junction DoFs come last and widen the band.
+   *  - "mumps": MUMPS's multifrontal LDL^T of the symmetric tangent
+   *    (MumpsFactorization), its analysis done at construction; on the
+   *    welded lattice its factorization is 2-3 times faster than KLU's
+   *    from 5.8e5 DoFs (doc/performance.md). One process for now; MUMPS is
+   *    the distributed direct solver to be (issue 37).
    * "auto" takes the band where its half-widths are at most
    * max_auto_band_width, as numbered or renumbered by reverse Cuthill-McKee
    * (the multipliers of inextensible rods come after all other DoFs: a
@@ -45,9 +50,9 @@ namespace rodnet
 
     /**
      * A factorization of the matrices of @p matrix's pattern (its values
-     * are read at each factorize()): @p kind "klu", "band" or "auto".
-     * Throws std::invalid_argument for another kind, and for "band" on
-     * more than one process.
+     * are read at each factorize()): @p kind "klu", "band", "mumps" or
+     * "auto". Throws std::invalid_argument for another kind, and for
+     * "band" and "mumps" on more than one process.
      */
     static std::unique_ptr<TangentFactorization>
     create(const MatrixType &matrix, const std::string &kind);
@@ -74,12 +79,13 @@ namespace rodnet
       solve(c, y);
     }
 
-    /// "klu" or "band".
+    /// "klu", "band" or "mumps".
     virtual std::string
     name() const = 0;
 
     /// The entries the last factorization stores: those of KLU's L and U
-    /// (their diagonals included), or the band as LAPACK stores it; NaN
+    /// (their diagonals included), of MUMPS's L and D (one triangle), or
+    /// the band as LAPACK stores it; NaN
     /// where the solver does not tell (Amesos, on several processes), 0
     /// before the first factorization.
     virtual double

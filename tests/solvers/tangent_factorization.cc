@@ -1,7 +1,8 @@
 // The direct solvers of Newton's systems (TangentFactorization): LAPACK's
 // band LU and KLU solve a rod's tangent system to its backward
 // error; "auto" takes the band for one rod and KLU where junction DoFs
-// widen the band; a singular tangent is reported, not solved; a kept
+// widen the band; a singular tangent is reported, not solved, by MUMPS
+// too (tests/solvers/mumps_factorization.cc has its own tests); a kept
 // factorization (TangentFactorizationCache) is reused only for the same
 // matrix, pattern and kind, and solves new values to their backward error;
 // and NOX's line searches, which apply the Jacobian through our group,
@@ -12,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <common/diagonal_tangent.h>
+#include <common/pinned_lattices.h>
 #include <common/rod_models.h>
 #include <geometry/network_generators.h>
 #include <geometry/rod_graph.h>
@@ -27,6 +29,9 @@
 #include <stdexcept>
 
 using namespace rodnet;
+using rodnet::testing::normwise_backward_error;
+using rodnet::testing::pinned_square_lattice;
+using rodnet::testing::RolledLattice;
 
 namespace
 {
@@ -185,7 +190,7 @@ TEST(TangentFactorization, AKeptFactorizationServesTheSamePatternOnly)
 {
   RodSystem                 rod(rodnet::testing::straight_network(20));
   TangentFactorizationCache cache;
-  for (const std::string kind : {"band", "klu"})
+  for (const std::string kind : {"band", "klu", "mumps"})
     {
       const auto first = cache.get(rod.tangent, kind);
       EXPECT_EQ(first->name(), kind);
@@ -222,94 +227,6 @@ TEST(TangentFactorization, AKeptFactorizationServesTheSamePatternOnly)
 
 namespace
 {
-  /// The finalized model of a welded square lattice of @p cells x @p cells
-  /// cells of side @p side, @p segments per beam, of @p stiffness
-  /// (@p inextensible rods or not), pinned at its four corners.
-  std::unique_ptr<RodModel>
-  pinned_square_lattice(const unsigned int  cells,
-                        const double        side,
-                        const unsigned int  segments,
-                        const RodStiffness &stiffness,
-                        const bool          inextensible)
-  {
-    BuiltNetwork built =
-      build_rod_network(network_generators::square_lattice(cells, cells, side),
-                        segments,
-                        "simple");
-    for (unsigned int rod = 0; rod < built.network->rods().size(); ++rod)
-      built.network->set_inextensible(rod, inextensible);
-    auto model =
-      rodnet::testing::elastic_model(std::move(built.network), stiffness);
-    for (const unsigned int node :
-         {0u, cells, cells * (cells + 1), (cells + 1) * (cells + 1) - 1})
-      model->fix_components("corner",
-                            built.node_vertex[node],
-                            {{true, true, true}});
-    model->finalize();
-    return model;
-  }
-
-  /**
-   * A welded square lattice of 30 x 30 cells of side 0.1 (10 segments per
-   * beam, EA = 1e5, EI1 = 400, EI2 = 100, GJ = 67: the lattice of issue 33;
-   * 83820 DoFs) pinned at its corners, and its tangent where the lattice
-   * is rolled into a cylinder of one turn about a line along y, the
-   * junction rotations left at the identity: a state far from equilibrium,
-   * as Newton's first iterates on a large lattice are, whose tangent is
-   * indefinite.
-   */
-  struct RolledLattice
-  {
-    static constexpr unsigned int cells = 30;
-    static constexpr double       side  = 0.1;
-
-    std::unique_ptr<RodModel> model;
-    MatrixType                tangent;
-
-    RolledLattice()
-    {
-      model =
-        pinned_square_lattice(cells, side, 10, {1e5, 400, 100, 67}, false);
-      model->initialize_matrix(tangent);
-    }
-
-    /// Assembles the tangent, flat (@p turns = 0) or rolled by @p turns.
-    void
-    assemble_rolled(const double turns)
-    {
-      VectorType   u      = model->create_vector();
-      const double radius = cells * side / (2 * M_PI * turns);
-      for (unsigned int v = 0; v < model->network().n_vertices() && turns > 0;
-           ++v)
-        {
-          const Vector3 x = model->network().vertex(v);
-          const Vector3 rolled(radius * std::sin(x[0] / radius),
-                               x[1],
-                               radius * (1 - std::cos(x[0] / radius)));
-          for (unsigned int c = 0; c < 3; ++c)
-            u[model->layout().vertex_dof(v, c)] = rolled[c] - x[c];
-        }
-      u.compress(dealii::VectorOperation::insert);
-      model->assemble(u, 0.0, nullptr, &tangent);
-    }
-  };
-
-  /// The normwise backward error |b - K x| / (|K|_F |x| + |b|) of the
-  /// solution x of K x = b by @p solver.
-  double
-  normwise_backward_error(TangentFactorization &solver,
-                          const MatrixType     &tangent,
-                          const VectorType     &b)
-  {
-    VectorType x = b;
-    solver.solve(b, x);
-    VectorType kx = x;
-    tangent.vmult(kx, x);
-    kx.add(-1.0, b);
-    return kx.l2_norm() /
-           (tangent.frobenius_norm() * x.l2_norm() + b.l2_norm());
-  }
-
   /// The entries of the L and U of @p tangent by KLU with its own order
   /// (AMD on K + K^T, block triangular form), rows scaled by KLU's
   /// @p scale and pivot tolerance @p tolerance.
@@ -404,12 +321,7 @@ namespace
     InextensibleLattice()
     {
       model = pinned_square_lattice(cells, 1, 40, {1e4, 1, 0.01, 0.04}, true);
-      model->initialize_matrix(tangent);
-      VectorType u = model->create_vector();
-      for (unsigned int i = 0; i < u.size(); ++i)
-        u[i] = 0.1 * std::cos(0.7 * i);
-      u.compress(dealii::VectorOperation::insert);
-      model->assemble(u, 1.0, nullptr, &tangent);
+      rodnet::testing::assemble_shaken(*model, tangent, 0.1);
     }
   };
 
@@ -493,7 +405,7 @@ TEST(TangentFactorization, ASingularTangentIsReported)
   singular.set(1, 0, 1.0);
   singular.set(1, 1, 2.0);
   singular.compress(dealii::VectorOperation::insert);
-  for (const std::string kind : {"band", "klu"})
+  for (const std::string kind : {"band", "klu", "mumps"})
     {
       const auto solver = TangentFactorization::create(singular, kind);
       try
