@@ -10,11 +10,7 @@ namespace rodnet
       : parameters(parameters)
       , globalization(line_search_registry().create(parameters.line_search))
   {
-    if (parameters.linear_solver != "auto" &&
-        parameters.linear_solver != "klu" && parameters.linear_solver != "band")
-      throw std::invalid_argument("unknown linear solver \"" +
-                                  parameters.linear_solver +
-                                  "\"; known: auto, klu, band");
+    TangentFactorization::check_kind(parameters.linear_solver);
   }
 
   NewtonSolver::~NewtonSolver() = default;

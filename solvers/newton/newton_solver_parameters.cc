@@ -16,9 +16,11 @@ namespace rodnet
                         searches.listing() + "[-]");
     prm.declare_entry("Linear solver",
                       "auto",
-                      dealii::Patterns::Selection("auto|klu|band"),
+                      dealii::Patterns::Selection("auto|klu|band|mumps"),
                       "Newton's direct solver: SuiteSparse KLU, LAPACK band "
-                      "LU (one process); auto: band if 32 wide at most. [-]");
+                      "LU (one process), MUMPS's LDL^T (faster on networks "
+                      "of 1e5 DoFs and more); auto: band if 32 wide at "
+                      "most, else KLU. [-]");
     prm.declare_entry("Max iterations",
                       "25",
                       dealii::Patterns::Integer(1),

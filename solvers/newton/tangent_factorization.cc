@@ -309,15 +309,22 @@ namespace rodnet
   } // namespace
 
 
+  void
+  TangentFactorization::check_kind(const std::string &kind)
+  {
+    if (kind != "klu" && kind != "band" && kind != "auto" && kind != "mumps")
+      throw std::invalid_argument("unknown linear solver \"" + kind +
+                                  "\"; known: auto, klu, band, mumps");
+  }
+
+
   std::unique_ptr<TangentFactorization>
   TangentFactorization::create(const MatrixType  &matrix,
                                const std::string &kind)
   {
+    check_kind(kind);
     if (kind == "mumps")
       return std::make_unique<MumpsFactorization>(matrix);
-    if (kind != "klu" && kind != "band" && kind != "auto")
-      throw std::invalid_argument("unknown linear solver \"" + kind +
-                                  "\"; known: auto, klu, band, mumps");
     const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
                                matrix.get_mpi_communicator()) == 1;
     if (kind == "band" && !one_process)

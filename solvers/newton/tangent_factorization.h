@@ -57,6 +57,11 @@ namespace rodnet
     static std::unique_ptr<TangentFactorization>
     create(const MatrixType &matrix, const std::string &kind);
 
+    /// Throws std::invalid_argument, listing the kinds, unless @p kind is
+    /// one that create() makes.
+    static void
+    check_kind(const std::string &kind);
+
     /// Factorizes the matrix's current values. Throws std::runtime_error
     /// naming the solver where the matrix is singular.
     virtual void

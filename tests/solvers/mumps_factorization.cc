@@ -15,6 +15,7 @@
 #include <solvers/newton/epetra_entries.h>
 #include <solvers/newton/mumps_factorization.h>
 #include <solvers/stability/stability.h>
+#include <solvers/statics/static_solver.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -189,4 +190,38 @@ TEST(MumpsFactorization, TwoColumnSolveIsTwoSolves)
   EXPECT_LT(y1.l2_norm(), 1e-14 * y.l2_norm());
   EXPECT_LT(relative_residual(lattice.tangent, x, b), 1e-10);
   EXPECT_LT(relative_residual(lattice.tangent, y, c), 1e-10);
+}
+
+// Newton's load steps with "Linear solver = mumps" reach KLU's equilibrium
+// of a welded lattice (8 x 8 cells, 4 segments per beam, pinned at its
+// corners, a point force out of its plane at its centre): the same
+// solution to 1e-10 of its size.
+TEST(MumpsFactorization, LoadStepsReachKlusEquilibrium)
+{
+  std::vector<VectorType> solutions;
+  for (const std::string kind : {"klu", "mumps"})
+    {
+      BuiltNetwork built = build_rod_network(
+        network_generators::square_lattice(8, 8, 0.1), 4, "simple");
+      const unsigned int centre = built.node_vertex[4 * 9 + 4];
+      auto               model  = rodnet::testing::elastic_model(
+        std::move(built.network), {1e5, 400, 100, 67});
+      for (const unsigned int node : {0u, 8u, 72u, 80u})
+        model->fix_components("corner",
+                              built.node_vertex[node],
+                              {{true, true, true}});
+      model->add_point_force(centre, Vector3(0, 0, -50));
+      model->finalize();
+      VectorType               u = model->create_vector();
+      StaticSolver::Parameters parameters;
+      parameters.n_steps              = 2;
+      parameters.newton.linear_solver = kind;
+      StaticSolver(*model, parameters).run(u, [](const auto &, const auto &) {
+      });
+      ASSERT_GT(std::abs(model->position(u, centre)[2]), 1e-3) << kind;
+      solutions.push_back(u);
+    }
+  VectorType difference = solutions[1];
+  difference.add(-1.0, solutions[0]);
+  EXPECT_LT(difference.l2_norm(), 1e-10 * solutions[0].l2_norm());
 }

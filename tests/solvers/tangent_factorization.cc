@@ -440,7 +440,7 @@ TEST(TangentFactorization, NoxLineSearchesApplyTheJacobianThroughOurGroup)
     k.compress(dealii::VectorOperation::insert);
   };
   for (const std::string search : {"full step", "backtrack", "polynomial"})
-    for (const std::string kind : {"band", "klu"})
+    for (const std::string kind : {"band", "klu", "mumps"})
       {
         MatrixType tangent;
         rodnet::testing::diagonal_tangent(n, tangent);
