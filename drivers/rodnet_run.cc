@@ -196,6 +196,24 @@ namespace
         return 1;
       }
   }
+
+  /// Whether rodnet-run was started on several MPI processes, which it
+  /// refuses with one message (from rank 0, not one per process).
+  bool
+  several_processes()
+  {
+    const unsigned int n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (n_processes == 1)
+      return false;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "rodnet-run: started on " << n_processes
+                << " MPI processes, but a scene runs on one process: the "
+                   "network is not distributed over processes yet; run it "
+                   "without mpirun (or with -np 1). Nothing was run or "
+                   "written.\n";
+    return true;
+  }
 } // namespace
 
 /// main() of rodnet-run, called by the launcher with its command line.
@@ -248,19 +266,8 @@ rodnet_run_main(int argc, char **argv)
   // MPI (for Trilinos) only now: a refused command line need not wait for
   // it. Open MPI's fast options for a process no launcher started.
   rodnet::MPISession mpi(argc, argv);
-  if (const unsigned int n_processes =
-        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      n_processes != 1)
-    {
-      // One message, not one per process.
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cerr << "rodnet-run: started on " << n_processes
-                  << " MPI processes, but a scene runs on one process: the "
-                     "network is not distributed over processes yet; run it "
-                     "without mpirun (or with -np 1). Nothing was run or "
-                     "written.\n";
-      return 1;
-    }
+  if (several_processes())
+    return 1;
   // After MPI_Init, which installs handlers of its own.
   rodnet::stop_cleanly_on_signals();
   if (arguments.scene_files.size() == 1 && arguments.sweep.empty())
