@@ -93,6 +93,16 @@ namespace rodnet
       segment_index[layout->segments()[s].cell] = s;
     set_undeformed_segments(*network, undeformed, rest_lengths, frames);
 
+    add_hinge_references(rod_kernels);
+    add_junction_references(rod_junction_kernels);
+    set_reference_twists_and_natural_strains();
+  }
+
+
+  void
+  Configuration::add_hinge_references(
+    const std::vector<const HingeKernel *> &rod_kernels)
+  {
     for (const HingeStencil &h : layout->hinges())
       {
         kernels.push_back(rod_kernels[h.rod]);
@@ -103,7 +113,13 @@ namespace rodnet
         hinge_refs.push_back(ref);
         set_hinge_frames(hinge_refs.size() - 1);
       }
+  }
 
+
+  void
+  Configuration::add_junction_references(
+    const std::vector<const JunctionKernel *> &rod_junction_kernels)
+  {
     accumulated_rotations.assign(network->junctions().size(),
                                  Quaternion::Identity());
     for (const JunctionStencil &e : layout->junctions())
@@ -116,7 +132,12 @@ namespace rodnet
         ref.ghost_first   = e.ghost_first;
         junction_refs.push_back(ref);
       }
+  }
 
+
+  void
+  Configuration::set_reference_twists_and_natural_strains()
+  {
     // The reference twist of kernels that track it is that of the
     // undeformed configuration, which has zero displacement and turns no
     // junction (the junction family declares the quaternions later).

@@ -288,6 +288,17 @@ namespace rodnet
     void
     set_hinge_frames(unsigned int i);
 
+    /// The constructor's parts: the hinges' kernels, Voronoi lengths and
+    /// frames; the junction elements' kernels, lengths and frames; then
+    /// the reference twists and natural strains at the undeformed state.
+    void
+    add_hinge_references(const std::vector<const HingeKernel *> &rod_kernels);
+    void
+    add_junction_references(
+      const std::vector<const JunctionKernel *> &rod_junction_kernels);
+    void
+    set_reference_twists_and_natural_strains();
+
     const RodNetwork                   *network;
     const DofLayout                    *layout;
     std::vector<const HingeKernel *>    kernels; ///< per hinge
