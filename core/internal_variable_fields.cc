@@ -36,23 +36,27 @@ namespace rodnet
   }
 
   std::vector<double> &
-  InternalVariableFields::at_vertices(const std::string &label)
+  InternalVariableFields::values_of(Named             &named,
+                                    const std::string &label,
+                                    const std::size_t  n)
   {
-    return vertex_fields
+    return named
       .try_emplace(internal_variable_field_name(label),
                    internal_variable_unit(label),
-                   std::vector<double>(n_vertices))
+                   std::vector<double>(n))
       .first->second.second;
+  }
+
+  std::vector<double> &
+  InternalVariableFields::at_vertices(const std::string &label)
+  {
+    return values_of(vertex_fields, label, n_vertices);
   }
 
   std::vector<double> &
   InternalVariableFields::at_cells(const std::string &label)
   {
-    return cell_fields
-      .try_emplace(internal_variable_field_name(label),
-                   internal_variable_unit(label),
-                   std::vector<double>(n_cells))
-      .first->second.second;
+    return values_of(cell_fields, label, n_cells);
   }
 
   void

@@ -44,6 +44,11 @@ namespace rodnet
 
     std::size_t n_vertices, n_cells;
     Named       vertex_fields, cell_fields;
+
+    /// The values of the field of @p label in @p named, made with @p n
+    /// zeros and the label's unit if new.
+    static std::vector<double> &
+    values_of(Named &named, const std::string &label, std::size_t n);
   };
 } // namespace rodnet
 
