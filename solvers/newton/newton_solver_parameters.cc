@@ -16,7 +16,7 @@ namespace rodnet
                         searches.listing() + "[-]");
     prm.declare_entry("Linear solver",
                       "auto",
-                      dealii::Patterns::Selection("auto|klu|band|mumps"),
+                      dealii::Patterns::Selection(TangentFactorization::kinds),
                       "Newton's direct solver: SuiteSparse KLU, LAPACK band "
                       "LU (one process), MUMPS's LDL^T (faster on networks "
                       "of 1e5 DoFs and more); auto: band if 32 wide at "

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/patterns.h>
 
 #include <core/scatter_positions.h>
 #include <solvers/newton/epetra_entries.h>
@@ -312,9 +313,9 @@ namespace rodnet
   void
   TangentFactorization::check_kind(const std::string &kind)
   {
-    if (kind != "klu" && kind != "band" && kind != "auto" && kind != "mumps")
+    if (!dealii::Patterns::Selection(kinds).match(kind))
       throw std::invalid_argument("unknown linear solver \"" + kind +
-                                  "\"; known: auto, klu, band, mumps");
+                                  "\"; known: " + kinds);
   }
 
 

@@ -57,6 +57,9 @@ namespace rodnet
     static std::unique_ptr<TangentFactorization>
     create(const MatrixType &matrix, const std::string &kind);
 
+    /// The kinds create() makes, as a deal.II selection pattern's list.
+    static constexpr const char *kinds = "auto|klu|band|mumps";
+
     /// Throws std::invalid_argument, listing the kinds, unless @p kind is
     /// one that create() makes.
     static void
