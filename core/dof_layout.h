@@ -62,10 +62,10 @@ namespace rodnet
    * The degrees of freedom of a rod network: a DoFHandler<1,3> with
    * FESystem(FE_Q<1,3>(1)^3, FE_DGQ<1,3>(0)) on the segments, i.e. the
    * displacement of every vertex and one twist angle per segment (and
-   * nothing on the links of RodNetwork::create_triangulation()), followed by the blocks
-   * that element families declare for themselves; and the stencils that the
-   * assembler loops over. Index maps come from here only;
-   * kernels see local vectors in their documented order.
+   * nothing on the links of RodNetwork::create_triangulation()), followed by
+   * the blocks that element families declare for themselves; and the stencils
+   * that the assembler loops over. Index maps come from here only; kernels see
+   * local vectors in their documented order.
    *
    * Rod ends tied at a junction keep their own triangulation vertices:
    * deal.II's meshes of dimension 1 do not allow three or more cells at a

@@ -426,10 +426,13 @@ namespace rodnet
     locate(const std::vector<Rod> &rods, const unsigned int v)
     {
       // The first rod that starts after v, then the one before it.
-      const auto after = std::upper_bound(
-        rods.begin(), rods.end(), v, [](const unsigned int w, const Rod &rod) {
-          return w < rod.vertices.front();
-        });
+      const auto after =
+        std::upper_bound(rods.begin(),
+                         rods.end(),
+                         v,
+                         [](const unsigned int w, const Rod &rod) {
+                           return w < rod.vertices.front();
+                         });
       if (after == rods.begin() || v > std::prev(after)->vertices.back())
         throw std::invalid_argument("vertex " + std::to_string(v) +
                                     " does not exist");
@@ -492,8 +495,7 @@ namespace rodnet
           if (previous != nullptr)
             {
               dealii::CellData<1> link;
-              link.vertices    = {previous->vertices.back(),
-                                  rod.vertices.front()};
+              link.vertices = {previous->vertices.back(), rod.vertices.front()};
               link.material_id = link_material_id;
               cells.push_back(link);
             }

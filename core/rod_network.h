@@ -370,7 +370,7 @@ namespace rodnet
     /// The junctions by name, and by vertex (their own and their ends'):
     /// looked up once per junction, so that building a network of J
     /// junctions takes O(J log J), not O(J^2).
-    std::map<std::string, unsigned int>          junction_by_name;
+    std::map<std::string, unsigned int>            junction_by_name;
     std::unordered_map<unsigned int, unsigned int> junction_of_vertex;
     /// The bounding box of the vertices added so far, which the tolerance
     /// of a junction's meeting ends is a fraction of.

@@ -84,7 +84,11 @@ TEST(DealIILayout, LinksTieTheOpenRodsIntoOnePieceAndCarryNoDofs)
   // The star's three rods, a ring and a separate rod: links from rod 0's
   // end to rod 1's start, 1 to 2 and 2 to 4; the ring (rod 3) stays apart.
   auto network = star();
-  network->add_rod(generators::ring(Vector3(5, 0, 0), 1.0, Vector3::UnitX(), Vector3::UnitY(), 6),
+  network->add_rod(generators::ring(Vector3(5, 0, 0),
+                                    1.0,
+                                    Vector3::UnitX(),
+                                    Vector3::UnitY(),
+                                    6),
                    true,
                    Vector3::UnitZ(),
                    "simple");
@@ -94,16 +98,17 @@ TEST(DealIILayout, LinksTieTheOpenRodsIntoOnePieceAndCarryNoDofs)
                    false,
                    Vector3::UnitZ(),
                    "simple");
-  const auto model = rodnet::testing::elastic_model(std::move(network),
-                                                    {1e3, 1.0, 1.0, 0.8});
-  const RodNetwork &n      = model->network();
-  const auto       &rods   = n.rods();
+  const auto model =
+    rodnet::testing::elastic_model(std::move(network), {1e3, 1.0, 1.0, 0.8});
+  const RodNetwork  &n     = model->network();
+  const auto        &rods  = n.rods();
   const unsigned int n_seg = 4 * n_layout_segments + 6;
   ASSERT_EQ(n.n_segments(), n_seg);
   ASSERT_EQ(n.triangulation().n_active_cells(), n_seg + 3);
 
-  const std::vector<std::pair<unsigned int, unsigned int>> linked = {
-    {0, 1}, {1, 2}, {2, 4}};
+  const std::vector<std::pair<unsigned int, unsigned int>> linked = {{0, 1},
+                                                                     {1, 2},
+                                                                     {2, 4}};
   using Cell = dealii::TriaActiveIterator<dealii::CellAccessor<1, 3>>;
   for (unsigned int k = 0; k < linked.size(); ++k)
     {

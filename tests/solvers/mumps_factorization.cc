@@ -201,11 +201,13 @@ TEST(MumpsFactorization, LoadStepsReachKlusEquilibrium)
   std::vector<VectorType> solutions;
   for (const std::string kind : {"klu", "mumps"})
     {
-      BuiltNetwork built = build_rod_network(
-        network_generators::square_lattice(8, 8, 0.1), 4, "simple");
+      BuiltNetwork built =
+        build_rod_network(network_generators::square_lattice(8, 8, 0.1),
+                          4,
+                          "simple");
       const unsigned int centre = built.node_vertex[4 * 9 + 4];
-      auto               model  = rodnet::testing::elastic_model(
-        std::move(built.network), {1e5, 400, 100, 67});
+      auto model = rodnet::testing::elastic_model(std::move(built.network),
+                                                  {1e5, 400, 100, 67});
       for (const unsigned int node : {0u, 8u, 72u, 80u})
         model->fix_components("corner",
                               built.node_vertex[node],
