@@ -228,12 +228,19 @@ namespace rodnet
     // rethrown after the loop so that the caller can cut the step.
     std::exception_ptr failure;
     std::mutex         failure_mutex;
+    // On several processes, the stencils that couple this process's DoFs
+    // (own_stencils); on one, all of them.
+    const ElementFamily &family = *families[f];
+    const OwnedStencils *subset =
+      own_stencils.empty() ? nullptr : &own_stencils[f];
+    const unsigned int n =
+      subset != nullptr ? subset->stencils.size() : family.n_stencils();
     // Each stencil's energy in its own slot, summed in order afterwards:
     // the same sum with one thread or several.
-    const ElementFamily &family = *families[f];
-    std::vector<double>  energies(family.n_stencils(), 0.0);
-    const auto           worker =
-      [&](const unsigned int s, NoAssemblyScratch &, LocalContribution &copy) {
+    std::vector<double> energies(n, 0.0);
+    const auto          worker =
+      [&](const unsigned int k, NoAssemblyScratch &, LocalContribution &copy) {
+        const unsigned int s = subset != nullptr ? subset->stencils[k] : k;
         copy.dofs.clear();
         copy.energy  = 0;
         copy.family  = f;
@@ -251,25 +258,26 @@ namespace rodnet
             if (!failure)
               failure = std::current_exception();
           }
-        energies[s] = copy.energy;
+        energies[k] = copy.energy;
       };
     const auto add = [&](const LocalContribution &copy) {
       if (!copy.dofs.empty())
         copier(copy);
     };
-    if (blocks != nullptr)
+    if (blocks != nullptr && subset == nullptr)
       run_in_colors(*blocks, worker, add);
     else
       dealii::WorkStream::run(0u,
-                              family.n_stencils(),
+                              n,
                               worker,
                               add,
                               NoAssemblyScratch(),
                               LocalContribution());
     if (failure)
       std::rethrow_exception(failure);
-    for (const double e : energies)
-      energy += e;
+    for (unsigned int k = 0; k < n; ++k)
+      if (subset == nullptr || subset->counts_energy[k])
+        energy += energies[k];
   }
 
 
@@ -348,16 +356,14 @@ namespace rodnet
   }
 
 
-  namespace
+  Derivatives
+  RodModel::derivatives_for(const VectorType *residual,
+                            const MatrixType *tangent)
   {
-    Derivatives
-    derivatives_for(const VectorType *residual, const MatrixType *tangent)
-    {
-      return tangent != nullptr  ? Derivatives::hessian :
-             residual != nullptr ? Derivatives::gradient :
-                                   Derivatives::energy;
-    }
-  } // namespace
+    return tangent != nullptr  ? Derivatives::hessian :
+           residual != nullptr ? Derivatives::gradient :
+                                 Derivatives::energy;
+  }
 
 
   double
@@ -370,6 +376,13 @@ namespace rodnet
   {
     if (residual != nullptr)
       *residual = 0;
+    if (!own_stencils.empty())
+      return assemble_distributed(u,
+                                  load_factor,
+                                  residual,
+                                  tangent,
+                                  apply_constraints,
+                                  extra_force);
     if (!DirectScatter::applies(tangent, mpi_communicator))
       {
         if (tangent != nullptr)
@@ -421,6 +434,11 @@ namespace rodnet
                           MatrixType        *tangent,
                           const bool         apply_constraints) const
   {
+    if (!own_stencils.empty())
+      throw std::invalid_argument(
+        "RodModel::assemble_into: a model on several processes assembles "
+        "into its own system only (assemble()); coupled systems on several "
+        "processes are not there yet");
     if (block.size() != layout_->n_dofs())
       throw std::invalid_argument(
         "RodModel::assemble_into: the system block places " +
@@ -508,8 +526,12 @@ namespace rodnet
     // energy at a stencil load factor 0 (no applied-moment potential, even
     // for fixed loads) and without add_dead_loads().
     follow_natural_shape(load_factor);
-    const StencilState state{u, *configuration_, history, step_length, 0.0};
-    double             energy = 0;
+    const StencilState state{own_stencils.empty() ? u : with_ghosts(u),
+                             *configuration_,
+                             history,
+                             step_length,
+                             0.0};
+    double energy = 0;
     for (unsigned int f = 0; f < families.size(); ++f)
       assemble_family(
         f,
@@ -518,6 +540,8 @@ namespace rodnet
         [](const LocalContribution &) {},
         nullptr,
         energy);
-    return energy;
+    return own_stencils.empty() ?
+             energy :
+             dealii::Utilities::MPI::sum(energy, mpi_communicator);
   }
 } // namespace rodnet

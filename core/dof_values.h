@@ -5,6 +5,9 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace rodnet
 {
   /**
@@ -25,11 +28,23 @@ namespace rodnet
     {
     }
 
-    /// The entry of global DoF @p i (locally owned or ghost).
+    /// The entry of global DoF @p i (locally owned or ghost). Throws
+    /// std::logic_error where this process holds no entry @p i (a vector
+    /// without the ghosts a stencil reads): deal.II's Release library
+    /// would read 0 there.
     double
     operator[](const dealii::types::global_dof_index i) const
     {
-      return values != nullptr ? values[i] : (*u)[i];
+      if (values != nullptr)
+        return values[i];
+      const int local = u->trilinos_vector().Map().LID(
+        static_cast<dealii::TrilinosWrappers::types::int_type>(i));
+      if (local < 0)
+        throw std::logic_error(
+          "DoF " + std::to_string(i) +
+          " is not held on this process: the state given to a model on "
+          "several processes must have the ghost entries its stencils read");
+      return u->trilinos_vector()[0][local];
     }
 
   private:

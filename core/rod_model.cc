@@ -2,6 +2,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <base/first_problem.h>
 #include <core/built_in_families.h>
 #include <core/rod_model.h>
 #include <core/stencil_coloring.h>
@@ -235,7 +236,10 @@ namespace rodnet
   void
   RodModel::finalize()
   {
-    finalize(dealii::complete_index_set(layout_->n_dofs()));
+    finalize(contiguous_share(
+      layout_->n_dofs(),
+      dealii::Utilities::MPI::n_mpi_processes(mpi_communicator),
+      dealii::Utilities::MPI::this_mpi_process(mpi_communicator)));
   }
 
 
@@ -271,6 +275,13 @@ namespace rodnet
         color_stencil_blocks(*family,
                              layout_->n_dofs(),
                              default_block_size(family->n_stencils())));
+    if (dealii::Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      {
+        own_stencils = stencils_coupling(families, owned_dofs);
+        ghosted_state.reinit(owned_dofs,
+                             dofs_read_by(families, own_stencils, owned_dofs),
+                             mpi_communicator);
+      }
     finalized = true;
   }
 
@@ -283,7 +294,8 @@ namespace rodnet
     const std::vector<Vector3> forces = dead_loads.vertex_forces(*network_);
     for (unsigned int v = 0; v < forces.size(); ++v)
       for (unsigned int c = 0; c < 3; ++c)
-        f[layout_->vertex_dof(v, c)] += forces[v][c];
+        if (owned_dofs.is_element(layout_->vertex_dof(v, c)))
+          f[layout_->vertex_dof(v, c)] += forces[v][c];
     f.compress(dealii::VectorOperation::add);
     return f;
   }
@@ -374,26 +386,34 @@ namespace rodnet
   RodModel::check_ownership(const dealii::IndexSet &locally_owned_dofs) const
   {
     const global_dof_index n_dofs = layout_->n_dofs();
+    const unsigned int     n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(mpi_communicator);
+    std::string problem;
     if (locally_owned_dofs.size() != n_dofs)
-      throw std::invalid_argument(
-        "RodModel::finalize: the locally owned DoFs are a subset of " +
-        std::to_string(locally_owned_dofs.size()) + " indices, the model has " +
-        std::to_string(n_dofs) + " DoFs");
-    if (dealii::Utilities::MPI::n_mpi_processes(mpi_communicator) != 1)
-      throw std::invalid_argument(
-        "RodModel: the communicator has " +
-        std::to_string(
-          dealii::Utilities::MPI::n_mpi_processes(mpi_communicator)) +
-        " processes, but distributed assembly of rod networks is not there "
-        "yet; give the model a communicator of one process (MPI_COMM_SELF) "
-        "or run on one process");
-    if (locally_owned_dofs.n_elements() != n_dofs)
-      throw std::invalid_argument(
-        "RodModel::finalize: the locally owned DoFs must be all " +
-        std::to_string(n_dofs) +
-        " DoFs on a communicator of one process, "
-        "not " +
-        std::to_string(locally_owned_dofs.n_elements()));
+      problem = "the locally owned DoFs are a subset of " +
+                std::to_string(locally_owned_dofs.size()) +
+                " indices, the model has " + std::to_string(n_dofs) + " DoFs";
+    else if (!locally_owned_dofs.is_contiguous())
+      problem = "the locally owned DoFs of a process must be one contiguous "
+                "range";
+    else if (locally_owned_dofs.n_elements() == 0)
+      problem = "process " +
+                std::to_string(
+                  dealii::Utilities::MPI::this_mpi_process(mpi_communicator)) +
+                " would own no DoF: the network has " + std::to_string(n_dofs) +
+                " DoFs for " + std::to_string(n_processes) +
+                " processes; run on fewer processes";
+    // Collective from here on: every process reaches the same verdict.
+    problem = first_problem(problem, mpi_communicator);
+    if (problem.empty() &&
+        (dealii::Utilities::MPI::sum(locally_owned_dofs.n_elements(),
+                                     mpi_communicator) != n_dofs ||
+         !locally_owned_dofs.is_ascending_and_one_to_one(mpi_communicator)))
+      problem = "the locally owned DoFs of the " + std::to_string(n_processes) +
+                " process(es) are not a partition of all " +
+                std::to_string(n_dofs) + " DoFs in rank order";
+    if (!problem.empty())
+      throw std::invalid_argument("RodModel::finalize: " + problem);
   }
 
 
@@ -402,7 +422,9 @@ namespace rodnet
   {
     // The supports' fixed DoFs, homogeneous (Newton increments are zero
     // there), and the identity constraints of the junction copies.
-    homogeneous_constraints.reinit(owned_dofs);
+    // Every process keeps every line: the network is on every process.
+    homogeneous_constraints.reinit(
+      dealii::complete_index_set(layout_->n_dofs()));
     for (const auto &[dof, value] : fixed_dofs)
       homogeneous_constraints.add_line(dof);
     for (const auto &line : layout_->junction_constraints().get_lines())
@@ -414,7 +436,7 @@ namespace rodnet
     fixed_dof_mask.assign(layout_->n_dofs(), false);
     for (const auto &line : homogeneous_constraints.get_lines())
       fixed_dof_mask[line.index] = true;
-    no_constraints.reinit(owned_dofs);
+    no_constraints.reinit(dealii::complete_index_set(layout_->n_dofs()));
     no_constraints.close();
   }
 

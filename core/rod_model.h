@@ -22,6 +22,7 @@
 #include <core/scatter_positions.h>
 #include <core/solvable_model.h>
 #include <core/stencil_coloring.h>
+#include <core/stencil_ownership.h>
 #include <core/system_block.h>
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
@@ -324,17 +325,22 @@ namespace rodnet
       return families;
     }
 
-    /// Builds constraints, sparsity pattern, matrices and vectors; this
-    /// process owns every DoF.
+    /// Builds constraints, sparsity pattern, matrices and vectors. On one
+    /// process it owns every DoF; on a communicator of P processes each
+    /// owns a contiguous range of about n_dofs / P DoFs
+    /// (contiguous_share()).
     void
     finalize() override;
 
     /**
-     * As finalize(), with the DoFs this process owns given by the caller
-     * (a subset of 0 .. layout().n_dofs() - 1; over the processes of the
-     * communicator, a partition of them). Distributed assembly is not
-     * there yet: on a communicator of more than one process this throws
-     * std::invalid_argument, as it does for a set that is not a partition.
+     * As finalize(), with the DoFs this process owns given by the caller:
+     * a contiguous range of 0 .. layout().n_dofs() - 1, the ranges of the
+     * communicator's processes a partition of all DoFs in rank order (as
+     * Trilinos' maps and MUMPS's distributed input take them); otherwise
+     * std::invalid_argument on every process. Every process holds the whole
+     * network; on several, assemble() and elastic_energy() evaluate only
+     * the stencils that couple the process's DoFs (doc/architecture.md,
+     * "Several processes").
      */
     void
     finalize(const dealii::IndexSet &locally_owned_dofs);
@@ -825,9 +831,30 @@ namespace rodnet
       double                                               &energy) const;
 
     /// Throws std::invalid_argument unless @p locally_owned_dofs can be the
-    /// DoFs of this process (see finalize()).
+    /// DoFs of this process (see finalize()); collective.
     void
     check_ownership(const dealii::IndexSet &locally_owned_dofs) const;
+
+    /// assemble() on several processes: the stencils of own_stencils at the
+    /// state with its ghosts (ghosted_state), this process's rows only
+    /// (doc/architecture.md, "Several processes").
+    double
+    assemble_distributed(const VectorType &u,
+                         double            load_factor,
+                         VectorType       *residual,
+                         MatrixType       *tangent,
+                         bool              apply_constraints,
+                         const VectorType *extra_force) const;
+
+    /// What assemble() computes where @p residual and @p tangent are
+    /// (not) null.
+    static Derivatives
+    derivatives_for(const VectorType *residual, const MatrixType *tangent);
+
+    /// @p u with the ghost entries this process's stencils read, in
+    /// ghosted_state (on several processes).
+    const VectorType &
+    with_ghosts(const VectorType &u) const;
 
     /// The homogeneous constraints of the fixed DoFs and the junction
     /// copies, and the mask of the DoFs they constrain.
@@ -900,6 +927,12 @@ namespace rodnet
     /// DoF (color_stencil_blocks(), finalize()): the scatter of several
     /// threads.
     std::vector<StencilBlocks> stencil_blocks;
+    /// On several processes, per family, the stencils this process
+    /// evaluates (stencils_coupling()); empty on one process, where every
+    /// stencil is evaluated.
+    std::vector<OwnedStencils> own_stencils;
+    /// The state with the ghost entries own_stencils read (with_ghosts()).
+    mutable VectorType ghosted_state;
     /// Where the stencils' entries land in the rows of the tangent last
     /// assembled (the direct scatter's; found again for a new pattern).
     std::unique_ptr<ScatterPositionsCache> scatter_positions =
