@@ -118,6 +118,21 @@ namespace rodnet
   }
 
 
+  VectorType
+  RodModel::replica(const VectorType &u) const
+  {
+    const dealii::IndexSet every_dof =
+      dealii::complete_index_set(layout_->n_dofs());
+    VectorType with_every_ghost(owned_dofs, every_dof, mpi_communicator);
+    with_every_ghost = u;
+    VectorType result(every_dof, MPI_COMM_SELF);
+    for (global_dof_index i = 0; i < every_dof.size(); ++i)
+      result[i] = with_every_ghost[i];
+    result.compress(dealii::VectorOperation::insert);
+    return result;
+  }
+
+
   double
   RodModel::assemble_distributed(const VectorType &u,
                                  const double      load_factor,

@@ -851,6 +851,17 @@ namespace rodnet
     static Derivatives
     derivatives_for(const VectorType *residual, const MatrixType *tangent);
 
+    /// apply_boundary_values() on a vector that holds every entry (the
+    /// model's on one process, a replica() on several).
+    void
+    set_support_values(VectorType &u, double load_factor, double time) const;
+
+    /// Every entry of the distributed @p u, in a vector of one process
+    /// (MPI_COMM_SELF): for what reads and writes DoFs anywhere, such as
+    /// the supports. Collective; O(n_dofs) per process.
+    VectorType
+    replica(const VectorType &u) const;
+
     /// @p u with the ghost entries this process's stencils read, in
     /// ghosted_state (on several processes).
     const VectorType &

@@ -623,6 +623,23 @@ namespace rodnet
                                   const double load_factor,
                                   const double time) const
   {
+    // On several processes: on a copy of every entry, which the supports
+    // read and write anywhere; this process keeps its own entries.
+    if (own_stencils.empty())
+      return set_support_values(u, load_factor, time);
+    VectorType all = replica(u);
+    set_support_values(all, load_factor, time);
+    for (const global_dof_index i : owned_dofs)
+      u[i] = all[i];
+    u.compress(dealii::VectorOperation::insert);
+  }
+
+
+  void
+  RodModel::set_support_values(VectorType  &u,
+                               const double load_factor,
+                               const double time) const
+  {
     const SupportFactor factor = [&](const TimeFunction &f) {
       if (f.given() && !std::isfinite(time))
         throw std::logic_error("a support moves by the function of time " +

@@ -25,7 +25,7 @@ namespace
   /// @p communicator, clamped at its first junction, pinned at its last
   /// vertex, pulled at vertex 7.
   std::unique_ptr<RodModel>
-  welded_lattice(const MPI_Comm communicator)
+  welded_test_lattice(const MPI_Comm communicator)
   {
     auto network =
       std::move(build_rod_network(network_generators::square_lattice(3, 2, 1.0),
@@ -50,7 +50,7 @@ namespace
 
   /// The same random state on every process, in @p model's vector.
   VectorType
-  random_state(const RodModel &model)
+  random_lattice_state(const RodModel &model)
   {
     VectorType                             u = model.create_vector();
     std::mt19937                           random(11);
@@ -65,10 +65,10 @@ namespace
     return u;
   }
 
-  struct Assembled
+  struct AssembledOnProcesses
   {
-    Assembled(const RodModel &model)
-        : u(random_state(model))
+    AssembledOnProcesses(const RodModel &model)
+        : u(random_lattice_state(model))
         , residual(model.create_vector())
     {
       model.initialize_matrix(tangent);
@@ -82,9 +82,10 @@ namespace
 
   TEST(DistributedAssembly, EveryProcessHasTheRowsOfOneProcess)
   {
-    const auto         serial_model      = welded_lattice(MPI_COMM_SELF);
-    const auto         distributed_model = welded_lattice(MPI_COMM_WORLD);
-    const Assembled    serial(*serial_model), distributed(*distributed_model);
+    const auto serial_model      = welded_test_lattice(MPI_COMM_SELF);
+    const auto distributed_model = welded_test_lattice(MPI_COMM_WORLD);
+    const AssembledOnProcesses serial(*serial_model),
+      distributed(*distributed_model);
     const unsigned int share =
       distributed_model->locally_owned_dofs().n_elements();
     EXPECT_LE(dealii::Utilities::MPI::max(share, MPI_COMM_WORLD),
@@ -116,6 +117,44 @@ namespace
                       1e-12 * k_scale)
             << "entry (" << i << ", " << entry->column() << ")";
       }
+  }
+
+  TEST(DistributedAssembly, SupportsSetTheValuesOfOneProcess)
+  {
+    // The supports write DoFs that other processes own and read the frames
+    // of segments anywhere (RodModel::replica()).
+    std::unique_ptr<RodModel> models[2];
+    const MPI_Comm communicators[2] = {MPI_COMM_SELF, MPI_COMM_WORLD};
+    VectorType     states[2];
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        auto network = std::move(
+          build_rod_network(network_generators::square_lattice(3, 2, 1.0),
+                            4,
+                            "simple")
+            .network);
+        const unsigned int n_rods     = network->rods().size();
+        const unsigned int n_vertices = network->n_vertices();
+        models[k]                     = std::make_unique<RodModel>(
+          std::move(network),
+          std::vector<std::shared_ptr<const RodMaterial>>(
+            n_rods,
+            std::make_shared<LinearElasticRod>(RodStiffness{100, 2, 3, 1.5})),
+          GhostSpin::exact,
+          communicators[k]);
+        models[k]->clamp_junction("turned", 0);
+        models[k]->prescribe_rotation(0, Vector3::UnitZ(), 0.4);
+        models[k]->fix_components("moved",
+                                  n_vertices - 1,
+                                  {true, false, true},
+                                  Vector3(0.2, 0, -0.1));
+        models[k]->finalize();
+        states[k] = random_lattice_state(*models[k]);
+        models[k]->apply_boundary_values(states[k], 0.5);
+      }
+    for (const global_dof_index i : models[1]->locally_owned_dofs())
+      EXPECT_NEAR(states[1][i], states[0][i], 1e-15) << "DoF " << i;
+    EXPECT_GT(states[0].linfty_norm(), 0.05);
   }
 
   TEST(DistributedAssembly, APartitionThatIsNotOneIsRefusedOnEveryProcess)
