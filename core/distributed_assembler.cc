@@ -5,6 +5,7 @@
 #include <base/first_problem.h>
 #include <core/rod_model.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <cmath>
 #include <exception>
 
@@ -59,7 +60,14 @@ namespace rodnet
             row_values.resize(columns.size());
             for (unsigned int k = 0; k < columns.size(); ++k)
               row_values[k] = copy.matrix(i, column_places[k]);
-            matrix->add(row, columns, row_values);
+            // Epetra's own addition into a row of this process: deal.II's
+            // add() would copy the row and check for rows of others. (The
+            // wrapper hands out its Epetra matrix as const only.)
+            const_cast<Epetra_CrsMatrix &>(matrix->trilinos_matrix())
+              .SumIntoGlobalValues(static_cast<int>(row),
+                                   static_cast<int>(columns.size()),
+                                   row_values.data(),
+                                   columns.data());
           }
       }
 
@@ -98,14 +106,14 @@ namespace rodnet
         return fixed != nullptr && (*fixed)[dof];
       }
 
-      MatrixType                   *matrix;
-      VectorType                   *vector;
-      const std::vector<bool>      *fixed;
-      const dealii::IndexSet       &owned;
-      const MPI_Comm                communicator;
-      std::vector<global_dof_index> columns;
-      std::vector<unsigned int>     column_places;
-      std::vector<double>           row_values;
+      MatrixType               *matrix;
+      VectorType               *vector;
+      const std::vector<bool>  *fixed;
+      const dealii::IndexSet   &owned;
+      const MPI_Comm            communicator;
+      std::vector<int>          columns;
+      std::vector<unsigned int> column_places;
+      std::vector<double>       row_values;
     };
   } // namespace
 
