@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <iomanip>
+#include <sstream>
 
 namespace rodnet
 {
@@ -57,6 +59,73 @@ namespace rodnet
       NOX::StatusTest::StatusType  status = NOX::StatusTest::Unevaluated;
     };
 
+    /**
+     * Stops a solve whose residual norm has stayed above growth() times
+     * that of its initial guess for iterations() iterations in a row:
+     * Newton is diverging from this start, and the iterations left (25 by
+     * default, each a factorization) would be wasted before the caller
+     * tries another start. On the soft welded lattice (issue 37) full
+     * Newton from the flat state climbed from 0.3 N to 2.9e9 N over its 25
+     * iterations. A converging Newton solve can overshoot by orders of
+     * magnitude for an iteration or two (a large rotation stretching the
+     * rods), not for five.
+     */
+    class DivergenceTest : public NOX::StatusTest::Generic
+    {
+    public:
+      static constexpr double       growth     = 1e6;
+      static constexpr unsigned int iterations = 5;
+
+      NOX::StatusTest::StatusType
+      checkStatus(const NOX::Solver::Generic &solver,
+                  const NOX::StatusTest::CheckType) override
+      {
+        const NOX::Abstract::Group &group = solver.getSolutionGroup();
+        if (!group.isF())
+          return status = NOX::StatusTest::Unevaluated;
+        const double norm = group.getNormF();
+        if (solver.getNumIterations() == 0)
+          initial = norm;
+        above         = norm > growth * initial ? above + 1 : 0;
+        last          = norm;
+        return status = above >= iterations ? NOX::StatusTest::Failed :
+                                              NOX::StatusTest::Unconverged;
+      }
+
+      NOX::StatusTest::StatusType
+      getStatus() const override
+      {
+        return status;
+      }
+
+      std::ostream &
+      print(std::ostream &stream, int indent = 0) const override
+      {
+        return stream << std::string(indent, ' ') << status
+                      << " divergence test" << std::endl;
+      }
+
+      /// Why the solve stopped, where this test stopped it.
+      std::string
+      failure() const
+      {
+        if (status != NOX::StatusTest::Failed)
+          return "";
+        std::ostringstream text;
+        text << std::setprecision(3)
+             << "Newton diverges from this start: the residual grew from "
+             << initial << " to " << last << ", above " << growth
+             << " times its start for " << iterations << " iterations in a row";
+        return text.str();
+      }
+
+    private:
+      NOX::StatusTest::StatusType status  = NOX::StatusTest::Unevaluated;
+      double                      initial = 0;
+      double                      last    = 0;
+      unsigned int                above   = 0;
+    };
+
     /// NOX's parameters: a Newton direction, the line search @p method,
     /// made by @p user_defined if not null.
     Teuchos::RCP<Teuchos::ParameterList>
@@ -92,10 +161,12 @@ namespace rodnet
     }
 
     /// Stop when the state is not finite, when converged (the problem's
-    /// test, or |R| below the tolerance), or after max_iterations.
+    /// test, or |R| below the tolerance), when diverging (@p divergence),
+    /// or after max_iterations.
     Teuchos::RCP<NOX::StatusTest::Generic>
-    status_tests(const NewtonSolver::Problem    &problem,
-                 const NewtonSolver::Parameters &parameters)
+    status_tests(const NewtonSolver::Problem        &problem,
+                 const NewtonSolver::Parameters     &parameters,
+                 const Teuchos::RCP<DivergenceTest> &divergence)
     {
       Teuchos::RCP<NOX::StatusTest::Generic> converged;
       if (problem.converged)
@@ -108,6 +179,7 @@ namespace rodnet
         Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
       status->addStatusTest(Teuchos::rcp(new NOX::StatusTest::FiniteValue));
       status->addStatusTest(converged);
+      status->addStatusTest(divergence);
       status->addStatusTest(
         Teuchos::rcp(new NOX::StatusTest::MaxIters(parameters.max_iterations)));
       return status;
@@ -140,6 +212,7 @@ namespace rodnet
     judge(const NOX::Solver::Generic       &solver,
           const NOX::StatusTest::StatusType outcome,
           const NoxGroup                   &state,
+          const DivergenceTest             &divergence,
           const NewtonSolver::Parameters   &parameters)
     {
       const NOX::Abstract::Group &group = solver.getSolutionGroup();
@@ -154,6 +227,8 @@ namespace rodnet
         result.failure = state.failure();
       else if (!std::isfinite(result.residual_norm))
         result.failure = "the residual is not finite";
+      else if (!divergence.failure().empty())
+        result.failure = divergence.failure();
       else if (result.iterations >= parameters.max_iterations)
         result.failure =
           "no convergence in " + std::to_string(parameters.max_iterations) +
@@ -187,6 +262,7 @@ namespace rodnet
     Teuchos::RCP<NoxGroup>             group;
     Teuchos::RCP<NOX::Solver::Generic> solver;
     NOX::StatusTest::StatusType        outcome = NOX::StatusTest::Failed;
+    const auto divergence = Teuchos::rcp(new DivergenceTest);
     try
       {
         group   = Teuchos::rcp(new NoxGroup(
@@ -197,7 +273,9 @@ namespace rodnet
               factorizations->get(tangent, parameters.linear_solver) :
               TangentFactorization::create(tangent, parameters.linear_solver)));
         solver  = NOX::Solver::buildSolver(group,
-                                          status_tests(problem, parameters),
+                                          status_tests(problem,
+                                                       parameters,
+                                                       divergence),
                                           nox);
         outcome = solver->solve();
       }
@@ -215,6 +293,6 @@ namespace rodnet
         return result;
       }
     x = NoxVector::values(solver->getSolutionGroup().getX());
-    return judge(*solver, outcome, *group, parameters);
+    return judge(*solver, outcome, *group, *divergence, parameters);
   }
 } // namespace rodnet
