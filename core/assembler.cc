@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <core/direct_scatter.h>
 #include <core/rod_model.h>
 #include <core/scatter_positions.h>
 
@@ -24,158 +25,6 @@ namespace rodnet
 {
   namespace
   {
-    /**
-     * Adds local contributions straight into the compressed rows of the
-     * Trilinos matrix and the vector's storage. Valid on one process, where
-     * row and column maps are the identity, for constraints that only fix
-     * DoFs (rows and columns of fixed DoFs are skipped; their diagonal is
-     * set by finish()). It replaces AffineConstraints::
-     * distribute_local_to_global, whose per-entry global-to-local lookups
-     * and searches cost more than the kernels (see doc/performance.md).
-     * Each matrix entry goes to the place ScatterPositions found for it
-     * once per sparsity pattern, without searching its row.
-     */
-    class DirectScatter
-    {
-    public:
-      /// Epetra's compressed rows of @p m (null arrays where its storage
-      /// is not optimized).
-      static CsrArrays
-      csr_of(const Epetra_CrsMatrix &m)
-      {
-        CsrArrays csr;
-        m.ExtractCrsDataPointers(csr.offsets, csr.columns, csr.values);
-        csr.n_rows = m.NumMyRows();
-        return csr;
-      }
-
-      /// Whether the fast path applies to @p matrix (or to vectors alone) of
-      /// a model on @p communicator.
-      static bool
-      applies(const MatrixType *matrix, const MPI_Comm communicator)
-      {
-        if (dealii::Utilities::MPI::n_mpi_processes(communicator) != 1)
-          return false;
-        if (matrix == nullptr)
-          return true;
-        const Epetra_CrsMatrix &m = matrix->trilinos_matrix();
-        // add() writes straight into Epetra's arrays, which exist once the
-        // storage is optimized (as FillComplete leaves it).
-        return m.RowMap().LinearMap() && m.ColMap().LinearMap() &&
-               m.ColMap().MinMyGID() == 0 && m.RowMap().MinMyGID() == 0 &&
-               m.ColMap().NumMyElements() == m.RowMap().NumMyElements() &&
-               csr_of(m).offsets != nullptr;
-      }
-
-      /// @p positions: where the stencils' entries land in @p matrix's rows
-      /// (needed if @p matrix is not null).
-      DirectScatter(MatrixType                             *matrix,
-                    VectorType                             *vector,
-                    const std::vector<bool>                *fixed,
-                    std::shared_ptr<const ScatterPositions> positions)
-          : csr(matrix == nullptr ? CsrArrays() :
-                                    csr_of(matrix->trilinos_matrix()))
-          , values(vector == nullptr ? nullptr : vector->trilinos_vector()[0])
-          , fixed(fixed)
-          , positions(std::move(positions))
-      {
-      }
-
-      void
-      add(const LocalContribution &copy) const
-      {
-        const unsigned int n = copy.dofs.size();
-        if (values != nullptr)
-          for (unsigned int i = 0; i < n; ++i)
-            if (!is_fixed(copy.dofs[i]))
-              values[copy.dofs[i]] += copy.vector[i];
-        if (csr.values == nullptr)
-          return;
-        const std::uint8_t *at = positions->of(copy.family, copy.stencil);
-        if (at == nullptr)
-          return add_searching(copy);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            double       *row_values = csr.values + csr.offsets[copy.dofs[i]];
-            const double *local      = &copy.matrix(i, 0);
-            for (unsigned int j = 0; j < n; ++j, ++at)
-              if (*at != ScatterPositions::skip())
-                row_values[*at] += local[j];
-          }
-      }
-
-      /// Zeroes the matrix's values (in pieces, on all threads: 64 MB
-      /// for a rod of 1e5 vertices).
-      void
-      zero_matrix() const
-      {
-        if (csr.values == nullptr)
-          return;
-        double *const values = csr.values;
-        dealii::parallel::apply_to_subranges(
-          std::size_t(0),
-          std::size_t(csr.offsets[csr.n_rows]),
-          [values](const std::size_t begin, const std::size_t end) {
-            std::fill(values + begin, values + end, 0.0);
-          },
-          std::size_t(1) << 16);
-      }
-
-      /// Puts the mean free diagonal on the rows of fixed DoFs, so that
-      /// the Newton increment is zero there and the scale matches.
-      void
-      finish() const
-      {
-        if (csr.values == nullptr || fixed == nullptr)
-          return;
-        const std::vector<std::ptrdiff_t> &places = positions->diagonal();
-        double                             sum    = 0;
-        unsigned int                       n_free = 0;
-        for (int row = 0; row < csr.n_rows; ++row)
-          if (!(*fixed)[row] && places[row] >= 0)
-            {
-              sum += std::abs(csr.values[places[row]]);
-              ++n_free;
-            }
-        const double value = n_free > 0 ? sum / n_free : 1.0;
-        for (int row = 0; row < csr.n_rows; ++row)
-          if ((*fixed)[row] && places[row] >= 0)
-            csr.values[places[row]] = value;
-      }
-
-    private:
-      bool
-      is_fixed(const global_dof_index dof) const
-      {
-        return fixed != nullptr && (*fixed)[dof];
-      }
-
-      /// The entry (@p row, @p column) of the matrix, found in its row.
-      double &
-      entry(const global_dof_index row, const global_dof_index column) const
-      {
-        const int *begin = csr.columns + csr.offsets[row];
-        const int *end   = csr.columns + csr.offsets[row + 1];
-        return csr.values[std::find(begin, end, int(column)) - csr.columns];
-      }
-
-      /// add() for a stencil of a family without positions (rows too long
-      /// for them): each entry searched in its row.
-      void
-      add_searching(const LocalContribution &copy) const
-      {
-        for (unsigned int i = 0; i < copy.dofs.size(); ++i)
-          for (unsigned int j = 0; j < copy.dofs.size(); ++j)
-            if (!is_fixed(copy.dofs[i]) && !is_fixed(copy.dofs[j]))
-              entry(copy.dofs[i], copy.dofs[j]) += copy.matrix(i, j);
-      }
-
-      CsrArrays                               csr;
-      double                                 *values;
-      const std::vector<bool>                *fixed;
-      std::shared_ptr<const ScatterPositions> positions;
-    };
-
     /// The scratch data of the stencil loops: none, the kernels keep
     /// theirs on the stack.
     struct NoAssemblyScratch
@@ -376,15 +225,17 @@ namespace rodnet
   {
     if (residual != nullptr)
       *residual = 0;
-    if (!own_stencils.empty())
-      return assemble_distributed(u,
-                                  load_factor,
-                                  residual,
-                                  tangent,
-                                  apply_constraints,
-                                  extra_force);
-    if (!DirectScatter::applies(tangent, mpi_communicator))
+    const DirectScatter::Numbering numbering   = scatter_numbering();
+    const bool                     distributed = !own_stencils.empty();
+    if (!DirectScatter::applies(tangent, numbering))
       {
+        if (distributed)
+          return assemble_distributed(u,
+                                      load_factor,
+                                      residual,
+                                      tangent,
+                                      apply_constraints,
+                                      extra_force);
         if (tangent != nullptr)
           *tangent = 0;
         return assemble_mapped(u,
@@ -403,17 +254,23 @@ namespace rodnet
       residual,
       fixed,
       tangent == nullptr ? nullptr :
-                           scatter_positions->get(families,
-                                                  DirectScatter::csr_of(
-                                                    tangent->trilinos_matrix()),
-                                                  fixed));
+                           DirectScatter::positions_for(*scatter_positions,
+                                                        families,
+                                                        *tangent,
+                                                        fixed,
+                                                        numbering),
+      numbering);
     scatter.zero_matrix();
-    double energy = assemble_families(
-      u,
-      load_factor,
-      derivatives_for(residual, tangent),
-      [&](const LocalContribution &copy) { scatter.add(copy); },
-      true);
+    const auto assemble_here = [&] {
+      return assemble_families(
+        distributed ? with_ghosts(u) : u,
+        load_factor,
+        derivatives_for(residual, tangent),
+        [&](const LocalContribution &copy) { scatter.add(copy); },
+        true);
+    };
+    double energy =
+      distributed ? energy_over_processes(assemble_here) : assemble_here();
     add_dead_loads(u, load_factor, extra_force, nullptr, energy, residual);
     if (residual != nullptr && apply_constraints)
       homogeneous_constraints.set_zero(*residual);

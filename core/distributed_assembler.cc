@@ -126,6 +126,45 @@ namespace rodnet
   }
 
 
+  double
+  RodModel::energy_over_processes(
+    const std::function<double()> &assemble_here) const
+  {
+    double      energy = 0;
+    std::string failure;
+    try
+      {
+        energy = assemble_here();
+      }
+    catch (const std::exception &e)
+      {
+        failure = e.what();
+      }
+    // A stencil that failed on one process fails the assembly on all.
+    failure = first_problem(failure, mpi_communicator);
+    if (!failure.empty())
+      throw std::runtime_error(failure);
+    return dealii::Utilities::MPI::sum(energy, mpi_communicator);
+  }
+
+
+  DirectScatter::Numbering
+  RodModel::scatter_numbering() const
+  {
+    DirectScatter::Numbering numbering;
+    numbering.first =
+      owned_dofs.n_elements() > 0 ? owned_dofs.nth_index_in_set(0) : 0;
+    numbering.n_owned      = owned_dofs.n_elements();
+    numbering.communicator = mpi_communicator;
+    if (!own_stencils.empty())
+      {
+        numbering.column_map   = &sparsity.trilinos_sparsity_pattern().ColMap();
+        numbering.local_column = &local_columns;
+      }
+    return numbering;
+  }
+
+
   VectorType
   RodModel::replica(const VectorType &u) const
   {
@@ -156,26 +195,14 @@ namespace rodnet
                              apply_constraints ? &fixed_dof_mask : nullptr,
                              owned_dofs,
                              mpi_communicator);
-    double           energy = 0;
-    std::string      failure;
-    try
-      {
-        energy = assemble_families(with_ghosts(u),
-                                   load_factor,
-                                   derivatives_for(residual, tangent),
-                                   [&](const LocalContribution &copy) {
-                                     scatter.add(copy);
-                                   });
-      }
-    catch (const std::exception &e)
-      {
-        failure = e.what();
-      }
-    // A stencil that failed on one process fails the assembly on all.
-    failure = first_problem(failure, mpi_communicator);
-    if (!failure.empty())
-      throw std::runtime_error(failure);
-    energy = dealii::Utilities::MPI::sum(energy, mpi_communicator);
+    double           energy = energy_over_processes([&] {
+      return assemble_families(with_ghosts(u),
+                               load_factor,
+                               derivatives_for(residual, tangent),
+                               [&](const LocalContribution &copy) {
+                                 scatter.add(copy);
+                               });
+    });
     add_dead_loads(u, load_factor, extra_force, nullptr, energy, residual);
     if (residual != nullptr && apply_constraints)
       homogeneous_constraints.set_zero(*residual);

@@ -7,6 +7,7 @@
 #include <core/rod_model.h>
 #include <core/stencil_coloring.h>
 
+#include <Epetra_BlockMap.h>
 #include <map>
 #include <stdexcept>
 
@@ -213,9 +214,9 @@ namespace rodnet
   {
     dealii::DynamicSparsityPattern pattern(layout_->n_dofs());
     add_sparsity_pattern(pattern, SystemBlock::at_offset(layout_->n_dofs(), 0));
-    sparsity.reinit(owned_dofs, mpi_communicator);
-    sparsity.copy_from(pattern);
-    sparsity.compress();
+    // reinit() with the partition: copy_from() would make the pattern of
+    // one process, every row on each.
+    sparsity.reinit(owned_dofs, owned_dofs, pattern, mpi_communicator);
 
     std::vector<bool>             seen(layout_->n_dofs(), false);
     std::vector<global_dof_index> dofs;
@@ -278,6 +279,11 @@ namespace rodnet
     if (dealii::Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
       {
         own_stencils = stencils_coupling(families, owned_dofs);
+        const Epetra_BlockMap &columns =
+          sparsity.trilinos_sparsity_pattern().ColMap();
+        local_columns.assign(layout_->n_dofs(), -1);
+        for (int c = 0; c < columns.NumMyElements(); ++c)
+          local_columns[columns.GID(c)] = c;
         ghosted_state.reinit(owned_dofs,
                              dofs_read_by(families, own_stencils, owned_dofs),
                              mpi_communicator);

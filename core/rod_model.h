@@ -12,6 +12,7 @@
 
 #include <core/configuration.h>
 #include <core/dead_loads.h>
+#include <core/direct_scatter.h>
 #include <core/dof_layout.h>
 #include <core/element_family.h>
 #include <core/internal_variables.h>
@@ -856,6 +857,18 @@ namespace rodnet
     void
     set_support_values(VectorType &u, double load_factor, double time) const;
 
+    /// Runs @p assemble_here (this process's stencils) on every process and
+    /// returns the sum of their energies; a failure on one process throws
+    /// the same std::runtime_error on all (first_problem()).
+    double
+    energy_over_processes(const std::function<double()> &assemble_here) const;
+
+    /// The numbering of the DoFs and matrix columns the direct scatter
+    /// adds into: this process's share, and on several processes the
+    /// column map of the model's sparsity pattern (local_columns).
+    DirectScatter::Numbering
+    scatter_numbering() const;
+
     /// Every entry of the distributed @p u, in a vector of one process
     /// (MPI_COMM_SELF): for what reads and writes DoFs anywhere, such as
     /// the supports. Collective; O(n_dofs) per process.
@@ -944,6 +957,9 @@ namespace rodnet
     std::vector<OwnedStencils> own_stencils;
     /// The state with the ghost entries own_stencils read (with_ghosts()).
     mutable VectorType ghosted_state;
+    /// On several processes, per DoF, its column in the column map of the
+    /// model's sparsity pattern (-1: no row of this process couples it).
+    std::vector<int> local_columns;
     /// Where the stencils' entries land in the rows of the tangent last
     /// assembled (the direct scatter's; found again for a new pattern).
     std::unique_ptr<ScatterPositionsCache> scatter_positions =

@@ -56,6 +56,7 @@ namespace rodnet
   {
     Fingerprint hash;
     hash.add(static_cast<std::uint64_t>(csr.n_rows));
+    hash.add(static_cast<std::uint64_t>(csr.first_row));
     hash.add(csr.offsets, csr.n_rows + 1);
 
     // The columns (the bulk: 8 million for a rod of 1e5 vertices) in
@@ -106,7 +107,8 @@ namespace rodnet
       {
         const int *begin = csr.columns + csr.offsets[row];
         const int *end   = csr.columns + csr.offsets[row + 1];
-        const int *at    = std::find(begin, end, row);
+        const int *at =
+          std::find(begin, end, csr.column_of(csr.first_row + row));
         if (at != end)
           diagonal_places[row] = at - csr.columns;
       }
@@ -128,18 +130,30 @@ namespace rodnet
     for (unsigned int s = 0; s < family.n_stencils(); ++s)
       {
         family.get_dofs(s, dofs);
+        // A stencil without a row of this process is not evaluated here.
+        if (std::none_of(dofs.begin(), dofs.end(), [&](const auto d) {
+              return csr.row_of(d) >= 0;
+            }))
+          {
+            result.starts.push_back(result.entries.size());
+            continue;
+          }
         for (const global_dof_index row : dofs)
           {
-            const int *begin = csr.columns + csr.offsets[row];
-            const int *end   = csr.columns + csr.offsets[row + 1];
+            const int  local_row = csr.row_of(row);
+            const int *begin =
+              csr.columns + csr.offsets[std::max(local_row, 0)];
+            const int *end =
+              csr.columns + csr.offsets[std::max(local_row, 0) + 1];
             for (const global_dof_index column : dofs)
               {
-                if (is_fixed(row) || is_fixed(column))
+                // Rows of other processes are theirs to add.
+                if (local_row < 0 || is_fixed(row) || is_fixed(column))
                   {
                     result.entries.push_back(skip());
                     continue;
                   }
-                const int *at = std::find(begin, end, int(column));
+                const int *at = std::find(begin, end, csr.column_of(column));
                 if (at == end)
                   throw std::logic_error(
                     "ScatterPositions: family \"" + family.name() +

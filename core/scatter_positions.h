@@ -22,6 +22,29 @@ namespace rodnet
     int    *columns = nullptr;
     double *values  = nullptr;
     int     n_rows  = 0;
+    /// The global DoF of row 0: the rows are the DoFs first_row ..
+    /// first_row + n_rows - 1 (a process's contiguous share).
+    global_dof_index first_row = 0;
+    /// Per global DoF, its index among the matrix's columns (-1: none); null
+    /// where the columns are numbered as the DoFs (one process).
+    const std::vector<int> *local_column = nullptr;
+
+    /// The row of global DoF @p dof, or -1 where another process has it.
+    int
+    row_of(const global_dof_index dof) const
+    {
+      return dof >= first_row && dof < first_row + n_rows ?
+               static_cast<int>(dof - first_row) :
+               -1;
+    }
+
+    /// The column index of global DoF @p dof.
+    int
+    column_of(const global_dof_index dof) const
+    {
+      return local_column == nullptr ? static_cast<int>(dof) :
+                                       (*local_column)[dof];
+    }
   };
 
   /**

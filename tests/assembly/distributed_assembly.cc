@@ -8,6 +8,7 @@
 // processes (tests/CMakeLists.txt, RODNET_MPI_TESTS); 3 split it unevenly.
 #include <deal.II/base/mpi.h>
 
+#include <common/square_lattice_model.h>
 #include <core/rod_model.h>
 #include <geometry/network_generators.h>
 #include <geometry/rod_graph.h>
@@ -27,20 +28,13 @@ namespace
   std::unique_ptr<RodModel>
   welded_test_lattice(const MPI_Comm communicator)
   {
-    auto network =
-      std::move(build_rod_network(network_generators::square_lattice(3, 2, 1.0),
-                                  4,
-                                  "simple")
-                  .network);
-    const unsigned int n_rods     = network->rods().size();
-    const unsigned int n_vertices = network->n_vertices();
-    auto               model      = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>(
-        n_rods,
-        std::make_shared<LinearElasticRod>(RodStiffness{100, 2, 3, 1.5})),
-      GhostSpin::exact,
-      communicator);
+    auto model =
+      rodnet::testing::square_lattice_model(3,
+                                            2,
+                                            4,
+                                            RodStiffness{100, 2, 3, 1.5},
+                                            communicator);
+    const unsigned int n_vertices = model->network().n_vertices();
     model->clamp_junction("corner", 0);
     model->fix_components("pin", n_vertices - 1, {true, true, true});
     model->add_point_force(7, Vector3(0.1, -0.2, 0.3));
@@ -128,20 +122,13 @@ namespace
     VectorType     states[2];
     for (unsigned int k = 0; k < 2; ++k)
       {
-        auto network = std::move(
-          build_rod_network(network_generators::square_lattice(3, 2, 1.0),
-                            4,
-                            "simple")
-            .network);
-        const unsigned int n_rods     = network->rods().size();
-        const unsigned int n_vertices = network->n_vertices();
-        models[k]                     = std::make_unique<RodModel>(
-          std::move(network),
-          std::vector<std::shared_ptr<const RodMaterial>>(
-            n_rods,
-            std::make_shared<LinearElasticRod>(RodStiffness{100, 2, 3, 1.5})),
-          GhostSpin::exact,
-          communicators[k]);
+        models[k] =
+          rodnet::testing::square_lattice_model(3,
+                                                2,
+                                                4,
+                                                RodStiffness{100, 2, 3, 1.5},
+                                                communicators[k]);
+        const unsigned int n_vertices = models[k]->network().n_vertices();
         models[k]->clamp_junction("turned", 0);
         models[k]->prescribe_rotation(0, Vector3::UnitZ(), 0.4);
         models[k]->fix_components("moved",

@@ -8,10 +8,8 @@
 // search. Runs on 1, 2 and 3 processes (RODNET_MPI_TESTS).
 #include <deal.II/base/mpi.h>
 
+#include <common/square_lattice_model.h>
 #include <core/rod_model.h>
-#include <geometry/network_generators.h>
-#include <geometry/rod_graph.h>
-#include <materials/linear_elastic_rod.h>
 #include <solvers/newton/newton_solver.h>
 
 #include <cmath>
@@ -21,23 +19,19 @@ namespace
 {
   using namespace rodnet;
 
+  /// A 3 x 3 lattice clamped at a corner junction, pinned at the far
+  /// corner, under a distributed load out of its plane.
   std::unique_ptr<RodModel>
   bent_lattice(const MPI_Comm communicator)
   {
-    auto network =
-      std::move(build_rod_network(network_generators::square_lattice(3, 3, 1.0),
-                                  4,
-                                  "simple")
-                  .network);
-    const unsigned int n_rods     = network->rods().size();
-    const unsigned int n_vertices = network->n_vertices();
-    auto               model      = std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>(
-        n_rods,
-        std::make_shared<LinearElasticRod>(RodStiffness{1e3, 1, 1, 0.8})),
-      GhostSpin::exact,
-      communicator);
+    auto model =
+      rodnet::testing::square_lattice_model(3,
+                                            3,
+                                            4,
+                                            RodStiffness{1e3, 1, 1, 0.8},
+                                            communicator);
+    const unsigned int n_rods     = model->network().rods().size();
+    const unsigned int n_vertices = model->network().n_vertices();
     model->clamp_junction("corner", 0);
     model->fix_components("far corner", n_vertices - 1, {true, true, true});
     for (unsigned int r = 0; r < n_rods; ++r)

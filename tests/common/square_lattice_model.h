@@ -1,0 +1,42 @@
+#ifndef RODNET_TESTS_COMMON_SQUARE_LATTICE_MODEL_H
+#define RODNET_TESTS_COMMON_SQUARE_LATTICE_MODEL_H
+
+// A welded square lattice of cells of side 1 as a RodModel on a given
+// communicator, not finalized (the caller adds supports and loads): the
+// network of the tests of models on several processes.
+
+#include <core/rod_model.h>
+#include <geometry/network_generators.h>
+#include <geometry/rod_graph.h>
+#include <materials/linear_elastic_rod.h>
+
+#include <memory>
+
+namespace rodnet::testing
+{
+  /// @p nx x @p ny cells, @p segments segments per beam, every rod of
+  /// @p stiffness, on @p communicator.
+  inline std::unique_ptr<RodModel>
+  square_lattice_model(const unsigned int  nx,
+                       const unsigned int  ny,
+                       const unsigned int  segments,
+                       const RodStiffness &stiffness,
+                       const MPI_Comm      communicator)
+  {
+    auto network = std::move(
+      build_rod_network(network_generators::square_lattice(nx, ny, 1.0),
+                        segments,
+                        "simple")
+        .network);
+    const unsigned int n_rods = network->rods().size();
+    return std::make_unique<RodModel>(
+      std::move(network),
+      std::vector<std::shared_ptr<const RodMaterial>>(
+        n_rods,
+        std::make_shared<LinearElasticRod>(stiffness)),
+      GhostSpin::exact,
+      communicator);
+  }
+} // namespace rodnet::testing
+
+#endif
