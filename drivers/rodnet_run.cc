@@ -15,14 +15,15 @@
  */
 #include <deal.II/base/config.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
-#include <base/mpi_session.h>
 #include <app/interrupt.h>
+#include <app/scene_runner.h>
+#include <app/scene_study.h>
+#include <base/mpi_session.h>
 #include <io/output_directory.h>
 #include <io/scene.h>
 #include <io/scene_help.h>
-#include <app/scene_runner.h>
-#include <app/scene_study.h>
 #include <materials/input_limits.h>
 
 #include <cmath>
@@ -36,10 +37,12 @@ namespace
   void
   usage(std::ostream &out)
   {
-    out << "usage: rodnet-run SCENE.prm|SCENE.json [--output DIR]\n"
-           "       rodnet-run SCENE... [--output DIR]\n"
+    out << "usage: rodnet-run SCENE.prm|SCENE.json [--output DIR] "
+           "[--threads N]\n"
+           "       rodnet-run SCENE... [--output DIR] [--threads N]\n"
            "       rodnet-run SCENE --sweep Section/Entry=VALUES [--output "
            "DIR]\n"
+           "                  [--threads N]\n"
            "       rodnet-run --help | --version\n";
   }
 
@@ -57,6 +60,9 @@ namespace
            "the step in progress (130\nfor Ctrl-C, 143 for SIGTERM; a second "
            "signal kills). After 2 and 128 + N the\noutputs of the steps done "
            "are complete.\n"
+           "--threads N assembles on N threads (default 1); the results differ "
+           "from "
+           "one\nthread's by the order of the additions only.\n"
            "Several scenes, or a sweep of one entry (VALUES: FROM:TO:COUNT "
            "or a list split\nby ',' or ';'), run in one process into "
            "DIR/<k>_<label>/, with DIR/summary.csv\nand .png (the probes "
@@ -131,7 +137,20 @@ namespace
     std::string              output;
     bool                     output_given = false;
     std::string              sweep;
+    unsigned int             threads = 1;
   };
+
+  /// The number of threads of "--threads @p text": a whole number from 1
+  /// to 1024; 0 where @p text is not one.
+  unsigned int
+  thread_count(const std::string &text)
+  {
+    if (text.empty() || text.size() > 4 ||
+        text.find_first_not_of("0123456789") != std::string::npos)
+      return 0;
+    const unsigned int n = std::stoul(text);
+    return n <= 1024 ? n : 0;
+  }
 
   /// Runs one scene as before studies existed: its outputs in @p output.
   int
@@ -216,6 +235,66 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  /// The exit code of rodnet-run where it ends at the command line
+  /// (--help, --version, a refused argument), or -1 where @p arguments,
+  /// read from @p argv, name what to run.
+  int
+  read_arguments(const int argc, char **argv, Arguments &arguments)
+  {
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          {
+            help(std::cout);
+            return 0;
+          }
+        if (arg == "--version")
+          {
+            std::cout << "rodnet " << RODNET_VERSION << " (deal.II "
+                      << DEAL_II_PACKAGE_VERSION << ", Trilinos "
+                      << DEAL_II_TRILINOS_VERSION_MAJOR << "."
+                      << DEAL_II_TRILINOS_VERSION_MINOR << ")" << std::endl;
+            return 0;
+          }
+        if (arg == "--output" || arg == "--sweep")
+          {
+            if (i + 1 == argc || argv[i + 1][0] == '\0')
+              return refuse_arguments(
+                arg == "--output" ?
+                  "--output needs a directory, e.g. --output my_run" :
+                  "--sweep needs Section/Entry=VALUES, e.g. --sweep "
+                  "\"Loads/Steps=10:40:4\"");
+            (arg == "--output" ? arguments.output : arguments.sweep) =
+              argv[++i];
+            arguments.output_given =
+              arguments.output_given || arg == "--output";
+          }
+        else if (arg == "--threads")
+          {
+            arguments.threads = i + 1 < argc ? thread_count(argv[++i]) : 0;
+            if (arguments.threads == 0)
+              return refuse_arguments(
+                "--threads needs a whole number of threads from 1 to 1024, "
+                "e.g. --threads 2");
+          }
+        else if (!arg.empty() && arg[0] != '-')
+          arguments.scene_files.push_back(arg);
+        else
+          return refuse_arguments("unexpected argument \"" + arg + "\"");
+      }
+    if (arguments.scene_files.empty())
+      return refuse_arguments("no scene file given");
+    if (!arguments.sweep.empty() && arguments.scene_files.size() > 1)
+      return refuse_arguments("--sweep varies one scene; " +
+                              std::to_string(arguments.scene_files.size()) +
+                              " were given");
+    return -1;
+  }
+} // namespace
+
 /// main() of rodnet-run, called by the launcher with its command line.
 extern "C" __attribute__((visibility("default"))) int
 rodnet_run_main(int argc, char **argv)
@@ -224,50 +303,19 @@ rodnet_run_main(int argc, char **argv)
   // are written, not when a block fills: flush after every output.
   std::cout << std::unitbuf;
   Arguments arguments;
-  for (int i = 1; i < argc; ++i)
-    {
-      const std::string arg = argv[i];
-      if (arg == "--help" || arg == "-h")
-        {
-          help(std::cout);
-          return 0;
-        }
-      if (arg == "--version")
-        {
-          std::cout << "rodnet " << RODNET_VERSION << " (deal.II "
-                    << DEAL_II_PACKAGE_VERSION << ", Trilinos "
-                    << DEAL_II_TRILINOS_VERSION_MAJOR << "."
-                    << DEAL_II_TRILINOS_VERSION_MINOR << ")" << std::endl;
-          return 0;
-        }
-      if (arg == "--output" || arg == "--sweep")
-        {
-          if (i + 1 == argc || argv[i + 1][0] == '\0')
-            return refuse_arguments(
-              arg == "--output" ?
-                "--output needs a directory, e.g. --output my_run" :
-                "--sweep needs Section/Entry=VALUES, e.g. --sweep "
-                "\"Loads/Steps=10:40:4\"");
-          (arg == "--output" ? arguments.output : arguments.sweep) = argv[++i];
-          arguments.output_given = arguments.output_given || arg == "--output";
-        }
-      else if (!arg.empty() && arg[0] != '-')
-        arguments.scene_files.push_back(arg);
-      else
-        return refuse_arguments("unexpected argument \"" + arg + "\"");
-    }
-  if (arguments.scene_files.empty())
-    return refuse_arguments("no scene file given");
-  if (!arguments.sweep.empty() && arguments.scene_files.size() > 1)
-    return refuse_arguments("--sweep varies one scene; " +
-                            std::to_string(arguments.scene_files.size()) +
-                            " were given");
+  if (const int exit_code = read_arguments(argc, argv, arguments);
+      exit_code >= 0)
+    return exit_code;
 
   // MPI (for Trilinos) only now: a refused command line need not wait for
   // it. Open MPI's fast options for a process no launcher started.
-  rodnet::MPISession mpi(argc, argv);
+  rodnet::MPISession mpi(argc, argv, arguments.threads);
   if (several_processes())
     return 1;
+  if (arguments.threads > 1)
+    std::cout << "rodnet-run: assembling on "
+              << dealii::MultithreadInfo::n_threads() << " threads ("
+              << dealii::MultithreadInfo::n_cores() << " cores)" << std::endl;
   // After MPI_Init, which installs handlers of its own.
   rodnet::stop_cleanly_on_signals();
   if (arguments.scene_files.size() == 1 && arguments.sweep.empty())

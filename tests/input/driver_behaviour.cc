@@ -4,9 +4,11 @@
 // files written and no others.
 #include <common/run_driver.h>
 #include <common/scene_text.h>
+#include <io/csv_table.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
@@ -254,6 +256,78 @@ namespace
         "  set Probes = tip: position end y\n",
         {"probes.csv", "probes.png", "solution.pvd", "picture.png"});
   }
+  /// The probes of out_@p name/probes.csv, row by row.
+  std::vector<std::vector<double>>
+  probe_rows(const std::string &name)
+  {
+    const rodnet::CsvTable table =
+      rodnet::read_csv_table("out_" + name + "/probes.csv");
+    std::vector<std::vector<double>> rows;
+    for (std::size_t r = 0; r < table.rows.size(); ++r)
+      {
+        rows.emplace_back();
+        for (std::size_t c = 0; c < table.names.size(); ++c)
+          rows.back().push_back(table.number(r, c));
+      }
+    return rows;
+  }
+
+  TEST(Driver, TwoThreadsGiveTheProbesOfOne)
+  {
+    // A welded lattice, whose stencils the threads take color by color:
+    // the additions come in another order, the equilibria agree to the
+    // Newton tolerance (far below 1e-8 of the deflection).
+    const std::string lattice =
+      "subsection Geometry\n  set Generator = square lattice\n"
+      "  set Cells = 4, 4\n  set Beam length = 0.1\n  set Segments = 6\nend\n"
+      "subsection Material\n  subsection linear elastic\n"
+      "    set Stiffness input = direct\n    set EA = 1e5\n"
+      "    set EI1 = 4\n    set EI2 = 1\n    set GJ = 0.67\n  end\nend\n"
+      "subsection Supports\n  set Pinned vertices = @n_0_0, @n_4_0, @n_0_4, "
+      "@n_4_4\nend\nsubsection Loads\n  set Steps = 2\n"
+      "  set Gravity = 0, 0, -9.81\n  set Mass per length = 0.05\nend\n"
+      "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+      "  set Probes = middle: position @n_2_2 z; side: position @n_2_0 z\n"
+      "end\n";
+    std::ofstream("threads.prm") << lattice;
+    const rodnet::testing::DriverOutcome one =
+      rodnet::testing::run_driver_with("threads.prm --output out_one_thread");
+    const rodnet::testing::DriverOutcome two = rodnet::testing::run_driver_with(
+      "threads.prm --output out_two_threads --threads 2");
+    ASSERT_EQ(one.exit_code, 0) << one.output;
+    ASSERT_EQ(two.exit_code, 0) << two.output;
+    EXPECT_NE(two.output.find("assembling on 2 threads"), std::string::npos)
+      << two.output;
+    const auto rows_one = probe_rows("one_thread");
+    const auto rows_two = probe_rows("two_threads");
+    ASSERT_EQ(rows_two.size(), rows_one.size());
+    ASSERT_EQ(rows_one.size(), 3u) << "the start and two steps";
+    const double deflection = std::abs(rows_one.back()[2]);
+    EXPECT_GT(deflection, 1e-4);
+    for (std::size_t r = 0; r < rows_one.size(); ++r)
+      for (std::size_t c = 0; c < rows_one[r].size(); ++c)
+        if (std::isnan(rows_one[r][c])) // a field without a value at the start
+          EXPECT_TRUE(std::isnan(rows_two[r][c]))
+            << "row " << r << ", column " << c;
+        else
+          EXPECT_NEAR(rows_two[r][c], rows_one[r][c], 1e-8 * deflection)
+            << "row " << r << ", column " << c;
+  }
+
+  TEST(Driver, ThreadCountsThatAreNotOneToManyAreRefused)
+  {
+    for (const char *count : {"0", "two", "-1", "100000"})
+      {
+        const rodnet::testing::DriverOutcome o =
+          rodnet::testing::run_driver_with(std::string("x.prm --threads ") +
+                                           count);
+        EXPECT_EQ(o.exit_code, 1) << o.output;
+        EXPECT_NE(o.output.find("--threads needs a whole number"),
+                  std::string::npos)
+          << count << ": " << o.output;
+      }
+  }
+
   TEST(Driver, SeveralMpiProcessesAreRefusedOnceBeforeAnythingIsWritten)
   {
     if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
