@@ -30,10 +30,10 @@ namespace rodnet
     while (path.lambda < 1.0 - 1e-12)
       {
         dealii::Timer timer;
-        const double  target = next_load_factor(path.lambda, path.step);
-        path.step            = target - path.lambda;
-        VectorType   trial   = u;
-        bool         followed_mode = false;
+        const double  target     = next_load_factor(path.lambda, path.step);
+        path.step                = target - path.lambda;
+        VectorType trial         = u;
+        bool       followed_mode = false;
         // The state of u, where a critical-load search may start from it:
         // taken before the attempt, which may commit the trial's.
         const std::optional<ModelState> stable_state =
@@ -41,7 +41,8 @@ namespace rodnet
               path.previous_stable ?
             std::optional<ModelState>(model.state()) :
             std::nullopt;
-        JudgedResult result = attempt_step(path, u, target, trial, followed_mode);
+        JudgedResult result =
+          attempt_step(path, u, target, trial, followed_mode);
         if (!result.converged)
           {
             cut_step(path, u, target, result);
@@ -58,6 +59,7 @@ namespace rodnet
         if (log != nullptr)
           report_step(info);
         on_converged(info, u);
+        path.since_equilibrium.restart();
 
         path.previous_stable = info.check.stable;
         path.lambda          = target;
@@ -119,8 +121,11 @@ namespace rodnet
             if (!result.converged)
               {
                 trial = u;
-                report_failed_attempt(
-                  target, "the prediction", result, "the last equilibrium", timer);
+                report_failed_attempt(target,
+                                      "the prediction",
+                                      result,
+                                      "the last equilibrium",
+                                      timer);
               }
           }
       }
@@ -128,8 +133,11 @@ namespace rodnet
       {
         result = solve_at(trial, target);
         if (!result.converged && recover_from_mode)
-          report_failed_attempt(
-            target, "the last equilibrium", result, "its buckling mode", timer);
+          report_failed_attempt(target,
+                                "the last equilibrium",
+                                result,
+                                "its buckling mode",
+                                timer);
       }
     if (!result.converged && recover_from_mode)
       followed_mode = step_from_mode(u, path.lambda, target, trial, result);
@@ -137,10 +145,10 @@ namespace rodnet
   }
 
   void
-  StaticSolver::report_failed_attempt(const double        target,
-                                      const std::string  &start,
-                                      const JudgedResult &result,
-                                      const std::string  &next,
+  StaticSolver::report_failed_attempt(const double         target,
+                                      const std::string   &start,
+                                      const JudgedResult  &result,
+                                      const std::string   &next,
                                       const dealii::Timer &timer) const
   {
     if (log == nullptr)
@@ -191,6 +199,22 @@ namespace rodnet
                          const double        target,
                          const JudgedResult &result)
   {
+    const double spent = path.since_equilibrium.wall_time();
+    if (parameters.max_step_time > 0 && spent > parameters.max_step_time)
+      {
+        char times[96];
+        std::snprintf(times,
+                      sizeof(times),
+                      "%.3g s, more than Solver/Max step time = %.3g s",
+                      spent,
+                      parameters.max_step_time);
+        throw SolverFailure("the load step from load factor " +
+                            std::to_string(path.lambda) + " has taken " +
+                            times + ", without converging (last attempt, to " +
+                            std::to_string(target) + ": " + result.failure +
+                            "); raise the bound or take more load steps "
+                            "(Loads/Steps)");
+      }
     if (log != nullptr)
       *log << "  step to load factor " << target << " failed ("
            << result.failure << "); cutting the step" << std::endl;
@@ -198,14 +222,13 @@ namespace rodnet
     const double minimum =
       1.0 / parameters.n_steps * parameters.min_step_fraction;
     if (path.step < minimum)
-      throw SolverFailure("the load step from load factor " +
-                          std::to_string(path.lambda) +
-                          " failed: " + result.failure +
-                          "; the step was cut below "
-                          "the minimum " +
-                          std::to_string(minimum) +
-                          " (Solver/Minimum step fraction)" +
-                          singular_tangent(u, path.lambda));
+      throw SolverFailure(
+        "the load step from load factor " + std::to_string(path.lambda) +
+        " failed: " + result.failure +
+        "; the step was cut below "
+        "the minimum " +
+        std::to_string(minimum) + " (Solver/Minimum step fraction)" +
+        singular_tangent(u, path.lambda));
   }
 
   StaticSolver::StepInfo
@@ -269,15 +292,14 @@ namespace rodnet
     catch (const SolverFailure &e)
       {
         if (log != nullptr)
-          *log << "  critical load search abandoned: " << e.what()
-               << std::endl;
+          *log << "  critical load search abandoned: " << e.what() << std::endl;
       }
   }
 
   void
-  StaticSolver::switch_branch(VectorType    &u,
-                              const double   load_factor,
-                              StepInfo      &info)
+  StaticSolver::switch_branch(VectorType  &u,
+                              const double load_factor,
+                              StepInfo    &info)
   {
     const double unstable = info.lowest_eigenvalue;
     const bool   found =
@@ -287,8 +309,7 @@ namespace rodnet
                        model.assemble(u, load_factor, nullptr, nullptr),
                        info.lowest_eigenvalue);
     if (log != nullptr)
-      *log << "  unstable equilibrium (lowest eigenvalue " << unstable
-           << "): "
+      *log << "  unstable equilibrium (lowest eigenvalue " << unstable << "): "
            << (found ? "switched to a stable branch" :
                        "no stable branch found nearby")
            << std::endl;

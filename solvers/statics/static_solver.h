@@ -43,6 +43,10 @@ namespace rodnet
       unsigned int n_steps = 10;
       /// Smallest load step, as a fraction of the nominal 1 / n_steps.
       double min_step_fraction = 1.0 / 1024;
+      /// Wall time in seconds a load step may take, over all its attempts
+      /// and cuts, before the run stops (checked after each failed
+      /// attempt); 0: no bound.
+      double max_step_time = 0;
       /// Newton converges when the force part of the residual is at most
       /// this times the force scale S of the loads and reactions, and the
       /// moment part at most this times S L, or each is at its round-off
@@ -347,6 +351,9 @@ namespace rodnet
       /// last_step (0: none to extrapolate).
       VectorType increment;
       double     last_step = 0;
+      /// Wall time since the last equilibrium, over the attempts and cuts
+      /// of the step from it (Parameters::max_step_time).
+      dealii::Timer since_equilibrium;
     };
 
     /// The load factor the step of @p step from @p lambda aims at: never

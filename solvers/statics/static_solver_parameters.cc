@@ -30,6 +30,14 @@ namespace rodnet
                       "Failed load and time steps are halved; the run stops "
                       "with an error below this fraction of the nominal "
                       "step. [-]");
+    prm.declare_entry("Max step time",
+                      "0",
+                      Double(0),
+                      "Stop the run where a load step, over its attempts "
+                      "and cuts, takes longer than this (checked after each "
+                      "failed attempt); the outputs of the steps done stay. "
+                      "Load stepping only, not time steps or continuation. "
+                      "0: no bound. [s]");
     prm.declare_entry("Critical load search",
                       "false",
                       Bool(),
@@ -57,6 +65,7 @@ namespace rodnet
     newton.parse_parameters(prm);
     relative_tolerance      = prm.get_double("Relative tolerance");
     min_step_fraction       = prm.get_double("Minimum step fraction");
+    max_step_time           = prm.get_double("Max step time");
     predict                 = prm.get_bool("Predictor");
     find_critical_load      = prm.get_bool("Critical load search");
     critical_load_tolerance = prm.get_double("Critical load tolerance");
