@@ -5,7 +5,8 @@
 // solves it as the one-process MUMPS does, counts the negative pivots that
 // the one-process MUMPS and the stability check's LDL^T count, on every
 // process, solves two columns as two solves, and reports a singular
-// tangent by the same exception on every process. Run on 1, 2 and 3
+// tangent by the same exception on every process. On several processes
+// "auto" takes MUMPS and "klu" and "band" are refused. Run on 1, 2 and 3
 // processes (tests/CMakeLists.txt, RODNET_MPI_TESTS).
 
 #include <deal.II/base/mpi.h>
@@ -173,4 +174,29 @@ TEST(MumpsDistributed, ASingularTangentThrowsOnEveryProcess)
       EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos)
         << e.what();
     }
+}
+
+TEST(MumpsDistributed, AutoTakesMumpsOnSeveralProcesses)
+{
+  const unsigned int n_processes =
+    dealii::Utilities::MPI::n_mpi_processes(all_processes);
+  if (n_processes == 1)
+    GTEST_SKIP() << "one process: auto takes the band or KLU";
+  SplitLattice lattice(0.0);
+  EXPECT_EQ(TangentFactorization::create(lattice.distributed, "auto")->name(),
+            "mumps");
+  for (const std::string kind : {"klu", "band"})
+    try
+      {
+        TangentFactorization::create(lattice.distributed, kind);
+        ADD_FAILURE() << kind << " took a distributed matrix";
+      }
+    catch (const std::invalid_argument &e)
+      {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("Linear solver = " + kind), std::string::npos);
+        EXPECT_NE(message.find(std::to_string(n_processes) + " processes"),
+                  std::string::npos);
+        EXPECT_NE(message.find("mumps"), std::string::npos) << message;
+      }
 }
