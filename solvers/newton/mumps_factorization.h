@@ -43,10 +43,10 @@ namespace rodnet
    * to be put back, where the gather is one message from each process to
    * the host, small beside the factorization (8 bytes a DoF, where the
    * factors of the welded lattice hold 25 entries a DoF and cost 3000 to
-   * 4500 flops a DoF). MUMPS's global
-   * information (INFOG, section "information available on all processors"
-   * of its user guide) is on every process, so negative_pivots(),
-   * factor_entries() and its failures are the same on every process.
+   * 4500 flops a DoF). MUMPS's global information (INFOG, section
+   * "information available on all processors" of its user guide) is on
+   * every process, so negative_pivots(), factor_entries() and its failures
+   * are the same on every process.
    *
    * MUMPS prints nothing. A failure of MUMPS's (INFOG(1) < 0) is a
    * std::runtime_error, thrown on every process, that names MUMPS and says
