@@ -81,9 +81,8 @@ namespace rodnet
       // No output: error, diagnostic and statistics streams closed.
       for (const int stream : {1, 2, 3})
         id.icntl[mumps_index(stream)] = -1;
-      id.icntl[mumps_index(4)]  = 0;
-      id.icntl[mumps_index(5)]  = 0; // assembled matrix
-      id.icntl[mumps_index(18)] = 0; // centralized on the host
+      id.icntl[mumps_index(4)] = 0;
+      id.icntl[mumps_index(5)] = 0; // assembled matrix
       // The analysis sees the pattern only: no matching, no compressed graph.
       id.icntl[mumps_index(6)]  = 0;
       id.icntl[mumps_index(12)] = 1;
@@ -98,25 +97,64 @@ namespace rodnet
       // does not count: the inertia stays right on several processes.
       id.icntl[mumps_index(13)] = 1;
     }
+
+    /// Hands MUMPS the entries of the lower triangle, @p rows, @p columns
+    /// (global, from 1) and @p values: centralized where there is one
+    /// process, so that its results are those of the one-process code before
+    /// distributed input (ICNTL(18) = 0), each process's own rows otherwise
+    /// (distributed assembled input, ICNTL(18) = 3, the pattern read at the
+    /// analysis and the values at each factorization).
+    void
+    hand_over_entries(DMUMPS_STRUC_C      &id,
+                      const bool           distributed,
+                      std::vector<int>    &rows,
+                      std::vector<int>    &columns,
+                      std::vector<double> &values)
+    {
+      id.icntl[mumps_index(18)] = distributed ? 3 : 0;
+      if (distributed)
+        {
+          id.nnz_loc = rows.size();
+          id.irn_loc = rows.data();
+          id.jcn_loc = columns.data();
+          id.a_loc   = values.data();
+        }
+      else
+        {
+          id.nnz = rows.size();
+          id.irn = rows.data();
+          id.jcn = columns.data();
+          id.a   = values.data();
+        }
+    }
+
+    /// Calls @p f(row, column, value), global indices from 0, for each
+    /// stored entry of the lower triangle in the rows of @p m that this
+    /// process owns, in the order of its compressed rows.
+    template <class Function>
+    void
+    for_each_lower_entry(const Epetra_CrsMatrix &m, const Function &f)
+    {
+      for_each_entry(m, [&](const int row, const int column, const double v) {
+        const int global_row = m.GRID(row);
+        if (column <= global_row)
+          f(global_row, column, v);
+      });
+    }
   } // namespace
 
 
   MumpsFactorization::MumpsFactorization(const MatrixType &matrix)
       : mumps(std::make_unique<Instance>())
       , matrix(matrix)
+      , communicator(matrix.get_mpi_communicator())
+      , host(matrix.trilinos_matrix().RowMap(), communicator)
   {
-    const MPI_Comm communicator = matrix.get_mpi_communicator();
-    if (dealii::Utilities::MPI::n_mpi_processes(communicator) != 1)
-      throw std::invalid_argument(
-        "MUMPS (Linear solver = mumps) runs on one process for now");
-    for_each_entry(matrix.trilinos_matrix(),
-                   [&](const int row, const int column, double) {
-                     if (column <= row)
-                       {
-                         rows.push_back(row + 1);
-                         columns.push_back(column + 1);
-                       }
-                   });
+    for_each_lower_entry(matrix.trilinos_matrix(),
+                         [&](const int row, const int column, double) {
+                           rows.push_back(row + 1);
+                           columns.push_back(column + 1);
+                         });
     values.resize(rows.size());
 
     DMUMPS_STRUC_C &id = mumps->id;
@@ -131,11 +169,12 @@ namespace rodnet
         "MUMPS could not start: " +
         mumps_error(id.infog[mumps_index(1)], id.infog[mumps_index(2)]));
     configure_mumps(id);
-    id.n   = matrix.trilinos_matrix().NumMyRows();
-    id.nnz = rows.size();
-    id.irn = rows.data();
-    id.jcn = columns.data();
-    id.a   = values.data();
+    id.n = matrix.m();
+    hand_over_entries(id,
+                      dealii::Utilities::MPI::n_mpi_processes(communicator) > 1,
+                      rows,
+                      columns,
+                      values);
     run(1, "analysis");
   }
 
@@ -160,13 +199,15 @@ namespace rodnet
   MumpsFactorization::factorize()
   {
     std::size_t k = 0;
-    for_each_entry(matrix.trilinos_matrix(),
-                   [&](const int row, const int column, const double value) {
-                     if (column <= row && k < values.size())
-                       values[k] = value;
-                     k += column <= row;
-                   });
-    if (k != values.size())
+    for_each_lower_entry(matrix.trilinos_matrix(),
+                         [&](int, int, const double value) {
+                           if (k < values.size())
+                             values[k] = value;
+                           ++k;
+                         });
+    // Agreed by all processes: one that threw alone would leave the others
+    // waiting in MUMPS.
+    if (dealii::Utilities::MPI::logical_or(k != values.size(), communicator))
       throw std::logic_error(
         "the tangent's pattern changed after MUMPS's analysis of it");
     factorized         = false;
@@ -189,24 +230,29 @@ namespace rodnet
 
 
   void
-  MumpsFactorization::solve_columns(const int n_columns)
+  MumpsFactorization::solve_columns(
+    const std::vector<const VectorType *> &right_hand_sides,
+    const std::vector<VectorType *>       &solutions)
   {
+    for (unsigned int c = 0; c < right_hand_sides.size(); ++c)
+      host.gather(*right_hand_sides[c], rhs, c);
     DMUMPS_STRUC_C &id = mumps->id;
-    id.nrhs            = n_columns;
+    id.nrhs            = right_hand_sides.size();
     id.lrhs            = id.n;
     id.rhs             = rhs.data();
     run(3, "solve");
+    for (unsigned int c = 0; c < solutions.size(); ++c)
+      {
+        *solutions[c] = *right_hand_sides[c];
+        host.scatter(rhs, c, *solutions[c]);
+      }
   }
 
 
   void
   MumpsFactorization::solve(const VectorType &b, VectorType &x)
   {
-    const double *in = b.trilinos_vector()[0];
-    rhs.assign(in, in + mumps->id.n);
-    solve_columns(1);
-    x = b;
-    std::copy(rhs.begin(), rhs.end(), x.trilinos_vector()[0]);
+    solve_columns({&b}, {&x});
   }
 
 
@@ -216,17 +262,7 @@ namespace rodnet
                             const VectorType &c,
                             VectorType       &y)
   {
-    const int     n    = mumps->id.n;
-    const double *in_b = b.trilinos_vector()[0];
-    const double *in_c = c.trilinos_vector()[0];
-    rhs.resize(2 * std::size_t(n));
-    std::copy(in_b, in_b + n, rhs.begin());
-    std::copy(in_c, in_c + n, rhs.begin() + n);
-    solve_columns(2);
-    x = b;
-    y = c;
-    std::copy(rhs.begin(), rhs.begin() + n, x.trilinos_vector()[0]);
-    std::copy(rhs.begin() + n, rhs.end(), y.trilinos_vector()[0]);
+    solve_columns({&b, &c}, {&x, &y});
   }
 
 

@@ -1,6 +1,7 @@
 #ifndef RODNET_SOLVERS_NEWTON_MUMPS_FACTORIZATION_H
 #define RODNET_SOLVERS_NEWTON_MUMPS_FACTORIZATION_H
 
+#include <solvers/newton/host_gather.h>
 #include <solvers/newton/tangent_factorization.h>
 
 #include <memory>
@@ -31,19 +32,33 @@ namespace rodnet
    * 1.1e6, for 1-3 % more entries (doc/performance.md). Rows and columns
    * are scaled by the diagonal at each factorization (ICNTL(8) = 1).
    *
-   * One process for now, the matrix centralized on it; the communicator is
-   * the matrix's, so that the distributed input of MUMPS (ICNTL(18) = 3,
-   * each process giving its rows) can follow without changing the
-   * interface. MUMPS prints nothing. A failure of MUMPS's (INFOG(1) < 0) is
-   * a std::runtime_error that names MUMPS and says what happened; where its
-   * work space was too small (-8, -9), the factorization is retried once
-   * with twice the space (ICNTL(14)).
+   * MUMPS runs on the matrix's communicator. On several processes each
+   * gives MUMPS the lower triangle of the rows it owns (distributed
+   * assembled input, ICNTL(18) = 3); on one the matrix is centralized
+   * (ICNTL(18) = 0), as before there was distributed input. The right-hand
+   * sides are gathered onto the host (rank 0) and the solutions scattered
+   * back into the rows each process owns (HostGather): MUMPS's distributed
+   * solution (ICNTL(21) = 1) would come out spread as MUMPS's fronts are,
+   * not as the matrix's rows, and need an exchange between all processes
+   * to be put back, where the gather is one message from each process to
+   * the host, small beside the factorization (8 bytes a DoF, where the
+   * factors of the welded lattice hold 25 entries a DoF and cost 3000 to
+   * 4500 flops a DoF). MUMPS's global information (INFOG, section
+   * "information available on all processors" of its user guide) is on
+   * every process, so negative_pivots(), factor_entries() and its failures
+   * are the same on every process.
+   *
+   * MUMPS prints nothing. A failure of MUMPS's (INFOG(1) < 0) is a
+   * std::runtime_error, thrown on every process, that names MUMPS and says
+   * what happened; where its work space was too small (-8, -9), the
+   * factorization is retried once with twice the space (ICNTL(14)).
+   * The constructor, factorize() and the solves are collective: every
+   * process calls them.
    */
   class MumpsFactorization : public TangentFactorization
   {
   public:
-    /// Analyses the pattern of @p matrix, which must live on one process
-    /// (std::invalid_argument otherwise) and keep its pattern.
+    /// Analyses the pattern of @p matrix, which must keep its pattern.
     explicit MumpsFactorization(const MatrixType &matrix);
 
     ~MumpsFactorization() override;
@@ -52,8 +67,9 @@ namespace rodnet
     MumpsFactorization &
     operator=(const MumpsFactorization &) = delete;
 
-    /// Factorizes the matrix's current values; std::logic_error where its
-    /// number of entries changed since the analysis.
+    /// Factorizes the matrix's current values; std::logic_error, on every
+    /// process, where the number of entries of a process's rows changed
+    /// since the analysis.
     void
     factorize() override;
 
@@ -62,7 +78,8 @@ namespace rodnet
     void
     solve(const VectorType &b, VectorType &x) override;
 
-    /// Both columns in one call of MUMPS's solve.
+    /// Both columns in one call of MUMPS's solve. The vectors must be
+    /// distributed as the matrix's rows (std::invalid_argument otherwise).
     void
     solve(const VectorType &b,
           VectorType       &x,
@@ -95,20 +112,27 @@ namespace rodnet
     void
     run(int job, const std::string &what);
 
-    /// Solves the @p n_columns columns of rhs in place.
+    /// Solves K x = b for each of @p right_hand_sides into the
+    /// @p solutions of the same place, in one call of MUMPS.
     void
-    solve_columns(int n_columns);
+    solve_columns(const std::vector<const VectorType *> &right_hand_sides,
+                  const std::vector<VectorType *>       &solutions);
 
     /// MUMPS's instance (dmumps_c's structure, kept out of this header).
     struct Instance;
     std::unique_ptr<Instance> mumps;
 
     const MatrixType &matrix;
-    /// The lower triangle in coordinates from 1, as MUMPS reads it, and its
-    /// values, copied at each factorize().
+    const MPI_Comm    communicator;
+    /// The right-hand sides and solutions between the processes' rows and
+    /// MUMPS's host.
+    const HostGather host;
+    /// The lower triangle of this process's rows in global coordinates from
+    /// 1, as MUMPS reads it, and its values, copied at each factorize().
     std::vector<int>    rows, columns;
     std::vector<double> values;
-    /// The right-hand sides, which MUMPS overwrites with the solutions.
+    /// The right-hand sides, which MUMPS overwrites with the solutions, in
+    /// columns of all rows on the host (empty elsewhere).
     std::vector<double> rhs;
     bool                factorized = false;
   };

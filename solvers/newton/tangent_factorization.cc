@@ -7,12 +7,8 @@
 #include <solvers/newton/mumps_factorization.h>
 #include <solvers/newton/tangent_factorization.h>
 
-#include <Amesos.h>
-#include <Amesos_BaseSolver.h>
 #include <Epetra_CrsMatrix.h>
-#include <Epetra_LinearProblem.h>
 #include <algorithm>
-#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
@@ -48,62 +44,6 @@ namespace rodnet
   {
     using VectorType = TangentFactorization::VectorType;
     using MatrixType = TangentFactorization::MatrixType;
-
-    /// Trilinos Amesos KLU, where the tangent is spread over several
-    /// processes (Amesos gathers it onto one); its pivot tolerance is
-    /// KLU's default (see make_klu_factorization()).
-    class AmesosKluFactorization : public TangentFactorization
-    {
-    public:
-      explicit AmesosKluFactorization(const MatrixType &matrix)
-          : problem(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()),
-                    nullptr,
-                    nullptr)
-      {
-        Amesos factory;
-        solver.reset(factory.Create("Amesos_Klu", problem));
-        if (solver == nullptr || solver->SymbolicFactorization() != 0)
-          throw std::runtime_error(
-            "KLU (Trilinos Amesos) could not analyse the tangent");
-      }
-
-      void
-      factorize() override
-      {
-        if (solver->NumericFactorization() != 0)
-          throw std::runtime_error(
-            "the tangent is singular (KLU found no pivot)");
-      }
-
-      using TangentFactorization::solve;
-
-      void
-      solve(const VectorType &b, VectorType &x) override
-      {
-        problem.SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
-        problem.SetLHS(&x.trilinos_vector());
-        if (solver->Solve() != 0)
-          throw std::runtime_error("KLU's solve failed");
-      }
-
-      std::string
-      name() const override
-      {
-        return "klu";
-      }
-
-      /// Amesos does not tell.
-      double
-      factor_entries() const override
-      {
-        return std::numeric_limits<double>::quiet_NaN();
-      }
-
-    private:
-      Epetra_LinearProblem               problem;
-      std::unique_ptr<Amesos_BaseSolver> solver;
-    };
-
 
     /// The lower and upper half-widths of the band of @p m's pattern, its
     /// rows and columns renumbered by @p new_index (none: as they are).
@@ -324,15 +264,17 @@ namespace rodnet
                                const std::string &kind)
   {
     check_kind(kind);
-    if (kind == "mumps")
-      return std::make_unique<MumpsFactorization>(matrix);
-    const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
-                               matrix.get_mpi_communicator()) == 1;
-    if (kind == "band" && !one_process)
+    const unsigned int n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator());
+    if (n_processes > 1 && (kind == "klu" || kind == "band"))
       throw std::invalid_argument(
-        "the band LU (Linear solver = band) runs on one process only");
-    if (!one_process)
-      return std::make_unique<AmesosKluFactorization>(matrix);
+        std::string(kind == "klu" ? "KLU" : "the band LU") +
+        " (Linear solver = " + kind +
+        ") runs on one process, and the tangent is distributed over " +
+        std::to_string(n_processes) +
+        " processes; take Linear solver = mumps (or auto)");
+    if (kind == "mumps" || n_processes > 1)
+      return std::make_unique<MumpsFactorization>(matrix);
     if (kind == "klu")
       return make_klu_factorization(matrix);
     const Epetra_CrsMatrix &m      = matrix.trilinos_matrix();

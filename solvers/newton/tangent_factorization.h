@@ -17,24 +17,26 @@ namespace rodnet
    *  - "klu": SuiteSparse KLU, sparse LU for any pattern; its symbolic
    *    analysis (the fill-reducing order) is done once, at construction,
    *    and its pivots stay on the diagonal, where that order wants them,
-   *    unless the diagonal is tiny (make_klu_factorization()). On several
-   *    processes Trilinos Amesos KLU.
+   *    unless the diagonal is tiny (make_klu_factorization()). One process
+   *    only.
    *  - "band": LAPACK's band LU with partial pivoting (dgbtrf, dgbtrs) on
    *    the tangent's band. A rod's DoFs are numbered along it, so its
    *    tangent is a narrow band (half-width 11 for one rod), which the
    *    band LU factorizes 4-5 times faster than KLU (doc/performance.md);
-   *    a network's junction DoFs come last and widen the band.
+   *    a network's junction DoFs come last and widen the band. One process
+   *    only.
    *  - "mumps": MUMPS's multifrontal LDL^T of the symmetric tangent
    *    (MumpsFactorization), its analysis done at construction; on the
    *    welded lattice its factorization is 2-3 times faster than KLU's
-   *    from 5.8e5 DoFs (doc/performance.md). One process for now; MUMPS is
-   *    the distributed direct solver to be (issue 37).
+   *    from 5.8e5 DoFs (doc/performance.md). On several processes too,
+   *    each giving MUMPS its rows: the distributed direct solver.
    * "auto" takes the band where its half-widths are at most
    * max_auto_band_width, as numbered or renumbered by reverse Cuthill-McKee
    * (the multipliers of inextensible rods come after all other DoFs: a
    * rod's KKT tangent is a narrow band once they sit next to their
    * segments, and KLU's fill on its zero diagonal grows fast), KLU otherwise
-   * (doc/performance.md). "band" renumbers where that narrows the band.
+   * (doc/performance.md); on a matrix of several processes "auto" takes
+   * MUMPS. "band" renumbers where that narrows the band.
    */
   class TangentFactorization
   {
@@ -52,7 +54,8 @@ namespace rodnet
      * A factorization of the matrices of @p matrix's pattern (its values
      * are read at each factorize()): @p kind "klu", "band", "mumps" or
      * "auto". Throws std::invalid_argument for another kind, and for
-     * "band" and "mumps" on more than one process.
+     * "klu" and "band" on more than one process (naming "mumps", which
+     * runs there).
      */
     static std::unique_ptr<TangentFactorization>
     create(const MatrixType &matrix, const std::string &kind);
@@ -92,10 +95,9 @@ namespace rodnet
     name() const = 0;
 
     /// The entries the last factorization stores: those of KLU's L and U
-    /// (their diagonals included), of MUMPS's L and D (one triangle), or
-    /// the band as LAPACK stores it; NaN
-    /// where the solver does not tell (Amesos, on several processes), 0
-    /// before the first factorization.
+    /// (their diagonals included), of MUMPS's L and D (one triangle, all
+    /// processes' together), or the band as LAPACK stores it; 0 before the
+    /// first factorization.
     virtual double
     factor_entries() const = 0;
   };

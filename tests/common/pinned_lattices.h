@@ -1,11 +1,11 @@
 #ifndef RODNET_TESTS_PINNED_LATTICES_H
 #define RODNET_TESTS_PINNED_LATTICES_H
 
-#include <common/rod_models.h>
 #include <geometry/network_generators.h>
 #include <geometry/rod_graph.h>
 #include <solvers/newton/tangent_factorization.h>
 
+#include "rod_models.h"
 #include <cmath>
 #include <memory>
 
@@ -16,13 +16,15 @@ namespace rodnet::testing
 {
   /// The finalized model of a welded square lattice of @p cells x @p cells
   /// cells of side @p side, @p segments per beam, of @p stiffness
-  /// (@p inextensible rods or not), pinned at its four corners.
+  /// (@p inextensible rods or not), pinned at its four corners, on
+  /// @p communicator.
   inline std::unique_ptr<RodModel>
   pinned_square_lattice(const unsigned int  cells,
                         const double        side,
                         const unsigned int  segments,
                         const RodStiffness &stiffness,
-                        const bool          inextensible)
+                        const bool          inextensible,
+                        const MPI_Comm      communicator = MPI_COMM_WORLD)
   {
     BuiltNetwork built =
       build_rod_network(network_generators::square_lattice(cells, cells, side),
@@ -30,8 +32,9 @@ namespace rodnet::testing
                         "simple");
     for (unsigned int rod = 0; rod < built.network->rods().size(); ++rod)
       built.network->set_inextensible(rod, inextensible);
-    auto model =
-      rodnet::testing::elastic_model(std::move(built.network), stiffness);
+    auto model = rodnet::testing::elastic_model(std::move(built.network),
+                                                stiffness,
+                                                communicator);
     for (const unsigned int node :
          {0u, cells, cells * (cells + 1), (cells + 1) * (cells + 1) - 1})
       model->fix_components("corner",

@@ -61,17 +61,20 @@ namespace rodnet::testing
   }
 
   /// A RodModel of @p network whose rods all have the linear elastic
-  /// rigidities @p stiffness.
+  /// rigidities @p stiffness, its vectors and matrices on @p communicator.
   inline std::unique_ptr<RodModel>
   elastic_model(std::unique_ptr<RodNetwork> network,
-                const RodStiffness         &stiffness)
+                const RodStiffness         &stiffness,
+                const MPI_Comm              communicator = MPI_COMM_WORLD)
   {
     const std::size_t n_rods = network->rods().size();
     return std::make_unique<RodModel>(
       std::move(network),
       std::vector<std::shared_ptr<const RodMaterial>>(
         n_rods,
-        std::make_shared<LinearElasticRod>(stiffness)));
+        std::make_shared<LinearElasticRod>(stiffness)),
+      GhostSpin::exact,
+      communicator);
   }
 
   /// The equilibrium of @p model (finalized here) under its whole load,

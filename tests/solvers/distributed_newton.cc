@@ -1,6 +1,6 @@
 // Newton on several processes: the model's DoFs in contiguous shares
-// (RodModel::finalize), assembled per process, solved by KLU (Amesos,
-// which gathers the distributed tangent on one process). A welded square
+// (RodModel::finalize), assembled per process, solved by MUMPS on the
+// distributed tangent (each process gives it its rows). A welded square
 // lattice clamped at one junction and pinned at its far corner, bent out
 // of its plane by a distributed load, reaches the equilibrium of the same
 // solve on one process (MPI_COMM_SELF) to 1e-10 relative in the same
@@ -53,7 +53,7 @@ namespace
         model.assemble(x, 1.0, nullptr, &k);
       };
       NewtonSolver::Parameters parameters;
-      parameters.linear_solver = "klu";
+      parameters.linear_solver = "mumps";
       parameters.line_search   = line_search;
       parameters.tolerance     = 1e-9;
       model.initialize_matrix(tangent);
