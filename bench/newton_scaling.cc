@@ -50,6 +50,7 @@
 
 #include <bench/options.h>
 #include <bench/timing.h>
+#include <bench/welded_lattice.h>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -309,28 +310,6 @@ namespace
         std::cout << line;
       }
   }
-  /// The lattice of the header with @p cells x @p cells cells.
-  std::unique_ptr<RodModel>
-  lattice_model(const unsigned int cells)
-  {
-    std::ostringstream scene;
-    scene << "subsection Geometry\n  set Generator = square lattice\n"
-          << "  set Cells = " << cells << ", " << cells << "\n"
-          << "  set Beam length = 0.1\n  set Segments = 10\nend\n"
-          << "subsection Material\n  subsection linear elastic\n"
-          << "    set Stiffness input = direct\n    set EA = 1e5\n"
-          << "    set EI1 = 400\n    set EI2 = 100\n    set GJ = 67\n"
-          << "  end\nend\nsubsection Supports\n  set Pinned vertices = "
-          << "@n_0_0, @n_" << cells << "_0, @n_0_" << cells << ", @n_" << cells
-          << "_" << cells << "\nend\nsubsection Loads\n"
-          << "  set Steps = 2\n  set Gravity = 0, 0, -9.81\n"
-          << "  set Mass per length = 0.05\nend\n";
-    dealii::ParameterHandler prm;
-    Scene::declare_parameters(prm);
-    prm.parse_input_from_string(scene.str());
-    return Scene(prm).build_model();
-  }
-
   /// One Newton iteration of a lattice: its residual before, its times
   /// and the fill of its factor.
   struct LatticeIteration
@@ -450,7 +429,7 @@ namespace
         if (cells > options.max_cells)
           break;
         const double start = bench::now();
-        const auto   model = lattice_model(cells);
+        const auto   model = bench::welded_lattice(cells);
         const double setup = bench::now() - start;
         double       analysis;
         const auto   iterations = lattice_iterations(*model,

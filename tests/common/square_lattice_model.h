@@ -5,10 +5,10 @@
 // communicator, not finalized (the caller adds supports and loads): the
 // network of the tests of models on several processes.
 
+#include <common/rod_models.h>
 #include <core/rod_model.h>
 #include <geometry/network_generators.h>
 #include <geometry/rod_graph.h>
-#include <materials/linear_elastic_rod.h>
 
 #include <memory>
 
@@ -28,14 +28,7 @@ namespace rodnet::testing
                         segments,
                         "simple")
         .network);
-    const unsigned int n_rods = network->rods().size();
-    return std::make_unique<RodModel>(
-      std::move(network),
-      std::vector<std::shared_ptr<const RodMaterial>>(
-        n_rods,
-        std::make_shared<LinearElasticRod>(stiffness)),
-      GhostSpin::exact,
-      communicator);
+    return elastic_model(std::move(network), stiffness, communicator);
   }
 } // namespace rodnet::testing
 
