@@ -20,6 +20,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 
 namespace rodnet
 {
@@ -62,6 +63,19 @@ namespace rodnet
           },
           1);
     }
+
+    /// The sum of @p energies in stencil order, of the stencils whose
+    /// energy this process counts (all where @p subset is null).
+    double
+    sum_in_order(const std::vector<double> &energies,
+                 const OwnedStencils       *subset)
+    {
+      double sum = 0;
+      for (std::size_t k = 0; k < energies.size(); ++k)
+        if (subset == nullptr || subset->counts_energy[k])
+          sum += energies[k];
+      return sum;
+    }
   } // namespace
 
   void
@@ -77,8 +91,7 @@ namespace rodnet
     // rethrown after the loop so that the caller can cut the step.
     std::exception_ptr failure;
     std::mutex         failure_mutex;
-    // On several processes, the stencils that couple this process's DoFs
-    // (own_stencils); on one, all of them.
+    // On several processes the stencils that couple this process's DoFs.
     const ElementFamily &family = *families[f];
     const OwnedStencils *subset =
       own_stencils.empty() ? nullptr : &own_stencils[f];
@@ -124,9 +137,7 @@ namespace rodnet
                               LocalContribution());
     if (failure)
       std::rethrow_exception(failure);
-    for (unsigned int k = 0; k < n; ++k)
-      if (subset == nullptr || subset->counts_energy[k])
-        energy += energies[k];
+    energy += sum_in_order(energies, subset);
   }
 
 
@@ -230,12 +241,9 @@ namespace rodnet
     if (!DirectScatter::applies(tangent, numbering))
       {
         if (distributed)
-          return assemble_distributed(u,
-                                      load_factor,
-                                      residual,
-                                      tangent,
-                                      apply_constraints,
-                                      extra_force);
+          throw std::invalid_argument(
+            "RodModel::assemble: on several processes the tangent must be "
+            "a matrix of the model's pattern (initialize_matrix())");
         if (tangent != nullptr)
           *tangent = 0;
         return assemble_mapped(u,

@@ -836,17 +836,6 @@ namespace rodnet
     void
     check_ownership(const dealii::IndexSet &locally_owned_dofs) const;
 
-    /// assemble() on several processes: the stencils of own_stencils at the
-    /// state with its ghosts (ghosted_state), this process's rows only
-    /// (doc/architecture.md, "Several processes").
-    double
-    assemble_distributed(const VectorType &u,
-                         double            load_factor,
-                         VectorType       *residual,
-                         MatrixType       *tangent,
-                         bool              apply_constraints,
-                         const VectorType *extra_force) const;
-
     /// What assemble() computes where @p residual and @p tangent are
     /// (not) null.
     static Derivatives
