@@ -1,4 +1,5 @@
 #include <app/method_runs.h>
+#include <core/every_entry.h>
 #include <core/motion.h>
 #include <solvers/stability/lowest_eigenpairs.h>
 
@@ -83,15 +84,17 @@ namespace rodnet
           const VectorType                &solution) {
           summary.unstable_steps += !info.check.stable;
           summary.out_of_range_steps += !info.strain.in_range;
+          // Probes and output read DoFs anywhere: gathered once.
+          const EveryEntry every_entry(solution);
           recorder.record(info.step,
                           info.load_factor,
                           info.load_factor,
                           evaluate_probes(probes,
                                           model,
-                                          solution,
+                                          *every_entry,
                                           info.load_factor,
                                           lowest_eigenvalue_of(info, solution)),
-                          solution,
+                          *every_entry,
                           checks_of(info));
         };
     }

@@ -196,6 +196,30 @@ namespace rodnet
     }
   } // namespace
 
+  void
+  require_runs_on_these_processes(const Scene &scene)
+  {
+    const unsigned int processes =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (processes == 1)
+      return;
+    const std::string what =
+      scene.method == SolutionMethod::time_stepping ?
+        "Solver/Method = time stepping" :
+      scene.method == SolutionMethod::dynamic_relaxation ?
+        "Solver/Method = dynamic relaxation" :
+      scene.method == SolutionMethod::continuation ?
+        "Solver/Method = continuation" :
+      scene.mode_shapes > 0 ? "Output/Mode shapes" :
+                              "";
+    if (!what.empty())
+      throw std::invalid_argument(
+        what + " runs on one process only, and this run has " +
+        std::to_string(processes) +
+        " MPI processes: run it without mpirun (Newton's load steps run on "
+        "several processes)");
+  }
+
   RunSummary
   run_scene(const Scene       &scene,
             const std::string &output_directory,

@@ -71,6 +71,16 @@ namespace rodnet
    * factor" expression that is not finite at some time, which throws when
    * the run gets there.
    */
+  /**
+   * Throws std::invalid_argument, naming the entry, where @p scene asks for
+   * what runs on one process only and MPI_COMM_WORLD has several: time
+   * stepping, dynamic relaxation, continuation and mode shapes
+   * (doc/architecture.md, "Several processes"). Newton's load steps run
+   * on several processes.
+   */
+  void
+  require_runs_on_these_processes(const Scene &scene);
+
   RunSummary
   run_scene(const Scene       &scene,
             const std::string &output_directory,

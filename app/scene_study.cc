@@ -3,6 +3,7 @@
 #include <app/interrupt.h>
 #include <app/scene_runner.h>
 #include <app/scene_study.h>
+#include <base/mpi_session.h>
 #include <io/output_directory.h>
 #include <io/probe_plot.h>
 #include <io/scene_file.h>
@@ -181,6 +182,8 @@ namespace rodnet
       void
       write() const
       {
+        if (!writes_outputs())
+          return;
         const std::string csv_path = directory + "/summary.csv";
         {
           std::ofstream csv(csv_path);
@@ -325,6 +328,7 @@ namespace rodnet
       StudyRunOutcome outcome;
       try
         {
+          require_runs_on_these_processes(scene);
           prepare_output_directory(directory);
           RunSummary &result = outcome.result;
           result             = run_scene(scene, directory, &log);

@@ -91,9 +91,12 @@ namespace rodnet
            const double               abscissa,
            const double               load_factor,
            std::vector<double>        values,
-           const State               &u,
+           const State               &state,
            const std::vector<double> &checks = {})
     {
+      // The outputs read DoFs anywhere (collective on several processes).
+      const EveryEntryOf<State> every_entry(state);
+      const State              &u = *every_entry;
       continue_probes(probes, previous_values, values);
       previous_values = values;
       table.add_row(step, abscissa, values, checks);

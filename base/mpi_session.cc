@@ -1,4 +1,5 @@
 #include <base/mpi_session.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -140,5 +141,10 @@ namespace rodnet
         std::error_code ignored_error;
         std::filesystem::remove_all(private_session_base, ignored_error);
       }
+  }
+  bool
+  writes_outputs()
+  {
+    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   }
 } // namespace rodnet

@@ -30,6 +30,17 @@ namespace rodnet
    * the user set it): many rodnet processes may run side by side. A
    * process started by a launcher keeps the launcher's options.
    */
+  class MPISession;
+
+  /**
+   * Whether this process writes the outputs of a run, its files and its
+   * messages: rank 0 of MPI_COMM_WORLD. On several processes every process
+   * computes the same outputs (doc/architecture.md, "Several processes")
+   * and one writes them.
+   */
+  bool
+  writes_outputs();
+
   class MPISession
   {
   public:

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <core/direct_scatter.h>
+#include <core/every_entry.h>
 #include <core/rod_model.h>
 #include <core/scatter_positions.h>
 
@@ -175,6 +176,19 @@ namespace rodnet
   }
 
 
+  double
+  RodModel::work(const VectorType &force, const VectorType &u)
+  {
+    if (!EveryEntry::distributed(force) || EveryEntry::distributed(u))
+      return force * u;
+    // A state with every entry (a replica) against a distributed force.
+    double here = 0;
+    for (const global_dof_index i : force.locally_owned_elements())
+      here += force[i] * u[i];
+    return dealii::Utilities::MPI::sum(here, force.get_mpi_communicator());
+  }
+
+
   void
   RodModel::add_dead_loads(const VectorType  &u,
                            const double       ramp,
@@ -186,9 +200,9 @@ namespace rodnet
     const double load_factor = applied_load_factor(ramp);
     // Potential -(lambda f + f_held).x, with x = X + u; the constant f.X
     // does not change any derivative and is dropped.
-    energy -= load_factor * (f_ext * u) + f_held * u;
+    energy -= load_factor * work(f_ext, u) + work(f_held, u);
     if (extra_force != nullptr)
-      energy -= *extra_force * u;
+      energy -= work(*extra_force, u);
     if (residual == nullptr)
       return;
     residual->compress(dealii::VectorOperation::add);

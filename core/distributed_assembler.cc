@@ -4,6 +4,7 @@
 // at the state with its ghost entries (with_ghosts()), and adds the rows of
 // its own DoFs only; the energies are summed over the processes.
 #include <base/first_problem.h>
+#include <core/every_entry.h>
 #include <core/rod_model.h>
 
 #include <cmath>
@@ -14,6 +15,9 @@ namespace rodnet
   const VectorType &
   RodModel::with_ghosts(const VectorType &u) const
   {
+    // A state with every entry (a replica) holds the ghosts already.
+    if (!EveryEntry::distributed(u))
+      return u;
     ghosted_state = u;
     return ghosted_state;
   }
@@ -61,14 +65,6 @@ namespace rodnet
   VectorType
   RodModel::replica(const VectorType &u) const
   {
-    const dealii::IndexSet every_dof =
-      dealii::complete_index_set(layout_->n_dofs());
-    VectorType with_every_ghost(owned_dofs, every_dof, mpi_communicator);
-    with_every_ghost = u;
-    VectorType result(every_dof, MPI_COMM_SELF);
-    for (global_dof_index i = 0; i < every_dof.size(); ++i)
-      result[i] = with_every_ghost[i];
-    result.compress(dealii::VectorOperation::insert);
-    return result;
+    return *EveryEntry(u);
   }
 } // namespace rodnet

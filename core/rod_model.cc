@@ -4,6 +4,7 @@
 
 #include <base/first_problem.h>
 #include <core/built_in_families.h>
+#include <core/every_entry.h>
 #include <core/rod_model.h>
 #include <core/stencil_coloring.h>
 
@@ -113,11 +114,13 @@ namespace rodnet
   void
   RodModel::reset_reference(VectorType &u)
   {
-    configuration_->reset_reference(u);
+    // Every process keeps the whole configuration.
+    configuration_->reset_reference(*EveryEntry(u));
     for (unsigned int j = 0; j < network_->junctions().size(); ++j)
       if (layout_->has_rotation_dofs(j))
         for (unsigned int c = 0; c < 4; ++c)
-          u[layout_->rotation_dof(j, c)] = 0.0;
+          if (owned_dofs.is_element(layout_->rotation_dof(j, c)))
+            u[layout_->rotation_dof(j, c)] = 0.0;
     u.compress(dealii::VectorOperation::insert);
     // A converged state carries the junction vertices' positions at the
     // other rod ends too.

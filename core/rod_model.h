@@ -858,6 +858,17 @@ namespace rodnet
     DirectScatter::Numbering
     scatter_numbering() const;
 
+    /// The work f . u of the dead force @p force on the state @p u, which
+    /// may hold every entry where @p force is distributed (a replica).
+    /// Collective.
+    static double
+    work(const VectorType &force, const VectorType &u);
+
+    /// The unconstrained residual at (@p u, @p load_factor), every entry
+    /// on this process: the reactions at the fixed DoFs. Collective.
+    VectorType
+    reactions_at(const VectorType &u, double load_factor) const;
+
     /// Every entry of the distributed @p u, in a vector of one process
     /// (MPI_COMM_SELF): for what reads and writes DoFs anywhere, such as
     /// the supports. Collective; O(n_dofs) per process.

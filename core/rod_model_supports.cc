@@ -1,3 +1,4 @@
+#include <core/every_entry.h>
 // The supports and rotational loads of a RodModel: clamps that move
 // rigidly, fixed and prescribed position components, held and prescribed
 // junction rotations and moments, their resolution into fixed DoFs with
@@ -730,14 +731,21 @@ namespace rodnet
     u.compress(dealii::VectorOperation::insert);
   }
 
+  VectorType
+  RodModel::reactions_at(const VectorType &u, const double load_factor) const
+  {
+    VectorType r = create_vector();
+    assemble(u, load_factor, &r, nullptr, false);
+    return *EveryEntry(r);
+  }
+
   Vector3
   RodModel::reaction(const Support    &s,
                      const VectorType &u,
                      const double      load_factor) const
   {
-    VectorType r = create_vector();
-    assemble(u, load_factor, &r, nullptr, false);
-    Vector3 total = Vector3::Zero();
+    const VectorType r     = reactions_at(u, load_factor);
+    Vector3          total = Vector3::Zero();
     for (unsigned int k = 0; k < s.vertices.size(); ++k)
       total += support_force(s, k, r);
     return total;
@@ -759,11 +767,12 @@ namespace rodnet
 
   Vector3
   RodModel::reaction_moment(const Support    &s,
-                            const VectorType &u,
+                            const VectorType &state,
                             const double      load_factor) const
   {
-    VectorType r = create_vector();
-    assemble(u, load_factor, &r, nullptr, false);
+    const VectorType  r = reactions_at(state, load_factor);
+    const EveryEntry  every_entry(state);
+    const VectorType &u = *every_entry;
     // Virtual work of a rigid rotation omega of the support about x_0:
     // dx_k = omega x (x_k - x_0), dphi = omega . t (a rotation normal to
     // the tangent is the parallel transport, which leaves the twist).
@@ -782,7 +791,7 @@ namespace rodnet
 
   Vector3
   RodModel::reaction_moment(const unsigned int junction,
-                            const VectorType  &u,
+                            const VectorType  &state,
                             const double       load_factor) const
   {
     if (junction >= network_->junctions().size() ||
@@ -790,9 +799,10 @@ namespace rodnet
       throw std::invalid_argument("reaction moment: junction " +
                                   std::to_string(junction) +
                                   " does not exist or has no rotation");
-    VectorType r = create_vector();
-    assemble(u, load_factor, &r, nullptr, false);
-    Eigen::Vector4d q, gradient;
+    const VectorType  r = reactions_at(state, load_factor);
+    const EveryEntry  every_entry(state);
+    const VectorType &u = *every_entry;
+    Eigen::Vector4d   q, gradient;
     for (unsigned int c = 0; c < 4; ++c)
       {
         q[c]        = u[layout_->rotation_dof(junction, c)] + (c == 0);

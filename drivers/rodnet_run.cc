@@ -169,6 +169,7 @@ namespace
         scene = rodnet::load_scene(scene_file);
         if (output_given)
           scene->output_directory = output;
+        rodnet::require_runs_on_these_processes(*scene);
         rodnet::prepare_output_directory(scene->output_directory);
       }
     catch (const std::exception &e)
@@ -216,22 +217,16 @@ namespace
       }
   }
 
-  /// Whether rodnet-run was started on several MPI processes, which it
-  /// refuses with one message (from rank 0, not one per process).
-  bool
-  several_processes()
+  /// On several MPI processes every process runs the scene and rank 0
+  /// writes (writes_outputs()): the others' messages are dropped, so that
+  /// the user reads one copy.
+  void
+  quiet_unless_writing()
   {
-    const unsigned int n_processes =
-      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    if (n_processes == 1)
-      return false;
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cerr << "rodnet-run: started on " << n_processes
-                << " MPI processes, but a scene runs on one process: the "
-                   "network is not distributed over processes yet; run it "
-                   "without mpirun (or with -np 1). Nothing was run or "
-                   "written.\n";
-    return true;
+    if (rodnet::writes_outputs())
+      return;
+    std::cout.rdbuf(nullptr);
+    std::cerr.rdbuf(nullptr);
   }
 } // namespace
 
@@ -310,8 +305,7 @@ rodnet_run_main(int argc, char **argv)
   // MPI (for Trilinos) only now: a refused command line need not wait for
   // it. Open MPI's fast options for a process no launcher started.
   rodnet::MPISession mpi(argc, argv, arguments.threads);
-  if (several_processes())
-    return 1;
+  quiet_unless_writing();
   if (arguments.threads > 1)
     std::cout << "rodnet-run: assembling on "
               << dealii::MultithreadInfo::n_threads() << " threads ("

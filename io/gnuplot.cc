@@ -1,3 +1,4 @@
+#include <base/mpi_session.h>
 #include <io/gnuplot.h>
 
 #include <array>
@@ -105,6 +106,8 @@ namespace rodnet
   std::string
   draw_with_gnuplot(const std::string &script, const std::string &image_path)
   {
+    if (!writes_outputs())
+      return "";
     const std::string script_path = image_path + ".gp";
     {
       std::ofstream file(script_path);

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <core/every_entry.h>
 #include <core/model.h>
 #include <core/output_fields.h>
 #include <core/rod_network.h>
@@ -94,10 +95,11 @@ namespace rodnet
   PictureState
   picture_state(const Model<State> &model, const State &u)
   {
-    PictureState state;
+    const EveryEntryOf<State> every_entry(u);
+    PictureState              state;
     for (unsigned int v = 0; v < model.network().n_vertices(); ++v)
-      state.positions.push_back(model.position(u, v));
-    state.fields = model.output_fields(u);
+      state.positions.push_back(model.position(*every_entry, v));
+    state.fields = model.output_fields(*every_entry);
     return state;
   }
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <base/mpi_session.h>
 #include <io/gnuplot.h>
 #include <io/network_picture.h>
 #include <io/picture_fields.h>
@@ -46,7 +47,7 @@ namespace rodnet
                                 const std::string  &png_path,
                                 const std::string  &title)
   {
-    if (failed || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    if (failed || !writes_outputs())
       return std::nullopt;
     ColourRange range;
     std::string failure;

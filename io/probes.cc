@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <base/mpi_session.h>
 #include <io/probes.h>
 
 #include <cmath>
@@ -95,8 +96,8 @@ namespace rodnet
                          description.substr(0, description.find(": "));
               }
             throw std::invalid_argument(words.context +
-                                        ": unknown probe kind \"" +
-                                        words.kind + "\"; known: " + known);
+                                        ": unknown probe kind \"" + words.kind +
+                                        "\"; known: " + known);
           }
         probes.push_back(registry.create(words.kind, words, model));
       }
@@ -135,8 +136,10 @@ namespace rodnet
                          const ProbeList                &probes,
                          const std::string              &abscissa,
                          const std::vector<std::string> &check_columns)
-      : file(path)
   {
+    if (!writes_outputs())
+      return;
+    file.open(path);
     if (!file)
       throw std::runtime_error("cannot write the probe file " + path);
     file << "step," << abscissa;

@@ -1,6 +1,7 @@
 #ifndef RODNET_IO_PROBES_H
 #define RODNET_IO_PROBES_H
 
+#include <core/every_entry.h>
 #include <core/model.h>
 #include <io/probe.h>
 
@@ -65,8 +66,11 @@ namespace rodnet
                   const double        lowest_eigenvalue = std::nan(""),
                   const Motion       *motion            = nullptr)
   {
+    // Probes read DoFs anywhere in the network (collective on several
+    // processes).
+    const EveryEntryOf<State>  every_entry(u);
     const ProbedStateOf<State> state(model,
-                                     u,
+                                     *every_entry,
                                      load_factor,
                                      lowest_eigenvalue,
                                      motion);

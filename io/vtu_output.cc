@@ -11,6 +11,7 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <base/mpi_session.h>
 #include <io/vtu_output.h>
 
 #include <filesystem>
@@ -183,7 +184,7 @@ namespace rodnet
                    const double        time,
                    const OutputFields &fields)
   {
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    if (!writes_outputs())
       return;
     // The fields as finite element vectors (the model's solution, other
     // vector fields and vertex scalars) or as cell data (segment scalars);

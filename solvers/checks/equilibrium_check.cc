@@ -1,3 +1,4 @@
+#include <core/every_entry.h>
 #include <solvers/checks/equilibrium_check.h>
 #include <solvers/checks/free_motions.h>
 #include <solvers/solver_failure.h>
@@ -12,7 +13,8 @@ namespace rodnet
 {
   namespace
   {
-    /// The symmetry modes M of a model at a state (symmetry_modes()), with
+    /// The symmetry modes M of a model at a state (symmetry_modes(), every
+    /// entry on this process), with
     /// K^-1 M and S = M^T K^-1 M from a factorization of its tangent K.
     struct SymmetryBorder
     {
@@ -28,12 +30,12 @@ namespace rodnet
                     const ConstrainedFactorization &factorization)
     {
       SymmetryBorder border;
-      border.modes = symmetry_modes(model, u, load_factor);
-      for (const VectorType &m : border.modes)
+      for (const VectorType &m : symmetry_modes(model, u, load_factor))
         {
-          const double *values = m.trilinos_vector()[0];
+          const VectorType &mode   = border.modes.emplace_back(*EveryEntry(m));
+          const double     *values = mode.trilinos_vector()[0];
           border.solved.push_back(factorization.solve(
-            std::vector<double>(values, values + m.size())));
+            std::vector<double>(values, values + mode.size())));
         }
       const unsigned int k = border.modes.size();
       border.s.resize(k, k);
@@ -96,7 +98,8 @@ namespace rodnet
                                  const ConstrainedFactorization &factorization,
                                  const VectorType               &r)
     {
-      const double       *values = r.trilinos_vector()[0];
+      const EveryEntry    every_entry(r);
+      const double       *values = (*every_entry).trilinos_vector()[0];
       std::vector<double> correction =
         factorization.solve(std::vector<double>(values, values + r.size()));
       const SymmetryBorder border =

@@ -1,3 +1,4 @@
+#include <core/every_entry.h>
 #include <solvers/checks/constraint_rows.h>
 #include <solvers/checks/dof_roles.h>
 #include <solvers/checks/free_motions.h>
@@ -867,7 +868,7 @@ namespace rodnet
                     symmetry_tolerance * 2 * stored[p] * angle * angle)
                 continue;
               VectorType vector = model.create_vector();
-              for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+              for (const global_dof_index d : vector.locally_owned_elements())
                 if (mode[d] != 0)
                   vector[d] = mode[d];
               vector.compress(dealii::VectorOperation::insert);
@@ -879,8 +880,10 @@ namespace rodnet
   } // namespace
 
   std::string
-  describe_free_motions(const SolvableModel &model, const VectorType &u)
+  describe_free_motions(const SolvableModel &model, const VectorType &state)
   {
+    const EveryEntry                 every_entry(state);
+    const VectorType                &u = *every_entry;
     const DofRoles                   roles(model);
     std::vector<unsigned int>        part_of_rod;
     const std::vector<ConstraintRow> constraints =
@@ -914,9 +917,11 @@ namespace rodnet
 
   std::vector<VectorType>
   symmetry_modes(const SolvableModel &model,
-                 const VectorType    &u,
+                 const VectorType    &state,
                  const double         load_factor)
   {
+    const EveryEntry                 every_entry(state);
+    const VectorType                &u = *every_entry;
     const DofRoles                   roles(model);
     std::vector<unsigned int>        part_of_rod;
     const std::vector<ConstraintRow> constraints =
@@ -954,9 +959,11 @@ namespace rodnet
 
   std::vector<global_dof_index>
   free_frame_turns(const SolvableModel &model,
-                   const VectorType    &u,
+                   const VectorType    &state,
                    const double         load_factor)
   {
+    const EveryEntry  every_entry(state);
+    const VectorType &u = *every_entry;
     // Where every rod is joined (a welded network), nothing to look at.
     const std::vector<bool> joined = joined_rods(model.network());
     if (std::all_of(joined.begin(), joined.end(), [](bool j) { return j; }))

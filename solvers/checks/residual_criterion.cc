@@ -1,3 +1,4 @@
+#include <core/every_entry.h>
 #include <elements/junction_moment.h>
 #include <solvers/checks/residual_criterion.h>
 #include <solvers/stability/stability.h>
@@ -68,11 +69,13 @@ namespace rodnet
   }
 
   ResidualParts
-  ResidualCriterion::norms(const VectorType &u, const VectorType &r) const
+  ResidualCriterion::norms(const VectorType &state,
+                           const VectorType &residual) const
   {
-    const auto   &constraints = model.constraints();
-    const double *values      = values_of(r);
-    double        force2 = 0, moment2 = 0;
+    const EveryEntry u(state), r(residual);
+    const auto      &constraints = model.constraints();
+    const double    *values      = values_of(*r);
+    double           force2 = 0, moment2 = 0;
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
       if (!constraints.is_constrained(i))
         {
@@ -95,7 +98,7 @@ namespace rodnet
             if (!constraints.is_constrained(layout.rotation_dof(j, c)))
               g[c] = values[layout.rotation_dof(j, c)];
           if (g.squaredNorm() > 0)
-            moment2 += junction_moment(u, j, g).squaredNorm();
+            moment2 += junction_moment(*u, j, g).squaredNorm();
         }
     return {std::sqrt(force2), std::sqrt(moment2)};
   }
@@ -124,8 +127,17 @@ namespace rodnet
     else
       model.assemble(u, 0.0, &applied, nullptr, false);
     applied -= loaded;
+    return parts_of(u, *EveryEntry(applied), *EveryEntry(loaded));
+  }
 
-    double applied_force2 = 0, applied_moment2 = 0;
+  ResidualCriterion::LoadParts
+  ResidualCriterion::parts_of(const VectorType &state,
+                              const VectorType &applied,
+                              const VectorType &loaded) const
+  {
+    const EveryEntry  every_entry(state);
+    const VectorType &u              = *every_entry;
+    double            applied_force2 = 0, applied_moment2 = 0;
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
       if (dof_roles.kind(i) == Kind::position)
         applied_force2 += applied[i] * applied[i];
@@ -228,7 +240,8 @@ namespace rodnet
     // without their signs (junction rotations: the moments they stand for).
     std::vector<double> row(dof_roles.n_dofs(), 0.0);
     std::vector<double> junction(model.network().junctions().size(), 0.0);
-    const StencilState  state{u,
+    const EveryEntry    every_entry(u);
+    const StencilState  state{*every_entry,
                              model.configuration(),
                              model.internal_variables(),
                              model.time_step(),
@@ -258,7 +271,7 @@ namespace rodnet
                 }
             }
           for (const auto &[j, g] : rotations)
-            junction[j] += junction_moment(u, j, g).norm();
+            junction[j] += junction_moment(*every_entry, j, g).norm();
         }
     double force = 0, moment = 0;
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
@@ -369,13 +382,14 @@ namespace rodnet
     VectorType reference = model.create_vector();
     VectorType perturbed = model.create_vector();
     model.assemble(u, load_factor, &reference, nullptr, true, extra_force);
-    const double *values = values_of(u);
-    std::mt19937  random(1); // a fixed sequence, so that runs repeat
+    const EveryEntry every_entry(u);
+    const double    *values = values_of(*every_entry);
+    std::mt19937     random(1); // a fixed sequence, so that runs repeat
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     RoundoffNoise                          noise;
     for (unsigned int realization = 0; realization < 2; ++realization)
       {
-        VectorType moved = u;
+        VectorType moved = *every_entry;
         for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
           {
             // Per coordinate: an exact zero (a rod along an axis) rounds
@@ -403,8 +417,11 @@ namespace rodnet
         noise.floor.force  = std::max(noise.floor.force, 2 * measured.force);
         noise.floor.moment = std::max(noise.floor.moment, 2 * measured.moment);
         if (noise.rows.empty())
-          noise.rows.assign(values_of(perturbed),
-                            values_of(perturbed) + dof_roles.n_dofs());
+          {
+            const EveryEntry rows(perturbed);
+            noise.rows.assign(values_of(*rows),
+                              values_of(*rows) + dof_roles.n_dofs());
+          }
       }
     return noise;
   }
@@ -457,16 +474,22 @@ namespace rodnet
         if (in_part && std::abs(noise.rows[i]) > std::abs(noise.rows[worst]))
           worst = i;
       }
+    VectorType owned_diagonal = model.create_vector();
+    for (const global_dof_index i : owned_diagonal.locally_owned_elements())
+      owned_diagonal[i] = tangent.diag_element(i);
+    owned_diagonal.compress(dealii::VectorOperation::insert);
+    const EveryEntry    every_entry(owned_diagonal);
+    const VectorType   &tangent_diagonal = *every_entry;
     std::vector<double> diagonal;
     for (global_dof_index i = 0; i < dof_roles.n_dofs(); ++i)
       if (dof_roles.kind(i) != Kind::inert &&
           !model.constraints().is_constrained(i))
-        diagonal.push_back(std::abs(tangent.diag_element(i)));
+        diagonal.push_back(std::abs(tangent_diagonal[i]));
     std::nth_element(diagonal.begin(),
                      diagonal.begin() + diagonal.size() / 2,
                      diagonal.end());
     const double median    = diagonal[diagonal.size() / 2];
-    const double stiffness = std::abs(tangent.diag_element(worst));
+    const double stiffness = std::abs(tangent_diagonal[worst]);
 
     const std::string unit = force ? " N" : " N m";
     return std::string("rounding limits the ") + (force ? "force" : "moment") +

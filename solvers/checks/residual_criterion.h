@@ -249,6 +249,14 @@ namespace rodnet
                const VectorType *extra_force,
                const VectorType *known_loaded = nullptr) const;
 
+    /// load_parts() from the @p applied generalized forces and the
+    /// unconstrained residual @p loaded at @p u, each a vector with every
+    /// entry (EveryEntry).
+    LoadParts
+    parts_of(const VectorType &u,
+             const VectorType &applied,
+             const VectorType &loaded) const;
+
     /// Adds to @p force2 and @p moment2 the squared net reaction force of
     /// every support in the unconstrained residual @p loaded at @p u, and
     /// its squared moment about the support's first vertex.
@@ -291,7 +299,7 @@ namespace rodnet
     junction_quaternion(const VectorType &u, unsigned int junction) const;
 
     const SolvableModel &model;
-    DofRoles        dof_roles;
+    DofRoles             dof_roles;
     /// Fixed twist DoFs that a hinge or junction element sees.
     std::vector<global_dof_index> fixed_twists;
   };

@@ -1,3 +1,4 @@
+#include <core/every_entry.h>
 #include <elements/stretch_kernel.h>
 #include <solvers/checks/strain_range.h>
 
@@ -21,18 +22,21 @@ namespace rodnet
       : model(model)
       , limits(limits)
   {
-    const VectorType undeformed = model.create_vector();
-    const auto      &hinges     = model.layout().hinges();
+    const VectorType zero = model.create_vector();
+    const EveryEntry undeformed(zero);
+    const auto      &hinges = model.layout().hinges();
     for (unsigned int h = 0; h < hinges.size(); ++h)
       undeformed_curvature.push_back(
         model.hinge_kernel(hinges[h].rod)
-          .strains(model.configuration().hinge_dofs(undeformed, hinges[h]),
+          .strains(model.configuration().hinge_dofs(*undeformed, hinges[h]),
                    model.configuration().hinge_reference(h)));
   }
 
   StrainRange
-  StrainMonitor::evaluate(const VectorType &u) const
+  StrainMonitor::evaluate(const VectorType &state) const
   {
+    const EveryEntry     every_entry(state);
+    const VectorType    &u             = *every_entry;
     const Configuration &configuration = model.configuration();
     StrainRange          range;
     for (const SegmentStencil &s : model.layout().segments())

@@ -3,6 +3,8 @@
 
 #include <Eigen/SparseCholesky>
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Import.h>
+#include <Epetra_LocalMap.h>
 #include <algorithm>
 #include <stdexcept>
 
@@ -107,6 +109,29 @@ namespace rodnet
     }
 
     /**
+     * Every row of @p tangent on this process: its own matrix where this
+     * process holds all rows, otherwise an import of all rows into
+     * @p gathered (a map that repeats every row on every process). The
+     * factorization is then the same, and serial, on every process: O(nnz)
+     * memory per process (doc/architecture.md, "Several processes").
+     */
+    const Epetra_CrsMatrix &
+    every_row(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+              std::unique_ptr<Epetra_CrsMatrix>            &gathered)
+    {
+      const Epetra_CrsMatrix &matrix = tangent.trilinos_matrix();
+      if (matrix.RowMap().NumMyElements() ==
+          matrix.RowMap().NumGlobalElements())
+        return matrix;
+      const Epetra_LocalMap every(matrix.NumGlobalRows(), 0, matrix.Comm());
+      const Epetra_Import   import(every, matrix.RowMap());
+      gathered = std::make_unique<Epetra_CrsMatrix>(Copy, every, 0);
+      gathered->Import(matrix, import, Insert);
+      gathered->FillComplete();
+      return *gathered;
+    }
+
+    /**
      * The free block of @p tangent (sparse_free_block()), its diagonal
      * shifted by -@p shift, with the multiplier rows regularized.
      */
@@ -124,7 +149,8 @@ namespace rodnet
       block.diagonal = Eigen::VectorXd::Zero(n);
       // Epetra's row views: deal.II's entry iterators cost more than the
       // factorization on large tangents.
-      const Epetra_CrsMatrix             &matrix = tangent.trilinos_matrix();
+      std::unique_ptr<Epetra_CrsMatrix>   gathered;
+      const Epetra_CrsMatrix             &matrix = every_row(tangent, gathered);
       std::vector<std::pair<int, double>> row;
       for (unsigned int k = 0; k < n; ++k)
         {

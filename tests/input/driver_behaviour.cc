@@ -328,25 +328,24 @@ namespace
       }
   }
 
-  TEST(Driver, SeveralMpiProcessesAreRefusedOnceBeforeAnythingIsWritten)
+  TEST(Driver, SerialOnlyMethodsAreRefusedOnceOnSeveralProcesses)
   {
     if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
       GTEST_SKIP() << "no mpirun";
     fs::remove_all("out_two_processes");
-    {
-      std::ofstream scene("two_processes.prm");
-      scene << short_cantilever;
-    }
     // This test program is an MPI process itself: its Open MPI variables
     // would make mpirun's processes join it instead of starting their own.
+    // Time stepping runs on one process only.
     const rodnet::testing::DriverOutcome o = rodnet::testing::run_command(
       "for v in $(env | grep -o '^\\(OMPI\\|PMIX\\)[A-Za-z0-9_]*'); do "
       "unset $v; done; mpirun --allow-run-as-root --oversubscribe -np 2 " +
-      std::string(RODNET_BINARY_DIR) +
-      "/rodnet-run two_processes.prm --output out_two_processes");
+      std::string(RODNET_BINARY_DIR) + "/rodnet-run " +
+      std::string(RODNET_SOURCE_DIR) +
+      "/scenes/hexagonal_truss.prm --output out_two_processes");
     EXPECT_NE(o.exit_code, 0) << o.output;
-    const std::string message = "started on 2 MPI processes";
-    const auto        first   = o.output.find(message);
+    const std::string message =
+      "Solver/Method = time stepping runs on one process only";
+    const auto first = o.output.find(message);
     ASSERT_NE(first, std::string::npos) << o.output;
     EXPECT_EQ(o.output.find(message, first + 1), std::string::npos)
       << "printed by more than one process:\n"
