@@ -18,7 +18,13 @@ namespace rodnet
     // A state with every entry (a replica) holds the ghosts already.
     if (!EveryEntry::distributed(u))
       return u;
-    ghosted_state = u;
+    if (!u.trilinos_vector().Map().SameAs(ghost_import->SourceMap()))
+      ghosted_state = u; // another partition: deal.II imports it
+    else if (ghosted_state.trilinos_vector().Import(u.trilinos_vector(),
+                                                    *ghost_import,
+                                                    Insert) != 0)
+      throw std::runtime_error("the import of the ghost entries of the "
+                               "state failed (Epetra_Import)");
     return ghosted_state;
   }
 

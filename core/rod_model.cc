@@ -240,7 +240,8 @@ namespace rodnet
   void
   RodModel::finalize()
   {
-    finalize(contiguous_share(
+    finalize(balanced_share(
+      families,
       layout_->n_dofs(),
       dealii::Utilities::MPI::n_mpi_processes(mpi_communicator),
       dealii::Utilities::MPI::this_mpi_process(mpi_communicator)));
@@ -290,6 +291,9 @@ namespace rodnet
         ghosted_state.reinit(owned_dofs,
                              dofs_read_by(families, own_stencils, owned_dofs),
                              mpi_communicator);
+        ghost_import = std::make_unique<Epetra_Import>(
+          ghosted_state.trilinos_vector().Map(),
+          create_vector().trilinos_vector().Map());
       }
     finalized = true;
   }

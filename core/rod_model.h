@@ -28,6 +28,7 @@
 #include <elements/hinge_kernel.h>
 #include <materials/rod_material.h>
 
+#include <Epetra_Import.h>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -328,8 +329,8 @@ namespace rodnet
 
     /// Builds constraints, sparsity pattern, matrices and vectors. On one
     /// process it owns every DoF; on a communicator of P processes each
-    /// owns a contiguous range of about n_dofs / P DoFs
-    /// (contiguous_share()).
+    /// owns a contiguous range of the DoFs, the ranges cut so that each
+    /// process evaluates about as many stencils (balanced_share()).
     void
     finalize() override;
 
@@ -957,6 +958,10 @@ namespace rodnet
     std::vector<OwnedStencils> own_stencils;
     /// The state with the ghost entries own_stencils read (with_ghosts()).
     mutable VectorType ghosted_state;
+    /// The import of the ghost entries into ghosted_state from a vector
+    /// of the model's partition, made once at finalize() (deal.II's
+    /// assignment makes one per call).
+    std::unique_ptr<Epetra_Import> ghost_import;
     /// On several processes, per DoF, its column in the column map of the
     /// model's sparsity pattern (-1: no row of this process couples it).
     std::vector<int> local_columns;

@@ -51,6 +51,21 @@ namespace rodnet
   contiguous_share(dealii::types::global_dof_index n_dofs,
                    unsigned int                    n_processes,
                    unsigned int                    rank);
+  /**
+   * The DoFs 0 .. @p n_dofs - 1 cut into @p n_processes contiguous ranges
+   * (as contiguous_share()) that evaluate about as many stencils of
+   * @p families each (a process evaluates every stencil that couples one
+   * of its DoFs: stencils_coupling()); the range of process @p rank. The
+   * junctions' quaternions are numbered after all positions and twists,
+   * so the last range, which holds them and evaluates every junction
+   * stencil, is the shortest. Every range has one DoF at least. The
+   * count is exact for ranges longer than a sixteenth of an even share.
+   */
+  dealii::IndexSet
+  balanced_share(const std::vector<std::unique_ptr<ElementFamily>> &families,
+                 dealii::types::global_dof_index                    n_dofs,
+                 unsigned int                                       n_processes,
+                 unsigned int                                       rank);
 } // namespace rodnet
 
 #endif
