@@ -13,9 +13,9 @@ namespace rodnet
 {
   namespace
   {
-    /// The symmetry modes M of a model at a state (symmetry_modes(), every
-    /// entry on this process), with
-    /// K^-1 M and S = M^T K^-1 M from a factorization of its tangent K.
+    /// The symmetry modes M of a model at a state (symmetry_modes(), with
+    /// every entry on this process), K^-1 M and S = M^T K^-1 M from a
+    /// factorization of its tangent K.
     struct SymmetryBorder
     {
       std::vector<VectorType>          modes;
