@@ -241,6 +241,30 @@ namespace rodnet
 
 
   double
+  RodModel::assemble_foreign_tangent(const VectorType &u,
+                                     const double      load_factor,
+                                     VectorType       *residual,
+                                     MatrixType       *tangent,
+                                     const bool        apply_constraints,
+                                     const VectorType *extra_force) const
+  {
+    if (!own_stencils.empty())
+      throw std::invalid_argument(
+        "RodModel::assemble: on several processes the tangent must be "
+        "a matrix of the model's pattern (initialize_matrix())");
+    if (tangent != nullptr)
+      *tangent = 0;
+    return assemble_mapped(u,
+                           load_factor,
+                           SystemBlock::at_offset(layout_->n_dofs(), 0),
+                           residual,
+                           tangent,
+                           apply_constraints,
+                           extra_force);
+  }
+
+
+  double
   RodModel::assemble(const VectorType &u,
                      const double      load_factor,
                      VectorType       *residual,
@@ -253,21 +277,12 @@ namespace rodnet
     const DirectScatter::Numbering numbering   = scatter_numbering();
     const bool                     distributed = !own_stencils.empty();
     if (!DirectScatter::applies(tangent, numbering))
-      {
-        if (distributed)
-          throw std::invalid_argument(
-            "RodModel::assemble: on several processes the tangent must be "
-            "a matrix of the model's pattern (initialize_matrix())");
-        if (tangent != nullptr)
-          *tangent = 0;
-        return assemble_mapped(u,
-                               load_factor,
-                               SystemBlock::at_offset(layout_->n_dofs(), 0),
-                               residual,
-                               tangent,
-                               apply_constraints,
-                               extra_force);
-      }
+      return assemble_foreign_tangent(u,
+                                      load_factor,
+                                      residual,
+                                      tangent,
+                                      apply_constraints,
+                                      extra_force);
 
     const std::vector<bool> *fixed =
       apply_constraints ? &fixed_dof_mask : nullptr;

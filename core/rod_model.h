@@ -804,6 +804,16 @@ namespace rodnet
                    double            &energy,
                    VectorType        *residual) const;
 
+    /// assemble() into a @p tangent of another sparsity pattern than the
+    /// model's, through assemble_mapped(); refused on several processes.
+    double
+    assemble_foreign_tangent(const VectorType &u,
+                             double            load_factor,
+                             VectorType       *residual,
+                             MatrixType       *tangent,
+                             bool              apply_constraints,
+                             const VectorType *extra_force) const;
+
     /// assemble_into() with an @p extra_force (see assemble()), through
     /// AffineConstraints::distribute_local_to_global: the path for a
     /// caller's system and for every layout the direct scatter does not
