@@ -45,6 +45,9 @@ namespace rodnet
      * and 10 segments per beam, 1e4 to 6.7e5 DoFs) within 4%; smaller
      * lattices are overestimated (by 30% at 36 junctions). The exponent
      * is that of planar networks; a network that fills space fills more.
+     * MUMPS, which "auto" takes from 30000 DoFs, stores one triangle, about
+     * half these entries, but with its fronts its peak memory came within
+     * 10% of KLU's (doc/performance.md): the estimate stays KLU's.
      */
     double
     factor_entries() const;

@@ -289,7 +289,7 @@ namespace rodnet
         factorization->factorize();
         factorization->solve(r_lambda, b);
       }
-    catch (const std::exception &)
+    catch (const SingularTangent &)
       {
         // Exactly at a singular point: the secant stands in.
         solved = false;

@@ -83,8 +83,7 @@ namespace rodnet
                              symbolic,
                              &common);
         if (numeric == nullptr)
-          throw std::runtime_error(
-            "the tangent is singular (KLU found no pivot)");
+          throw SingularTangent("the tangent is singular (KLU found no pivot)");
       }
 
       using TangentFactorization::solve;

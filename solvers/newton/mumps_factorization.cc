@@ -31,6 +31,10 @@ namespace rodnet
 
   namespace
   {
+    /// How often a factorization short of work space is retried, each time
+    /// with twice MUMPS's relaxation ICNTL(14).
+    constexpr int max_space_retries = 3;
+
     /// MUMPS's ICNTL(i), INFOG(i) and the like, numbered from 1 as in its
     /// user guide.
     constexpr int
@@ -214,15 +218,22 @@ namespace rodnet
     DMUMPS_STRUC_C &id = mumps->id;
     id.job             = 2;
     dmumps_c(&id);
-    const int status = id.infog[mumps_index(1)];
-    if (status == -8 || status == -9)
+    // MUMPS's estimate of its work space falls short when delayed pivots grow
+    // the fronts (an inextensible ring at its stress-free start needed 4x the
+    // default relaxation): retried with twice the relaxation, up to 8x.
+    for (int retry = 0;
+         retry < max_space_retries &&
+         (id.infog[mumps_index(1)] == -8 || id.infog[mumps_index(1)] == -9);
+         ++retry)
       {
-        // MUMPS's estimate of its work space fell short (delayed pivots
-        // grow the fronts): once more with twice the relaxation.
         id.icntl[mumps_index(14)] *= 2;
-        run(2, "factorization");
+        dmumps_c(&id);
       }
-    else if (status < 0)
+    const int status = id.infog[mumps_index(1)];
+    if (status == -10)
+      throw SingularTangent("MUMPS's factorization failed: " +
+                            mumps_error(status, id.infog[mumps_index(2)]));
+    if (status < 0)
       throw std::runtime_error("MUMPS's factorization failed: " +
                                mumps_error(status, id.infog[mumps_index(2)]));
     factorized = true;

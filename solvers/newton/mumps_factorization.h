@@ -51,7 +51,8 @@ namespace rodnet
    * MUMPS prints nothing. A failure of MUMPS's (INFOG(1) < 0) is a
    * std::runtime_error, thrown on every process, that names MUMPS and says
    * what happened; where its work space was too small (-8, -9), the
-   * factorization is retried once with twice the space (ICNTL(14)).
+   * factorization is retried with twice the space (ICNTL(14)), up to three
+   * times.
    * The constructor, factorize() and the solves are collective: every
    * process calls them.
    */

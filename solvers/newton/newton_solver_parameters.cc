@@ -18,9 +18,9 @@ namespace rodnet
                       "auto",
                       dealii::Patterns::Selection(TangentFactorization::kinds),
                       "Newton's direct solver: SuiteSparse KLU, LAPACK band "
-                      "LU (one process), MUMPS's LDL^T (faster on networks "
-                      "of 1e5 DoFs and more); auto: band if 32 wide at "
-                      "most, else KLU. [-]");
+                      "LU (one process), MUMPS's LDL^T; auto: band if 32 "
+                      "wide at most, else KLU below 30000 DoFs and MUMPS "
+                      "from there (and on several processes). [-]");
     prm.declare_entry("Max iterations",
                       "25",
                       dealii::Patterns::Integer(1),

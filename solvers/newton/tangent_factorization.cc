@@ -173,7 +173,7 @@ namespace rodnet
         int info = 0;
         dgbtrf_(&n, &n, &kl, &ku, band.data(), &ldab, pivots.data(), &info);
         if (info != 0)
-          throw std::runtime_error(
+          throw SingularTangent(
             "the tangent is singular (band LU: zero pivot in row " +
             std::to_string(info) + ")");
       }
@@ -294,6 +294,8 @@ namespace rodnet
                                                  std::move(new_index));
     if (kind == "band")
       return std::make_unique<BandFactorization>(matrix, widths);
+    if (kind == "auto" && m.NumGlobalRows() >= min_auto_mumps_rows)
+      return std::make_unique<MumpsFactorization>(matrix);
     return make_klu_factorization(matrix);
   }
 

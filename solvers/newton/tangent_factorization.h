@@ -6,10 +6,23 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace rodnet
 {
+  /**
+   * Thrown by TangentFactorization::factorize() where the solver finds the
+   * tangent singular (a zero pivot), as distinct from its other failures
+   * (work space, memory): a caller that steps past a singular point catches
+   * this one only.
+   */
+  class SingularTangent : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   /**
    * The direct solver of Newton's linear systems K x = b with the tangent
    * K: factorized once per Newton iteration, then used for one or more
@@ -34,9 +47,11 @@ namespace rodnet
    * max_auto_band_width, as numbered or renumbered by reverse Cuthill-McKee
    * (the multipliers of inextensible rods come after all other DoFs: a
    * rod's KKT tangent is a narrow band once they sit next to their
-   * segments, and KLU's fill on its zero diagonal grows fast), KLU otherwise
-   * (doc/performance.md); on a matrix of several processes "auto" takes
-   * MUMPS. "band" renumbers where that narrows the band.
+   * segments, and KLU's fill on its zero diagonal grows fast); otherwise KLU
+   * below min_auto_mumps_rows rows and MUMPS from there (doc/performance.md:
+   * MUMPS's wall time against KLU's 0.99 at 1.2e4 DoFs, 0.97 at 3.8e4, 0.72
+   * at 3.3e5); on a matrix of several processes "auto" takes MUMPS. "band"
+   * renumbers where that narrows the band.
    */
   class TangentFactorization
   {
@@ -49,6 +64,10 @@ namespace rodnet
     /// The largest lower or upper half-width of the band for which "auto"
     /// takes the band LU.
     static constexpr int max_auto_band_width = 32;
+
+    /// The fewest rows for which "auto" takes MUMPS rather than KLU, where
+    /// the band is wide.
+    static constexpr int min_auto_mumps_rows = 30000;
 
     /**
      * A factorization of the matrices of @p matrix's pattern (its values
@@ -68,8 +87,9 @@ namespace rodnet
     static void
     check_kind(const std::string &kind);
 
-    /// Factorizes the matrix's current values. Throws std::runtime_error
-    /// naming the solver where the matrix is singular.
+    /// Factorizes the matrix's current values. Throws SingularTangent,
+    /// naming the solver, where the matrix is singular, and
+    /// std::runtime_error for the solver's other failures.
     virtual void
     factorize() = 0;
 

@@ -5,13 +5,17 @@
 // for both; its count of negative pivots is the number of negative
 // eigenvalues of an indefinite tangent, as the dense eigenvalues and the
 // stability check's LDL^T (ConstrainedFactorization) count them; its
-// two-column solve is two solves. tests/solvers/tangent_factorization.cc
+// two-column solve is two solves; where its estimate of the work space falls
+// short (the shipped over-curved ring's first tangent), it retries with more
+// and follows the path that the band LU follows.
+// tests/solvers/tangent_factorization.cc
 // has it report a singular tangent and be kept by
 // TangentFactorizationCache.
 
 #include <deal.II/lac/affine_constraints.h>
 
 #include <common/pinned_lattices.h>
+#include <common/run_scene_text.h>
 #include <common/two_column_solve.h>
 #include <solvers/newton/epetra_entries.h>
 #include <solvers/newton/mumps_factorization.h>
@@ -21,7 +25,9 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 using namespace rodnet;
 
@@ -220,4 +226,37 @@ TEST(MumpsFactorization, LoadStepsReachKlusEquilibrium)
   VectorType difference = solutions[1];
   difference.add(-1.0, solutions[0]);
   EXPECT_LT(difference.l2_norm(), 1e-10 * solutions[0].l2_norm());
+}
+
+TEST(MumpsFactorization, RetriesWhereItsWorkSpaceEstimateFallsShort)
+{
+  // The inextensible ring of 400 segments at its stress-free start: MUMPS's
+  // first factorization asks for more work space than its estimate (INFOG(1)
+  // = -9); before the retries the continuation took it for a singular
+  // tangent and stopped at step 0. Its first two points against the band
+  // LU's (auto's choice for a ring), to Newton's tolerance.
+  const auto ring = [](const std::string &solver) {
+    const std::string text =
+      rodnet::testing::shipped_scene("overcurved_ring.prm",
+                                     {{"Max points", "2"}}) +
+      "subsection Solver\n  set Linear solver = " + solver +
+      "\nend\nsubsection Output\n  set Write VTU = false\n"
+      "  set Plot = false\nend\n";
+    return rodnet::testing::run_scene_text(
+      text,
+      (std::filesystem::temp_directory_path() /
+       ("rodnet_mumps_ring_" + solver + std::to_string(::getpid())))
+        .string());
+  };
+  const RunSummary mumps = ring("mumps"), band = ring("band");
+  ASSERT_EQ(mumps.converged_steps, 2u) << mumps.failure;
+  ASSERT_EQ(band.converged_steps, 2u) << band.failure;
+  const std::size_t energy = rodnet::testing::probe_column(band, "energy");
+  for (std::size_t step = 1; step <= 2; ++step)
+    {
+      EXPECT_NEAR(mumps.rows[step][0], band.rows[step][0], 1e-9);
+      EXPECT_NEAR(mumps.rows[step][energy],
+                  band.rows[step][energy],
+                  1e-7 * band.rows[step][energy]);
+    }
 }

@@ -1,7 +1,8 @@
 // The direct solvers of Newton's systems (TangentFactorization): LAPACK's
 // band LU and KLU solve a rod's tangent system to its backward
-// error; "auto" takes the band for one rod and KLU where junction DoFs
-// widen the band; a singular tangent is reported, not solved, by MUMPS
+// error; "auto" takes the band for one rod, KLU where junction DoFs
+// widen the band and MUMPS from TangentFactorization::min_auto_mumps_rows
+// rows on; a singular tangent is reported, not solved, by MUMPS
 // too (tests/solvers/mumps_factorization.cc has its own tests); a kept
 // factorization (TangentFactorizationCache) is reused only for the same
 // matrix, pattern and kind, and solves new values to their backward error;
@@ -91,6 +92,41 @@ namespace
                           JunctionKind::welded,
                           {{0, true}, {1, true}, {2, true}});
     return network;
+  }
+
+  /// The 5-point Laplacian of a square grid of @p side x @p side points:
+  /// a band no renumbering narrows to "auto"'s (its half-width is at
+  /// least @p side).
+  MatrixType
+  grid_laplacian(const unsigned int side)
+  {
+    const unsigned int n = side * side;
+    dealii::IndexSet   all(n);
+    all.add_range(0, n);
+    dealii::TrilinosWrappers::SparsityPattern pattern(all, MPI_COMM_WORLD);
+    const auto neighbours = [side](const unsigned int i) {
+      std::vector<unsigned int> near{i};
+      if (i % side > 0)
+        near.push_back(i - 1);
+      if (i % side + 1 < side)
+        near.push_back(i + 1);
+      if (i >= side)
+        near.push_back(i - side);
+      if (i + side < side * side)
+        near.push_back(i + side);
+      return near;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      for (const unsigned int j : neighbours(i))
+        pattern.add(i, j);
+    pattern.compress();
+    MatrixType laplacian;
+    laplacian.reinit(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const unsigned int j : neighbours(i))
+        laplacian.set(i, j, i == j ? 4.0 : -1.0);
+    laplacian.compress(dealii::VectorOperation::insert);
+    return laplacian;
   }
 } // namespace
 
@@ -184,6 +220,30 @@ TEST(TangentFactorization, AutoTakesTheBandWhereARenumberingNarrowsIt)
             "klu");
   EXPECT_THROW(TangentFactorization::create(rod.tangent, "cholesky"),
                std::invalid_argument);
+}
+
+TEST(TangentFactorization, AutoTakesMumpsForLargeWideBandedTangents)
+{
+  // Grids of just fewer and just as many rows as the threshold.
+  const auto side = static_cast<unsigned int>(
+    std::ceil(std::sqrt(TangentFactorization::min_auto_mumps_rows)));
+  ASSERT_LT((side - 1) * (side - 1),
+            unsigned(TangentFactorization::min_auto_mumps_rows));
+  EXPECT_EQ(
+    TangentFactorization::create(grid_laplacian(side - 1), "auto")->name(),
+    "klu");
+  const MatrixType laplacian = grid_laplacian(side);
+  const auto       solver    = TangentFactorization::create(laplacian, "auto");
+  EXPECT_EQ(solver->name(), "mumps");
+  // It solves: L x = L 1 gives x = 1.
+  VectorType ones(laplacian.locally_owned_range_indices(), MPI_COMM_WORLD);
+  ones           = 1.0;
+  VectorType rhs = ones, x = ones;
+  laplacian.vmult(rhs, ones);
+  solver->factorize();
+  solver->solve(rhs, x);
+  x -= ones;
+  EXPECT_LT(x.linfty_norm(), 1e-12);
 }
 
 TEST(TangentFactorization, AKeptFactorizationServesTheSamePatternOnly)
@@ -413,7 +473,7 @@ TEST(TangentFactorization, ASingularTangentIsReported)
           solver->factorize();
           ADD_FAILURE() << kind << " factorized a singular matrix";
         }
-      catch (const std::runtime_error &e)
+      catch (const SingularTangent &e)
         {
           EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos)
             << e.what();
