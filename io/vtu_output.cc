@@ -11,11 +11,14 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <base/first_problem.h>
 #include <base/mpi_session.h>
 #include <io/vtu_output.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <system_error>
 
@@ -46,6 +49,24 @@ namespace rodnet
       out.close();
       if (!out)
         throw std::runtime_error("VtuOutput: writing \"" + path + "\" failed");
+    }
+
+    /// Writes the file @p path by @p write; throws naming it where it
+    /// cannot be opened or written.
+    void
+    write_file(const std::string                         &path,
+               const std::function<void(std::ostream &)> &write)
+    {
+      std::ofstream out = open_for_writing(path);
+      write(out);
+      close_checked(out, path);
+    }
+
+    /// The name of the file @p path, without its directory.
+    std::string
+    file_name(const std::string &path)
+    {
+      return std::filesystem::path(path).filename().string();
     }
 
     /// Adds the 3-vector field @p name, @p values on @p dofs, to
@@ -125,8 +146,19 @@ namespace rodnet
   std::string
   VtuOutput::vtu_path(const unsigned int step) const
   {
+    const bool pieces =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
     return directory + "/" + basename + "-" +
-           dealii::Utilities::int_to_string(step, 5) + ".vtu";
+           dealii::Utilities::int_to_string(step, 5) +
+           (pieces ? ".pvtu" : ".vtu");
+  }
+
+  std::string
+  VtuOutput::piece_path(const unsigned int step, const unsigned int rank) const
+  {
+    return directory + "/" + basename + "-" +
+           dealii::Utilities::int_to_string(step, 5) + "." +
+           std::to_string(rank) + ".vtu";
   }
 
   std::string
@@ -184,18 +216,19 @@ namespace rodnet
                    const double        time,
                    const OutputFields &fields)
   {
-    if (!writes_outputs())
-      return;
     // The fields as finite element vectors (the model's solution, other
     // vector fields and vertex scalars) or as cell data (segment scalars);
     // kept alive until the patches are built, at the addresses DataOut
     // holds (reserved: no reallocation).
     dealii::DataOut<1, 3> data_out;
     data_out.attach_triangulation(network.triangulation());
-    // The segments, not the links that tie the rods into one mesh.
+    // The segments, not the links that tie the rods into one mesh; on
+    // several processes, this process's piece of them.
+    const Piece piece = this_piece();
     data_out.set_cell_selection(
-      [](const dealii::Triangulation<1, 3>::cell_iterator &cell) {
-        return cell->is_active() && RodNetwork::is_segment(*cell);
+      [piece](const dealii::Triangulation<1, 3>::cell_iterator &cell) {
+        return cell->is_active() && RodNetwork::is_segment(*cell) &&
+               piece.holds(cell->active_cell_index());
       });
     std::vector<dealii::Vector<double>> values;
     values.reserve(1 + fields.vertex_fields.size() +
@@ -210,6 +243,20 @@ namespace rodnet
       false,
       dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed));
     write_patches(data_out, step, time);
+  }
+
+  VtuOutput::Piece
+  VtuOutput::this_piece() const
+  {
+    const unsigned int n_pieces =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const std::uint64_t n_cells = network.triangulation().n_active_cells();
+    return Piece{rank,
+                 n_pieces,
+                 static_cast<unsigned int>(n_cells * rank / n_pieces),
+                 static_cast<unsigned int>(n_cells * (rank + 1) / n_pieces)};
   }
 
   std::unique_ptr<dealii::Mapping<1, 3>>
@@ -275,11 +322,39 @@ namespace rodnet
                            const unsigned int           step,
                            const double                 time)
   {
-    const std::string vtu  = vtu_path(step);
-    std::ofstream     file = open_for_writing(vtu);
-    data_out.write_vtu(file);
-    close_checked(file, vtu);
-    records[step] = {time, std::filesystem::path(vtu).filename().string()};
+    const Piece piece = this_piece();
+    if (piece.n_pieces == 1)
+      {
+        write_file(vtu_path(step),
+                   [&](std::ostream &out) { data_out.write_vtu(out); });
+        records[step] = {time, file_name(vtu_path(step))};
+        write_pvd_record();
+        return;
+      }
+    // Each process writes its piece; one that cannot fails the step on all
+    // (first_problem()), so that none waits in a later collective call.
+    std::string problem;
+    try
+      {
+        write_file(piece_path(step, piece.rank),
+                   [&](std::ostream &out) { data_out.write_vtu(out); });
+      }
+    catch (const std::exception &e)
+      {
+        problem = e.what();
+      }
+    problem = first_problem(problem, MPI_COMM_WORLD);
+    if (!problem.empty())
+      throw std::runtime_error(problem);
+    records[step] = {time, file_name(vtu_path(step))};
+    if (!writes_outputs())
+      return;
+    std::vector<std::string> pieces;
+    for (unsigned int rank = 0; rank < piece.n_pieces; ++rank)
+      pieces.push_back(file_name(piece_path(step, rank)));
+    write_file(vtu_path(step), [&](std::ostream &out) {
+      data_out.write_pvtu_record(out, pieces);
+    });
     write_pvd_record();
   }
 

@@ -33,6 +33,12 @@ namespace rodnet
    * it), other fields per vertex or segment on a DoFHandler of this writer
    * made for the first field that needs it.
    *
+   * On P > 1 MPI processes each process writes a piece of every step,
+   * `<basename>-NNNNN.<rank>.vtu`, the segments of a P-th of the cells
+   * (every process holds the whole network and state), and rank 0 writes
+   * the step's `<basename>-NNNNN.pvtu`, which lists the pieces, and the .pvd
+   * record of the .pvtu files. ParaView opens either collection alike.
+   *
    * deal.II's VTU writer stores every value as a 32-bit float, which is
    * enough to look at but not to restart from. The network must outlive
    * this object.
@@ -53,7 +59,8 @@ namespace rodnet
      * Writes @p fields of step @p step at load factor (or time) @p time
      * and rewrites the .pvd record, both before returning, so that a later
      * failure loses no converged step. Writing the same step again replaces
-     * its entry. In a parallel run only rank 0 writes. Throws
+     * its entry. Collective on several processes: every process writes its
+     * piece (see above) and rank 0 the .pvtu and .pvd files. Throws
      * std::runtime_error naming the file if a file cannot be written, and
      * std::invalid_argument if a field does not fit the network.
      */
@@ -71,15 +78,41 @@ namespace rodnet
       write(step, time, model.output_fields(u));
     }
 
-    /// Path of the .vtu file of step @p step.
+    /// Path of the file of step @p step that the .pvd lists: its .vtu on
+    /// one process, its .pvtu on several.
     std::string
     vtu_path(unsigned int step) const;
+
+    /// Path of the piece of step @p step that process @p rank writes on
+    /// several processes.
+    std::string
+    piece_path(unsigned int step, unsigned int rank) const;
 
     /// Path of the .pvd collection.
     std::string
     pvd_path() const;
 
   private:
+    /// The cells a process writes: active cells first .. end - 1 of the
+    /// triangulation, the rank-th of n_pieces even ranges.
+    struct Piece
+    {
+      unsigned int rank;
+      unsigned int n_pieces;
+      unsigned int first;
+      unsigned int end;
+
+      bool
+      holds(const unsigned int cell) const
+      {
+        return cell >= first && cell < end;
+      }
+    };
+
+    /// This process's piece.
+    Piece
+    this_piece() const;
+
     /// A DoFHandler on the network's triangulation that draws values per
     /// vertex (FE_Q 1) or per segment (FE_DGQ 0) with 1 or 3 components,
     /// for fields that are not on a model's own DoFHandler.
@@ -127,8 +160,9 @@ namespace rodnet
                std::vector<dealii::Vector<double>> &values,
                const OutputFields                  &fields);
 
-    /// Writes the patches of @p data_out as the .vtu file of @p step at
-    /// @p time and adds it to the .pvd record.
+    /// Writes the patches of @p data_out as the .vtu file (or this
+    /// process's piece and the .pvtu) of @p step at @p time and adds it to
+    /// the .pvd record.
     void
     write_patches(const dealii::DataOut<1, 3> &data_out,
                   unsigned int                 step,

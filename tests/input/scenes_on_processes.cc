@@ -1,6 +1,8 @@
 // rodnet-run under mpirun: example scenes solved by Newton's load steps, run
 // on 2 and 3 processes (3 gives uneven shares), write the probes of the same
-// scene run on one process.
+// scene run on one process, and write each step's VTU as pieces (one per
+// process, listed by a .pvtu) that hold the cells and points of the one
+// process's .vtu between them.
 // The reference is the run on one process, an independent code path for
 // the assembly (no ghost entries, no distributed scatter), the direct
 // solver's distributed input (MUMPS against KLU or band LU) and the checks
@@ -15,6 +17,8 @@
 #include <gtest/gtest.h>
 #include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -73,6 +77,78 @@ namespace
       "/rodnet-run " + arguments);
   }
 
+  /// The values of attribute @p name in the XML text @p text, in order.
+  std::vector<std::string>
+  attributes(const std::string &text, const std::string &name)
+  {
+    std::vector<std::string> values;
+    const std::string        key = " " + name + "=\"";
+    for (std::size_t at = text.find(key); at != std::string::npos;
+         at             = text.find(key, at + 1))
+      {
+                    const std::size_t start = at + key.size();
+                    values.push_back(text.substr(start, text.find('"', start) - start));
+      }
+    return values;
+  }
+
+  /// The cells and points of the step file @p file in @p directory: of
+  /// the .vtu, or summed over the pieces a .pvtu lists (which must exist
+  /// and hold some cells each).
+  std::pair<unsigned int, unsigned int>
+  cells_and_points(const std::string &directory, const std::string &file)
+  {
+    std::vector<std::string> pieces{file};
+    if (file.size() > 5 && file.substr(file.size() - 5) == ".pvtu")
+      pieces = attributes(rodnet::testing::read_file(directory + "/" + file),
+                          "Source");
+    std::pair<unsigned int, unsigned int> sum{0, 0};
+    for (const std::string &piece : pieces)
+      {
+        EXPECT_TRUE(fs::exists(directory + "/" + piece)) << piece;
+        const std::string text =
+          rodnet::testing::read_file(directory + "/" + piece);
+        for (const std::string &cells : attributes(text, "NumberOfCells"))
+          {
+            EXPECT_GT(std::stoul(cells), 0u) << piece;
+            sum.first += std::stoul(cells);
+          }
+        for (const std::string &points : attributes(text, "NumberOfPoints"))
+          sum.second += std::stoul(points);
+      }
+    return sum;
+  }
+
+  /// The VTU output of @p many (on @p processes) against that of @p one:
+  /// the same steps at the same times, each step a .pvtu of as many pieces
+  /// as processes, which hold the cells and points of the one's .vtu.
+  void
+  expect_the_same_vtu_in_pieces(const std::string &one,
+                                const std::string &many,
+                                const unsigned int processes)
+  {
+    const std::string serial_pvd =
+      rodnet::testing::read_file(one + "/solution.pvd");
+    const std::string pvd = rodnet::testing::read_file(many + "/solution.pvd");
+    EXPECT_EQ(attributes(pvd, "timestep"), attributes(serial_pvd, "timestep"));
+    const std::vector<std::string> serial_files =
+                                     attributes(serial_pvd, "file"),
+                                   files = attributes(pvd, "file");
+    ASSERT_EQ(files.size(), serial_files.size());
+    ASSERT_FALSE(files.empty());
+    for (std::size_t k = 0; k < files.size(); ++k)
+      {
+        ASSERT_EQ(fs::path(files[k]).extension(), ".pvtu");
+        EXPECT_EQ(attributes(rodnet::testing::read_file(many + "/" + files[k]),
+                             "Source")
+                    .size(),
+                  processes);
+        EXPECT_EQ(cells_and_points(many, files[k]),
+                  cells_and_points(one, serial_files[k]))
+          << files[k];
+      }
+  }
+
   class SceneOnProcesses
       : public ::testing::TestWithParam<std::tuple<std::string, unsigned int>>
   {
@@ -120,8 +196,10 @@ namespace
                 << reference.names[c] << " at row " << r;
           }
       }
-    EXPECT_TRUE(fs::exists(many + "/solution.pvd") ||
-                !fs::exists(one + "/solution.pvd"));
+    ASSERT_EQ(fs::exists(many + "/solution.pvd"),
+              fs::exists(one + "/solution.pvd"));
+    if (fs::exists(one + "/solution.pvd"))
+      expect_the_same_vtu_in_pieces(one, many, processes);
   }
 
   INSTANTIATE_TEST_SUITE_P(
