@@ -308,14 +308,18 @@ namespace rodnet
     CsrArrays               csr;
     double                 *values = nullptr;
     m.ExtractCrsDataPointers(csr.offsets, csr.columns, values);
-    csr.n_rows             = m.NumMyRows();
-    const bool one_process = dealii::Utilities::MPI::n_mpi_processes(
-                               matrix.get_mpi_communicator()) == 1;
-    const bool          readable = one_process && csr.offsets != nullptr;
+    csr.n_rows = m.NumMyRows();
+    // Each process compares its own rows; all renew the factorization
+    // together (MUMPS's analysis is collective) if any of them changed.
+    const bool          readable = csr.offsets != nullptr;
     const std::uint64_t key =
       readable ? ScatterPositions::fingerprint(csr, nullptr) : 0;
-    if (factorization == nullptr || !readable || &m != this->matrix ||
-        key != pattern || kind != this->kind)
+    const bool renew =
+      dealii::Utilities::MPI::logical_or(factorization == nullptr ||
+                                           !readable || &m != this->matrix ||
+                                           key != pattern || kind != this->kind,
+                                         matrix.get_mpi_communicator());
+    if (renew)
       {
         factorization = TangentFactorization::create(matrix, kind);
         this->matrix  = &m;

@@ -128,8 +128,9 @@ namespace rodnet
    * and the band's width and places are found once for as long as the
    * tangent is the same matrix with the same pattern. The pattern is
    * compared by a fingerprint of its compressed rows at each get(); on
-   * several processes, where there are none to read, every get() makes a
-   * new factorization.
+   * several processes each compares its own rows, and all make a new
+   * factorization together where one of them changed (get() is collective
+   * there).
    */
   class TangentFactorizationCache
   {

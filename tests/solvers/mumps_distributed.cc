@@ -5,7 +5,10 @@
 // solves it as the one-process MUMPS does, counts the negative pivots that
 // the one-process MUMPS and the stability check's LDL^T count, on every
 // process, solves two columns as two solves, and reports a singular
-// tangent by the same exception on every process. On several processes
+// tangent by the same exception on every process. A kept factorization
+// (TangentFactorizationCache) serves the same matrix and pattern on every
+// process, with new values solved as a new factorization solves them, and
+// is renewed on all processes together. On several processes
 // "auto" takes MUMPS and "klu" and "band" are refused. Run on 1, 2 and 3
 // processes (tests/CMakeLists.txt, RODNET_MPI_TESTS).
 
@@ -169,11 +172,35 @@ TEST(MumpsDistributed, ASingularTangentThrowsOnEveryProcess)
       all.factorize();
       ADD_FAILURE() << "MUMPS factorized a singular matrix";
     }
-  catch (const std::runtime_error &e)
+  catch (const SingularTangent &e)
     {
       EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos)
         << e.what();
     }
+}
+
+TEST(MumpsDistributed, AKeptFactorizationServesTheSameMatrixOnEveryProcess)
+{
+  SplitLattice              lattice(0.0), shaken(0.3);
+  TangentFactorizationCache cache;
+  const auto                first = cache.get(lattice.distributed, "mumps");
+  EXPECT_EQ(cache.get(lattice.distributed, "mumps"), first);
+  // New values, the same pattern: kept, and it solves them as a new
+  // factorization does (to their rounding).
+  lattice.distributed.copy_from(shaken.distributed);
+  const auto kept = cache.get(lattice.distributed, "mumps");
+  EXPECT_EQ(kept, first);
+  const VectorType b = lattice.split(wave(*lattice.model, 0.37));
+  VectorType       x = b, fresh_x = b;
+  kept->factorize();
+  kept->solve(b, x);
+  MumpsFactorization fresh(shaken.distributed);
+  fresh.factorize();
+  fresh.solve(b, fresh_x);
+  x -= fresh_x;
+  EXPECT_LT(x.l2_norm(), 1e-10 * fresh_x.l2_norm());
+  // Another matrix: a new factorization on every process.
+  EXPECT_NE(cache.get(shaken.distributed, "mumps"), first);
 }
 
 TEST(MumpsDistributed, AutoTakesMumpsOnSeveralProcesses)
