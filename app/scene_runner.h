@@ -74,9 +74,9 @@ namespace rodnet
   /**
    * Throws std::invalid_argument, naming the entry, where @p scene asks for
    * what runs on one process only and MPI_COMM_WORLD has several: time
-   * stepping, dynamic relaxation, continuation and mode shapes
-   * (doc/architecture.md, "Several processes"). Newton's load steps run
-   * on several processes.
+   * stepping, dynamic relaxation and mode shapes (doc/architecture.md,
+   * "Several processes"). Newton's load steps and continuation run on
+   * several processes.
    */
   void
   require_runs_on_these_processes(const Scene &scene);

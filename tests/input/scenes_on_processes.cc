@@ -2,7 +2,9 @@
 // on 2 and 3 processes (3 gives uneven shares), write the probes of the same
 // scene run on one process, and write each step's VTU as pieces (one per
 // process, listed by a .pvtu) that hold the cells and points of the one
-// process's .vtu between them.
+// process's .vtu between them. Continuation scenes land on their output load
+// factors with the probes of one process there (their paths may take other
+// steps between: the step control counts Newton iterations).
 // The reference is the run on one process, an independent code path for
 // the assembly (no ghost entries, no distributed scatter), the direct
 // solver's distributed input (MUMPS against KLU or band LU) and the checks
@@ -213,6 +215,86 @@ namespace
                        ::testing::Values(2u, 3u)),
     [](const auto &info) {
       return std::get<0>(info.param) + "_on_" +
+             std::to_string(std::get<1>(info.param));
+    });
+  /// A continuation scene and the load factors it lands on (its "Output
+  /// load factors").
+  struct ContinuationScene
+  {
+    std::string         name;
+    std::vector<double> output_load_factors;
+  };
+
+  /// The rows of @p table at the load factors @p landed, in their order.
+  std::vector<std::size_t>
+  landed_rows(const rodnet::CsvTable &table, const std::vector<double> &landed)
+  {
+    std::vector<std::size_t> rows;
+    for (std::size_t r = 0; r < table.rows.size(); ++r)
+      for (const double load_factor : landed)
+        if (std::abs(table.number(r, 1) - load_factor) < 1e-14)
+          rows.push_back(r);
+    return rows;
+  }
+
+  class ContinuationOnProcesses : public ::testing::TestWithParam<
+                                    std::tuple<ContinuationScene, unsigned int>>
+  {
+  };
+
+  TEST_P(ContinuationOnProcesses, LandsOnTheOutputLoadFactorsAsOneProcess)
+  {
+    if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
+      GTEST_SKIP() << "no mpirun";
+    const auto &[scene, processes] = GetParam();
+    const std::string path         = tight_scene(scene.name);
+    const std::string one          = "out_" + scene.name + "_on_1";
+    const std::string many =
+      "out_" + scene.name + "_on_" + std::to_string(processes);
+    const auto serial = run_on(path, 1, one);
+    ASSERT_EQ(serial.exit_code, 0) << serial.output;
+    const auto distributed = run_on(path, processes, many);
+    ASSERT_EQ(distributed.exit_code, 0) << distributed.output;
+    const rodnet::CsvTable reference =
+      rodnet::read_csv_table(one + "/probes.csv");
+    const rodnet::CsvTable probes =
+      rodnet::read_csv_table(many + "/probes.csv");
+    ASSERT_EQ(probes.names, reference.names);
+    const std::vector<std::size_t> expected_rows =
+      landed_rows(reference, scene.output_load_factors);
+    const std::vector<std::size_t> rows =
+      landed_rows(probes, scene.output_load_factors);
+    ASSERT_EQ(rows.size(), expected_rows.size());
+    ASSERT_GE(rows.size(), scene.output_load_factors.size());
+    for (std::size_t c = 2; c < reference.names.size(); ++c)
+      {
+        // The arc length sums the chords of the path's own steps.
+        if (reference.names[c] == "arclength")
+          continue;
+        // An eigenvalue is converged to 1e-9 of itself
+        // (lowest_eigenpairs()); the states to Newton's 1e-12.
+        const double bound = reference.names[c] == "lowest" ? 1e-9 : 1e-10;
+        const double scale = std::max(column_scale(reference, c), 1e-300);
+        for (std::size_t k = 0; k < rows.size(); ++k)
+          EXPECT_NEAR(probes.number(rows[k], c),
+                      reference.number(expected_rows[k], c),
+                      bound * scale)
+            << reference.names[c] << " at load factor "
+            << reference.number(expected_rows[k], 1);
+      }
+  }
+
+  INSTANTIATE_TEST_SUITE_P(
+    ExampleScenes,
+    ContinuationOnProcesses,
+    ::testing::Combine(
+      ::testing::Values(ContinuationScene{"eigenstrain_column", {0.2, 0.5}},
+                        ContinuationScene{"rollup_lateral", {0.125, 0.2}},
+                        ContinuationScene{"fig8_pinned_lattice_a",
+                                          {0.5, 0.75}}),
+      ::testing::Values(2u, 3u)),
+    [](const auto &info) {
+      return std::get<0>(info.param).name + "_on_" +
              std::to_string(std::get<1>(info.param));
     });
 } // namespace
