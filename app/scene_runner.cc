@@ -208,14 +208,13 @@ namespace rodnet
         "Solver/Method = time stepping" :
       scene.method == SolutionMethod::dynamic_relaxation ?
         "Solver/Method = dynamic relaxation" :
-      scene.mode_shapes > 0 ? "Output/Mode shapes" :
-                              "";
+        "";
     if (!what.empty())
       throw std::invalid_argument(
         what + " runs on one process only, and this run has " +
         std::to_string(processes) +
-        " MPI processes: run it without mpirun (Newton's load steps and "
-        "continuation run on several processes)");
+        " MPI processes: run it without mpirun (Newton's load steps, "
+        "continuation and mode shapes run on several processes)");
   }
 
   RunSummary

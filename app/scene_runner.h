@@ -74,8 +74,8 @@ namespace rodnet
   /**
    * Throws std::invalid_argument, naming the entry, where @p scene asks for
    * what runs on one process only and MPI_COMM_WORLD has several: time
-   * stepping, dynamic relaxation and mode shapes (doc/architecture.md,
-   * "Several processes"). Newton's load steps and continuation run on
+   * stepping and dynamic relaxation (doc/architecture.md, "Several
+   * processes"). Newton's load steps, continuation and mode shapes run on
    * several processes.
    */
   void

@@ -1,3 +1,4 @@
+#include <base/mpi_session.h>
 #include <io/mode_shapes.h>
 #include <io/vtu_output.h>
 #include <solvers/stability/lowest_eigenpairs.h>
@@ -38,7 +39,8 @@ namespace rodnet
                                                model.constraints(),
                                                count,
                                                model.multiplier_dofs());
-    write_eigenvalues(pairs, directory + "/modes.csv");
+    if (writes_outputs())
+      write_eigenvalues(pairs, directory + "/modes.csv");
     if (!write_vtu)
       return {"modes.csv"};
     VtuOutput vtu(model.network(), directory, "modes");

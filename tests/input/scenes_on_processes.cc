@@ -4,7 +4,9 @@
 // process, listed by a .pvtu) that hold the cells and points of the one
 // process's .vtu between them. Continuation scenes land on their output load
 // factors with the probes of one process there (their paths may take other
-// steps between: the step control counts Newton iterations).
+// steps between: the step control counts Newton iterations). The mode shapes
+// of the gridshell's last state have the eigenvalues of one process, and
+// their VTU files come in pieces too.
 // The reference is the run on one process, an independent code path for
 // the assembly (no ghost entries, no distributed scatter), the direct
 // solver's distributed input (MUMPS against KLU or band LU) and the checks
@@ -44,13 +46,14 @@ namespace
   /// probe (the gridshell on 3 processes), where Newton stops inside its
   /// tolerance. Written to @p name_tight.prm; returns its path.
   std::string
-  tight_scene(const std::string &name)
+  tight_scene(const std::string &name, const std::string &more = "")
   {
     const std::string path = name + "_tight.prm";
     std::ofstream     scene(path);
     scene << rodnet::testing::read_file(std::string(RODNET_SOURCE_DIR) +
                                         "/scenes/" + name + ".prm")
-          << "\nsubsection Solver\n  set Relative tolerance = 1e-12\nend\n";
+          << "\nsubsection Solver\n  set Relative tolerance = 1e-12\nend\n"
+          << more;
     return path;
   }
 
@@ -127,11 +130,12 @@ namespace
   void
   expect_the_same_vtu_in_pieces(const std::string &one,
                                 const std::string &many,
-                                const unsigned int processes)
+                                const unsigned int processes,
+                                const std::string &collection = "solution.pvd")
   {
     const std::string serial_pvd =
-      rodnet::testing::read_file(one + "/solution.pvd");
-    const std::string pvd = rodnet::testing::read_file(many + "/solution.pvd");
+      rodnet::testing::read_file(one + "/" + collection);
+    const std::string pvd = rodnet::testing::read_file(many + "/" + collection);
     EXPECT_EQ(attributes(pvd, "timestep"), attributes(serial_pvd, "timestep"));
     const std::vector<std::string> serial_files =
                                      attributes(serial_pvd, "file"),
@@ -297,4 +301,43 @@ namespace
       return std::get<0>(info.param).name + "_on_" +
              std::to_string(std::get<1>(info.param));
     });
+
+  class ModeShapesOnProcesses : public ::testing::TestWithParam<unsigned int>
+  {
+  };
+
+  TEST_P(ModeShapesOnProcesses, HaveTheEigenvaluesOfOneProcess)
+  {
+    if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
+      GTEST_SKIP() << "no mpirun";
+    const unsigned int processes = GetParam();
+    const std::string  path =
+      tight_scene("gridshell",
+                  "subsection Output\n  set Mode shapes = 3\nend\n");
+    const std::string one    = "out_modes_on_1";
+    const std::string many   = "out_modes_on_" + std::to_string(processes);
+    const auto        serial = run_on(path, 1, one);
+    ASSERT_EQ(serial.exit_code, 0) << serial.output;
+    const auto distributed = run_on(path, processes, many);
+    ASSERT_EQ(distributed.exit_code, 0) << distributed.output;
+    const rodnet::CsvTable reference =
+      rodnet::read_csv_table(one + "/modes.csv");
+    const rodnet::CsvTable modes = rodnet::read_csv_table(many + "/modes.csv");
+    ASSERT_EQ(modes.rows.size(), 3u);
+    ASSERT_EQ(reference.rows.size(), 3u);
+    // The eigen-solver converges each to 1e-9 of itself (lowest_eigenpairs()).
+    for (std::size_t k = 0; k < 3; ++k)
+      EXPECT_NEAR(modes.number(k, 1),
+                  reference.number(k, 1),
+                  1e-9 * std::abs(reference.number(k, 1)))
+        << "mode " << k + 1;
+    expect_the_same_vtu_in_pieces(one, many, processes, "modes.pvd");
+  }
+
+  INSTANTIATE_TEST_SUITE_P(Gridshell,
+                           ModeShapesOnProcesses,
+                           ::testing::Values(2u, 3u),
+                           [](const auto &info) {
+                             return "on_" + std::to_string(info.param);
+                           });
 } // namespace
