@@ -82,6 +82,30 @@ namespace
       "/rodnet-run " + arguments);
   }
 
+  /// Runs @p scene on one process into @p one and on @p processes into
+  /// @p many; fails naming the run that did not end with exit code 0. The
+  /// distributed run's output goes to @p output.
+  ::testing::AssertionResult
+  ran_on_one_and_on(const std::string &scene,
+                    const unsigned int processes,
+                    const std::string &one,
+                    const std::string &many,
+                    std::string       *output = nullptr)
+  {
+    for (const unsigned int n : {1u, processes})
+      {
+        const auto run = run_on(scene, n, n == 1 ? one : many);
+        if (run.exit_code != 0)
+          return ::testing::AssertionFailure()
+                 << scene << " on " << n << " process(es): exit code "
+                 << run.exit_code << "\n"
+                 << run.output;
+        if (output != nullptr)
+          *output = run.output;
+      }
+    return ::testing::AssertionSuccess();
+  }
+
   /// The values of attribute @p name in the XML text @p text, in order.
   std::vector<std::string>
   attributes(const std::string &text, const std::string &name)
@@ -168,16 +192,13 @@ namespace
     const std::string scene       = tight_scene(name);
     const std::string one         = "out_" + name + "_on_1";
     const std::string many = "out_" + name + "_on_" + std::to_string(processes);
-    const auto        serial = run_on(scene, 1, one);
-    ASSERT_EQ(serial.exit_code, 0) << serial.output;
-    const auto distributed = run_on(scene, processes, many);
-    ASSERT_EQ(distributed.exit_code, 0) << distributed.output;
+    std::string       output;
+    ASSERT_TRUE(ran_on_one_and_on(scene, processes, one, many, &output));
     // One copy of the run's messages, from rank 0.
     const std::string first_step = "outputs in ";
-    const auto        at         = distributed.output.find(first_step);
-    ASSERT_NE(at, std::string::npos) << distributed.output;
-    EXPECT_EQ(distributed.output.find(first_step, at + 1), std::string::npos)
-      << distributed.output;
+    const auto        at         = output.find(first_step);
+    ASSERT_NE(at, std::string::npos) << output;
+    EXPECT_EQ(output.find(first_step, at + 1), std::string::npos) << output;
 
     const rodnet::CsvTable reference =
       rodnet::read_csv_table(one + "/probes.csv");
@@ -255,10 +276,7 @@ namespace
     const std::string one          = "out_" + scene.name + "_on_1";
     const std::string many =
       "out_" + scene.name + "_on_" + std::to_string(processes);
-    const auto serial = run_on(path, 1, one);
-    ASSERT_EQ(serial.exit_code, 0) << serial.output;
-    const auto distributed = run_on(path, processes, many);
-    ASSERT_EQ(distributed.exit_code, 0) << distributed.output;
+    ASSERT_TRUE(ran_on_one_and_on(path, processes, one, many));
     const rodnet::CsvTable reference =
       rodnet::read_csv_table(one + "/probes.csv");
     const rodnet::CsvTable probes =
@@ -314,12 +332,9 @@ namespace
     const std::string  path =
       tight_scene("gridshell",
                   "subsection Output\n  set Mode shapes = 3\nend\n");
-    const std::string one    = "out_modes_on_1";
-    const std::string many   = "out_modes_on_" + std::to_string(processes);
-    const auto        serial = run_on(path, 1, one);
-    ASSERT_EQ(serial.exit_code, 0) << serial.output;
-    const auto distributed = run_on(path, processes, many);
-    ASSERT_EQ(distributed.exit_code, 0) << distributed.output;
+    const std::string one  = "out_modes_on_1";
+    const std::string many = "out_modes_on_" + std::to_string(processes);
+    ASSERT_TRUE(ran_on_one_and_on(path, processes, one, many));
     const rodnet::CsvTable reference =
       rodnet::read_csv_table(one + "/modes.csv");
     const rodnet::CsvTable modes = rodnet::read_csv_table(many + "/modes.csv");
