@@ -348,6 +348,30 @@ namespace rodnet
   }
 
 
+  void
+  RodModel::add_unseen_diagonal(const std::vector<double> &diagonal,
+                                const SystemBlock         &block,
+                                MatrixType                &tangent) const
+  {
+    // Constrained DoFs that no stencil sees (junction copies, the twist of
+    // a one-segment rod) get the mean diagonal of the free DoFs, so that
+    // their Newton increment is zero at the scale of the others.
+    double       sum    = 0;
+    unsigned int n_free = 0;
+    for (global_dof_index i = 0; i < diagonal.size(); ++i)
+      if (!fixed_dof_mask[i])
+        {
+          sum += std::abs(diagonal[i]);
+          ++n_free;
+        }
+    for (const global_dof_index i : unseen_dofs)
+      if (fixed_dof_mask[i])
+        tangent.add(block.index(i),
+                    block.index(i),
+                    n_free > 0 ? sum / n_free : 1.0);
+  }
+
+
   double
   RodModel::assemble_mapped(const VectorType  &u,
                             const double       load_factor,
@@ -385,25 +409,8 @@ namespace rodnet
           constraints.distribute_local_to_global(copy.vector, rows, *residual);
       });
 
-    // Constrained DoFs that no stencil sees (junction copies, the twist of
-    // a one-segment rod) get the mean diagonal of the free DoFs, so that
-    // their Newton increment is zero at the scale of the others.
     if (tangent != nullptr && apply_constraints)
-      {
-        double       sum    = 0;
-        unsigned int n_free = 0;
-        for (global_dof_index i = 0; i < diagonal.size(); ++i)
-          if (!fixed_dof_mask[i])
-            {
-              sum += std::abs(diagonal[i]);
-              ++n_free;
-            }
-        for (const global_dof_index i : unseen_dofs)
-          if (fixed_dof_mask[i])
-            tangent->add(block.index(i),
-                         block.index(i),
-                         n_free > 0 ? sum / n_free : 1.0);
-      }
+      add_unseen_diagonal(diagonal, block, *tangent);
     add_dead_loads(u, load_factor, extra_force, &block, energy, residual);
     if (residual != nullptr)
       constraints.set_zero(*residual);

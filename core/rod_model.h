@@ -814,6 +814,13 @@ namespace rodnet
                              bool              apply_constraints,
                              const VectorType *extra_force) const;
 
+    /// Adds to @p tangent, at @p block's rows, the mean magnitude of the
+    /// free DoFs' @p diagonal on each constrained DoF that no stencil sees.
+    void
+    add_unseen_diagonal(const std::vector<double> &diagonal,
+                        const SystemBlock         &block,
+                        MatrixType                &tangent) const;
+
     /// assemble_into() with an @p extra_force (see assemble()), through
     /// AffineConstraints::distribute_local_to_global: the path for a
     /// caller's system and for every layout the direct scatter does not
