@@ -1,0 +1,75 @@
+// EveryEntry: a replica of every entry of a Trilinos vector on each
+// process, gathered in one collective where every process owns one
+// contiguous range (a model's share), and through ghost entries otherwise
+// (a vector with ghosts, ownership in strides). The reference is the value
+// each entry was given, known to every process. Runs on 1, 2 and 3
+// processes (tests/CMakeLists.txt, RODNET_MPI_TESTS).
+#include <deal.II/base/mpi.h>
+
+#include <core/every_entry.h>
+#include <core/stencil_ownership.h>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace rodnet;
+  using dealii::TrilinosWrappers::MPI::Vector;
+
+  constexpr dealii::types::global_dof_index n_entries = 17;
+
+  /// The value given to entry @p i.
+  double
+  value(const dealii::types::global_dof_index i)
+  {
+    return 1.0 + 0.25 * double(i * i);
+  }
+
+  /// A vector of @p owned entries (ghosts @p ghosts) holding value().
+  Vector
+  filled(const dealii::IndexSet &owned, const dealii::IndexSet &ghosts)
+  {
+    Vector plain(owned, MPI_COMM_WORLD);
+    for (const auto i : owned)
+      plain[i] = value(i);
+    plain.compress(dealii::VectorOperation::insert);
+    if (ghosts.n_elements() == 0)
+      return plain;
+    Vector with_ghosts(owned, ghosts, MPI_COMM_WORLD);
+    with_ghosts = plain;
+    return with_ghosts;
+  }
+
+  /// Every entry of the replica of @p vector is value().
+  void
+  expect_every_value(const Vector &vector, const char *what)
+  {
+    const EveryEntry every(vector);
+    ASSERT_EQ((*every).size(), n_entries) << what;
+    for (dealii::types::global_dof_index i = 0; i < n_entries; ++i)
+      EXPECT_EQ((*every)[i], value(i)) << what << ", entry " << i;
+  }
+
+  TEST(EveryEntry, GathersEveryEntryOfAnyPartition)
+  {
+    const unsigned int n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const dealii::IndexSet share =
+      contiguous_share(n_entries, n_processes, rank);
+    const dealii::IndexSet none(n_entries);
+    expect_every_value(filled(share, none), "contiguous shares");
+
+    dealii::IndexSet ghosts(n_entries);
+    ghosts.add_index(0);
+    ghosts.add_index(n_entries - 1);
+    expect_every_value(filled(share, ghosts), "shares with ghosts");
+
+    dealii::IndexSet strided(n_entries);
+    for (dealii::types::global_dof_index i = rank; i < n_entries;
+         i += n_processes)
+      strided.add_index(i);
+    expect_every_value(filled(strided, none), "ownership in strides");
+  }
+} // namespace
