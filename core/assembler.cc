@@ -65,18 +65,6 @@ namespace rodnet
           1);
     }
 
-    /// The sum of @p energies in stencil order, of the stencils whose
-    /// energy this process counts (all where @p subset is null).
-    double
-    sum_in_order(const std::vector<double> &energies,
-                 const OwnedStencils       *subset)
-    {
-      double sum = 0;
-      for (std::size_t k = 0; k < energies.size(); ++k)
-        if (subset == nullptr || subset->counts_energy[k])
-          sum += energies[k];
-      return sum;
-    }
   } // namespace
 
   void
@@ -92,7 +80,7 @@ namespace rodnet
     // rethrown after the loop so that the caller can cut the step.
     std::exception_ptr failure;
     std::mutex         failure_mutex;
-    // On several processes the stencils that couple this process's DoFs.
+    // On several processes the stencils this process anchors.
     const ElementFamily &family = *families[f];
     const OwnedStencils *subset =
       own_stencils.empty() ? nullptr : &own_stencils[f];
@@ -138,7 +126,8 @@ namespace rodnet
                               LocalContribution());
     if (failure)
       std::rethrow_exception(failure);
-    energy += sum_in_order(energies, subset);
+    for (const double e : energies)
+      energy += e;
   }
 
 
@@ -308,6 +297,9 @@ namespace rodnet
     };
     double energy =
       distributed ? energy_over_processes(assemble_here) : assemble_here();
+    // Every process has assembled without failure: the rows of other
+    // processes' DoFs go to them.
+    scatter.add_foreign_rows();
     add_dead_loads(u, load_factor, extra_force, nullptr, energy, residual);
     if (residual != nullptr && apply_constraints)
       homogeneous_constraints.set_zero(*residual);

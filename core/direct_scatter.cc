@@ -52,6 +52,10 @@ namespace rodnet
       , fixed(fixed)
       , positions(std::move(positions))
       , numbering(numbering)
+      , foreign(numbering.share_starts == nullptr ?
+                  nullptr :
+                  std::make_unique<ForeignRows>(*numbering.share_starts,
+                                                numbering.communicator))
   {
   }
 
@@ -83,6 +87,30 @@ namespace rodnet
         std::fill(values + begin, values + end, 0.0);
       },
       std::size_t(1) << 16);
+  }
+
+
+  void
+  DirectScatter::add_foreign_rows() const
+  {
+    if (foreign == nullptr)
+      return;
+    foreign->exchange([this](const ForeignRows::Row &row) {
+      if (values != nullptr)
+        values[row.dof - numbering.first] += row.vector_value;
+      if (csr.values == nullptr || row.n == 0)
+        return;
+      const int  r     = csr.row_of(row.dof);
+      const int *begin = csr.columns + csr.offsets[r];
+      const int *end   = csr.columns + csr.offsets[r + 1];
+      for (unsigned int j = 0; j < row.n; ++j)
+        {
+          // The pattern holds every entry of every stencil.
+          const int *at = std::find(begin, end, csr.column_of(row.columns[j]));
+          Assert(at != end, dealii::ExcInternalError());
+          csr.values[at - csr.columns] += row.values[j];
+        }
+    });
   }
 
 

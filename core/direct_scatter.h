@@ -1,6 +1,7 @@
 #ifndef RODNET_CORE_DIRECT_SCATTER_H
 #define RODNET_CORE_DIRECT_SCATTER_H
 
+#include <core/foreign_rows.h>
 #include <core/scatter_positions.h>
 #include <core/solvable_model.h>
 
@@ -23,8 +24,10 @@ namespace rodnet
    * once per sparsity pattern, without searching its row.
    *
    * On several processes each adds the rows of its own contiguous share of
-   * the DoFs only (another process adds its rows), the matrix's columns
-   * numbered by the model's column map (RodModel::finalize()).
+   * the DoFs, the matrix's columns numbered by the model's column map
+   * (RodModel::finalize()); it keeps the rows of other processes' DoFs
+   * (ForeignRows) until add_foreign_rows() sends them to their owners. The
+   * caller then calls add() from one thread at a time.
    */
   class DirectScatter
   {
@@ -40,6 +43,9 @@ namespace rodnet
       const Epetra_BlockMap  *column_map   = nullptr;
       const std::vector<int> *local_column = nullptr;
       MPI_Comm                communicator = MPI_COMM_SELF;
+      /// On several processes, the first DoF of every process's share in
+      /// rank order, then the number of DoFs; null on one process.
+      const std::vector<global_dof_index> *share_starts = nullptr;
     };
 
     /// Epetra's compressed rows of @p m (null arrays where its storage
@@ -61,11 +67,14 @@ namespace rodnet
                   std::shared_ptr<const ScatterPositions> positions,
                   const Numbering                        &numbering);
 
-    /// Adds @p copy's rows of this process.
+    /// Adds @p copy's rows of this process, and keeps the others for
+    /// add_foreign_rows().
     void
     add(const LocalContribution &copy) const
     {
       const unsigned int n = copy.dofs.size();
+      if (foreign != nullptr)
+        foreign->keep(copy, fixed, csr.values != nullptr, values != nullptr);
       if (values != nullptr)
         for (unsigned int i = 0; i < n; ++i)
           if (owns(copy.dofs[i]) && !is_fixed(copy.dofs[i]))
@@ -88,6 +97,11 @@ namespace rodnet
         }
     }
 
+    /// On several processes, sends the rows of other processes' DoFs kept
+    /// by add() to them and adds the rows they sent; collective. Before
+    /// finish().
+    void
+    add_foreign_rows() const;
     /// Zeroes the matrix's values (in pieces, on all threads: 64 MB
     /// for a rod of 1e5 vertices).
     void
@@ -131,6 +145,7 @@ namespace rodnet
     const std::vector<bool>                *fixed;
     std::shared_ptr<const ScatterPositions> positions;
     Numbering                               numbering;
+    std::unique_ptr<ForeignRows>            foreign;
   };
 } // namespace rodnet
 

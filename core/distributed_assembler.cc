@@ -1,8 +1,9 @@
 // What the assembly of a RodModel whose DoFs are distributed over several
 // processes needs besides the direct scatter: every process holds the whole
-// network, evaluates the stencils that couple its own DoFs (own_stencils)
-// at the state with its ghost entries (with_ghosts()), and adds the rows of
-// its own DoFs only; the energies are summed over the processes.
+// network, evaluates the stencils it anchors (own_stencils) at the state
+// with its ghost entries (with_ghosts()), adds the rows of its own DoFs and
+// sends the others to their owners (ForeignRows); the energies are summed
+// over the processes.
 #include <base/first_problem.h>
 #include <core/every_entry.h>
 #include <core/rod_model.h>
@@ -63,6 +64,7 @@ namespace rodnet
       {
         numbering.column_map   = &sparsity.trilinos_sparsity_pattern().ColMap();
         numbering.local_column = &local_columns;
+        numbering.share_starts = &share_starts;
       }
     return numbering;
   }

@@ -282,7 +282,11 @@ namespace rodnet
                              default_block_size(family->n_stencils())));
     if (dealii::Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
       {
-        own_stencils = stencils_coupling(families, owned_dofs);
+        own_stencils = stencils_anchored(families, owned_dofs);
+        share_starts =
+          dealii::Utilities::MPI::all_gather(mpi_communicator,
+                                             owned_dofs.nth_index_in_set(0));
+        share_starts.push_back(layout_->n_dofs());
         const Epetra_BlockMap &columns =
           sparsity.trilinos_sparsity_pattern().ColMap();
         local_columns.assign(layout_->n_dofs(), -1);

@@ -970,9 +970,12 @@ namespace rodnet
     /// threads.
     std::vector<StencilBlocks> stencil_blocks;
     /// On several processes, per family, the stencils this process
-    /// evaluates (stencils_coupling()); empty on one process, where every
+    /// evaluates (stencils_anchored()); empty on one process, where every
     /// stencil is evaluated.
     std::vector<OwnedStencils> own_stencils;
+    /// On several processes, the first DoF of every process's share in
+    /// rank order, then the number of DoFs (DirectScatter::Numbering).
+    std::vector<global_dof_index> share_starts;
     /// The state with the ghost entries own_stencils read (with_ghosts()).
     mutable VectorType ghosted_state;
     /// The import of the ghost entries into ghosted_state from a vector

@@ -12,27 +12,22 @@ namespace rodnet
 {
   /**
    * The stencils of one family that a process evaluates when the DoFs are
-   * distributed over several processes. A process evaluates every stencil
-   * that couples one of its DoFs and adds the stencil's rows of its own
-   * DoFs only, so that no matrix row is written by another process and the
-   * assembly needs no communication but the ghost values of the state. A
-   * stencil on the border of two processes is evaluated by both, each
-   * keeping its rows; its energy is counted by one, the owner of its
-   * anchor (its first DoF).
+   * distributed over several processes: those whose anchor (their first
+   * DoF) it owns, so that every stencil is evaluated once. The process
+   * adds the stencil's rows of its own DoFs straight into its matrix and
+   * vector, and sends the rows of other processes' DoFs to them
+   * (ForeignRows); it counts the stencil's energy.
    */
   struct OwnedStencils
   {
     /// The stencils, in increasing order.
     std::vector<unsigned int> stencils;
-    /// Per entry of stencils: whether this process owns the anchor, and so
-    /// counts the stencil's energy.
-    std::vector<bool> counts_energy;
   };
 
-  /// The stencils of each of @p families that couple a DoF of
+  /// The stencils of each of @p families whose anchor (first DoF) is in
   /// @p owned_dofs (see OwnedStencils).
   std::vector<OwnedStencils>
-  stencils_coupling(const std::vector<std::unique_ptr<ElementFamily>> &families,
+  stencils_anchored(const std::vector<std::unique_ptr<ElementFamily>> &families,
                     const dealii::IndexSet &owned_dofs);
 
   /// @p owned_dofs and every DoF that @p stencils couple: the entries of
@@ -53,13 +48,11 @@ namespace rodnet
                    unsigned int                    rank);
   /**
    * The DoFs 0 .. @p n_dofs - 1 cut into @p n_processes contiguous ranges
-   * (as contiguous_share()) that evaluate about as many stencils of
-   * @p families each (a process evaluates every stencil that couples one
-   * of its DoFs: stencils_coupling()); the range of process @p rank. The
-   * junctions' quaternions are numbered after all positions and twists,
-   * so the last range, which holds them and evaluates every junction
-   * stencil, is the shortest. Every range has one DoF at least. The
-   * count is exact for ranges longer than a sixteenth of an even share.
+   * (as contiguous_share()) that anchor about as many stencils of
+   * @p families each (a process evaluates the stencils it anchors:
+   * stencils_anchored()); the range of process @p rank. Every range has
+   * one DoF at least; ranges of equal counts differ by the stencils that
+   * share one anchor at most.
    */
   dealii::IndexSet
   balanced_share(const std::vector<std::unique_ptr<ElementFamily>> &families,

@@ -1,7 +1,8 @@
-// balanced_share(): contiguous ranges of the DoFs that evaluate about as
+// balanced_share(): contiguous ranges of the DoFs that anchor about as
 // many stencils each, computed for 2 to 5 processes on one process (the
-// function depends on the network alone). The reference is a direct count:
-// stencils_coupling() of each range, the stencils a process evaluates.
+// function depends on the network alone). The reference is a direct count
+// of the stencils whose first DoF lies in each range; stencils_anchored()
+// of the ranges must evaluate every stencil once.
 #include <common/square_lattice_model.h>
 #include <core/rod_model.h>
 #include <core/stencil_ownership.h>
@@ -13,15 +14,40 @@ namespace
 {
   using namespace rodnet;
 
-  /// The stencils a process owning @p share evaluates (stencils_coupling()).
+  /// The stencils whose first DoF lies in @p share, counted directly.
   std::size_t
   stencils_evaluated(const RodModel &model, const dealii::IndexSet &share)
   {
-    std::size_t count = 0;
-    for (const OwnedStencils &s :
-         stencils_coupling(model.element_families(), share))
-      count += s.stencils.size();
+    std::size_t                   count = 0;
+    std::vector<global_dof_index> dofs;
+    for (const auto &family : model.element_families())
+      for (unsigned int s = 0; s < family->n_stencils(); ++s)
+        {
+          family->get_dofs(s, dofs);
+          count += !dofs.empty() && share.is_element(dofs[0]);
+        }
     return count;
+  }
+
+  /// How often the processes owning @p shares evaluate each stencil of
+  /// each family (stencils_anchored()).
+  std::vector<std::vector<unsigned int>>
+  evaluations(const RodModel                      &model,
+              const std::vector<dealii::IndexSet> &shares)
+  {
+    const auto                            &families = model.element_families();
+    std::vector<std::vector<unsigned int>> times(families.size());
+    for (unsigned int f = 0; f < families.size(); ++f)
+      times[f].assign(families[f]->n_stencils(), 0);
+    for (const dealii::IndexSet &share : shares)
+      {
+        const std::vector<OwnedStencils> own =
+          stencils_anchored(families, share);
+        for (unsigned int f = 0; f < families.size(); ++f)
+          for (const unsigned int s : own[f].stencils)
+            ++times[f][s];
+      }
+    return times;
   }
 
   TEST(BalancedShare, RangesPartitionTheDofsAndEvaluateAlike)
@@ -39,9 +65,10 @@ namespace
     const auto n_dofs = model->layout().n_dofs();
     for (unsigned int processes = 2; processes <= 5; ++processes)
       {
-        std::size_t              most_even = 0;
-        std::vector<std::size_t> counts;
-        global_dof_index         next = 0;
+        std::size_t                   most_even = 0;
+        std::vector<std::size_t>      counts;
+        std::vector<dealii::IndexSet> shares;
+        global_dof_index              next = 0;
         for (unsigned int rank = 0; rank < processes; ++rank)
           {
             const dealii::IndexSet share =
@@ -51,6 +78,7 @@ namespace
                              rank);
             ASSERT_GT(share.n_elements(), 0u) << processes << " processes";
             EXPECT_TRUE(share.is_contiguous());
+            shares.push_back(share);
             EXPECT_EQ(share.nth_index_in_set(0), next) << "rank " << rank;
             next = share.nth_index_in_set(0) + share.n_elements();
             counts.push_back(stencils_evaluated(*model, share));
@@ -62,12 +90,23 @@ namespace
         EXPECT_EQ(next, n_dofs) << processes << " processes";
         const auto [fewest, most] =
           std::minmax_element(counts.begin(), counts.end());
-        // Balanced to 2 % (a range's end moves by whole DoFs; the stencils
-        // on a border count for both ranges).
+        // Balanced to 2 % (a range's end moves by whole DoFs, and the
+        // stencils of one anchor stay together).
         EXPECT_LE(*most, 1.02 * *fewest) << processes << " processes";
-        // And better than equal ranges of DoFs, whose last range evaluates
-        // every junction stencil.
+        // And better than equal ranges of DoFs, whose last range holds the
+        // junctions' quaternions, which anchor no stencil.
         EXPECT_LT(*most, most_even) << processes << " processes";
+        // Each stencil with DoFs evaluated by exactly one process.
+        const auto                    times = evaluations(*model, shares);
+        std::vector<global_dof_index> dofs;
+        for (unsigned int f = 0; f < times.size(); ++f)
+          for (unsigned int s = 0; s < times[f].size(); ++s)
+            {
+              model->element_families()[f]->get_dofs(s, dofs);
+              ASSERT_EQ(times[f][s], dofs.empty() ? 0u : 1u)
+                << "family " << f << ", stencil " << s << ", " << processes
+                << " processes";
+            }
       }
   }
 } // namespace
