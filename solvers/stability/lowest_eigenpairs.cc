@@ -205,10 +205,20 @@ namespace rodnet
           }
       Eigen::MatrixXd dense =
         Eigen::MatrixXd::Zero(global.size(), global.size());
+      // Every row, also those of other processes.
+      std::unique_ptr<Epetra_CrsMatrix> gathered;
+      const Epetra_CrsMatrix           &matrix = every_row(tangent, gathered);
       for (const unsigned int i : global)
-        for (auto entry = tangent.begin(i); entry != tangent.end(i); ++entry)
-          if (free_index[entry->column()] >= 0)
-            dense(free_index[i], free_index[entry->column()]) = entry->value();
+        {
+          int     length;
+          double *values;
+          int    *columns;
+          matrix.ExtractMyRowView(matrix.LRID(int(i)), length, values, columns);
+          for (int e = 0; e < length; ++e)
+            if (free_index[matrix.GCID(columns[e])] >= 0)
+              dense(free_index[i], free_index[matrix.GCID(columns[e])]) =
+                values[e];
+        }
       return dense;
     }
 

@@ -102,7 +102,9 @@ namespace rodnet
     for (const double m : mode)
       largest = std::max(largest, std::abs(m));
     VectorType moved = u;
-    for (unsigned int i = 0; i < mode.size(); ++i)
+    // Each process moves its own entries: on several, an entry added by
+    // every process would move P times.
+    for (const auto i : moved.locally_owned_elements())
       if (mode[i] != 0)
         moved[i] += distance / largest * mode[i];
     moved.compress(dealii::VectorOperation::add);

@@ -109,29 +109,6 @@ namespace rodnet
     }
 
     /**
-     * Every row of @p tangent on this process: its own matrix where this
-     * process holds all rows, otherwise an import of all rows into
-     * @p gathered (a map that repeats every row on every process). The
-     * factorization is then the same, and serial, on every process: O(nnz)
-     * memory per process (doc/architecture.md, "Several processes").
-     */
-    const Epetra_CrsMatrix &
-    every_row(const dealii::TrilinosWrappers::SparseMatrix &tangent,
-              std::unique_ptr<Epetra_CrsMatrix>            &gathered)
-    {
-      const Epetra_CrsMatrix &matrix = tangent.trilinos_matrix();
-      if (matrix.RowMap().NumMyElements() ==
-          matrix.RowMap().NumGlobalElements())
-        return matrix;
-      const Epetra_LocalMap every(matrix.NumGlobalRows(), 0, matrix.Comm());
-      const Epetra_Import   import(every, matrix.RowMap());
-      gathered = std::make_unique<Epetra_CrsMatrix>(Copy, every, 0);
-      gathered->Import(matrix, import, Insert);
-      gathered->FillComplete();
-      return *gathered;
-    }
-
-    /**
      * The free block of @p tangent (sparse_free_block()), its diagonal
      * shifted by -@p shift, with the multiplier rows regularized.
      */
@@ -312,6 +289,22 @@ namespace rodnet
       sum += block.diagonal[k];
     return block.space.empty() ? 0.0 : sum / block.space.size();
   }
+
+  const Epetra_CrsMatrix &
+  every_row(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+            std::unique_ptr<Epetra_CrsMatrix>            &gathered)
+  {
+    const Epetra_CrsMatrix &matrix = tangent.trilinos_matrix();
+    if (matrix.RowMap().NumMyElements() == matrix.RowMap().NumGlobalElements())
+      return matrix;
+    const Epetra_LocalMap every(matrix.NumGlobalRows(), 0, matrix.Comm());
+    const Epetra_Import   import(every, matrix.RowMap());
+    gathered = std::make_unique<Epetra_CrsMatrix>(Copy, every, 0);
+    gathered->Import(matrix, import, Insert);
+    gathered->FillComplete();
+    return *gathered;
+  }
+
 
   Inertia
   tangent_inertia(const dealii::TrilinosWrappers::SparseMatrix &tangent,

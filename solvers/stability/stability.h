@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <Eigen/Core>
+#include <Epetra_CrsMatrix.h>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -120,6 +121,18 @@ namespace rodnet
     const dealii::AffineConstraints<double>            &constraints,
     const std::vector<dealii::types::global_dof_index> &multipliers = {},
     double                                              zero_ratio  = 1e-12);
+
+  /**
+   * Every row of @p tangent on this process: its own matrix where this
+   * process holds all rows, otherwise an import of all rows into
+   * @p gathered (a map that repeats every row on every process). What is
+   * computed from it is then the same, and serial, on every process:
+   * O(nnz) memory per process (doc/architecture.md, "Several processes").
+   * Collective where @p tangent is distributed.
+   */
+  const Epetra_CrsMatrix &
+  every_row(const dealii::TrilinosWrappers::SparseMatrix &tangent,
+            std::unique_ptr<Epetra_CrsMatrix>            &gathered);
 } // namespace rodnet
 
 #endif

@@ -38,6 +38,9 @@ namespace rodnet
         return;
       for (const global_dof_index d : twists)
         {
+          // On several processes each holds the twists of its own rows.
+          if (!tangent.in_local_range(d))
+            continue;
           const double diagonal = std::abs(tangent.diag_element(d));
           tangent.add(d, d, diagonal > 0 ? diagonal : 1.0);
         }
@@ -320,7 +323,7 @@ namespace rodnet
                             const JudgedResult &result,
                             StepInfo           &info)
   {
-    info.check  = check_equilibrium(model,
+    info.check = check_equilibrium(model,
                                    criterion,
                                    u,
                                    info.load_factor,
@@ -363,7 +366,9 @@ namespace rodnet
     try
       {
         model.assemble(u, load_factor, nullptr, &tangent, true);
-        inertia = tangent_inertia(tangent, model.constraints(), model.multiplier_dofs());
+        inertia = tangent_inertia(tangent,
+                                  model.constraints(),
+                                  model.multiplier_dofs());
       }
     catch (const std::exception &)
       {
@@ -389,7 +394,11 @@ namespace rodnet
   {
     model.assemble(u, load_factor, nullptr, &tangent);
     const std::vector<double> values =
-      lowest_eigenpairs(tangent, model.constraints(), 1, model.multiplier_dofs()).values;
+      lowest_eigenpairs(tangent,
+                        model.constraints(),
+                        1,
+                        model.multiplier_dofs())
+        .values;
     return values.empty() ? std::nan("") : values[0];
   }
 
