@@ -33,7 +33,7 @@ namespace rodnet
   {
     /// How often a factorization short of work space is retried, each time
     /// with twice MUMPS's relaxation ICNTL(14).
-    constexpr int max_space_retries = 3;
+    constexpr int max_space_retries = 5;
 
     /// MUMPS's ICNTL(i), INFOG(i) and the like, numbered from 1 as in its
     /// user guide.
@@ -220,7 +220,8 @@ namespace rodnet
     dmumps_c(&id);
     // MUMPS's estimate of its work space falls short when delayed pivots grow
     // the fronts (an inextensible ring at its stress-free start needed 4x the
-    // default relaxation): retried with twice the relaxation, up to 8x.
+    // default relaxation, the snapping ribbon's KKT tangent on two processes
+    // 16x): retried with twice the relaxation, up to 32x.
     for (int retry = 0;
          retry < max_space_retries &&
          (id.infog[mumps_index(1)] == -8 || id.infog[mumps_index(1)] == -9);

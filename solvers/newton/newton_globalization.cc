@@ -50,7 +50,7 @@ namespace rodnet
             nox_method("Full Step"));
       r.add<TrustRegionGlobalization>(
         "trust region",
-        "on the potential's quadratic model, one process",
+        "on the potential's quadratic model",
         {true, "the trust region"});
       return r;
     }();

@@ -1,3 +1,4 @@
+#include <core/every_entry.h>
 #include <solvers/newton/trust_region_newton.h>
 #include <solvers/stability/lowest_eigenpairs.h>
 #include <solvers/stability/stability.h>
@@ -18,12 +19,15 @@ namespace rodnet
     using MatrixType = TrustRegionNewton::MatrixType;
     using Parameters = TrustRegionNewton::Parameters;
 
-    /// The values of @p v (one process: all of them).
+    /// Every value of @p v, on every process: the subproblem's algebra
+    /// (the factorization of the scaled tangent, its eigenpair) is the same
+    /// serial work on each process, as the stability check's.
     Eigen::VectorXd
     values_of(const VectorType &v)
     {
-      Eigen::VectorXd result(v.locally_owned_size());
-      std::copy(v.begin(), v.end(), result.data());
+      const EveryEntry every(v);
+      Eigen::VectorXd  result((*every).size());
+      std::copy((*every).begin(), (*every).end(), result.data());
       return result;
     }
 
@@ -61,25 +65,32 @@ namespace rodnet
       const unsigned int n = tangent.m();
       if (metric.size() != n)
         metric = Eigen::VectorXd::Zero(n);
+      VectorType diagonal(tangent.locally_owned_range_indices(),
+                          tangent.get_mpi_communicator());
+      for (const auto i : diagonal.locally_owned_elements())
+        diagonal[i] = tangent.diag_element(i);
+      diagonal.compress(dealii::VectorOperation::insert);
+      const Eigen::VectorXd every_diagonal = values_of(diagonal);
       for (unsigned int i = 0; i < n; ++i)
         {
           metric[i] =
-            std::max(metric[i], std::sqrt(std::abs(tangent.diag_element(i))));
+            std::max(metric[i], std::sqrt(std::abs(every_diagonal[i])));
           if (metric[i] == 0)
             metric[i] = 1;
         }
       scaled.reinit(tangent);
       scaled.copy_from(tangent);
-      // Epetra's row views give the stored values in place.
+      // Epetra's row views give the stored values in place; each process
+      // scales its own rows.
       const Epetra_CrsMatrix &rows = scaled.trilinos_matrix();
-      for (unsigned int i = 0; i < n; ++i)
+      for (int r = 0; r < rows.NumMyRows(); ++r)
         {
           int     length;
           double *values;
           int    *columns;
-          rows.ExtractMyRowView(rows.LRID(int(i)), length, values, columns);
+          rows.ExtractMyRowView(r, length, values, columns);
           for (int e = 0; e < length; ++e)
-            values[e] /= metric[i] * metric[rows.GCID(columns[e])];
+            values[e] /= metric[rows.GRID(r)] * metric[rows.GCID(columns[e])];
         }
     }
 
@@ -89,7 +100,9 @@ namespace rodnet
     {
       VectorType in(a.locally_owned_domain_indices(), a.get_mpi_communicator());
       VectorType out(in);
-      std::copy(q.data(), q.data() + q.size(), in.begin());
+      for (const auto i : in.locally_owned_elements())
+        in[i] = q[i];
+      in.compress(dealii::VectorOperation::insert);
       a.vmult(out, in);
       return q.dot(values_of(out));
     }
@@ -226,8 +239,9 @@ namespace rodnet
          Iterate               &trial)
     {
       trial.x = base.x;
-      for (unsigned int i = 0; i < q.size(); ++i)
-        trial.x.begin()[i] += q[i] / metric[i];
+      for (const auto i : trial.x.locally_owned_elements())
+        trial.x[i] += q[i] / metric[i];
+      trial.x.compress(dealii::VectorOperation::add);
     }
 
     /// The scaled length along the negative curvature mode over which the
@@ -471,11 +485,7 @@ namespace rodnet
                            MatrixType                  &tangent) const
   {
     NewtonSolver::Result result;
-    if (dealii::Utilities::MPI::n_mpi_processes(
-          tangent.get_mpi_communicator()) != 1)
-      throw std::invalid_argument(
-        "the trust region runs on one process; use a line search");
-    Iterate current{x, x, 0};
+    Iterate              current{x, x, 0};
     if (!evaluate(problem, current))
       return unevaluable_start();
     MatrixType      scaled;
