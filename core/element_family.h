@@ -91,6 +91,16 @@ namespace rodnet
     virtual void
     get_dofs(unsigned int s, std::vector<global_dof_index> &dofs) const = 0;
 
+    /// The cost of evaluating one stencil with its Hessian relative to a
+    /// hinge's (the simple kernel's): the weight by which the stencils are
+    /// shared among processes (balanced_share()). Measured by
+    /// bench/family_costs (doc/performance.md); 1 unless a family says.
+    virtual double
+    relative_cost() const
+    {
+      return 1.0;
+    }
+
     /**
      * Energy of stencil @p s at @p state into @p local.energy and, as
      * @p derivatives asks, its gradient into @p local.vector and Hessian

@@ -59,18 +59,19 @@ namespace rodnet
 
   namespace
   {
-    /// The anchor (first DoF) of every stencil of @p families, sorted.
-    std::vector<global_dof_index>
+    /// The anchor (first DoF) of every stencil of @p families with the
+    /// stencil's cost (ElementFamily::relative_cost()), sorted by anchor.
+    std::vector<std::pair<global_dof_index, double>>
     sorted_anchors(const std::vector<std::unique_ptr<ElementFamily>> &families)
     {
-      std::vector<global_dof_index> anchors;
-      std::vector<global_dof_index> dofs;
+      std::vector<std::pair<global_dof_index, double>> anchors;
+      std::vector<global_dof_index>                    dofs;
       for (const auto &family : families)
         for (unsigned int s = 0; s < family->n_stencils(); ++s)
           {
             family->get_dofs(s, dofs);
             if (!dofs.empty())
-              anchors.push_back(dofs[0]);
+              anchors.emplace_back(dofs[0], family->relative_cost());
           }
       std::sort(anchors.begin(), anchors.end());
       return anchors;
@@ -84,18 +85,26 @@ namespace rodnet
                  const unsigned int                                 n_processes,
                  const unsigned int                                 rank)
   {
-    const std::vector<global_dof_index> anchors = sorted_anchors(families);
+    const auto anchors = sorted_anchors(families);
     if (n_processes == 1 || anchors.empty() || n_dofs < n_processes)
       return contiguous_share(n_dofs, n_processes, rank);
-    // Range p ends at the anchor of the ((p + 1) N / P)-th stencil, so
-    // that it anchors the stencils before it; each range one DoF long at
-    // least, leaving one to each later range.
+    // Range p ends at the first anchor past (p + 1) / P of the total cost,
+    // so that it anchors the stencils before it; each range one DoF long
+    // at least, leaving one to each later range.
+    double total = 0;
+    for (const auto &anchor : anchors)
+      total += anchor.second;
     std::vector<global_dof_index> ends(n_processes, n_dofs);
-    global_dof_index              first = 0;
+    global_dof_index              first  = 0;
+    double                        summed = 0;
+    std::size_t                   k      = 0;
     for (unsigned int p = 0; p + 1 < n_processes; ++p)
       {
+        while (k < anchors.size() &&
+               summed + anchors[k].second <= total * (p + 1) / n_processes)
+          summed += anchors[k++].second;
         const global_dof_index cut =
-          anchors[anchors.size() * (p + 1) / n_processes];
+          k < anchors.size() ? anchors[k].first : n_dofs;
         ends[p] = std::min<global_dof_index>(std::max(cut, first + 1),
                                              n_dofs - (n_processes - 1 - p));
         first   = ends[p];

@@ -48,11 +48,12 @@ namespace rodnet
                    unsigned int                    rank);
   /**
    * The DoFs 0 .. @p n_dofs - 1 cut into @p n_processes contiguous ranges
-   * (as contiguous_share()) that anchor about as many stencils of
-   * @p families each (a process evaluates the stencils it anchors:
-   * stencils_anchored()); the range of process @p rank. Every range has
-   * one DoF at least; ranges of equal counts differ by the stencils that
-   * share one anchor at most.
+   * (as contiguous_share()) whose anchored stencils of @p families cost
+   * about as much each (a process evaluates the stencils it anchors:
+   * stencils_anchored(); a stencil costs its family's relative_cost());
+   * the range of process @p rank. Every range has one DoF at least; the
+   * costs of two ranges differ by those of the stencils that share one
+   * anchor at most.
    */
   dealii::IndexSet
   balanced_share(const std::vector<std::unique_ptr<ElementFamily>> &families,

@@ -57,6 +57,14 @@ namespace rodnet
     std::vector<DeclaredDof>
     own_dofs() const override;
 
+    /// Nested automatic differentiation of the junction kernel: 30 times a
+    /// hinge (bench/family_costs, 20 x 20 welded lattice).
+    double
+    relative_cost() const override
+    {
+      return 30.0;
+    }
+
   private:
     const RodNetwork &network;
   };

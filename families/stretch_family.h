@@ -38,6 +38,13 @@ namespace rodnet
     unsigned int
     n_stencils() const override;
 
+    /// A tenth of a hinge (bench/family_costs).
+    double
+    relative_cost() const override
+    {
+      return 0.1;
+    }
+
     void
     get_dofs(unsigned int                   s,
              std::vector<global_dof_index> &dofs) const override;

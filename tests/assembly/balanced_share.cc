@@ -1,8 +1,9 @@
-// balanced_share(): contiguous ranges of the DoFs that anchor about as
-// many stencils each, computed for 2 to 5 processes on one process (the
-// function depends on the network alone). The reference is a direct count
-// of the stencils whose first DoF lies in each range; stencils_anchored()
-// of the ranges must evaluate every stencil once.
+// balanced_share(): contiguous ranges of the DoFs whose anchored stencils
+// cost about as much each, computed for 2 to 5 processes on one process
+// (the function depends on the network alone). The reference is a direct
+// sum of the costs (ElementFamily::relative_cost()) of the stencils whose
+// first DoF lies in each range; stencils_anchored() of the ranges must
+// evaluate every stencil once.
 #include <common/square_lattice_model.h>
 #include <core/rod_model.h>
 #include <core/stencil_ownership.h>
@@ -14,19 +15,21 @@ namespace
 {
   using namespace rodnet;
 
-  /// The stencils whose first DoF lies in @p share, counted directly.
-  std::size_t
-  stencils_evaluated(const RodModel &model, const dealii::IndexSet &share)
+  /// The cost of the stencils whose first DoF lies in @p share, summed
+  /// directly (each its family's relative_cost()).
+  double
+  cost_anchored(const RodModel &model, const dealii::IndexSet &share)
   {
-    std::size_t                   count = 0;
+    double                        cost = 0;
     std::vector<global_dof_index> dofs;
     for (const auto &family : model.element_families())
       for (unsigned int s = 0; s < family->n_stencils(); ++s)
         {
           family->get_dofs(s, dofs);
-          count += !dofs.empty() && share.is_element(dofs[0]);
+          if (!dofs.empty() && share.is_element(dofs[0]))
+            cost += family->relative_cost();
         }
-    return count;
+    return cost;
   }
 
   /// How often the processes owning @p shares evaluate each stencil of
@@ -65,8 +68,8 @@ namespace
     const auto n_dofs = model->layout().n_dofs();
     for (unsigned int processes = 2; processes <= 5; ++processes)
       {
-        std::size_t                   most_even = 0;
-        std::vector<std::size_t>      counts;
+        double                        most_even = 0;
+        std::vector<double>           costs;
         std::vector<dealii::IndexSet> shares;
         global_dof_index              next = 0;
         for (unsigned int rank = 0; rank < processes; ++rank)
@@ -81,17 +84,16 @@ namespace
             shares.push_back(share);
             EXPECT_EQ(share.nth_index_in_set(0), next) << "rank " << rank;
             next = share.nth_index_in_set(0) + share.n_elements();
-            counts.push_back(stencils_evaluated(*model, share));
+            costs.push_back(cost_anchored(*model, share));
             most_even = std::max(
               most_even,
-              stencils_evaluated(*model,
-                                 contiguous_share(n_dofs, processes, rank)));
+              cost_anchored(*model, contiguous_share(n_dofs, processes, rank)));
           }
         EXPECT_EQ(next, n_dofs) << processes << " processes";
         const auto [fewest, most] =
-          std::minmax_element(counts.begin(), counts.end());
-        // Balanced to 2 % (a range's end moves by whole DoFs, and the
-        // stencils of one anchor stay together).
+          std::minmax_element(costs.begin(), costs.end());
+        // Balanced in cost to 2 % (a range's end moves by whole DoFs, and
+        // the stencils of one anchor stay together).
         EXPECT_LE(*most, 1.02 * *fewest) << processes << " processes";
         // And better than equal ranges of DoFs, whose last range holds the
         // junctions' quaternions, which anchor no stencil.
