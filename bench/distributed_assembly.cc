@@ -9,8 +9,8 @@
 //
 // On one process the model assembles by the direct scatter into the
 // matrix's compressed rows; on several, each process evaluates the stencils
-// that couple its own DoFs and adds its own rows through the matrix's
-// add() (doc/architecture.md, "Several processes").
+// it anchors, adds its own rows by the direct scatter and sends the rows of
+// other processes to them (doc/architecture.md, "Several processes").
 #include <deal.II/base/mpi.h>
 
 #include <core/rod_model.h>
