@@ -130,14 +130,20 @@ namespace rodnet
         for (double &v : x)
           v /= norm;
       }
-    // A fixed sign: the largest entry positive.
-    const auto largest =
-      std::max_element(x.begin(), x.end(), [](double a, double b) {
-        return std::abs(a) < std::abs(b);
+    // A fixed sign: the first of the largest entries positive. Symmetric
+    // structures have several entries of one size (the over-curved ring's
+    // mirror points); which of them is largest by rounding differs between
+    // partitions, and so would the branch taken.
+    double largest = 0;
+    for (const double v : x)
+      largest = std::max(largest, std::abs(v));
+    const auto first_largest =
+      std::find_if(x.begin(), x.end(), [&](const double v) {
+        return std::abs(v) >= (1 - 1e-6) * largest;
       });
-    const double sign = *largest < 0 ? -1 : 1;
+    const double sign = *first_largest < 0 ? -1 : 1;
     VectorType   phi  = model.create_vector();
-    for (global_dof_index i = 0; i < x.size(); ++i)
+    for (const global_dof_index i : phi.locally_owned_elements())
       phi[i] = sign * x[i];
     phi.compress(dealii::VectorOperation::insert);
     // W-orthogonal to the path it leaves, unit.
