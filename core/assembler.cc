@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <stdexcept>
 
 namespace rodnet
@@ -126,8 +127,7 @@ namespace rodnet
                               LocalContribution());
     if (failure)
       std::rethrow_exception(failure);
-    for (const double e : energies)
-      energy += e;
+    energy = std::accumulate(energies.begin(), energies.end(), energy);
   }
 
 
