@@ -112,7 +112,7 @@ namespace
               << " s\n  solve     "
               << bench::format_time(bench::statistics(solve))
               << " s\n  factor entries " << mumps->factor_entries()
-              << "  negative pivots " << mumps->negative_pivots()
+              << "  negative pivots " << mumps->negative_pivots().value()
               << "  |K x - b| / |b| " << relative_residual << std::endl;
   }
 } // namespace

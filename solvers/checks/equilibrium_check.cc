@@ -1,5 +1,6 @@
 #include <core/every_entry.h>
 #include <solvers/checks/equilibrium_check.h>
+#include <solvers/checks/equilibrium_factorization.h>
 #include <solvers/checks/free_motions.h>
 #include <solvers/solver_failure.h>
 #include <solvers/stability/stability.h>
@@ -13,40 +14,33 @@ namespace rodnet
 {
   namespace
   {
-    /// The symmetry modes M of a model at a state (symmetry_modes(), with
-    /// every entry on this process), K^-1 M and S = M^T K^-1 M from a
-    /// factorization of its tangent K.
+    /// The symmetry modes M of a model at a state (symmetry_modes()),
+    /// K^-1 M and S = M^T K^-1 M from a factorization of its tangent K.
     struct SymmetryBorder
     {
-      std::vector<VectorType>          modes;
-      std::vector<std::vector<double>> solved;
-      Eigen::MatrixXd                  s;
+      std::vector<VectorType> modes;
+      std::vector<VectorType> solved;
+      Eigen::MatrixXd         s;
     };
 
     SymmetryBorder
     symmetry_border(const SolvableModel            &model,
                     const VectorType               &u,
                     const double                    load_factor,
-                    const ConstrainedFactorization &factorization)
+                    const EquilibriumFactorization &factorization)
     {
       SymmetryBorder border;
-      for (const VectorType &m : symmetry_modes(model, u, load_factor))
+      border.modes = symmetry_modes(model, u, load_factor);
+      for (const VectorType &mode : border.modes)
         {
-          const VectorType &mode   = border.modes.emplace_back(*EveryEntry(m));
-          const double     *values = mode.trilinos_vector()[0];
-          border.solved.push_back(factorization.solve(
-            std::vector<double>(values, values + mode.size())));
+          border.solved.push_back(model.create_vector());
+          factorization.solve(mode, border.solved.back());
         }
       const unsigned int k = border.modes.size();
       border.s.resize(k, k);
       for (unsigned int a = 0; a < k; ++a)
         for (unsigned int b = 0; b < k; ++b)
-          {
-            double sum = 0;
-            for (global_dof_index d = 0; d < border.modes[a].size(); ++d)
-              sum += border.modes[a][d] * border.solved[b][d];
-            border.s(a, b) = sum;
-          }
+          border.s(a, b) = border.modes[a] * border.solved[b];
       border.s = (border.s + border.s.transpose()) / 2;
       return border;
     }
@@ -67,7 +61,7 @@ namespace rodnet
     negative_beside_symmetries(const SolvableModel            &model,
                                const VectorType               &u,
                                const double                    load_factor,
-                               const ConstrainedFactorization &factorization,
+                               const EquilibriumFactorization &factorization,
                                const Inertia                  &inertia)
     {
       if (inertia.negative == 0 || inertia.zero > 0)
@@ -89,36 +83,32 @@ namespace rodnet
      * equilibrium and K has a pivot of rounding size, which gives K^-1 r
      * any component there (0.59 rad of the common turn of the frames of an
      * isotropic ring, issue 33); off the modes it is the distance to the
-     * exact discrete equilibrium.
+     * exact discrete equilibrium. Every entry, on every process.
      */
     std::vector<double>
     correction_beside_symmetries(const SolvableModel            &model,
                                  const VectorType               &u,
                                  const double                    load_factor,
-                                 const ConstrainedFactorization &factorization,
+                                 const EquilibriumFactorization &factorization,
                                  const VectorType               &r)
     {
-      const EveryEntry    every_entry(r);
-      const double       *values = (*every_entry).trilinos_vector()[0];
-      std::vector<double> correction =
-        factorization.solve(std::vector<double>(values, values + r.size()));
+      VectorType correction = model.create_vector();
+      factorization.solve(r, correction);
       const SymmetryBorder border =
         symmetry_border(model, u, load_factor, factorization);
       const unsigned int k = border.modes.size();
-      if (k == 0 || !border.s.allFinite())
-        return correction;
-      Eigen::VectorXd along(k);
-      for (unsigned int a = 0; a < k; ++a)
+      if (k > 0 && border.s.allFinite())
         {
-          along[a] = 0;
-          for (global_dof_index d = 0; d < correction.size(); ++d)
-            along[a] += border.modes[a][d] * correction[d];
+          Eigen::VectorXd along(k);
+          for (unsigned int a = 0; a < k; ++a)
+            along[a] = border.modes[a] * correction;
+          const Eigen::VectorXd mu = border.s.fullPivLu().solve(along);
+          for (unsigned int a = 0; a < k; ++a)
+            correction.add(-mu[a], border.solved[a]);
         }
-      const Eigen::VectorXd mu = border.s.fullPivLu().solve(along);
-      for (unsigned int a = 0; a < k; ++a)
-        for (global_dof_index d = 0; d < correction.size(); ++d)
-          correction[d] -= mu[a] * border.solved[a][d];
-      return correction;
+      const EveryEntry every_entry(correction);
+      const double    *values = (*every_entry).trilinos_vector()[0];
+      return std::vector<double>(values, values + correction.size());
     }
 
     /// @p residual over @p loads, 0 where there are no loads.
@@ -144,45 +134,43 @@ namespace rodnet
   } // namespace
 
   unsigned int
-  negative_eigenvalues(const SolvableModel &model,
-                       const VectorType    &u,
-                       const double         load_factor,
-                       MatrixType          &tangent)
+  negative_eigenvalues(const SolvableModel       &model,
+                       const VectorType          &u,
+                       const double               load_factor,
+                       MatrixType                &tangent,
+                       TangentFactorizationCache *factorizations)
   {
     model.assemble(u, load_factor, nullptr, &tangent, true);
-    const ConstrainedFactorization factorization(tangent,
-                                                 model.constraints(),
-                                                 0.0,
-                                                 model.multiplier_dofs());
+    const auto factorization =
+      EquilibriumFactorization::create(model, tangent, factorizations);
     return negative_beside_symmetries(model,
                                       u,
                                       load_factor,
-                                      factorization,
-                                      factorization.inertia());
+                                      *factorization,
+                                      factorization->inertia());
   }
 
   EquilibriumCheck
-  check_equilibrium(const SolvableModel     &model,
-                    const ResidualCriterion &criterion,
-                    const VectorType        &u,
-                    const double             load_factor,
-                    MatrixType              &tangent,
-                    const JudgedResult      &result,
-                    const double             uncertainty_limit)
+  check_equilibrium(const SolvableModel       &model,
+                    const ResidualCriterion   &criterion,
+                    const VectorType          &u,
+                    const double               load_factor,
+                    MatrixType                &tangent,
+                    const JudgedResult        &result,
+                    const double               uncertainty_limit,
+                    TangentFactorizationCache *factorizations)
   {
     VectorType r = model.create_vector();
     model.assemble(u, load_factor, &r, &tangent, true);
-    const ConstrainedFactorization factorization(tangent,
-                                                 model.constraints(),
-                                                 0.0,
-                                                 model.multiplier_dofs());
-    EquilibriumCheck               check;
+    const auto factorization =
+      EquilibriumFactorization::create(model, tangent, factorizations);
+    EquilibriumCheck check;
     check.negative_eigenvalues =
       negative_beside_symmetries(model,
                                  u,
                                  load_factor,
-                                 factorization,
-                                 factorization.inertia());
+                                 *factorization,
+                                 factorization->inertia());
     check.stable = check.negative_eigenvalues == 0;
     if (!result.rounding_limited)
       return check;
@@ -194,7 +182,7 @@ namespace rodnet
           criterion.state_change(correction_beside_symmetries(model,
                                                               u,
                                                               load_factor,
-                                                              factorization,
+                                                              *factorization,
                                                               r));
       }
     catch (const std::exception &)

@@ -3,6 +3,7 @@
 
 #include <core/solvable_model.h>
 #include <solvers/checks/residual_criterion.h>
+#include <solvers/newton/tangent_factorization.h>
 
 #include <string>
 
@@ -14,13 +15,17 @@ namespace rodnet
    * (ConstrainedFactorization::inertia()), on the complement of the
    * symmetry modes there (symmetry_modes(): motions along which the energy
    * does not change, whose eigenvalue is rounding of either sign), so that
-   * the buckled elastica with EI1 = EI2 counts as stable.
+   * the buckled elastica with EI1 = EI2 counts as stable. On several
+   * processes the tangent is factorized by MUMPS, the analysis of
+   * @p factorizations reused where it holds one for @p tangent
+   * (EquilibriumFactorization).
    */
   unsigned int
-  negative_eigenvalues(const SolvableModel &model,
-                       const VectorType    &u,
-                       double               load_factor,
-                       MatrixType          &tangent);
+  negative_eigenvalues(const SolvableModel       &model,
+                       const VectorType          &u,
+                       double                     load_factor,
+                       MatrixType                &tangent,
+                       TangentFactorizationCache *factorizations = nullptr);
 
   /// What the solvers check at a converged equilibrium besides its residual.
   struct EquilibriumCheck
@@ -39,22 +44,24 @@ namespace rodnet
 
   /**
    * Checks the equilibrium @p u at @p load_factor that the solve @p result
-   * accepted: one sparse LDL^T of the constrained tangent (assembled into
+   * accepted: one LDL^T of the constrained tangent (assembled into
    * @p tangent) gives its inertia (negative_eigenvalues(): symmetry modes
    * do not count),
    * and, where @p result was rounding-limited, the Newton correction of its
    * residual on the complement of the symmetry modes (along which every
    * state is an equilibrium), which may not exceed @p uncertainty_limit
    * without a warning (ResidualCriterion::rounding_hint()).
+   * @p factorizations as for negative_eigenvalues().
    */
   EquilibriumCheck
-  check_equilibrium(const SolvableModel     &model,
-                    const ResidualCriterion &criterion,
-                    const VectorType        &u,
-                    double                   load_factor,
-                    MatrixType              &tangent,
-                    const JudgedResult      &result,
-                    double                   uncertainty_limit);
+  check_equilibrium(const SolvableModel       &model,
+                    const ResidualCriterion   &criterion,
+                    const VectorType          &u,
+                    double                     load_factor,
+                    MatrixType                &tangent,
+                    const JudgedResult        &result,
+                    double                     uncertainty_limit,
+                    TangentFactorizationCache *factorizations = nullptr);
 
   /**
    * Throws SolverFailure where @p check finds the state at @p where (e.g.

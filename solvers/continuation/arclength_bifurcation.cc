@@ -37,7 +37,8 @@ namespace rodnet
         if (!result.converged)
           throw SolverFailure("locating the bifurcation near load factor " +
                               number(lambda) + " failed: " + result.failure);
-        if (negative_eigenvalues(model, u, lambda, tangent) == lo.negative)
+        if (negative_eigenvalues(model, u, lambda, tangent, &factorizations) ==
+            lo.negative)
           {
             s_lo      = s_mid;
             lambda_lo = lambda;

@@ -396,8 +396,14 @@ namespace rodnet
     info.iterations       = result.iterations;
     info.residual         = result.residual;
     info.load_factor_rate = q.t_lambda;
-    info.check =
-      check_equilibrium(model, criterion, q.u, lambda, tangent, result, 1e-6);
+    info.check            = check_equilibrium(model,
+                                   criterion,
+                                   q.u,
+                                   lambda,
+                                   tangent,
+                                   result,
+                                   1e-6,
+                                   &factorizations);
     refuse_undetermined_state(info.check,
                               1e-3,
                               "load factor " + number(lambda));

@@ -62,9 +62,12 @@ namespace rodnet
         // reference: so close to zero, the other reference's tangent may
         // give it the other sign.
         model.reset_reference(probe.u);
-        const bool before =
-          probe.t_lambda > 0 &&
-          negative_eigenvalues(model, probe.u, lambda, tangent) == p.negative;
+        const bool before = probe.t_lambda > 0 &&
+                            negative_eigenvalues(model,
+                                                 probe.u,
+                                                 lambda,
+                                                 tangent,
+                                                 &factorizations) == p.negative;
         model.set_state(*p.state);
         if (before)
           {
@@ -111,7 +114,7 @@ namespace rodnet
     else if (distance > within)
       outcome = "a state " + number(distance) + " away";
     else if (const unsigned int negative =
-               negative_eigenvalues(model, u, lambda, tangent);
+               negative_eigenvalues(model, u, lambda, tangent, &factorizations);
              negative > 0)
       outcome = "an unstable state, " + std::to_string(negative) +
                 " negative eigenvalue(s)";
@@ -153,7 +156,8 @@ namespace rodnet
         double ds_taken = ds;
         if (p.lambda < lambda && l >= lambda &&
             land(p, lambda, u, l, result, ds_taken) &&
-            negative_eigenvalues(model, u, lambda, tangent) == 0)
+            negative_eigenvalues(model, u, lambda, tangent, &factorizations) ==
+              0)
           return true;
         StepInfo  info;
         PathPoint q = accept(u, l, &p, result, info);

@@ -292,7 +292,7 @@ namespace rodnet
   }
 
 
-  unsigned int
+  std::optional<unsigned int>
   MumpsFactorization::negative_pivots() const
   {
     return factorized ? mumps->id.infog[mumps_index(12)] : 0;

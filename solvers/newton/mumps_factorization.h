@@ -100,8 +100,8 @@ namespace rodnet
     /// The number of negative pivots of the last factorization (INFOG(12)):
     /// by Sylvester's law of inertia the number of negative eigenvalues of
     /// the matrix, where it is regular. 0 before the first factorization.
-    unsigned int
-    negative_pivots() const;
+    std::optional<unsigned int>
+    negative_pivots() const override;
 
     /// The fill-reducing order the analysis took (INFOG(7)), e.g. "AMD".
     std::string

@@ -311,13 +311,16 @@ namespace rodnet
     csr.n_rows = m.NumMyRows();
     // Each process compares its own rows; all renew the factorization
     // together (MUMPS's analysis is collective) if any of them changed.
+    const unsigned int n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator());
     const bool          readable = csr.offsets != nullptr;
     const std::uint64_t key =
       readable ? ScatterPositions::fingerprint(csr, nullptr) : 0;
     const bool renew =
       dealii::Utilities::MPI::logical_or(factorization == nullptr ||
                                            !readable || &m != this->matrix ||
-                                           key != pattern || kind != this->kind,
+                                           key != pattern ||
+                                           !serves(kind, n_processes),
                                          matrix.get_mpi_communicator());
     if (renew)
       {
@@ -327,5 +330,18 @@ namespace rodnet
         this->kind    = kind;
       }
     return factorization;
+  }
+
+
+  bool
+  TangentFactorizationCache::serves(const std::string &kind,
+                                    const unsigned int n_processes) const
+  {
+    if (kind == this->kind)
+      return true;
+    // On several processes every kind that runs there is MUMPS.
+    const bool kept_mumps = factorization->name() == "mumps";
+    return kept_mumps &&
+           (kind == "mumps" || (kind == "auto" && n_processes > 1));
   }
 } // namespace rodnet

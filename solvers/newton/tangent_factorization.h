@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -120,6 +121,16 @@ namespace rodnet
     /// first factorization.
     virtual double
     factor_entries() const = 0;
+
+    /// The number of negative pivots of the last factorization, where it
+    /// is an LDL^T that counts them (MUMPS): by Sylvester's law of inertia
+    /// the number of negative eigenvalues of a regular matrix. std::nullopt
+    /// for an LU (KLU, the band), whose pivots do not give the inertia.
+    virtual std::optional<unsigned int>
+    negative_pivots() const
+    {
+      return std::nullopt;
+    }
   };
 
   /**
@@ -130,7 +141,11 @@ namespace rodnet
    * compared by a fingerprint of its compressed rows at each get(); on
    * several processes each compares its own rows, and all make a new
    * factorization together where one of them changed (get() is collective
-   * there).
+   * there). A kept MUMPS factorization also serves a request for "mumps"
+   * where it was made for "auto" (and the reverse on several processes,
+   * where "auto" is MUMPS): the equilibrium checks ask for MUMPS on the
+   * Newton solver's cache and reuse its analysis
+   * (EquilibriumFactorization).
    */
   class TangentFactorizationCache
   {
@@ -143,6 +158,11 @@ namespace rodnet
     get(const MatrixType &matrix, const std::string &kind);
 
   private:
+    /// Whether the kept factorization is what a request for @p kind on
+    /// @p n_processes processes would make.
+    bool
+    serves(const std::string &kind, unsigned int n_processes) const;
+
     std::shared_ptr<TangentFactorization> factorization;
     const void                           *matrix  = nullptr;
     std::uint64_t                         pattern = 0;

@@ -315,7 +315,11 @@ namespace rodnet
   StaticSolver::negative_eigenvalues(const VectorType &u,
                                      const double      load_factor)
   {
-    return rodnet::negative_eigenvalues(model, u, load_factor, tangent);
+    return rodnet::negative_eigenvalues(model,
+                                        u,
+                                        load_factor,
+                                        tangent,
+                                        &factorizations);
   }
 
   void
@@ -329,7 +333,8 @@ namespace rodnet
                                    info.load_factor,
                                    tangent,
                                    result,
-                                   parameters.rounding_uncertainty_limit);
+                                   parameters.rounding_uncertainty_limit,
+                                   &factorizations);
     refuse_undetermined_state(info.check,
                               parameters.rounding_failure_limit,
                               "load factor " +

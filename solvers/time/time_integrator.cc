@@ -512,7 +512,8 @@ namespace rodnet
                             info.load_factor,
                             tangent,
                             result,
-                            parameters.rounding_uncertainty_limit);
+                            parameters.rounding_uncertainty_limit,
+                            &factorizations);
         refuse_undetermined_state(check,
                                   parameters.rounding_failure_limit,
                                   "t = " + time_string(info.time) + " s");
