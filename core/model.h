@@ -198,8 +198,7 @@ namespace rodnet
     {
       if (vertex >= network().n_vertices())
         throw std::invalid_argument("support \"" + name + "\": vertex " +
-                                    std::to_string(vertex) +
-                                    " does not exist");
+                                    std::to_string(vertex) + " does not exist");
       Support s;
       s.name     = name;
       s.vertices = {vertex};
@@ -217,6 +216,18 @@ namespace rodnet
                                " after finalize(), where it would never be "
                                "applied; add every support and load before "
                                "finalize()");
+    }
+
+    /// Throws std::logic_error unless finalize() has run: @p what (the
+    /// call) needs the DoF numbering and pattern that finalize() makes.
+    void
+    require_finalized(const std::string &what) const
+    {
+      if (!finalized)
+        throw std::logic_error(what +
+                               " before finalize(), where the model has no "
+                               "DoF numbering or sparsity pattern yet; call "
+                               "finalize() first");
     }
 
     double length    = 0;

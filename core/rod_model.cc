@@ -170,6 +170,9 @@ namespace rodnet
   void
   RodModel::initialize_matrix(MatrixType &matrix) const
   {
+    // Before finalize() the pattern is empty, and a tangent assembled
+    // into it would silently lose its entries.
+    require_finalized("RodModel::initialize_matrix");
     matrix.reinit(sparsity);
   }
 

@@ -229,4 +229,27 @@ namespace
     relaxed->finalize();
     expect_refused_after_finalize(*relaxed);
   }
+
+  // A matrix made before finalize() has no pattern: a tangent assembled
+  // into it would lose every entry (an inertia of no negative eigenvalue).
+  TEST(ModelInterface, RefusesAMatrixBeforeFinalize)
+  {
+    auto       rods = rod_model();
+    MatrixType matrix;
+    try
+      {
+        rods->initialize_matrix(matrix);
+        FAIL() << "a matrix before finalize() was made";
+      }
+    catch (const std::logic_error &e)
+      {
+        EXPECT_NE(std::string(e.what()).find(
+                    "RodModel::initialize_matrix before finalize()"),
+                  std::string::npos)
+          << e.what();
+      }
+    rods->finalize();
+    rods->initialize_matrix(matrix);
+    EXPECT_EQ(matrix.m(), rods->layout().n_dofs());
+  }
 } // namespace
