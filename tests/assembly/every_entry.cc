@@ -2,10 +2,13 @@
 // process, gathered in one collective where every process owns one
 // contiguous range (a model's share), and through ghost entries otherwise
 // (a vector with ghosts, ownership in strides). The reference is the value
-// each entry was given, known to every process. Runs on 1, 2 and 3
-// processes (tests/CMakeLists.txt, RODNET_MPI_TESTS).
+// each entry was given, known to every process. DofValues reads every entry
+// a process holds (its share straight from the storage, ghosts through the
+// map) and refuses one it does not hold. Runs on 1, 2 and 3 processes
+// (tests/CMakeLists.txt, RODNET_MPI_TESTS).
 #include <deal.II/base/mpi.h>
 
+#include <core/dof_values.h>
 #include <core/every_entry.h>
 #include <core/stencil_ownership.h>
 
@@ -71,5 +74,26 @@ namespace
          i += n_processes)
       strided.add_index(i);
     expect_every_value(filled(strided, none), "ownership in strides");
+  }
+
+  TEST(DofValues, ReadsTheShareAndTheGhostsAndRefusesTheRest)
+  {
+    const unsigned int n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const dealii::IndexSet share =
+      contiguous_share(n_entries, n_processes, rank);
+    // Ghosts below and above every share but the first's and last's.
+    dealii::IndexSet ghosts(n_entries);
+    ghosts.add_index(0);
+    ghosts.add_index(n_entries - 1);
+    const Vector    vector = filled(share, ghosts);
+    const DofValues values(vector);
+    for (dealii::types::global_dof_index i = 0; i < n_entries; ++i)
+      if (share.is_element(i) || ghosts.is_element(i))
+        EXPECT_EQ(values[i], value(i)) << "entry " << i;
+      else
+        EXPECT_THROW(values[i], std::logic_error) << "entry " << i;
   }
 } // namespace
