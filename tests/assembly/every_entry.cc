@@ -3,8 +3,8 @@
 // contiguous range (a model's share), and through ghost entries otherwise
 // (a vector with ghosts, ownership in strides). The reference is the value
 // each entry was given, known to every process. DofValues reads every entry
-// a process holds (its share straight from the storage, ghosts through the
-// map) and refuses one it does not hold. Runs on 1, 2 and 3 processes
+// a process holds (its share and its ghosts) and refuses one it does not
+// hold. Runs on 1, 2 and 3 processes
 // (tests/CMakeLists.txt, RODNET_MPI_TESTS).
 #include <deal.II/base/mpi.h>
 
