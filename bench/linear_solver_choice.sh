@@ -15,51 +15,17 @@
 set -euo pipefail
 source "$(dirname "$0")/chart_paths.sh"
 source "$root/bench/process_timing.sh"
+source "$root/bench/welded_lattice_scene.sh"
 repeats=${3:-3}
 cells=("${@:4}")
 [ ${#cells[@]} -gt 0 ] || cells=(5 10 20 35 60)
-
-lattice() { # CELLS SOLVER
-  cat <<END
-subsection Geometry
-  set Generator = square lattice
-  set Cells = $1, $1
-  set Beam length = 0.1
-  set Segments = 10
-end
-subsection Material
-  subsection linear elastic
-    set Stiffness input = direct
-    set EA = 1e5
-    set EI1 = 400
-    set EI2 = 100
-    set GJ = 67
-  end
-end
-subsection Supports
-  set Pinned vertices = @n_0_0, @n_$1_0, @n_0_$1, @n_$1_$1
-end
-subsection Loads
-  set Steps = 2
-  set Mass per length = 0.05
-  set Gravity = 0, 0, -9.81
-end
-subsection Solver
-  set Linear solver = $2
-end
-subsection Output
-  set Write VTU = false
-  set Plot = false
-end
-END
-}
 
 echo "| cells | DoFs | KLU (s) | MUMPS (s) | MUMPS / KLU |"
 echo "|---|---|---|---|---|"
 : > "$work/ratios.dat"
 for n in "${cells[@]}"; do
-  lattice "$n" klu > "$work/klu.prm"
-  lattice "$n" mumps > "$work/mumps.prm"
+  welded_lattice_scene "$n" "  set Linear solver = klu" > "$work/klu.prm"
+  welded_lattice_scene "$n" "  set Linear solver = mumps" > "$work/mumps.prm"
   read -r klu mumps <<< "$(in_turn "$run" "$repeats" "$work/klu.prm" "$work/mumps.prm")"
   "$run" "$work/klu.prm" --output "$work/a" > "$work/size.log" 2>&1
   dofs=$(sed -n 's/^rodnet: .* \([0-9]*\) DoFs, memory.*/\1/p' "$work/size.log")

@@ -19,59 +19,25 @@
 set -euo pipefail
 source "$(dirname "$0")/chart_paths.sh"
 source "$root/bench/process_timing.sh"
+source "$root/bench/welded_lattice_scene.sh"
 repeats=${3:-3}
 cells=("${@:4}")
 [ ${#cells[@]} -gt 0 ] || cells=(35 112)
 mpirun=(mpirun --oversubscribe -np 2)
 [ "$(id -u)" -eq 0 ] && mpirun=(mpirun --allow-run-as-root --oversubscribe -np 2)
 
-lattice() { # CELLS
-  cat <<END
-subsection Geometry
-  set Generator = square lattice
-  set Cells = $1, $1
-  set Beam length = 0.1
-  set Segments = 10
-end
-subsection Material
-  subsection linear elastic
-    set Stiffness input = direct
-    set EA = 1e5
-    set EI1 = 400
-    set EI2 = 100
-    set GJ = 67
-  end
-end
-subsection Supports
-  set Pinned vertices = @n_0_0, @n_$1_0, @n_0_$1, @n_$1_$1
-end
-subsection Loads
-  set Steps = 2
-  set Mass per length = 0.05
-  set Gravity = 0, 0, -9.81
-end
-subsection Solver
-  set Line search = energy
-  set Linear solver = mumps
-end
-subsection Output
-  set Write VTU = false
-  set Plot = false
-end
-END
-}
-
 : > "$work/speedups.dat"
 for n in "${cells[@]}"; do
-  lattice "$n" > "$work/lattice.prm"
+  welded_lattice_scene "$n" $'  set Line search = energy\n  set Linear solver = mumps' \
+    > "$work/lattice.prm"
   one=() threads=() processes=()
   for ((k = 0; k < repeats; ++k)); do
     one+=("$(seconds "$run" "$work/lattice.prm" --output "$work/a" --threads 1)")
     threads+=("$(seconds "$run" "$work/lattice.prm" --output "$work/b" --threads 2)")
     processes+=("$(seconds "${mpirun[@]}" "$run" "$work/lattice.prm" --output "$work/c" --threads 1)")
   done
-  "$run" "$work/lattice.prm" --output "$work/a" > "$work/size.log" 2>&1
-  dofs=$(sed -n 's/^rodnet: .* \([0-9]*\) DoFs, .*/\1/p' "$work/size.log" | head -1)
+  # The last run's log (process_timing.sh's $work/log) names the DoFs.
+  dofs=$(sed -n 's/^rodnet: .* \([0-9]*\) DoFs, .*/\1/p' "$work/log" | head -1)
   t1=$(echo "${one[*]}" | median)
   t2=$(echo "${threads[*]}" | median)
   tp=$(echo "${processes[*]}" | median)
