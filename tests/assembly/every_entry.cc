@@ -53,37 +53,39 @@ namespace
       EXPECT_EQ((*every)[i], value(i)) << what << ", entry " << i;
   }
 
-  TEST(EveryEntry, GathersEveryEntryOfAnyPartition)
+  /// This process's contiguous share of the entries, and the number of
+  /// processes and this one's rank.
+  struct Share
   {
     const unsigned int n_processes =
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const unsigned int rank =
       dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    const dealii::IndexSet share =
+    const dealii::IndexSet entries =
       contiguous_share(n_entries, n_processes, rank);
+  };
+
+  TEST(EveryEntry, GathersEveryEntryOfAnyPartition)
+  {
+    const Share            own;
     const dealii::IndexSet none(n_entries);
-    expect_every_value(filled(share, none), "contiguous shares");
+    expect_every_value(filled(own.entries, none), "contiguous shares");
 
     dealii::IndexSet ghosts(n_entries);
     ghosts.add_index(0);
     ghosts.add_index(n_entries - 1);
-    expect_every_value(filled(share, ghosts), "shares with ghosts");
+    expect_every_value(filled(own.entries, ghosts), "shares with ghosts");
 
     dealii::IndexSet strided(n_entries);
-    for (dealii::types::global_dof_index i = rank; i < n_entries;
-         i += n_processes)
+    for (dealii::types::global_dof_index i = own.rank; i < n_entries;
+         i += own.n_processes)
       strided.add_index(i);
     expect_every_value(filled(strided, none), "ownership in strides");
   }
 
   TEST(DofValues, ReadsTheShareAndTheGhostsAndRefusesTheRest)
   {
-    const unsigned int n_processes =
-      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    const unsigned int rank =
-      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    const dealii::IndexSet share =
-      contiguous_share(n_entries, n_processes, rank);
+    const dealii::IndexSet share = Share().entries;
     // Ghosts below and above every share but the first's and last's.
     dealii::IndexSet ghosts(n_entries);
     ghosts.add_index(0);
