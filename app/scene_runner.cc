@@ -203,18 +203,14 @@ namespace rodnet
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     if (processes == 1)
       return;
-    const std::string what =
-      scene.method == SolutionMethod::time_stepping ?
-        "Solver/Method = time stepping" :
-      scene.method == SolutionMethod::dynamic_relaxation ?
-        "Solver/Method = dynamic relaxation" :
-        "";
-    if (!what.empty())
+    if (scene.method == SolutionMethod::dynamic_relaxation)
       throw std::invalid_argument(
-        what + " runs on one process only, and this run has " +
+        "Solver/Method = dynamic relaxation runs on one process only, and "
+        "this run has " +
         std::to_string(processes) +
         " MPI processes: run it without mpirun (Newton's load steps, "
-        "continuation and mode shapes run on several processes)");
+        "continuation, time stepping and mode shapes run on several "
+        "processes)");
   }
 
   RunSummary

@@ -73,10 +73,10 @@ namespace rodnet
    */
   /**
    * Throws std::invalid_argument, naming the entry, where @p scene asks for
-   * what runs on one process only and MPI_COMM_WORLD has several: time
-   * stepping and dynamic relaxation (doc/architecture.md, "Several
-   * processes"). Newton's load steps, continuation and mode shapes run on
-   * several processes.
+   * what runs on one process only and MPI_COMM_WORLD has several: dynamic
+   * relaxation (doc/architecture.md, "Several processes"). Newton's load
+   * steps, continuation, time stepping and mode shapes run on several
+   * processes.
    */
   void
   require_runs_on_these_processes(const Scene &scene);

@@ -4,6 +4,7 @@
 // rotary inertia of the sections about their bending axes, and the
 // rotational inertia of each segment's twist about its tangent.
 #include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
@@ -99,6 +100,13 @@ namespace rodnet
     }
   } // namespace
 
+  bool
+  adds_here(const MatrixType &matrix, const global_dof_index anchor)
+  {
+    const auto [first, end] = matrix.local_range();
+    return anchor >= first && anchor < end;
+  }
+
   RodInertia
   rod_inertia(const CrossSection &section, const double density)
   {
@@ -143,14 +151,17 @@ namespace rodnet
       apply_constraints ? model.constraints() :
                           model.layout().junction_constraints();
     model.initialize_matrix(mass);
-    dealii::FullMatrix<double> cell_mass(fe.n_dofs_per_cell(),
+    dealii::FullMatrix<double>    cell_mass(fe.n_dofs_per_cell(),
                                          fe.n_dofs_per_cell());
     std::vector<global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : model.layout().segment_cells())
       {
+        // Each segment once, on several processes too (adds_here()).
+        cell->get_dof_indices(dofs);
+        if (!adds_here(mass, dofs[0]))
+          continue;
         fe_values.reinit(cell);
         segment_mass(fe_values, inertia[cell->material_id()], cell_mass);
-        cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(cell_mass, dofs, mass);
       }
     add_rigid_body_mass(model, constraints, mass);

@@ -83,6 +83,15 @@ namespace rodnet
                        bool apply_constraints = false);
 
   /**
+   * Whether this process adds the block whose first DoF is @p anchor into
+   * @p matrix: where it owns that DoF's row. On several processes each
+   * segment's or body's block is added by one process, and the matrix sends
+   * the rows of other processes' DoFs to their owners when compressed.
+   */
+  bool
+  adds_here(const MatrixType &matrix, global_dof_index anchor);
+
+  /**
    * Kinetic energy 1/2 v^T M v of the DoF velocity @p velocity for the
    * mass matrix @p mass. Throws std::invalid_argument if their sizes
    * differ.

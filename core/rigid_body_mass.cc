@@ -32,6 +32,8 @@ namespace rodnet
           for (unsigned int c = 1; c < 4; ++c)
             dofs.push_back(model.layout().rotation_dof(j, c));
         }
+      if (!adds_here(mass, dofs[0]))
+        return;
       dealii::FullMatrix<double> block(dofs.size(), dofs.size());
       for (unsigned int i = 0; i < dofs.size(); ++i)
         block(i, i) = i < 3 ? body.mass : 4 * j;
@@ -56,6 +58,8 @@ namespace rodnet
           dofs.push_back(model.layout().vertex_dof(v, c));
       for (const unsigned int cell : e.segments)
         dofs.push_back(model.layout().twist_dof(cell));
+      if (!adds_here(mass, dofs[0]))
+        return;
       dealii::FullMatrix<double> block(dofs.size(), dofs.size());
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int k = 0; k < n; ++k)

@@ -1,6 +1,7 @@
 #ifndef RODNET_CORE_RIGID_BODY_MASS_H
 #define RODNET_CORE_RIGID_BODY_MASS_H
 
+#include <core/mass_matrix.h>
 #include <core/solvable_model.h>
 
 namespace rodnet

@@ -2,6 +2,7 @@
 // solver advances: the time step of the incremental update, the commit of
 // internal variables after a converged step, and taking and installing a
 // ModelState.
+#include <core/every_entry.h>
 #include <core/rod_model.h>
 
 #include <algorithm>
@@ -36,7 +37,14 @@ namespace rodnet
   {
     if (!has_internal_variables())
       return;
-    const StencilState state{u, *configuration_, history, step_length, 0.0};
+    // Every process keeps every stencil's variables (the output writes
+    // them all), so it reads every entry: a replica on several processes.
+    const EveryEntry   every(u);
+    const StencilState state{*every,
+                             *configuration_,
+                             history,
+                             step_length,
+                             0.0};
     // A family must not write into the values it reads: it updates into
     // scratch, which is then committed.
     std::vector<double> updated;

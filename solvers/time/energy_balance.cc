@@ -1,5 +1,6 @@
 // The energy watch of dynamic runs: the total energy against the work of
 // the loads, fields and moving supports (solvers/time/energy_balance.h).
+#include <core/every_entry.h>
 #include <solvers/solver_failure.h>
 #include <solvers/time/energy_balance.h>
 #include <solvers/time/tensor_body_support_work.h>
@@ -96,12 +97,15 @@ namespace rodnet
   EnergyBalance::add_step(const StepEnds                      &ends,
                           const std::function<double(double)> &load_factor)
   {
-    const bool supports_move =
+    // The fixed DoFs and the motion anywhere: read from replicas on
+    // several processes, so that every process takes the same branch.
+    const EveryEntry u0(ends.u0), u1(ends.u1);
+    const bool       supports_move =
       std::any_of(fixed.begin(), fixed.end(), [&](const auto i) {
-        return ends.u1[i] != ends.u0[i];
+        return (*u1)[i] != (*u0)[i];
       });
     step_moved            = parameters_move(ends, load_factor) || supports_move;
-    last_motion           = step_motion(ends);
+    last_motion           = step_motion(*u0, *u1);
     step_potential_change = 0;
     step_support_work     = 0;
     if (step_moved)
@@ -169,23 +173,26 @@ namespace rodnet
         damping.vmult(damping_force, mean_velocity);
         impulse.add(h / 2, damping_force);
       }
+    const EveryEntry every_impulse(impulse), every_force(force), u0(ends.u0),
+      u1(ends.u1);
     double work = 0;
     for (const global_dof_index i : fixed)
-      work += (impulse[i] / h + force[i]) * (ends.u1[i] - ends.u0[i]);
+      work +=
+        ((*every_impulse)[i] / h + (*every_force)[i]) * ((*u1)[i] - (*u0)[i]);
     for (const auto &[i, reaction] : body_reaction)
-      work += reaction * (ends.u1[i] - ends.u0[i]);
+      work += reaction * ((*u1)[i] - (*u0)[i]);
     return work;
   }
 
   ResidualParts
-  EnergyBalance::step_motion(const StepEnds &ends) const
+  EnergyBalance::step_motion(const VectorType &u0, const VectorType &u1) const
   {
     using Kind      = DofRoles::Kind;
     double position = 0, angle = 0;
     for (global_dof_index i = 0; i < roles.n_dofs(); ++i)
       if (!model.constraints().is_constrained(i))
         {
-          const double d = ends.u1[i] - ends.u0[i];
+          const double d = u1[i] - u0[i];
           if (roles.kind(i) == Kind::position)
             position += d * d;
           else if (roles.kind(i) == Kind::twist)
@@ -209,22 +216,20 @@ namespace rodnet
     const double energy_change =
       kinetic + potential - last_kinetic - last_potential;
     const double step_balance =
-      step_moved ? kinetic - last_kinetic + step_potential_change -
-                     step_support_work :
-                   energy_change;
+      step_moved ?
+        kinetic - last_kinetic + step_potential_change - step_support_work :
+        energy_change;
     balance += step_balance;
     external_work += energy_change - step_balance;
     last_kinetic   = kinetic;
     last_potential = potential;
     step_moved     = false;
-    scale = std::max({scale,
-                      kinetic,
-                      std::abs(kinetic + potential),
-                      std::abs(external_work)});
+    scale          = std::max(
+      {scale, kinetic, std::abs(kinetic + potential), std::abs(external_work)});
     // The step's energy error r . d within the norms of its residual and
     // motion: a balance within their sum is no growth.
-    residual_bound += residual.force * last_motion.force +
-                      residual.moment * last_motion.moment;
+    residual_bound +=
+      residual.force * last_motion.force + residual.moment * last_motion.moment;
     if (balance > std::max(growth_limit * scale, residual_bound))
       throw SolverFailure(
         who + ": unstable at t = " + energy_string(time) +

@@ -98,7 +98,7 @@ namespace rodnet
     /// factor as a function of time @p load_factor. Leaves the model at
     /// ends.end_time.
     void
-    add_step(const StepEnds                     &ends,
+    add_step(const StepEnds                      &ends,
              const std::function<double(double)> &load_factor);
 
     /**
@@ -135,10 +135,11 @@ namespace rodnet
     double
     support_work(const StepEnds &ends, const VectorType &force) const;
 
-    /// The l2 norms of the step's motion on the free positions (m) and
-    /// angles (rad: twists, 2 a of a quaternion increment a).
+    /// The l2 norms of the step's motion from @p u0 to @p u1 (vectors with
+    /// every entry) on the free positions (m) and angles (rad: twists, 2 a
+    /// of a quaternion increment a).
     ResidualParts
-    step_motion(const StepEnds &ends) const;
+    step_motion(const VectorType &u0, const VectorType &u1) const;
 
     SolvableModel    &model;
     const MatrixType &mass;
@@ -156,11 +157,11 @@ namespace rodnet
     /// The bodies with an inertia tensor (tensor_body_reaction()).
     std::vector<TensorBody> tensor_bodies;
 
-    bool   watching     = false;
-    double growth_limit = 0;
-    double start_energy = 0;
-    double scale        = 0;
-    double balance      = 0;
+    bool   watching       = false;
+    double growth_limit   = 0;
+    double start_energy   = 0;
+    double scale          = 0;
+    double balance        = 0;
     double external_work  = 0;
     double last_kinetic   = 0;
     double last_potential = 0;

@@ -55,7 +55,8 @@ namespace rodnet
     matrix.copy_from(system.constrained_mass);
     VectorType right_hand_side = force;
     system.model.constraints().set_zero(right_hand_side);
-    for (unsigned int i = 0; i < matrix.m(); ++i)
+    const auto [first, end] = matrix.local_range();
+    for (global_dof_index i = first; i < end; ++i)
       if (matrix.diag_element(i) == 0.0)
         {
           matrix.set(i, i, 1.0);
@@ -115,10 +116,7 @@ namespace rodnet
     v.add(gamma / (beta * h), change);
     acceleration *= 1 - 1 / (2 * beta);
     acceleration.add(1 / (beta * h * h), change);
-    for (unsigned int i = 0; i < system.has_mass.size(); ++i)
-      if (!system.has_mass[i])
-        acceleration[i] = 0;
-    acceleration.compress(dealii::VectorOperation::insert);
+    system.zero_massless_rows(acceleration);
     update_inertial_extra();
   }
 } // namespace rodnet

@@ -1,5 +1,7 @@
 // The gyroscopic force of the sections' spin on the centreline under the
 // midpoint rule (solvers/time/gyroscopic_coupling.h).
+#include <core/every_entry.h>
+#include <core/mass_matrix.h>
 #include <elements/quaternion.h>
 #include <solvers/time/gyroscopic_coupling.h>
 
@@ -62,6 +64,10 @@ namespace rodnet
       throw std::logic_error("GyroscopicCoupling: the tangent's pattern "
                              "lacks a segment's coupling");
     }
+
+    /// The place of an entry in a row of another process, which the
+    /// matrix's buffer sends to its owner when compressed.
+    constexpr int other_process_row = -2;
   } // namespace
 
   GyroscopicCoupling::GyroscopicCoupling(const SolvableModel &model,
@@ -82,7 +88,10 @@ namespace rodnet
         Segment s;
         for (unsigned int i = 0; i < 6; ++i)
           s.dofs[i] = stencil.dofs[i];
-        s.dofs[6]  = model.layout().twist_dof(stencil.cell);
+        s.dofs[6] = model.layout().twist_dof(stencil.cell);
+        // On several processes each segment once: by its twist's owner.
+        if (!adds_here(mass, s.dofs[6]))
+          continue;
         s.vertices = stencil.vertices;
         s.inertia  = mass.el(s.dofs[6], s.dofs[6]);
         if (s.inertia != 0)
@@ -111,18 +120,24 @@ namespace rodnet
                                 VectorType       &r)
   {
     collect_segments();
-    const DofValues start(u_n), end(y);
+    // The vertices of a segment may be another process's: read from
+    // replicas, added through the vector's buffer of other rows.
+    const EveryEntry              every_start(u_n), every_end(y);
+    const DofValues               start(*every_start), end(*every_end);
+    std::vector<global_dof_index> rows;
+    std::vector<double>           forces;
     for (const Segment &s : segments)
       {
         const SegmentStep step = step_of(s, start, end);
         const Vector3     g =
           -s.inertia * step.twist / (h * h) * turn_direction(step);
-        for (unsigned int c = 0; c < 3; ++c)
+        for (unsigned int i = 0; i < 6; ++i)
           {
-            r[s.dofs[c]] -= g[c];
-            r[s.dofs[3 + c]] += g[c];
+            rows.push_back(s.dofs[i]);
+            forces.push_back(i < 3 ? -g[i] : g[i - 3]);
           }
       }
+    r.add(rows, forces);
     r.compress(dealii::VectorOperation::add);
   }
 
@@ -151,7 +166,9 @@ namespace rodnet
             place                        = -1;
             if (constraints.is_constrained(r) || constraints.is_constrained(c))
               continue;
-            place = place_of(m, rows.offsets, rows.columns, r, c);
+            place = m.MyGRID(dealii::TrilinosWrappers::types::int_type(r)) ?
+                      place_of(m, rows.offsets, rows.columns, r, c) :
+                      other_process_row;
           }
     placed_rows = rows;
   }
@@ -164,9 +181,10 @@ namespace rodnet
   {
     collect_segments();
     place_entries(k.trilinos_matrix());
-    int            *offsets, *columns;
-    double         *values;
-    const DofValues start(u_n), end(y);
+    int             *offsets, *columns;
+    double          *values;
+    const EveryEntry every_start(u_n), every_end(y);
+    const DofValues  start(*every_start), end(*every_end);
     k.trilinos_matrix().ExtractCrsDataPointers(offsets, columns, values);
     for (std::size_t n = 0; n < segments.size(); ++n)
       {
@@ -193,6 +211,8 @@ namespace rodnet
                                        chord_block(row % 3, col % 3));
                 if (place >= 0 && value != 0)
                   values[place] += value;
+                else if (place == other_process_row && value != 0)
+                  k.add(s.dofs[row], s.dofs[col], value);
               }
           }
       }

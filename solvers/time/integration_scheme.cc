@@ -3,6 +3,14 @@
 
 namespace rodnet
 {
+  void
+  StepSystem::zero_massless_rows(VectorType &v) const
+  {
+    for (const global_dof_index i : massless_rows)
+      v[i] = 0;
+    v.compress(dealii::VectorOperation::insert);
+  }
+
   bool
   IntegrationScheme::dynamic() const
   {
@@ -120,10 +128,7 @@ namespace rodnet
     if (system.damping.m() != 0)
       system.damping.vmult_add(force, v);
     force *= -1.0;
-    for (unsigned int i = 0; i < system.has_mass.size(); ++i)
-      if (!system.has_mass[i])
-        force[i] = 0;
-    force.compress(dealii::VectorOperation::insert);
+    system.zero_massless_rows(force);
   }
 
   void

@@ -17,8 +17,9 @@ namespace rodnet
     SolvableModel    &model;
     const MatrixType &mass;             ///< unconstrained
     const MatrixType &constrained_mass; ///< fixed rows and columns zero
-    /// Rows with a nonzero mass diagonal.
-    const std::vector<bool> &has_mass;
+    /// The rows of this process's DoFs with a zero mass diagonal (junction
+    /// quaternions without a body): they have no velocity or acceleration.
+    const std::vector<global_dof_index> &massless_rows;
     /// The damping matrix C, empty (m() == 0) without damping.
     const MatrixType &damping; ///< unconstrained
     /// Fixed rows and columns zero but the tangent's diagonal there.
@@ -26,6 +27,10 @@ namespace rodnet
     /// The spectral radius at omega h -> infinity that a scheme with
     /// controllable numerical dissipation is asked for (generalized alpha).
     double spectral_radius_at_infinity = 1;
+
+    /// Sets the massless rows of @p v to zero.
+    void
+    zero_massless_rows(VectorType &v) const;
   };
 
   /// The velocity at which a scheme's damping force C v acts, in terms of

@@ -1,3 +1,6 @@
+#include <deal.II/base/mpi.h>
+
+#include <core/same_entries.h>
 #include <solvers/time/midpoint_scheme.h>
 
 #include <cmath>
@@ -109,7 +112,7 @@ namespace rodnet
     // Pi(y) of the assembly of grad Pi(y) where there is one at y (the
     // first iterate's, shared_gradient()), else an energy-only assembly.
     const double energy =
-      end_known && y == end_point ?
+      end_known && same_entries(y, end_point) ?
         end_energy :
         model.assemble(y, step.load_factor, nullptr, nullptr);
     residual_point           = y;
@@ -143,7 +146,7 @@ namespace rodnet
   void
   MidpointScheme::assemble_end(const StepStart &step, const VectorType &y)
   {
-    if (end_known && y == end_point)
+    if (end_known && same_entries(y, end_point))
       return;
     end_energy =
       system.model.assemble(y, step.load_factor, &gradient_y, nullptr, false);
@@ -162,16 +165,21 @@ namespace rodnet
     // was off by K_fh d_h / (2 w.d), which grows as 1 / |d| when the step
     // is cut (a support turning a rod about its own axis: no convergence).
     // (The junction copies' lines, with entries, are no stencil's DoFs.)
-    held_difference = 0;
-    held_product    = 0;
-    bool moves      = false;
+    // Each process its own rows; the assembly below is collective, so
+    // all take part where a held DoF moves on any.
+    held_difference              = 0;
+    held_product                 = 0;
+    unsigned int           moves = 0;
+    const dealii::IndexSet owned = y.locally_owned_elements();
     for (const auto &line : system.model.constraints().get_lines())
-      if (line.entries.empty() && y[line.index] != step.u[line.index])
+      if (line.entries.empty() && owned.is_element(line.index) &&
+          y[line.index] != step.u[line.index])
         {
           held_difference[line.index] = y[line.index] - step.u[line.index];
-          moves                       = true;
+          moves                       = 1;
         }
-    if (!moves)
+    held_difference.compress(dealii::VectorOperation::insert);
+    if (dealii::Utilities::MPI::max(moves, y.get_mpi_communicator()) == 0)
       return;
     system.model.assemble(point, step.load_factor, nullptr, &k, false);
     k.vmult(held_product, held_difference);
@@ -203,7 +211,7 @@ namespace rodnet
     set_midpoint(step, y);
     SolvableModel &model = system.model;
     // Newton asks for the tangent where it has just evaluated the residual.
-    if (!gradient_known || !(point == gradient_point))
+    if (!gradient_known || !same_entries(point, gradient_point))
       model.assemble(point, step.load_factor, &gradient_m, nullptr, false);
     assemble_end(step, y);
     const auto [coefficient, norm2] =

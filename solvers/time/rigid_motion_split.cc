@@ -1,3 +1,6 @@
+#include <deal.II/base/mpi.h>
+
+#include <core/every_entry.h>
 #include <elements/quaternion.h>
 #include <solvers/checks/dof_roles.h>
 #include <solvers/checks/free_motions.h>
@@ -50,6 +53,21 @@ namespace rodnet
       return scale.asDiagonal() * (v * inverse.asDiagonal() *
                                    (v.transpose() * (scale.asDiagonal() * b)));
     }
+
+    /// Replaces each of the @p n doubles at @p values by its sum over the
+    /// processes of @p communicator (each added the rows of its DoFs).
+    void
+    sum_over_processes(double           *values,
+                       const std::size_t n,
+                       MPI_Comm          communicator)
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(communicator) == 1)
+        return;
+      const std::vector<double> own(values, values + n);
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(own),
+                                  communicator,
+                                  dealii::ArrayView<double>(values, n));
+    }
   } // namespace
 
   RigidMotionSplit::RigidMotionSplit(const SolvableModel &model,
@@ -72,6 +90,8 @@ namespace rodnet
             model.constraints().is_constrained(d))
           held[root[rod_of(network, roles, d)]] = true;
       }
+    const dealii::IndexSet owned =
+      model.create_vector().locally_owned_elements();
     std::vector<int> part_of_root(root.size(), -1);
     for (unsigned int r = 0; r < root.size(); ++r)
       if (root[r] == r && !held[r])
@@ -86,7 +106,10 @@ namespace rodnet
             kind != Kind::quaternion)
           continue;
         const int part = part_of_root[root[rod_of(network, roles, d)]];
-        if (part < 0 || model.constraints().is_constrained(d))
+        // Each process the rows of its own DoFs; the sums over the parts
+        // add up the processes' (sum_over_processes()).
+        if (part < 0 || model.constraints().is_constrained(d) ||
+            !owned.is_element(d))
           continue;
         if (kind == Kind::position)
           moved.push_back({d,
@@ -134,6 +157,7 @@ namespace rodnet
           }
         started = true;
       }
+    const EveryEntry every(x);
     for (Part &part : parts)
       part = Part{0, Vector3::Zero()};
     // The centre of mass of the rows of M: then t_a^T M r_b = e_b x
@@ -145,14 +169,18 @@ namespace rodnet
         {
           const double mass_i = mass_translations[m.component][m.dof];
           const double x_i =
-            model.configuration().position(x, m.vertex)[m.component];
+            model.configuration().position(*every, m.vertex)[m.component];
           Part &part = parts[m.part];
           part.centre[m.component] += mass_i * x_i;
           if (m.component == 0)
             part.mass += mass_i;
         }
     for (Part &part : parts)
-      part.centre /= part.mass;
+      {
+        sum_over_processes(&part.mass, 1, communicator());
+        sum_over_processes(part.centre.data(), 3, communicator());
+        part.centre /= part.mass;
+      }
   }
 
   void
@@ -160,14 +188,16 @@ namespace rodnet
   {
     for (VectorType &r : rotations)
       r = 0;
+    const EveryEntry every(x);
     for (const MovedDof &m : moved)
       {
         if (m.component > 3)
           {
-            set_junction_turn(x, m);
+            set_junction_turn(*every, m);
             continue;
           }
-        const Vector3 position = model.configuration().position(x, m.vertex);
+        const Vector3 position =
+          model.configuration().position(*every, m.vertex);
         if (m.component < 3)
           {
             const Vector3 arm = position - parts[m.part].centre;
@@ -177,7 +207,7 @@ namespace rodnet
         else
           {
             const Vector3 tangent =
-              (model.configuration().position(x, m.next) - position)
+              (model.configuration().position(*every, m.next) - position)
                 .normalized();
             for (unsigned int a = 0; a < 3; ++a)
               rotations[3 + a][m.dof] = tangent[a];
@@ -230,6 +260,9 @@ namespace rodnet
     std::vector<Vector6> alpha(parts.size());
     for (unsigned int p = 0; p < parts.size(); ++p)
       {
+        sum_over_processes(resultant[p].data(), 3, communicator());
+        sum_over_processes(moment[p].data(), 6, communicator());
+        sum_over_processes(gram[p].data(), 36, communicator());
         resultant[p] /= parts[p].mass;
         alpha[p] = scaled_pseudo_solve(gram[p], moment[p]);
       }

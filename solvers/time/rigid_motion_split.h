@@ -64,7 +64,14 @@ namespace rodnet
     remove_rigid_part(const VectorType &x, VectorType &force);
 
   private:
-    /// A DoF that a rigid motion of a free part moves.
+    /// The communicator of the model's vectors.
+    MPI_Comm
+    communicator() const
+    {
+      return mass.get_mpi_communicator();
+    }
+
+    /// A DoF of this process that a rigid motion of a free part moves.
     struct MovedDof
     {
       global_dof_index dof;

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <core/same_entries.h>
 #include <core/tensor_body_spin.h>
 #include <solvers/checks/equilibrium_check.h>
 #include <solvers/checks/free_motions.h>
@@ -125,7 +126,7 @@ namespace rodnet
           known->energy = problem.energy(x, &known->residual);
           problem.set_potential([potential = problem.energy,
                                  known](const VectorType &y, VectorType *r) {
-            if (!(y == known->x))
+            if (!same_entries(y, known->x))
               return potential(y, r);
             if (r != nullptr)
               *r = known->residual;
@@ -137,7 +138,7 @@ namespace rodnet
           problem.residual(x, known->residual);
           problem.residual = [residual = problem.residual,
                               known](const VectorType &y, VectorType &r) {
-            if (y == known->x)
+            if (same_entries(y, known->x))
               r = known->residual;
             else
               residual(y, r);
@@ -190,9 +191,11 @@ namespace rodnet
     assemble_mass_matrix(model, inertia, p.mass, mass, false);
     assemble_mass_matrix(model, inertia, p.mass, constrained_mass, true);
     copy_nonzeros(mass, mass_nonzeros);
-    has_mass.resize(mass.m());
-    for (unsigned int i = 0; i < mass.m(); ++i)
-      has_mass[i] = mass.diag_element(i) != 0.0;
+    massless_rows.clear();
+    const auto [first, end] = mass.local_range();
+    for (global_dof_index i = first; i < end; ++i)
+      if (mass.diag_element(i) == 0.0)
+        massless_rows.push_back(i);
     if (p.viscous_drag > 0)
       {
         // A force -c v per length on the positions, lumped with each
@@ -452,7 +455,8 @@ namespace rodnet
     const ConvergedEnergy &known = converged_energy;
     if (known.known && !model.has_internal_variables() &&
         same_potential_load(load_factor, known.load_factor) &&
-        model.activation_time_factors() == known.time_factors && u == known.u)
+        model.activation_time_factors() == known.time_factors &&
+        same_entries(u, known.u))
       return known.value;
     return std::numeric_limits<double>::quiet_NaN();
   }
@@ -647,10 +651,7 @@ namespace rodnet
     const VectorType start_velocity = energy_balance.on() ? v : VectorType();
     scheme.finish(start, x, v);
     // Rows without mass (junction quaternions) have no velocity.
-    for (unsigned int i = 0; i < has_mass.size(); ++i)
-      if (!has_mass[i])
-        v[i] = 0;
-    v.compress(dealii::VectorOperation::insert);
+    system.zero_massless_rows(v);
     // The work of the step, in its chart (before the reference reset).
     if (energy_balance.on())
       energy_balance.add_step(

@@ -458,12 +458,12 @@ namespace rodnet
     MatrixType tangent;
     /// The tangent's factorization, kept across Newton solves.
     TangentFactorizationCache factorizations;
-    /// Rows with a nonzero mass diagonal.
-    std::vector<bool> has_mass;
-    StepSystem        system{model,
+    /// This process's rows with a zero mass diagonal.
+    std::vector<global_dof_index> massless_rows;
+    StepSystem                    system{model,
                       mass_nonzeros,
                       constrained_mass,
-                      has_mass,
+                      massless_rows,
                       damping,
                       constrained_damping,
                       parameters.spectral_radius_at_infinity};

@@ -39,12 +39,12 @@ namespace
                                   RodStiffness{1, 1, 1, 1}),
                                 2,
                                 Vector3::Zero());
-    MatrixType        mass, constrained_mass, damping, constrained_damping;
-    std::vector<bool> has_mass;
-    StepSystem        system{*model,
+    MatrixType mass, constrained_mass, damping, constrained_damping;
+    std::vector<rodnet::global_dof_index> massless_rows;
+    StepSystem                            system{*model,
                       mass,
                       constrained_mass,
-                      has_mass,
+                      massless_rows,
                       damping,
                       constrained_damping};
 
