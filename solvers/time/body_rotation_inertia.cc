@@ -1,9 +1,12 @@
 // The inertia of rigid bodies that turn with their junction under the
 // midpoint rule (solvers/time/body_rotation_inertia.h).
+#include <deal.II/base/mpi.h>
+
 #include <elements/quaternion.h>
 #include <solvers/time/body_rotation_inertia.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace rodnet
 {
@@ -295,6 +298,17 @@ namespace rodnet
     if (!scheme.dynamic())
       return;
     const std::vector<TensorBody> bodies = tensor_bodies(model);
+    // BodyRotationInertia and the bodies' spin read the states by global
+    // index, which a process holds only in part on several.
+    const unsigned int processes = dealii::Utilities::MPI::n_mpi_processes(
+      model.create_vector().get_mpi_communicator());
+    if (!bodies.empty() && processes > 1)
+      throw std::invalid_argument(
+        model.rigid_bodies()[bodies[0].index].where +
+        ": a body that turns with its junction (an inertia tensor or a centre "
+        "off the vertex) is integrated in time on one process only, and this "
+        "run has " +
+        std::to_string(processes) + " MPI processes: run it without mpirun");
     for (const RigidBody &body : model.rigid_bodies())
       if (body.turns_with_junction() && !scheme.carries_inertia_tensors())
         throw std::invalid_argument(

@@ -328,33 +328,59 @@ namespace
       }
   }
 
-  TEST(Driver, SerialOnlyMethodsAreRefusedOnceOnSeveralProcesses)
+  /// Runs scene @p name of scenes/ with @p changes appended on two
+  /// processes: it must fail with @p message, printed by one process only,
+  /// before it writes anything.
+  void
+  expect_refused_on_two_processes(const std::string &name,
+                                  const std::string &changes,
+                                  const std::string &message)
   {
-    if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
-      GTEST_SKIP() << "no mpirun";
-    fs::remove_all("out_two_processes");
+    const std::string scene  = name + "_on_two_processes.prm";
+    const std::string output = "out_" + name + "_on_two_processes";
+    fs::remove_all(output);
+    std::ofstream(scene) << read_file(std::string(RODNET_SOURCE_DIR) +
+                                      "/scenes/" + name + ".prm")
+                         << "\n"
+                         << changes;
     // This test program is an MPI process itself: its Open MPI variables
     // would make mpirun's processes join it instead of starting their own.
-    // Dynamic relaxation runs on one process only.
-    {
-      std::ofstream scene("relaxed_gridshell.prm");
-      scene << rodnet::testing::read_file(std::string(RODNET_SOURCE_DIR) +
-                                          "/scenes/gridshell.prm")
-            << "\nsubsection Solver\n  set Method = dynamic relaxation\nend\n";
-    }
     const rodnet::testing::DriverOutcome o = rodnet::testing::run_command(
       "for v in $(env | grep -o '^\\(OMPI\\|PMIX\\)[A-Za-z0-9_]*'); do "
       "unset $v; done; mpirun --allow-run-as-root --oversubscribe -np 2 " +
-      std::string(RODNET_BINARY_DIR) +
-      "/rodnet-run relaxed_gridshell.prm --output out_two_processes");
+      std::string(RODNET_BINARY_DIR) + "/rodnet-run " + scene + " --output " +
+      output);
     EXPECT_NE(o.exit_code, 0) << o.output;
-    const std::string message =
-      "Solver/Method = dynamic relaxation runs on one process only";
     const auto first = o.output.find(message);
     ASSERT_NE(first, std::string::npos) << o.output;
     EXPECT_EQ(o.output.find(message, first + 1), std::string::npos)
       << "printed by more than one process:\n"
       << o.output;
-    EXPECT_FALSE(fs::exists("out_two_processes"));
+    EXPECT_FALSE(fs::exists(output));
+  }
+
+  TEST(Driver, DynamicRelaxationIsRefusedOnceOnSeveralProcesses)
+  {
+    if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
+      GTEST_SKIP() << "no mpirun";
+    expect_refused_on_two_processes(
+      "gridshell",
+      "subsection Solver\n  set Method = dynamic relaxation\nend\n",
+      "Solver/Method = dynamic relaxation runs on one process only");
+  }
+
+  TEST(Driver, BodiesTurningWithAJunctionAreRefusedOnceOnSeveralProcesses)
+  {
+    if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
+      GTEST_SKIP() << "no mpirun";
+    // A body with an inertia tensor at a junction of the truss: refused
+    // before the integrator is judged (on one process, only the midpoint
+    // rule carries it).
+    expect_refused_on_two_processes(
+      "hexagonal_truss",
+      "subsection Loads\n  set Rigid bodies = @n_3_0: mass 1e-3 inertia "
+      "1e-9,1e-9,2e-9\nend\n",
+      "is integrated in time on one process only, and this run has 2 MPI "
+      "processes");
   }
 } // namespace
