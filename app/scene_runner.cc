@@ -5,6 +5,7 @@
 #include <app/scene_runner.h>
 #include <io/mode_shapes.h>
 #include <io/problem_size.h>
+#include <solvers/time/body_rotation_inertia.h>
 
 #include <algorithm>
 #include <cmath>
@@ -203,28 +204,21 @@ namespace rodnet
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     if (processes == 1)
       return;
-    const std::string these = "this run has " + std::to_string(processes) +
-                              " MPI processes: run it without mpirun";
     if (scene.method == SolutionMethod::dynamic_relaxation)
       throw std::invalid_argument(
-        "Solver/Method = dynamic relaxation runs on one process only, and " +
-        these +
-        " (Newton's load steps, continuation, time stepping and mode shapes "
+        "Solver/Method = dynamic relaxation runs on one process only, and "
+        "this run has " +
+        std::to_string(processes) +
+        " MPI processes: run it without mpirun (Newton's load steps, "
+        "continuation, time stepping and mode shapes "
         "run on several processes)");
     if (scene.method != SolutionMethod::time_stepping ||
         !scene.time_stepping.dynamic())
       return;
-    // RigidBody::turns_with_junction(), before the network is built: their
-    // rotational inertia (BodyRotationInertia) is serial.
+    // Before the network is built, as check_tensor_bodies() would later.
     for (const RigidBodyItem &body : scene.rigid_bodies())
-      if (body.inertia_tensor != Matrix3::Zero() ||
-          body.centre_offset != Vector3::Zero())
-        throw std::invalid_argument(
-          body.where +
-          ": a body that turns with its junction (an inertia tensor or a "
-          "centre off the vertex) is integrated in time on one process "
-          "only, and " +
-          these);
+      if (body.turns_with_junction())
+        throw std::invalid_argument(serial_body_refusal(body.where, processes));
   }
 
   RunSummary

@@ -298,17 +298,12 @@ namespace rodnet
     if (!scheme.dynamic())
       return;
     const std::vector<TensorBody> bodies = tensor_bodies(model);
-    // BodyRotationInertia and the bodies' spin read the states by global
-    // index, which a process holds only in part on several.
     const unsigned int processes = dealii::Utilities::MPI::n_mpi_processes(
       model.create_vector().get_mpi_communicator());
     if (!bodies.empty() && processes > 1)
       throw std::invalid_argument(
-        model.rigid_bodies()[bodies[0].index].where +
-        ": a body that turns with its junction (an inertia tensor or a centre "
-        "off the vertex) is integrated in time on one process only, and this "
-        "run has " +
-        std::to_string(processes) + " MPI processes: run it without mpirun");
+        serial_body_refusal(model.rigid_bodies()[bodies[0].index].where,
+                            processes));
     for (const RigidBody &body : model.rigid_bodies())
       if (body.turns_with_junction() && !scheme.carries_inertia_tensors())
         throw std::invalid_argument(
@@ -334,5 +329,15 @@ namespace rodnet
           "; a centre off the vertex is represented at a free vertex or at "
           "one held fixed");
       }
+  }
+
+  std::string
+  serial_body_refusal(const std::string &where, const unsigned int processes)
+  {
+    return where +
+           ": a body that turns with its junction (an inertia tensor or a "
+           "centre off the vertex) is integrated in time on one process only, "
+           "and this run has " +
+           std::to_string(processes) + " MPI processes: run it without mpirun";
   }
 } // namespace rodnet

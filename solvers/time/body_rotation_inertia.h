@@ -169,11 +169,20 @@ namespace rodnet
    * Throws std::invalid_argument naming the first body of @p model that
    * turns with its junction (an inertia tensor, a centre off the vertex)
    * if @p scheme is dynamic and cannot carry it (it is not the midpoint
-   * rule), or whose centre is off a vertex held in part or moving in time.
+   * rule), or whose centre is off a vertex held in part or moving in time,
+   * and any such body where the model's vectors span several processes
+   * (serial_body_refusal()).
    */
   void
   check_tensor_bodies(const SolvableModel     &model,
                       const IntegrationScheme &scheme);
+
+  /// The refusal of the body @p where (a message's name for it) that turns
+  /// with its junction, on @p processes MPI processes: BodyRotationInertia
+  /// and the bodies' spin read states by global index. rodnet-run says it
+  /// before anything is written, a driver program at check_tensor_bodies().
+  std::string
+  serial_body_refusal(const std::string &where, unsigned int processes);
 } // namespace rodnet
 
 #endif

@@ -68,6 +68,31 @@ namespace rodnet
                                   communicator,
                                   dealii::ArrayView<double>(values, n));
     }
+
+    /// Whether a rigid motion of a part moves DoFs of kind @p kind.
+    bool
+    moves_with_part(const DofRoles::Kind kind)
+    {
+      using Kind = DofRoles::Kind;
+      return kind == Kind::position || kind == Kind::twist ||
+             kind == Kind::quaternion;
+    }
+
+    /// Per root of @p root (rod_parts()), whether its part is held: whether
+    /// any of its positions, twists or junction rotations is (clamps, pins,
+    /// prescribed motions).
+    std::vector<bool>
+    held_parts(const SolvableModel             &model,
+               const DofRoles                  &roles,
+               const std::vector<unsigned int> &root)
+    {
+      std::vector<bool> held(root.size(), false);
+      for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
+        if (moves_with_part(roles.kind(d)) &&
+            model.constraints().is_constrained(d))
+          held[root[rod_of(model.network(), roles, d)]] = true;
+      return held;
+    }
   } // namespace
 
   RigidMotionSplit::RigidMotionSplit(const SolvableModel &model,
@@ -79,18 +104,8 @@ namespace rodnet
     const DofRoles                  roles(model);
     const RodNetwork               &network = model.network();
     const std::vector<unsigned int> root    = rod_parts(network);
-    // A part is held if any of its positions, twists or junction rotations
-    // is (clamps, pins, prescribed motions).
-    std::vector<bool> held(root.size(), false);
-    for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
-      {
-        const Kind kind = roles.kind(d);
-        if ((kind == Kind::position || kind == Kind::twist ||
-             kind == Kind::quaternion) &&
-            model.constraints().is_constrained(d))
-          held[root[rod_of(network, roles, d)]] = true;
-      }
-    const dealii::IndexSet owned =
+    const std::vector<bool>         held    = held_parts(model, roles, root);
+    const dealii::IndexSet          owned =
       model.create_vector().locally_owned_elements();
     std::vector<int> part_of_root(root.size(), -1);
     for (unsigned int r = 0; r < root.size(); ++r)
@@ -102,8 +117,7 @@ namespace rodnet
     for (global_dof_index d = 0; d < roles.n_dofs(); ++d)
       {
         const Kind kind = roles.kind(d);
-        if (kind != Kind::position && kind != Kind::twist &&
-            kind != Kind::quaternion)
+        if (!moves_with_part(kind))
           continue;
         const int part = part_of_root[root[rod_of(network, roles, d)]];
         // Each process the rows of its own DoFs; the sums over the parts
