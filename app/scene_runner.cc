@@ -204,14 +204,6 @@ namespace rodnet
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     if (processes == 1)
       return;
-    if (scene.method == SolutionMethod::dynamic_relaxation)
-      throw std::invalid_argument(
-        "Solver/Method = dynamic relaxation runs on one process only, and "
-        "this run has " +
-        std::to_string(processes) +
-        " MPI processes: run it without mpirun (Newton's load steps, "
-        "continuation, time stepping and mode shapes "
-        "run on several processes)");
     if (scene.method != SolutionMethod::time_stepping ||
         !scene.time_stepping.dynamic())
       return;

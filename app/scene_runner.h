@@ -74,10 +74,10 @@ namespace rodnet
   /**
    * Throws std::invalid_argument, naming the entry, where @p scene asks for
    * what runs on one process only and MPI_COMM_WORLD has several: dynamic
-   * relaxation, and dynamic time stepping of rigid bodies that turn with
-   * their junction (doc/architecture.md, "Several processes"). Newton's
-   * load steps, continuation, time stepping and mode shapes run on several
-   * processes.
+   * time stepping of rigid bodies that turn with their junction
+   * (doc/architecture.md, "Several processes"). Newton's load steps,
+   * continuation, time stepping, dynamic relaxation and mode shapes run on
+   * several processes.
    */
   void
   require_runs_on_these_processes(const Scene &scene);

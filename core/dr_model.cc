@@ -163,9 +163,11 @@ namespace rodnet
 
 
   DrModel::DrModel(std::unique_ptr<RodNetwork> network,
-                   std::vector<RodStiffness>   stiffness_per_rod)
+                   std::vector<RodStiffness>   stiffness_per_rod,
+                   const MPI_Comm              communicator)
       : network_(std::move(network))
       , stiffness(std::move(stiffness_per_rod))
+      , communicator(communicator)
   {
     // The output draws the rods on the network's triangulation.
     if (network_->triangulation().n_active_cells() == 0)
@@ -325,11 +327,10 @@ namespace rodnet
       d1 = -d1;
     if (!(d1[2] >= min_normal_z))
       throw std::invalid_argument(
-        where +
-        ": the normal d1 lies (nearly) in the xy plane, where the "
-        "element's "
-        "normal (n_x, n_y, sqrt(1 - n_x^2 - n_y^2)) is singular; turn "
-        "the structure or choose a director hint with a z component");
+        where + ": the normal d1 lies (nearly) in the xy plane, where the "
+                "element's "
+                "normal (n_x, n_y, sqrt(1 - n_x^2 - n_y^2)) is singular; turn "
+                "the structure or choose a director hint with a z component");
     return d1;
   }
 
@@ -377,8 +378,7 @@ namespace rodnet
     require_not_finalized("DrModel::clamp_junction \"" + name + "\"");
     if (junction >= network_->junctions().size())
       throw std::invalid_argument("support \"" + name + "\": junction " +
-                                  std::to_string(junction) +
-                                  " does not exist");
+                                  std::to_string(junction) + " does not exist");
     const Junction &j = network_->junctions()[junction];
     if (!j.has_rotation())
       throw std::invalid_argument(
@@ -456,6 +456,12 @@ namespace rodnet
     fixed_mask.assign(n_dofs(), false);
     for (const auto &[dof, value] : fixed_dofs)
       fixed_mask[dof] = true;
+    share = std::make_unique<DrProcessShare>(
+      communicator,
+      elements.size(),
+      n_dr_element_dofs,
+      [this](const unsigned int e) { return elements[e].dofs.data(); },
+      fixed_mask);
 
     // Dead loads, distributed ones lumped with half of each element.
     f_ext.reinit(n_dofs());
@@ -524,6 +530,14 @@ namespace rodnet
   }
 
 
+  dealii::ArrayView<const DrModel::Element>
+  DrModel::own_elements() const
+  {
+    const auto [first, end] = share->elements();
+    return {elements.data() + first, end - first};
+  }
+
+
   DrElementVector
   DrModel::local_dofs(const Element &e, const DrVector &u) const
   {
@@ -543,7 +557,7 @@ namespace rodnet
       throw std::logic_error("DrModel::residual before finalize()");
     r.reinit(n_dofs());
     DrElementVector gradient;
-    for (const Element &e : elements)
+    for (const Element &e : own_elements())
       {
         const DrBeamKinematics kinematics(local_dofs(e, u), e.reference);
         DrBeamStress           stress;
@@ -555,6 +569,7 @@ namespace rodnet
         for (unsigned int i = 0; i < n_dr_element_dofs; ++i)
           r[e.dofs[i]] += gradient[i];
       }
+    share->add_shared(r);
     r.add(-load_factor, f_ext);
   }
 
@@ -565,19 +580,24 @@ namespace rodnet
     if (!finalized)
       throw std::logic_error("DrModel::energy before finalize()");
     double total = 0;
-    for (const Element &e : elements)
+    for (const Element &e : own_elements())
       total += dr_beam_energy(
         stiffness[e.rod],
         e.reference.rest_length,
         DrBeamKinematics(local_dofs(e, u), e.reference).strains());
-    return total;
+    return share->sum(total);
   }
 
 
   double
   DrModel::energy(const DrVector &u, const double load_factor) const
   {
-    return elastic_energy(u, load_factor) - load_factor * (f_ext * u);
+    // The work of the loads counts each DoF on its owner.
+    double work = 0;
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      if (share->owns(i))
+        work += f_ext[i] * u[i];
+    return elastic_energy(u, load_factor) - load_factor * share->sum(work);
   }
 
 
@@ -598,7 +618,7 @@ namespace rodnet
       throw std::logic_error("DrModel::fictitious_masses before finalize()");
     require_positive(mass_scaling, "fictitious masses: the mass scaling");
     DrVector row_sums(n_dofs());
-    for (const Element &e : elements)
+    for (const Element &e : own_elements())
       {
         const DrElementVector bound = element_row_sum_bound(local_dofs(e, u),
                                                             e.reference,
@@ -606,11 +626,12 @@ namespace rodnet
         for (unsigned int i = 0; i < n_dr_element_dofs; ++i)
           row_sums[e.dofs[i]] += bound[i];
       }
+    share->add_shared(row_sums);
     equalize_node_row_sums(row_sums);
 
     // A DoF without stiffness (none in a connected model) gets the largest
     // mass rather than a division by zero.
-    const double largest = row_sums.linfty_norm();
+    const double largest = share->max(row_sums.linfty_norm());
     masses.reinit(n_dofs());
     for (unsigned int i = 0; i < n_dofs(); ++i)
       masses[i] =

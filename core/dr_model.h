@@ -1,9 +1,12 @@
 #ifndef RODNET_CORE_DR_MODEL_H
 #define RODNET_CORE_DR_MODEL_H
 
+#include <deal.II/base/array_view.h>
+
 #include <deal.II/lac/vector.h>
 
 #include <core/dead_loads.h>
+#include <core/dr_process_share.h>
 #include <core/model.h>
 #include <core/rod_network.h>
 #include <elements/dr_beam_kernel.h>
@@ -12,13 +15,16 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <mpi.h>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace rodnet
 {
   /// State, residual and mass vectors of a DrModel. Dynamic relaxation is
-  /// explicit and matrix free: a plain serial vector is all it needs.
+  /// explicit and matrix free: a plain vector, the whole of it on every
+  /// process (see DrModel, "Several processes").
   using DrVector = dealii::Vector<double>;
 
   /**
@@ -58,6 +64,18 @@ namespace rodnet
    * with a moving far end, fixing n_r would not hold the rotation of the
    * chord about the normal.
    *
+   * Several processes: every process of the model's communicator holds
+   * the whole network and a whole copy of each vector, and evaluates its
+   * share of the elements (DrProcessShare, process_share()). residual(),
+   * energy(), elastic_energy() and fictitious_masses() are collective: a
+   * residual and the masses come out right on the DoFs the process's
+   * elements touch and on the fixed DoFs, and only those entries of a
+   * state need to be: a solver updates the touched DoFs and counts its
+   * sums on the DoFs it owns (DynamicRelaxation). The other entries of a
+   * process's copy are stale until process_share().complete() fills them
+   * in, which the outputs of a converged step need. The element work and
+   * the update are split; the memory is not.
+   *
    * Usage: construct, add supports and loads (Model::apply() or one by
    * one), finalize(), then evaluate (see DynamicRelaxation). The element
    * has no junction quaternions: prescribed rotations and moments are
@@ -72,10 +90,12 @@ namespace rodnet
      * std::invalid_argument for a stiffness count that does not match the
      * rods, a rigidity that is not positive and finite, a rod that is not
      * straight at rest, or an initial normal that the element cannot
-     * represent (naming rod and vertex).
+     * represent (naming rod and vertex). The processes of
+     * @p communicator share the elements (see above).
      */
     DrModel(std::unique_ptr<RodNetwork> network,
-            std::vector<RodStiffness>   stiffness_per_rod);
+            std::vector<RodStiffness>   stiffness_per_rod,
+            MPI_Comm                    communicator = MPI_COMM_WORLD);
 
     /// @name Supports (before finalize())
     /// @{
@@ -259,6 +279,15 @@ namespace rodnet
       return support_list;
     }
 
+    /// This process's share of the elements and DoFs (after finalize()).
+    const DrProcessShare &
+    process_share() const
+    {
+      if (!share)
+        throw std::logic_error("DrModel::process_share before finalize()");
+      return *share;
+    }
+
     /// Per DoF: held by a support (or an anchor).
     const std::vector<bool> &
     fixed_dof_mask() const
@@ -304,6 +333,10 @@ namespace rodnet
       std::array<unsigned int, n_dr_element_dofs> dofs;
       DrBeamReference                             reference;
     };
+
+    /// The elements this process evaluates: its share of the elements.
+    dealii::ArrayView<const Element>
+    own_elements() const;
 
     /// Local DoFs of element @p e at @p u (initial values plus change).
     DrElementVector
@@ -351,7 +384,8 @@ namespace rodnet
     build_element_stencils();
 
     std::unique_ptr<RodNetwork> network_;
-    std::vector<RodStiffness> stiffness;
+    std::vector<RodStiffness>   stiffness;
+    MPI_Comm                    communicator;
     /// Per vertex: its position node and its frame node.
     std::vector<unsigned int> position_node;
     std::vector<unsigned int> frame_node;
@@ -364,16 +398,17 @@ namespace rodnet
     /// Per frame node: fixed by a clamp (measured from an anchor).
     std::vector<bool> frame_clamped;
     /// Initial value of every DoF: positions, (n_x, n_y, 0), anchors.
-    std::vector<double>    initial;
-    std::vector<Element>   elements;
-    std::vector<Support>   support_list;
+    std::vector<double>  initial;
+    std::vector<Element> elements;
+    std::vector<Support> support_list;
     /// Per frame node: the first DoF of its anchor (clamped frames only).
     std::vector<unsigned int> anchor_dofs;
     /// Fixed DoF -> prescribed change at load factor 1.
-    std::map<unsigned int, double> fixed_dofs;
-    std::vector<bool>              fixed_mask;
-    DeadLoads                      loads;
-    DrVector                       f_ext;
+    std::map<unsigned int, double>  fixed_dofs;
+    std::vector<bool>               fixed_mask;
+    DeadLoads                       loads;
+    DrVector                        f_ext;
+    std::unique_ptr<DrProcessShare> share;
   };
 } // namespace rodnet
 

@@ -52,19 +52,18 @@ namespace rodnet
       refuse("the minimum time step fraction",
              "must be in (0, 1]",
              p.min_time_step_fraction);
-    for (unsigned int i = 0; i < model.n_dofs(); ++i)
-      if (!model.fixed_dof_mask()[i])
-        free_dofs.push_back(i);
   }
 
 
   double
   DynamicRelaxation::free_norm(const DrVector &r) const
   {
-    double sum = 0;
-    for (const unsigned int i : free_dofs)
+    // Each DoF counted on its owner (one process: every DoF).
+    const DrProcessShare &share = model.process_share();
+    double                sum   = 0;
+    for (const unsigned int i : share.owned_free_dofs())
       sum += r[i] * r[i];
-    return std::sqrt(sum);
+    return std::sqrt(share.sum(sum));
   }
 
 
@@ -99,20 +98,27 @@ namespace rodnet
                               Motion         &motion,
                               double         &reversal) const
   {
-    const double kick           = motion.from_rest ? 0.5 * dt : dt;
-    double       kinetic_energy = 0;
-    reversal                    = 0;
-    for (const unsigned int i : free_dofs)
+    // Each process moves the DoFs its elements touch (the processes that
+    // share a DoF move it alike) and counts the sums on the DoFs it owns.
+    const DrProcessShare &share = model.process_share();
+    const double          kick  = motion.from_rest ? 0.5 * dt : dt;
+    std::vector<double>   sums{0, 0}; // kinetic energy, reversal
+    for (const unsigned int i : share.touched_free_dofs())
       {
-        const double m      = motion.masses[i];
-        const double before = motion.from_rest ? 0.0 : motion.velocity[i];
+        const double m         = motion.masses[i];
+        const double before    = motion.from_rest ? 0.0 : motion.velocity[i];
         motion.acceleration[i] = -r[i] / m;
         motion.velocity[i]     = before + kick * motion.acceleration[i];
-        kinetic_energy += 0.5 * m * motion.velocity[i] * motion.velocity[i];
-        reversal += m * motion.velocity[i] * before;
         u[i] += dt * motion.velocity[i];
+        if (share.owns(i))
+          {
+            sums[0] += 0.5 * m * motion.velocity[i] * motion.velocity[i];
+            sums[1] += m * motion.velocity[i] * before;
+          }
       }
-    return kinetic_energy;
+    share.sum(sums);
+    reversal = sums[1];
+    return sums[0];
   }
 
 
@@ -153,7 +159,7 @@ namespace rodnet
         motion.kinetic_energy_before = kinetic_energy;
         return false;
       }
-    for (const unsigned int i : free_dofs)
+    for (const unsigned int i : model.process_share().touched_free_dofs())
       {
         u[i] -= 1.5 * dt * motion.velocity[i] -
                 0.5 * dt * dt * motion.acceleration[i];
@@ -319,6 +325,9 @@ namespace rodnet
                                                         load_factor,
                                                         dt,
                                                         result);
+        // The outputs read every entry (several processes: each moved its
+        // own).
+        model.process_share().complete(u);
         last_converged = u;
 
         StepInfo info;

@@ -37,6 +37,12 @@ namespace rodnet
    * from then on). Below min_time_step_fraction of the nominal step, and
    * after max_iterations without convergence, run() throws SolverFailure;
    * the state is then the last converged one, never a non-finite one.
+   *
+   * On several processes (DrModel's communicator) each process moves the
+   * DoFs its elements touch and counts the norms and the kinetic energy on
+   * the DoFs it owns (DrProcessShare), so every process takes the same
+   * decisions; a converged state is completed on every process before the
+   * observer sees it.
    */
   class DynamicRelaxation
   {
@@ -133,8 +139,8 @@ namespace rodnet
       DrVector     masses, velocity, acceleration;
       double       kinetic_energy_before = 0;
       bool         from_rest             = true;
-      unsigned int growing     = 0; ///< iterations in a row of growth
-      double       growth_base = 0; ///< kinetic energy before them
+      unsigned int growing               = 0; ///< iterations in a row of growth
+      double       growth_base           = 0; ///< kinetic energy before them
     };
 
     /// Relaxes @p u at @p load_factor with time step @p dt.
@@ -198,10 +204,12 @@ namespace rodnet
     /// estimated peak, at rest, with masses at the new state. Returns
     /// whether it damped.
     bool
-    damp_at_peak(DrVector &u, double kinetic_energy, double dt, Motion &motion)
-      const;
+    damp_at_peak(DrVector &u,
+                 double    kinetic_energy,
+                 double    dt,
+                 Motion   &motion) const;
 
-    /// |r| over the free DoFs.
+    /// |r| over the free DoFs (collective).
     double
     free_norm(const DrVector &r) const;
 
@@ -209,10 +217,9 @@ namespace rodnet
     double
     reaction_norm(const DrVector &r) const;
 
-    const DrModel            &model;
-    Parameters                parameters;
-    std::ostream             *log;
-    std::vector<unsigned int> free_dofs;
+    const DrModel &model;
+    Parameters     parameters;
+    std::ostream  *log;
   };
 } // namespace rodnet
 

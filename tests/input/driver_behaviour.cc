@@ -359,16 +359,6 @@ namespace
     EXPECT_FALSE(fs::exists(output));
   }
 
-  TEST(Driver, DynamicRelaxationIsRefusedOnceOnSeveralProcesses)
-  {
-    if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
-      GTEST_SKIP() << "no mpirun";
-    expect_refused_on_two_processes(
-      "gridshell",
-      "subsection Solver\n  set Method = dynamic relaxation\nend\n",
-      "Solver/Method = dynamic relaxation runs on one process only");
-  }
-
   TEST(Driver, BodiesTurningWithAJunctionAreRefusedOnceOnSeveralProcesses)
   {
     if (std::system("command -v mpirun > /dev/null 2>&1") != 0)

@@ -3,6 +3,7 @@
 // its normals against P L^3 / (3 EI), the post-buckled elastica against
 // the exact elliptic-integral solution, and a time step far above the
 // stability limit, which must be cut rather than produce NaN.
+#include <common/bent_dr_network.h>
 #include <common/elastica_exact.h>
 #include <core/dr_model.h>
 #include <geometry/rod_generators.h>
@@ -145,8 +146,8 @@ namespace
   // names the time step, and the last converged (finite) state.
   TEST(DrCantilever, TimeStepAboveStabilityLimitIsCut)
   {
-    const unsigned int n       = 20;
-    const double       P       = 1e-4;
+    const unsigned int n = 20;
+    const double       P = 1e-4;
     DrModel            model(straight_rod(n), {RodStiffness{1e4, 1, 1, 1}});
     model.clamp_end("clamp", 0, true);
     const unsigned int tip = model.network().rods()[0].vertices.back();
@@ -185,7 +186,7 @@ namespace
   // support force is 3 EI delta / L^3 and the clamp balances it.
   TEST(DrCantilever, PrescribedTipDisplacementReaction)
   {
-    const double delta   = 1e-3;
+    const double delta = 1e-3;
     DrModel      model(straight_rod(20), {RodStiffness{1e4, 1, 2, 1}});
     model.clamp_end("clamp", 0, true);
     const unsigned int tip = model.network().rods()[0].vertices.back();
@@ -288,30 +289,8 @@ namespace
   // bent network of four rods at a random state.
   TEST(DrModelDerivatives, ResidualIsEnergyGradient)
   {
-    auto          owned   = std::make_unique<RodNetwork>();
-    RodNetwork   &network = *owned; // owned by the model from its construction
-    const Vector3 hint(0.1, 0.2, 1);
-    const auto    add = [&](const Vector3 &a, const Vector3 &b) {
-      add_straight_rod(network, a, b, 3, hint);
-    };
-    add(Vector3(0, 0, 0), Vector3(1, 0, 0));
-    add(Vector3(1, 0, 0), Vector3(1, 1, 0.3));
-    add(Vector3(1, 0, 0), Vector3(2, -0.2, 0.1));
-    add(Vector3(1, 1, 0.3), Vector3(2, 1, 0.3));
-    network.add_junction("weld",
-                         JunctionKind::welded,
-                         {{0, false}, {1, true}, {2, true}});
-    network.add_junction("pin", JunctionKind::pinned, {{1, false}, {3, true}});
-    DrModel model(std::move(owned),
-                  std::vector<RodStiffness>(4, RodStiffness{10, 1, 2, 0.7}));
-    model.clamp_end("clamp", 0, true);
-    model.fix_components("roller",
-                         network.rods()[3].vertices.back(),
-                         {{false, false, true}},
-                         Vector3(0, 0, 0.1));
-    model.add_point_force(network.named_vertex("pin"), Vector3(0.3, -0.2, 0.5));
-    model.add_distributed_force(2, Vector3(0, 0.4, -0.1));
-    model.finalize();
+    const std::unique_ptr<DrModel> owned = bent_dr_network();
+    const DrModel                 &model = *owned;
 
     DrVector u = model.create_vector();
     std::srand(7);
