@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <gtest/gtest.h>
+#include <iostream>
 #include <limits>
 #include <vector>
 
@@ -64,7 +65,9 @@ namespace
       {
         EXPECT_EQ(owners[i], 1.0) << "DoF " << i;
         if (!model->fixed_dof_mask()[i])
-          EXPECT_GE(touching[i], 1.0) << "DoF " << i;
+          {
+            EXPECT_GE(touching[i], 1.0) << "DoF " << i;
+          }
       }
     const auto [first, end] = share.elements();
     EXPECT_EQ(share.sum(end - first), double(model->n_elements()));
@@ -114,14 +117,15 @@ namespace
       EXPECT_EQ(v[i], 1.0 + 0.5 * i) << "entry " << i;
   }
 
-  // Dynamic relaxation of the network to 1e-10 of its loads in four load
-  // steps: the positions of one process to 1e-9 of the network's size,
-  // every process with the same iterations and the whole state.
+  // Dynamic relaxation of the network to 1e-8 of its loads in two load
+  // steps (5854 iterations): the positions of one process to 1e-9 of
+  // the network's size, every process with the same iterations and the
+  // whole state.
   TEST(DrProcessShare, RelaxesAsOneProcess)
   {
     DynamicRelaxation::Parameters parameters;
-    parameters.n_steps            = 4;
-    parameters.residual_tolerance = 1e-10;
+    parameters.n_steps            = 2;
+    parameters.residual_tolerance = 1e-8;
     const auto model              = bent_dr_network();
     const auto alone              = bent_dr_network(MPI_COMM_SELF);
     DrVector   u = model->create_vector(), u_alone = alone->create_vector();
@@ -131,6 +135,7 @@ namespace
       DynamicRelaxation(*alone, parameters)
         .run(u_alone, [](const auto &, const auto &) {});
     EXPECT_EQ(result.total_iterations, result_alone.total_iterations);
+    std::cout << result.total_iterations << " iterations" << std::endl;
     EXPECT_EQ(model->process_share().sum(result.total_iterations),
               double(result.total_iterations) *
                 dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
