@@ -197,22 +197,6 @@ namespace rodnet
     }
   } // namespace
 
-  void
-  require_runs_on_these_processes(const Scene &scene)
-  {
-    const unsigned int processes =
-      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    if (processes == 1)
-      return;
-    if (scene.method != SolutionMethod::time_stepping ||
-        !scene.time_stepping.dynamic())
-      return;
-    // Before the network is built, as check_tensor_bodies() would later.
-    for (const RigidBodyItem &body : scene.rigid_bodies())
-      if (body.turns_with_junction())
-        throw std::invalid_argument(serial_body_refusal(body.where, processes));
-  }
-
   RunSummary
   run_scene(const Scene       &scene,
             const std::string &output_directory,

@@ -71,17 +71,6 @@ namespace rodnet
    * factor" expression that is not finite at some time, which throws when
    * the run gets there.
    */
-  /**
-   * Throws std::invalid_argument, naming the entry, where @p scene asks for
-   * what runs on one process only and MPI_COMM_WORLD has several: dynamic
-   * time stepping of rigid bodies that turn with their junction
-   * (doc/architecture.md, "Several processes"). Newton's load steps,
-   * continuation, time stepping, dynamic relaxation and mode shapes run on
-   * several processes.
-   */
-  void
-  require_runs_on_these_processes(const Scene &scene);
-
   RunSummary
   run_scene(const Scene       &scene,
             const std::string &output_directory,

@@ -328,7 +328,6 @@ namespace rodnet
       StudyRunOutcome outcome;
       try
         {
-          require_runs_on_these_processes(scene);
           prepare_output_directory(directory);
           RunSummary &result = outcome.result;
           result             = run_scene(scene, directory, &log);

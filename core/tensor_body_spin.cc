@@ -1,4 +1,5 @@
 // The spin of rigid bodies that turn with a junction (core/tensor_body_spin.h).
+#include <core/every_entry.h>
 #include <core/tensor_body_spin.h>
 
 namespace rodnet
@@ -68,11 +69,18 @@ namespace rodnet
 
   BodySpin
   tensor_body_spin(const SolvableModel &model,
-                   const VectorType    &u,
-                   const VectorType    &v)
+                   const VectorType    &u_distributed,
+                   const VectorType    &v_distributed)
   {
-    BodySpin spin;
-    for (const TensorBody &body : tensor_bodies(model))
+    BodySpin                      spin;
+    const std::vector<TensorBody> bodies = tensor_bodies(model);
+    if (bodies.empty())
+      return spin;
+    // A body's DoFs may be other processes': every process reads replicas
+    // and sums over every body (the same sum on each).
+    const EveryEntry  every_u(u_distributed), every_v(v_distributed);
+    const VectorType &u = *every_u, &v = *every_v;
+    for (const TensorBody &body : bodies)
       {
         const Vector3 omega = angular_velocity(body, u, v);
         const Vector3 pi =

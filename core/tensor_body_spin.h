@@ -81,7 +81,8 @@ namespace rodnet
   /// what a probe adds to 1/2 v.Mv and to the momenta of M v. The centre
   /// moves at xdot_c = xdot_j + omega x R r_0; its momentum is m xdot_c,
   /// the angular momentum about the origin x_c x m xdot_c + R J_c R^T
-  /// omega.
+  /// omega. Collective on several processes where there are such bodies:
+  /// every process reads replicas and gets the whole sum.
   BodySpin
   tensor_body_spin(const SolvableModel &model,
                    const VectorType    &u,

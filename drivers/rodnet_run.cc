@@ -164,13 +164,13 @@ namespace
       return 1;
     };
     std::unique_ptr<rodnet::Scene> scene;
+    bool                           created = false;
     try
       {
         scene = rodnet::load_scene(scene_file);
         if (output_given)
           scene->output_directory = output;
-        rodnet::require_runs_on_these_processes(*scene);
-        rodnet::prepare_output_directory(scene->output_directory);
+        created = rodnet::prepare_output_directory(scene->output_directory);
       }
     catch (const std::exception &e)
       {
@@ -185,6 +185,9 @@ namespace
       }
     catch (const std::exception &e)
       {
+        // Refused while the model was built: no empty folder stays.
+        if (created)
+          rodnet::remove_if_empty(scene->output_directory);
         return refuse_scene(e);
       }
   }

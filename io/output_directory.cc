@@ -9,11 +9,11 @@
 
 namespace rodnet
 {
-  void
+  bool
   prepare_output_directory(const std::string &directory)
   {
     std::error_code error;
-    std::filesystem::create_directories(directory, error);
+    const bool created = std::filesystem::create_directories(directory, error);
     if (error || !std::filesystem::is_directory(directory))
       throw std::invalid_argument(
         "cannot create the output directory \"" + directory +
@@ -24,5 +24,16 @@ namespace rodnet
                                   directory + "\": " + std::strerror(errno) +
                                   "; give another with --output DIR (or "
                                   "Output/Directory)");
+    return created;
+  }
+
+
+  void
+  remove_if_empty(const std::string &directory)
+  {
+    // Several processes may try at once: whoever is late finds it gone.
+    std::error_code error;
+    if (std::filesystem::is_empty(directory, error) && !error)
+      std::filesystem::remove(directory, error);
   }
 } // namespace rodnet

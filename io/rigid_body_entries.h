@@ -37,15 +37,6 @@ namespace rodnet
     /// r_0 (m), the centre's offset from the vertex in global axes; zero
     /// without.
     Vector3 centre_offset = Vector3::Zero();
-
-    /// Whether the placed body turns with its junction
-    /// (RigidBody::turns_with_junction(), from the same two fields).
-    bool
-    turns_with_junction() const
-    {
-      return inertia_tensor != Matrix3::Zero() ||
-             centre_offset != Vector3::Zero();
-    }
   };
 
   /**

@@ -86,13 +86,6 @@ namespace rodnet
     const ProblemSize &
     size() const;
 
-    /// Loads/Rigid bodies, as written, before they are placed on a network.
-    const std::vector<RigidBodyItem> &
-    rigid_bodies() const
-    {
-      return rigid_body_items;
-    }
-
     /// How many VTU files the run writes if no step is cut: the
     /// recorded steps (step 0 included) divided by the VTU interval.
     double

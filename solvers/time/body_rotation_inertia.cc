@@ -1,7 +1,7 @@
 // The inertia of rigid bodies that turn with their junction under the
 // midpoint rule (solvers/time/body_rotation_inertia.h).
-#include <deal.II/base/mpi.h>
-
+#include <core/every_entry.h>
+#include <core/mass_matrix.h>
 #include <elements/quaternion.h>
 #include <solvers/time/body_rotation_inertia.h>
 
@@ -35,6 +35,23 @@ namespace rodnet
                body.dofs[1],
                body.dofs[2]}};
     }
+
+    /// Entries of the rows of a set of bodies, for a vector's add() or
+    /// set(), which send those of other processes' rows to their owners.
+    struct BodyRowEntries
+    {
+      std::vector<global_dof_index> rows;
+      std::vector<double>           values;
+
+      /// Appends @p entries on the rows of @p body (body_rows()).
+      void
+      append(const TensorBody &body, const Eigen::Matrix<double, 6, 1> &entries)
+      {
+        const std::array<global_dof_index, 6> body_row = body_rows(body);
+        rows.insert(rows.end(), body_row.begin(), body_row.end());
+        values.insert(values.end(), entries.data(), entries.data() + 6);
+      }
+    };
 
     /// The rates of a body's rows at the start of a step, (base - u_n) / h,
     /// and their increments to y.
@@ -168,18 +185,36 @@ namespace rodnet
     return s;
   }
 
+  const std::vector<bool> &
+  BodyRotationInertia::bodies_here() const
+  {
+    // On several processes each body once: by the owner of its rotation's
+    // first DoF (the mass matrix's rows are laid out by then).
+    if (here.size() != bodies.size())
+      for (const TensorBody &body : bodies)
+        here.push_back(adds_here(mass, body.dofs[0]));
+    return here;
+  }
+
   void
   BodyRotationInertia::add_force(const StepStart  &step,
                                  const VectorType &y,
                                  VectorType       &r) const
   {
-    for (unsigned int b = 0; b < bodies.size(); ++b)
+    if (bodies.empty())
       {
-        const auto                            f = body_step(b, step, y).force;
-        const std::array<global_dof_index, 6> rows = body_rows(bodies[b]);
-        for (unsigned int i = 0; i < 6; ++i)
-          r[rows[i]] += f[i];
+        r.compress(dealii::VectorOperation::add);
+        return;
       }
+    // A body's rows and its junction's rotation may be other processes':
+    // read from replicas, added through the vector's buffer of other rows.
+    const EveryEntry start(step.u), base(step.base), end(y);
+    const StepStart  every{*start, *base, step.h, step.load_factor};
+    BodyRowEntries   forces;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies_here()[b])
+        forces.append(bodies[b], body_step(b, every, *end).force);
+    r.add(forces.rows, forces.values);
     r.compress(dealii::VectorOperation::add);
   }
 
@@ -188,10 +223,21 @@ namespace rodnet
                                     const VectorType &y,
                                     MatrixType       &k) const
   {
+    if (bodies.empty())
+      {
+        k.compress(dealii::VectorOperation::add);
+        return;
+      }
+    // Replicas as in add_force(); the matrix sends the rows of other
+    // processes to their owners when compressed.
     const dealii::AffineConstraints<double> &constraints = model.constraints();
+    const EveryEntry start(step.u), base(step.base), end(y);
+    const StepStart  every{*start, *base, step.h, step.load_factor};
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        const auto jacobian = body_step(b, step, y).jacobian;
+        if (!bodies_here()[b])
+          continue;
+        const auto jacobian = body_step(b, every, *end).jacobian;
         const std::array<global_dof_index, 6> rows = body_rows(bodies[b]);
         for (unsigned int row = 0; row < 6; ++row)
           {
@@ -237,58 +283,79 @@ namespace rodnet
                                        const VectorType &x,
                                        VectorType       &v) const
   {
-    for (unsigned int b = 0; b < bodies.size(); ++b)
+    if (bodies.empty())
       {
-        const TensorBody &body = bodies[b];
-        const RowMotion   m    = row_motion(body, step, x);
-        const Matrix3     C    = cayley(m.v);
-        Vector3           rate;
-        for (unsigned int c = 0; c < 3; ++c)
-          rate[c] = v[body.dofs[c]];
-        rate = C * rate;
-        if (!turns_about_vertex[b] && body.offset != Vector3::Zero())
-          {
-            // The body's xdot_j = vc_{n+1} - omega_{n+1} x r_{n+1}, omega =
-            // 2 rate, against the midpoint rule's of the rows: W (w -
-            // midpoint) = m (xdot_j - midpoint) keeps the momentum.
-            const Vector3 r_next =
-              C *
-              (model.junction_rotation(step.u, body.junction) * body.offset);
-            const Vector3 x_rate =
-              centre_velocity(b, step, x, v) - (2 * rate).cross(r_next);
-            Vector3 midpoint;
-            for (unsigned int c = 0; c < 3; ++c)
-              midpoint[c] = v[body.position[c]];
-            const Vector3 w = midpoint + momentum_weights(b).inverse() *
-                                           body.mass * (x_rate - midpoint);
-            for (unsigned int c = 0; c < 3; ++c)
-              v[body.position[c]] = w[c];
-          }
-        for (unsigned int c = 0; c < 3; ++c)
-          v[body.dofs[c]] = rate[c];
+        v.compress(dealii::VectorOperation::insert);
+        return;
       }
+    compute_momentum_weights();
+    // Read from replicas, the rows of other processes set through the
+    // vector's buffer.
+    const EveryEntry start(step.u), base(step.base), end(x), rates(v);
+    const StepStart  every{*start, *base, step.h, step.load_factor};
+    BodyRowEntries   turned;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies_here()[b])
+        turned.append(bodies[b], turned_velocity(b, every, *end, *rates));
+    v.set(turned.rows, turned.values);
     v.compress(dealii::VectorOperation::insert);
   }
 
-  const Matrix3 &
-  BodyRotationInertia::momentum_weights(const unsigned int b) const
+  Eigen::Matrix<double, 6, 1>
+  BodyRotationInertia::turned_velocity(const unsigned int b,
+                                       const StepStart   &step,
+                                       const VectorType  &x,
+                                       const VectorType  &v) const
   {
-    if (weights.empty())
+    const TensorBody           &body = bodies[b];
+    const RowMotion             m    = row_motion(body, step, x);
+    const Matrix3               C    = cayley(m.v);
+    Eigen::Matrix<double, 6, 1> turned;
+    Vector3                     rate, midpoint;
+    for (unsigned int c = 0; c < 3; ++c)
       {
-        weights.assign(bodies.size(), Matrix3::Zero());
-        VectorType along = model.create_vector(), product = along;
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            along = 0;
-            for (unsigned int i = 0; i < model.network().n_vertices(); ++i)
-              along[model.layout().vertex_dof(i, c)] = 1;
-            mass.vmult(product, along);
-            for (unsigned int k = 0; k < bodies.size(); ++k)
-              for (unsigned int d = 0; d < 3; ++d)
-                weights[k](c, d) = product[bodies[k].position[d]];
-          }
+        rate[c]     = v[body.dofs[c]];
+        midpoint[c] = v[body.position[c]];
       }
-    return weights[b];
+    rate = C * rate;
+    turned << midpoint, rate;
+    if (!turns_about_vertex[b] && body.offset != Vector3::Zero())
+      {
+        // The body's xdot_j = vc_{n+1} - omega_{n+1} x r_{n+1}, omega =
+        // 2 rate, against the midpoint rule's of the rows: W (w -
+        // midpoint) = m (xdot_j - midpoint) keeps the momentum.
+        const Vector3 r_next =
+          C * (model.junction_rotation(step.u, body.junction) * body.offset);
+        const Vector3 x_rate =
+          centre_velocity(b, step, x, v) - (2 * rate).cross(r_next);
+        turned.head<3>() =
+          midpoint + weights[b].inverse() * body.mass * (x_rate - midpoint);
+      }
+    return turned;
+  }
+
+  void
+  BodyRotationInertia::compute_momentum_weights() const
+  {
+    // Collective (a product with the distributed mass matrix), on every
+    // process alike: at the first turn, when M is assembled.
+    if (!weights.empty())
+      return;
+    weights.assign(bodies.size(), Matrix3::Zero());
+    VectorType along = model.create_vector(), product = along;
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        along = 0;
+        for (unsigned int i = 0; i < model.network().n_vertices(); ++i)
+          if (const global_dof_index d = model.layout().vertex_dof(i, c);
+              along.in_local_range(d))
+            along[d] = 1;
+        mass.vmult(product, along);
+        const EveryEntry every(product);
+        for (unsigned int k = 0; k < bodies.size(); ++k)
+          for (unsigned int d = 0; d < 3; ++d)
+            weights[k](c, d) = (*every)[bodies[k].position[d]];
+      }
   }
 
   void
@@ -298,12 +365,6 @@ namespace rodnet
     if (!scheme.dynamic())
       return;
     const std::vector<TensorBody> bodies = tensor_bodies(model);
-    const unsigned int processes = dealii::Utilities::MPI::n_mpi_processes(
-      model.create_vector().get_mpi_communicator());
-    if (!bodies.empty() && processes > 1)
-      throw std::invalid_argument(
-        serial_body_refusal(model.rigid_bodies()[bodies[0].index].where,
-                            processes));
     for (const RigidBody &body : model.rigid_bodies())
       if (body.turns_with_junction() && !scheme.carries_inertia_tensors())
         throw std::invalid_argument(
@@ -331,13 +392,4 @@ namespace rodnet
       }
   }
 
-  std::string
-  serial_body_refusal(const std::string &where, const unsigned int processes)
-  {
-    return where +
-           ": a body that turns with its junction (an inertia tensor or a "
-           "centre off the vertex) is integrated in time on one process only, "
-           "and this run has " +
-           std::to_string(processes) + " MPI processes: run it without mpirun";
-  }
 } // namespace rodnet

@@ -70,6 +70,12 @@ namespace rodnet
    *
    * The step starts from an increment q = (1, 0), as TimeIntegrator leaves
    * it (SolvableModel::reset_reference()).
+   *
+   * On several processes each body is computed once, by the owner of its
+   * rotation's first DoF, from replicas of the states (EveryEntry: its
+   * rows and its junction may be other processes'); its forces, Jacobian
+   * entries and turned velocities reach the rows of other processes
+   * through the vector's and the matrix's buffers.
    */
   class BodyRotationInertia
   {
@@ -149,17 +155,31 @@ namespace rodnet
                     const VectorType &x,
                     const VectorType &v) const;
 
-    /// W of body @p b: W(c, k) = (M e_c) at component k of x_j, e_c one on
-    /// the position DoFs along c, the weight of the row velocity in the
+    /// Per body: whether this process computes it (each body on one
+    /// process: the owner of its rotation's first DoF).
+    const std::vector<bool> &
+    bodies_here() const;
+
+    /// The velocity of body @p b's rows (x_j, v) at the end of the step
+    /// to @p x, from the midpoint rule's @p v (turn_velocities()).
+    Eigen::Matrix<double, 6, 1>
+    turned_velocity(unsigned int      b,
+                    const StepStart  &step,
+                    const VectorType &x,
+                    const VectorType &v) const;
+
+    /// W of every body: W(c, k) = (M e_c) at component k of x_j, e_c one
+    /// on the position DoFs along c, the weight of the row velocity in the
     /// linear momentum sum over the rows of M v (m I + the rods' mass at
-    /// the vertex); computed at the first call.
-    const Matrix3 &
-    momentum_weights(unsigned int b) const;
+    /// the vertex). Collective; computed at the first call.
+    void
+    compute_momentum_weights() const;
 
     const SolvableModel         &model;
     const MatrixType            &mass;
     std::vector<TensorBody>      bodies;
     mutable std::vector<Matrix3> weights;
+    mutable std::vector<bool>    here;
     /// Per body: whether its centre is off the vertex and the vertex held,
     /// so that it turns about the vertex.
     std::vector<bool> turns_about_vertex;
@@ -169,20 +189,11 @@ namespace rodnet
    * Throws std::invalid_argument naming the first body of @p model that
    * turns with its junction (an inertia tensor, a centre off the vertex)
    * if @p scheme is dynamic and cannot carry it (it is not the midpoint
-   * rule), or whose centre is off a vertex held in part or moving in time,
-   * and any such body where the model's vectors span several processes
-   * (serial_body_refusal()).
+   * rule), or whose centre is off a vertex held in part or moving in time.
    */
   void
   check_tensor_bodies(const SolvableModel     &model,
                       const IntegrationScheme &scheme);
-
-  /// The refusal of the body @p where (a message's name for it) that turns
-  /// with its junction, on @p processes MPI processes: BodyRotationInertia
-  /// and the bodies' spin read states by global index. rodnet-run says it
-  /// before anything is written, a driver program at check_tensor_bodies().
-  std::string
-  serial_body_refusal(const std::string &where, unsigned int processes);
 } // namespace rodnet
 
 #endif

@@ -157,15 +157,22 @@ namespace rodnet
     velocity_change -= ends.v0;
     mass.vmult(impulse, velocity_change);
     // What tensor bodies' inertia adds on their held rows, from M (v_{n+1}
-    // - v_n) before the damping joins it.
-    const auto body_reaction = tensor_body_reaction(model,
-                                                    tensor_bodies,
-                                                    is_fixed,
-                                                    ends.u0,
-                                                    ends.u1,
-                                                    ends.v0,
-                                                    impulse,
-                                                    h);
+    // - v_n) before the damping joins it; every process the reactions of
+    // every body, from replicas.
+    const EveryEntry                                 u0(ends.u0), u1(ends.u1);
+    std::vector<std::pair<global_dof_index, double>> body_reaction;
+    if (!tensor_bodies.empty())
+      {
+        const EveryEntry v0(ends.v0), change(impulse);
+        body_reaction = tensor_body_reaction(model,
+                                             tensor_bodies,
+                                             is_fixed,
+                                             *u0,
+                                             *u1,
+                                             *v0,
+                                             *change,
+                                             h);
+      }
     if (damping.m() != 0)
       {
         VectorType mean_velocity(ends.v1), damping_force(ends.v1);
@@ -173,9 +180,8 @@ namespace rodnet
         damping.vmult(damping_force, mean_velocity);
         impulse.add(h / 2, damping_force);
       }
-    const EveryEntry every_impulse(impulse), every_force(force), u0(ends.u0),
-      u1(ends.u1);
-    double work = 0;
+    const EveryEntry every_impulse(impulse), every_force(force);
+    double           work = 0;
     for (const global_dof_index i : fixed)
       work +=
         ((*every_impulse)[i] / h + (*every_force)[i]) * ((*u1)[i] - (*u0)[i]);

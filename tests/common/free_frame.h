@@ -46,9 +46,11 @@ namespace rodnet
       unsigned int corner, tip;
     };
 
-    /// The frame, @p n segments per leg, loaded at load factor 1.
+    /// The frame, @p n segments per leg, loaded at load factor 1, its
+    /// DoFs shared by the processes of @p communicator.
     inline FreeFrame
-    free_frame(const unsigned int n)
+    free_frame(const unsigned int n,
+               const MPI_Comm     communicator = MPI_COMM_WORLD)
     {
       RodGraph graph = network_generators::right_angle_frame(frame_leg);
       graph.nodes[graph.node_index("clamp")].kind.reset();
@@ -59,7 +61,9 @@ namespace rodnet
         std::move(built.network),
         std::vector<std::shared_ptr<const RodMaterial>>(
           n_rods,
-          std::make_shared<LinearElasticRod>(frame_stiffness)));
+          std::make_shared<LinearElasticRod>(frame_stiffness)),
+        GhostSpin::exact,
+        communicator);
       frame.corner = built.node_vertex[graph.node_index("corner")];
       frame.tip    = built.node_vertex[graph.node_index("tip")];
       frame.model->add_point_force(frame.tip, frame_tip_force);

@@ -210,12 +210,39 @@ namespace
       }
   }
 
+  /// The frame of scenes/frame.prm in 8 segments per beam, swinging for
+  /// 1 s under a force at its tip by the midpoint rule, with a body of
+  /// 0.2 kg at its corner (@p body: its inertia and centre), probed for
+  /// positions, a rotation, a reaction and its motion.
+  std::string
+  body_on_the_frame(const std::string &body)
+  {
+    return "subsection Geometry\n  set Segments = 8\nend\n"
+           "subsection Material\n  set Mass per length = 1\n  set Twist "
+           "inertia per length = 0.01\nend\n"
+           "subsection Supports\n  set Prescribed displacements =\nend\n"
+           "subsection Loads\n  set Steps = 1\n  set Point forces = @tip: "
+           "0.1, 0.2, 0.5\n  set Rigid bodies = @corner: mass 0.2 " +
+           body +
+           "\nend\n"
+           "subsection Solver\n  set Method = time stepping\n  subsection "
+           "Time stepping\n    set Integrator = midpoint\n    set Time step "
+           "= 0.05\n    set End time = 1\n  end\nend\n"
+           "subsection Output\n  set Probes = tip_z: position @tip z; "
+           "corner_x: position @corner x; turn: rotation corner 0,0,1; "
+           "clamp_z: reaction @clamp z; kinetic: kinetic energy; spin: "
+           "angular momentum z\nend\n";
+  }
+
   /// The scene file of test scene @p name and what the test changes in it:
   /// the time-stepping scenes end early (hexagonal_truss: 164 steps of the
   /// quasi-static preload and of Newmark's rule over a viscoelastic truss;
   /// spin_up: 100 steps of generalized alpha, and spin_up_midpoint 100 of
   /// the midpoint rule with its gyroscopic coupling, on a rod spun up by
-  /// a support turning in time; square_lattice_relaxed: the lattice by
+  /// a support turning in time; frame_tensor_body and frame_centre_body:
+  /// the frame swinging with a body that turns with its corner junction,
+  /// an inertia tensor or a centre off the vertex (body_on_the_frame());
+  /// square_lattice_relaxed: the lattice by
   /// dynamic relaxation, to 1e-9 of the load so that the runs agree to
   /// round-off rather than to where the relaxation stops).
   std::pair<std::string, std::string>
@@ -233,6 +260,11 @@ namespace
       return {name, ending_at("1")};
     if (name == "spin_up_midpoint")
       return {"spin_up", ending_at("1", "    set Integrator = midpoint\n")};
+    if (name == "frame_tensor_body" || name == "frame_centre_body")
+      return {"frame",
+              body_on_the_frame(name == "frame_tensor_body" ?
+                                  "inertia 0.01,0.02,0.03,0.001,0,0.002" :
+                                  "inertia 0.01 centre 0.05,0.02,0.01")};
     if (name == "square_lattice_relaxed")
       return {"square_lattice",
               "subsection Solver\n  set Method = dynamic relaxation\n  "
@@ -304,7 +336,9 @@ namespace
                                          "hexagonal_truss",
                                          "spin_up",
                                          "spin_up_midpoint",
-                                         "square_lattice_relaxed"),
+                                         "square_lattice_relaxed",
+                                         "frame_tensor_body",
+                                         "frame_centre_body"),
                        ::testing::Values(2u, 3u)),
     [](const auto &info) {
       return std::get<0>(info.param) + "_on_" +
