@@ -19,18 +19,18 @@ namespace
   using namespace rodnet;
   using namespace rodnet::testing;
 
-  /// The frame of 4 segments per leg flown by the midpoint rule to t = 3
-  /// in steps of 0.1, its DoFs shared by the processes of @p communicator.
+  /// The frame of 3 segments per leg flown by the midpoint rule to t = 3
+  /// in steps of 0.2, its DoFs shared by the processes of @p communicator.
   struct Flight
   {
     explicit Flight(const MPI_Comm communicator)
-        : frame(free_frame(4, communicator))
+        : frame(free_frame(3, communicator))
         , u(frame.model->create_vector())
         , v(frame.model->create_vector())
     {
       TimeIntegrator::Parameters p;
       p.integrator         = "midpoint";
-      p.time_step          = 0.1;
+      p.time_step          = 0.2;
       p.end_time           = 3;
       p.load_factor        = triangle_pulse;
       p.relative_tolerance = 1e-10;
