@@ -5,7 +5,6 @@
 #include <app/scene_runner.h>
 #include <io/mode_shapes.h>
 #include <io/problem_size.h>
-#include <solvers/time/body_rotation_inertia.h>
 
 #include <algorithm>
 #include <cmath>
