@@ -46,16 +46,6 @@ namespace
     }
   };
 
-  /// Seconds that @p work took on rank 0, all processes starting together.
-  double
-  timed(const std::function<void()> &work)
-  {
-    MPI_Barrier(MPI_COMM_WORLD);
-    const double start = bench::now();
-    work();
-    return bench::now() - start;
-  }
-
   void
   mumps_processes(const Options &options)
   {
@@ -86,13 +76,13 @@ namespace
     const double setup = bench::now() - start;
 
     std::unique_ptr<MumpsFactorization> mumps;
-    const double                        analysis =
-      timed([&] { mumps = std::make_unique<MumpsFactorization>(K); });
+    const double                        analysis = bench::timed_together(
+      [&] { mumps = std::make_unique<MumpsFactorization>(K); });
     std::vector<double> factorize, solve;
     for (unsigned int k = 0; k <= options.repeats; ++k)
       {
-        const double f = timed([&] { mumps->factorize(); });
-        const double s = timed([&] { mumps->solve(b, x); });
+        const double f = bench::timed_together([&] { mumps->factorize(); });
+        const double s = bench::timed_together([&] { mumps->solve(b, x); });
         if (k > 0)
           {
             factorize.push_back(f);

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <mpi.h>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,17 @@ namespace rodnet
       return std::chrono::duration<double>(
                std::chrono::steady_clock::now().time_since_epoch())
         .count();
+    }
+
+    /// Seconds that @p work took on this process, all processes of
+    /// MPI_COMM_WORLD starting it together (a barrier before).
+    inline double
+    timed_together(const std::function<void()> &work)
+    {
+      MPI_Barrier(MPI_COMM_WORLD);
+      const double start = now();
+      work();
+      return now() - start;
     }
 
     /// Wall times in seconds of @p repeats calls of @p work, after one

@@ -417,12 +417,12 @@ namespace rodnet
       problem = "the locally owned DoFs of a process must be one contiguous "
                 "range";
     else if (locally_owned_dofs.n_elements() == 0)
-      problem = "process " +
+      problem = "the network has " + std::to_string(n_dofs) + " DoFs for " +
+                std::to_string(n_processes) +
+                " processes, too few for each to own one (process " +
                 std::to_string(
                   dealii::Utilities::MPI::this_mpi_process(mpi_communicator)) +
-                " would own no DoF: the network has " + std::to_string(n_dofs) +
-                " DoFs for " + std::to_string(n_processes) +
-                " processes; run on fewer processes";
+                " would own none); run on fewer processes";
     // Collective from here on: every process reaches the same verdict.
     problem = first_problem(problem, mpi_communicator);
     if (problem.empty() &&

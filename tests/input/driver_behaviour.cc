@@ -352,7 +352,8 @@ namespace
       "/rodnet-run twelve_processes.prm --output " + output);
     EXPECT_EQ(o.exit_code, 1) << o.output;
     const std::string message =
-      "the network has 11 DoFs for 12 processes; run on fewer processes";
+      "the network has 11 DoFs for 12 processes, too few for each to own "
+      "one";
     const auto first = o.output.find(message);
     ASSERT_NE(first, std::string::npos) << o.output;
     EXPECT_EQ(o.output.find(message, first + 1), std::string::npos)
