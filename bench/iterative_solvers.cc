@@ -40,7 +40,6 @@
 #include <bench/options.h>
 #include <bench/timing.h>
 #include <cmath>
-#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <ml_MultiLevelPreconditioner.h>
@@ -133,6 +132,28 @@ namespace
     return r.l2_norm() / b.l2_norm();
   }
 
+  /// ML's smoothed aggregation with two sweeps of @p smoother and KLU on
+  /// the coarsest level; with @p motions (rigid_motions()) as its near null
+  /// space, else ML's default, a constant per row.
+  Teuchos::ParameterList
+  ml_parameters(const std::string &smoother, std::vector<double> *motions)
+  {
+    Teuchos::ParameterList parameters;
+    ML_Epetra::SetDefaults("SA", parameters);
+    parameters.set("ML output", 0);
+    parameters.set("smoother: type", smoother);
+    parameters.set("smoother: sweeps", 2);
+    parameters.set("coarse: type", "Amesos-KLU");
+    parameters.set("PDE equations", 1);
+    if (motions != nullptr)
+      {
+        parameters.set("null space: type", "pre-computed");
+        parameters.set("null space: dimension", 6);
+        parameters.set("null space: vectors", motions->data());
+      }
+    return parameters;
+  }
+
   /// GMRES with ML set up by @p parameters.
   void
   gmres_with_ml(const std::string     &name,
@@ -206,28 +227,13 @@ namespace
     std::vector<double> motions = rigid_motions(*model, owned);
     for (const bool rigid : {false, true})
       for (const std::string smoother : {"symmetric Gauss-Seidel", "Chebyshev"})
-        {
-          Teuchos::ParameterList parameters;
-          ML_Epetra::SetDefaults("SA", parameters);
-          parameters.set("ML output", 0);
-          parameters.set("smoother: type", smoother);
-          parameters.set("smoother: sweeps", 2);
-          parameters.set("coarse: type", "Amesos-KLU");
-          parameters.set("PDE equations", 1);
-          if (rigid)
-            {
-              parameters.set("null space: type", "pre-computed");
-              parameters.set("null space: dimension", 6);
-              parameters.set("null space: vectors", motions.data());
-            }
-          gmres_with_ml(std::string("GMRES, ML ") +
-                          (rigid ? "rigid" : "const") + ", " +
-                          (smoother == "Chebyshev" ? "Chebyshev" : "sym. GS"),
-                        K,
-                        b,
-                        parameters,
-                        options);
-        }
+        gmres_with_ml(std::string("GMRES, ML ") + (rigid ? "rigid" : "const") +
+                        ", " +
+                        (smoother == "Chebyshev" ? "Chebyshev" : "sym. GS"),
+                      K,
+                      b,
+                      ml_parameters(smoother, rigid ? &motions : nullptr),
+                      options);
   }
 } // namespace
 

@@ -22,7 +22,6 @@
 #include <bench/options.h>
 #include <bench/timing.h>
 #include <cmath>
-#include <functional>
 #include <iostream>
 #include <tests/common/pinned_lattices.h>
 #include <tests/common/split_rows.h>
