@@ -2,6 +2,7 @@
 #include <deal.II/base/patterns.h>
 
 #include <core/scatter_positions.h>
+#include <solvers/newton/band_lu.h>
 #include <solvers/newton/epetra_entries.h>
 #include <solvers/newton/klu_factorization.h>
 #include <solvers/newton/mumps_factorization.h>
@@ -12,31 +13,6 @@
 #include <numeric>
 #include <stdexcept>
 #include <vector>
-
-extern "C"
-{
-  void
-  dgbtrf_(const int *m,
-          const int *n,
-          const int *kl,
-          const int *ku,
-          double    *ab,
-          const int *ldab,
-          int       *ipiv,
-          int       *info);
-  void
-  dgbtrs_(const char   *trans,
-          const int    *n,
-          const int    *kl,
-          const int    *ku,
-          const int    *nrhs,
-          const double *ab,
-          const int    *ldab,
-          const int    *ipiv,
-          double       *b,
-          const int    *ldb,
-          int          *info);
-}
 
 namespace rodnet
 {
@@ -124,9 +100,8 @@ namespace rodnet
 
 
     /**
-     * LAPACK's band LU with partial pivoting. The band is stored as
-     * LAPACK's dgbtrf asks (2 kl + ku + 1 rows: kl more for the fill of
-     * the row exchanges), column by column.
+     * The band LU with partial pivoting of BandLU, on the tangent's rows
+     * and columns as they are or renumbered to narrow the band.
      */
     class BandFactorization : public TangentFactorization
     {
@@ -138,10 +113,7 @@ namespace rodnet
                         std::vector<int>          new_index = {})
           : matrix(matrix.trilinos_matrix())
           , n(this->matrix.NumMyRows())
-          , kl(kl_ku.first)
-          , ku(kl_ku.second)
-          , ldab(2 * kl + ku + 1)
-          , pivots(n)
+          , lu(n, kl_ku.first, kl_ku.second)
           , new_index(std::move(new_index))
       {
         // Each stored entry's place in the band, in the order of the
@@ -156,9 +128,10 @@ namespace rodnet
       void
       factorize() override
       {
-        band.assign(std::size_t(ldab) * n, 0.0);
-        int    *offsets = nullptr, *columns = nullptr;
-        double *values = nullptr;
+        lu.clear();
+        std::vector<double> &band    = lu.storage();
+        int                 *offsets = nullptr, *columns = nullptr;
+        double              *values = nullptr;
         matrix.ExtractCrsDataPointers(offsets, columns, values);
         if (values != nullptr && std::size_t(offsets[n]) == places.size())
           for (std::size_t k = 0; k < places.size(); ++k)
@@ -170,12 +143,10 @@ namespace rodnet
                              const double value) {
                            band[place(row, column)] = value;
                          });
-        int info = 0;
-        dgbtrf_(&n, &n, &kl, &ku, band.data(), &ldab, pivots.data(), &info);
-        if (info != 0)
+        if (const int column = lu.factorize(); column != 0)
           throw SingularTangent(
-            "the tangent is singular (band LU: zero pivot in row " +
-            std::to_string(info) + ")");
+            "the tangent is singular (band LU: zero pivot in column " +
+            std::to_string(column) + ")");
       }
 
       using TangentFactorization::solve;
@@ -185,31 +156,17 @@ namespace rodnet
       {
         x            = b;
         double *data = x.trilinos_vector()[0];
-        if (!new_index.empty())
+        if (new_index.empty())
           {
-            renumbered.resize(n);
-            for (int i = 0; i < n; ++i)
-              renumbered[new_index[i]] = data[i];
-            data = renumbered.data();
+            lu.solve(data);
+            return;
           }
-        const int one  = 1;
-        int       info = 0;
-        dgbtrs_("N",
-                &n,
-                &kl,
-                &ku,
-                &one,
-                band.data(),
-                &ldab,
-                pivots.data(),
-                data,
-                &n,
-                &info);
-        if (info != 0)
-          throw std::runtime_error("the band LU solve failed");
-        if (!new_index.empty())
-          for (int i = 0; i < n; ++i)
-            x.trilinos_vector()[0][i] = renumbered[new_index[i]];
+        renumbered.resize(n);
+        for (int i = 0; i < n; ++i)
+          renumbered[new_index[i]] = data[i];
+        lu.solve(renumbered.data());
+        for (int i = 0; i < n; ++i)
+          data[i] = renumbered[new_index[i]];
       }
 
       std::string
@@ -218,15 +175,15 @@ namespace rodnet
         return "band";
       }
 
-      /// The band as LAPACK stores it, room for the row exchanges included.
+      /// The band as stored, room for the row exchanges included.
       double
       factor_entries() const override
       {
-        return band.size();
+        return lu.size();
       }
 
     private:
-      /// Where entry (@p row, @p column) is in LAPACK's band storage.
+      /// Where entry (@p row, @p column) is in the band's storage.
       std::size_t
       place(int row, int column) const
       {
@@ -235,14 +192,13 @@ namespace rodnet
             row    = new_index[row];
             column = new_index[column];
           }
-        return std::size_t(kl + ku + row - column) + std::size_t(column) * ldab;
+        return lu.entry(row, column);
       }
 
       const Epetra_CrsMatrix  &matrix;
-      const int                n, kl, ku, ldab;
-      std::vector<int>         pivots;
+      const int                n;
+      BandLU                   lu;
       std::vector<std::size_t> places;
-      std::vector<double>      band;
       /// The band's numbering of the rows, empty where it is the matrix's.
       std::vector<int>    new_index;
       std::vector<double> renumbered;

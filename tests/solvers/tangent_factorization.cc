@@ -1,4 +1,4 @@
-// The direct solvers of Newton's systems (TangentFactorization): LAPACK's
+// The direct solvers of Newton's systems (TangentFactorization): the
 // band LU and KLU solve a rod's tangent system to its backward
 // error; "auto" takes the band for one rod, KLU where junction DoFs
 // widen the band and MUMPS from TangentFactorization::min_auto_mumps_rows
