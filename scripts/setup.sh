@@ -13,6 +13,8 @@ packages=(
   gnuplot-nox               # PNG plots of probes and benchmark charts
   libsuitesparse-dev        # KLU, the sparse LU of Newton's systems
   libmumps-dev              # MUMPS, their multifrontal LDL^T (Linear solver = mumps)
+  libopenblas0-serial       # the BLAS of MUMPS's dense fronts; becomes the system's
+                            # BLAS and LAPACK (doc/performance.md, "OpenBLAS and our own band LU")
   libpng-dev                # the tests read the pictures runs draw
   python3-minimal           # writes the pop-up's Gmsh meshes (bench/fig9_popup_mesh.py)
 )
