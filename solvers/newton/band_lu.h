@@ -17,8 +17,8 @@ namespace rodnet
    * a rod does not depend on which BLAS the system serves: the rows of a
    * rod's band are 11-32 entries long, where a BLAS call per column costs
    * more than the column's arithmetic, and OpenBLAS, which MUMPS needs for
-   * its dense fronts, made LAPACK's band LU 1.5 times slower
-   * (doc/performance.md, "OpenBLAS").
+   * its dense fronts, made LAPACK's band factorization 1.7 times slower
+   * (bench/band_lu; doc/performance.md, "OpenBLAS and our own band LU").
    *
    * The matrix is stored column by column, 2 kl + ku + 1 entries each: entry
    * (i, j) at entry(i, j); the first kl rows of the storage take the fill of

@@ -29,6 +29,7 @@
 #include <map>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -171,17 +172,30 @@ namespace
   }
 
 
-  /// The largest force residual among the "residual <f> N" of the step
-  /// lines of a run's @p output; 0 where there is none.
+  /// The force residual of each step line "step <n> ... residual <f> N,"
+  /// of a run's @p output, by step.
+  std::map<unsigned int, double>
+  step_force_residuals(const std::string &output)
+  {
+    static const std::regex step_line(
+      "step +([0-9]+) [^\n]*residual ([-+.eE0-9]+) N,");
+    std::map<unsigned int, double> residuals;
+    for (std::sregex_iterator match(output.begin(), output.end(), step_line);
+         match != std::sregex_iterator();
+         ++match)
+      residuals[std::stoul((*match)[1].str())] = std::stod((*match)[2].str());
+    return residuals;
+  }
+
+
+  /// The largest force residual of the step lines of a run's @p output; 0
+  /// where there is none.
   double
   largest_force_residual(const std::string &output)
   {
-    static const std::regex residual("residual ([-+.eE0-9]+) N,");
-    double                  largest = 0;
-    for (std::sregex_iterator match(output.begin(), output.end(), residual);
-         match != std::sregex_iterator();
-         ++match)
-      largest = std::max(largest, std::stod((*match)[1].str()));
+    double largest = 0;
+    for (const auto &[step, residual] : step_force_residuals(output))
+      largest = std::max(largest, residual);
     return largest;
   }
 
@@ -515,19 +529,51 @@ namespace
              output.substr(at, output.find('\n', at) - at);
   }
 
-  /// The force residual of each step line "step <n> ... residual <f> N,"
-  /// of a run's @p output, by step.
-  std::map<unsigned int, double>
-  step_force_residuals(const std::string &output)
+  /**
+   * The relative bound of each row of the probes @p reference of a run
+   * past the critical load factor @p critical_load, 0 before it, from the
+   * step lines of the two runs' @p serial_output and @p split_output.
+   *
+   * Past the critical load the state lies on the buckled branch, whose
+   * stiffness grows from zero with the load (lowest eigenvalue 0.0035 at
+   * load factor 0.5, 0.0065 past it). The round-off left in the residual
+   * (the floor of the stiff stretching, 1e-6 N) moves the state along
+   * the buckling mode by up to residual / eigenvalue: between one process
+   * and two with OpenBLAS (2026-12-07) the tip differed by 2.7e-5 at load
+   * factor 0.5 and 2.5e-10 at 0.6, the energy (quadratic in the
+   * buckling amplitude) by 2.8e-4 and 8e-10 of itself. There each probe
+   * is held to twice that displacement over the tip's scale, of its own
+   * scale; before the critical load (the straight column) to the test's
+   * own bounds.
+   */
+  std::vector<double>
+  buckled_branch_bounds(const rodnet::CsvTable &reference,
+                        const double            critical_load,
+                        const std::string      &serial_output,
+                        const std::string      &split_output)
   {
-    static const std::regex step_line(
-      "step +([0-9]+) [^\n]*residual ([-+.eE0-9]+) N,");
-    std::map<unsigned int, double> residuals;
-    for (std::sregex_iterator match(output.begin(), output.end(), step_line);
-         match != std::sregex_iterator();
-         ++match)
-      residuals[std::stoul((*match)[1].str())] = std::stod((*match)[2].str());
-    return residuals;
+    const auto column = [&](const std::string &name) {
+      const std::size_t c =
+        std::find(reference.names.begin(), reference.names.end(), name) -
+        reference.names.begin();
+      if (c == reference.names.size())
+        throw std::runtime_error("no probe " + name);
+      return c;
+    };
+    const std::size_t   lowest    = column("lowest_eigenvalue");
+    const double        tip_scale = probe_scale(reference, column("tip_x"));
+    const auto          serial_residuals = step_force_residuals(serial_output);
+    const auto          split_residuals  = step_force_residuals(split_output);
+    std::vector<double> bounds(reference.rows.size(), 0.0);
+    for (std::size_t r = 1; r < reference.rows.size(); ++r)
+      if (reference.number(r, 1) > critical_load)
+        {
+          const unsigned int step = unsigned(reference.number(r, 0));
+          bounds[r]               = 2 *
+                      (serial_residuals.at(step) + split_residuals.at(step)) /
+                      reference.number(r, lowest) / tip_scale;
+        }
+    return bounds;
   }
 
   class CriticalLoadOnProcesses : public ::testing::TestWithParam<unsigned int>
@@ -565,38 +611,11 @@ namespace
     ASSERT_EQ(probes.names, reference.names);
     ASSERT_EQ(probes.rows.size(), reference.rows.size());
     ASSERT_EQ(reference.rows.size(), 21u);
-    // Past the critical load the state lies on the buckled branch, whose
-    // stiffness grows from zero with the load (lowest eigenvalue 0.0035 at
-    // load factor 0.5, 0.0065 past it). The round-off left in the residual
-    // (the floor of the stiff stretching, 1e-6 N) moves the state along
-    // the buckling mode by up to residual / eigenvalue: between one process
-    // and two with OpenBLAS (2026-12-07) the tip differed by 2.7e-5 at load
-    // factor 0.5 and 2.5e-10 at 0.6, the energy (quadratic in the
-    // buckling amplitude) by 2.8e-4 and 8e-10 of itself. There each probe
-    // is held to twice that displacement over the tip's scale, of its own
-    // scale; before the critical load (the straight column) to the bounds
-    // below.
-    const double critical_load =
-      std::stod(critical.substr(critical.find(':') + 1));
-    const std::size_t lowest = std::find(reference.names.begin(),
-                                         reference.names.end(),
-                                         "lowest_eigenvalue") -
-                               reference.names.begin();
-    ASSERT_LT(lowest, reference.names.size());
-    const auto   serial_residuals = step_force_residuals(serial.output);
-    const auto   split_residuals  = step_force_residuals(split.output);
-    const double tip_scale =
-      probe_scale(reference,
-                  std::size_t(std::find(reference.names.begin(),
-                                        reference.names.end(),
-                                        "tip_x") -
-                              reference.names.begin()));
-    // The relative bound of row @p r along the buckled branch.
-    const auto buckled_bound = [&](const std::size_t r) {
-      const unsigned int step = unsigned(reference.number(r, 0));
-      return 2 * (serial_residuals.at(step) + split_residuals.at(step)) /
-             reference.number(r, lowest) / tip_scale;
-    };
+    const std::vector<double> buckled =
+      buckled_branch_bounds(reference,
+                            std::stod(critical.substr(critical.find(':') + 1)),
+                            serial.output,
+                            split.output);
     for (std::size_t c = 2; c < reference.names.size(); ++c)
       {
         const std::string &name = reference.names[c];
@@ -612,9 +631,8 @@ namespace
         const double scale = std::max(probe_scale(reference, c), 1e-300);
         for (std::size_t r = 1; r < reference.rows.size(); ++r)
           {
-            const bool   buckled = reference.number(r, 1) > critical_load;
             const double row_bound =
-              bound > 0 && buckled ? std::max(bound, buckled_bound(r)) : bound;
+              bound > 0 ? std::max(bound, buckled[r]) : bound;
             EXPECT_NEAR(probes.number(r, c),
                         reference.number(r, c),
                         row_bound * scale)
