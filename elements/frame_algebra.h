@@ -319,20 +319,6 @@ namespace rodnet
                  holonomy}};
     }
 
-    /// Values of @p m functions of @p n variables, as differentiate() takes
-    /// them, in plain doubles.
-    template <int m, int n, typename Function>
-    Eigen::Matrix<double, m, 1>
-    evaluate_values(const Eigen::Matrix<double, n, 1> &x,
-                    const Function                    &function)
-    {
-      std::array<double, n> u;
-      for (int i = 0; i < n; ++i)
-        u[i] = x[i];
-      const std::array<double, m> f = function(u);
-      return Eigen::Map<const Eigen::Matrix<double, m, 1>>(f.data());
-    }
-
     /**
      * Values, gradients and (if @p hessian is not null) Hessians of @p m
      * functions of @p n variables by forward automatic differentiation:

@@ -1,3 +1,4 @@
+#include <elements/central_chart.h>
 #include <elements/frame_algebra.h>
 #include <elements/junction_kernel.h>
 
@@ -57,23 +58,18 @@ namespace rodnet
       return 2.0 * atan2(y, x);
     }
 
+    /// The strains (L&K end of section 2.3) from the unit tangent of the
+    /// physical segment, its twist increment and the junction's unit
+    /// rotation.
     template <typename Number>
     std::array<Number, 3>
-    junction_strains(const std::array<Number, n_junction_dofs> &u,
-                     const JunctionSegments                    &reference,
-                     const bool                                 simple,
-                     const GhostSpin                            spin)
+    junction_strains(const Vec<Number>      &tangent,
+                     const Number           &twist,
+                     const Quat<Number>     &rotation,
+                     const JunctionSegments &reference,
+                     const bool              simple,
+                     const GhostSpin         spin)
     {
-      const auto position = [&u](const int offset) {
-        return Vec<Number>{{u[offset], u[offset + 1], u[offset + 2]}};
-      };
-      const Vec<Number> tangent =
-        unit_edge(position(junction_dofs::first_vertex),
-                  position(junction_dofs::second_vertex));
-
-      constexpr unsigned int q = junction_dofs::rotation;
-      const Quat<Number>     rotation =
-        unit_quaternion(u[q], u[q + 1], u[q + 2], u[q + 3]);
       // Eq. 5.
       const Vec<Number> ghost_tangent =
         rotate(rotation, reference.ghost.tangent);
@@ -88,10 +84,8 @@ namespace rodnet
         reference.ghost_first ? ghost_tangent : tangent;
       const Vec<Number> &tangent_next =
         reference.ghost_first ? tangent : ghost_tangent;
-      const Number &twist_prev =
-        reference.ghost_first ? ghost_twist : u[junction_dofs::twist];
-      const Number &twist_next =
-        reference.ghost_first ? u[junction_dofs::twist] : ghost_twist;
+      const Number &twist_prev = reference.ghost_first ? ghost_twist : twist;
+      const Number &twist_next = reference.ghost_first ? twist : ghost_twist;
 
       if (simple)
         return simple_strains(
@@ -104,6 +98,108 @@ namespace rodnet
         segment_directors(reference_next, tangent_next, twist_next),
         reference.twist);
     }
+
+    /**
+     * The reduced variables of a junction: no strain depends on the length
+     * of the physical segment or on the norm of the quaternion, so the 11
+     * DoFs enter through 6 variables, the central-chart coordinates of the
+     * unit tangent (2) and of the unit rotation (3) about their current
+     * values, and the twist increment. Differentiating in these costs
+     * about (12 / 7)^2 = 2.9 times less at second order than in the DoFs.
+     */
+    namespace reduced_junction
+    {
+      constexpr int n_variables = 6;
+      constexpr int tangent     = 0;
+      constexpr int twist       = 2;
+      constexpr int rotation    = 3;
+      using Vector              = Eigen::Matrix<double, n_variables, 1>;
+      using Jacobian = Eigen::Matrix<double, n_variables, n_junction_dofs>;
+    } // namespace reduced_junction
+
+    /// The charts of a junction's tangent and rotation at its DoFs.
+    class JunctionCharts
+    {
+    public:
+      explicit JunctionCharts(const JunctionVector &dofs)
+          : edge(dofs.segment<3>(junction_dofs::second_vertex) -
+                 dofs.segment<3>(junction_dofs::first_vertex))
+          , rotation(dofs.segment<4>(junction_dofs::rotation))
+          , twist_increment(dofs[junction_dofs::twist])
+      {
+      }
+
+      /// The reduced variables at the DoFs.
+      reduced_junction::Vector
+      variables() const
+      {
+        reduced_junction::Vector y = reduced_junction::Vector::Zero();
+        y[reduced_junction::twist] = twist_increment;
+        return y;
+      }
+
+      /// The strains as a function of the reduced variables @p y.
+      template <typename Number>
+      std::array<Number, 3>
+      strains(const std::array<Number, reduced_junction::n_variables> &y,
+              const JunctionSegments &reference,
+              const bool              simple,
+              const GhostSpin         spin) const
+      {
+        const std::array<Number, 3> t =
+          edge.unit(&y[reduced_junction::tangent]);
+        const std::array<Number, 4> r =
+          rotation.unit(&y[reduced_junction::rotation]);
+        return junction_strains(Vec<Number>{{t[0], t[1], t[2]}},
+                                y[reduced_junction::twist],
+                                Quat<Number>{r[0], {{r[1], r[2], r[3]}}},
+                                reference,
+                                simple,
+                                spin);
+      }
+
+      /// dy / du (6 x 11).
+      reduced_junction::Jacobian
+      jacobian() const
+      {
+        using namespace reduced_junction;
+        Jacobian                          j                  = Jacobian::Zero();
+        const Eigen::Matrix<double, 2, 3> edge_jacobian      = edge.jacobian();
+        j.block<2, 3>(tangent, junction_dofs::second_vertex) = edge_jacobian;
+        j.block<2, 3>(tangent, junction_dofs::first_vertex)  = -edge_jacobian;
+        j(reduced_junction::twist, junction_dofs::twist)     = 1.0;
+        j.block<3, 4>(reduced_junction::rotation, junction_dofs::rotation) =
+          rotation.jacobian();
+        return j;
+      }
+
+      /// sum_k g_k d^2 y_k / du^2 for the weights @p g (the twist enters
+      /// linearly; the edge e = x_b - x_a gives the +-1 blocks).
+      HingeMatrix
+      weighted_second_derivative(
+        const Eigen::Matrix<double, 1, reduced_junction::n_variables> &g) const
+      {
+        using namespace reduced_junction;
+        const Matrix3 e =
+          edge.weighted_second_derivative(g.segment<2>(tangent).transpose());
+        HingeMatrix            h = HingeMatrix::Zero();
+        constexpr unsigned int a = junction_dofs::first_vertex;
+        constexpr unsigned int b = junction_dofs::second_vertex;
+        h.block<3, 3>(a, a)      = e;
+        h.block<3, 3>(b, b)      = e;
+        h.block<3, 3>(a, b)      = -e;
+        h.block<3, 3>(b, a)      = -e;
+        h.block<4, 4>(junction_dofs::rotation, junction_dofs::rotation) =
+          rotation.weighted_second_derivative(
+            g.segment<3>(reduced_junction::rotation).transpose());
+        return h;
+      }
+
+    private:
+      CentralChart<3> edge;
+      CentralChart<4> rotation;
+      double          twist_increment;
+    };
 
     /// The rotation of a raw quaternion handed to the public functions.
     Quat<double>
@@ -158,10 +254,19 @@ namespace rodnet
                           const JunctionReference &reference) const
   {
     check_input(dofs);
-    const JunctionSegments reference_segments(reference);
-    return evaluate_values<3, n_junction_dofs>(dofs, [&](const auto &u) {
-      return junction_strains(u, reference_segments, simple, spin);
-    });
+    const Vector3 tangent = (dofs.segment<3>(junction_dofs::second_vertex) -
+                             dofs.segment<3>(junction_dofs::first_vertex))
+                              .normalized();
+    const Eigen::Vector4d q =
+      dofs.segment<4>(junction_dofs::rotation).normalized();
+    const std::array<double, 3> kappa =
+      junction_strains(to_vec(tangent),
+                       dofs[junction_dofs::twist],
+                       Quat<double>{q[0], {{q[1], q[2], q[3]}}},
+                       JunctionSegments(reference),
+                       simple,
+                       spin);
+    return Vector3(kappa[0], kappa[1], kappa[2]);
   }
 
 
@@ -172,15 +277,32 @@ namespace rodnet
                            const bool               with_hessian) const
   {
     check_input(dofs);
-    const JunctionSegments reference_segments(reference);
-    differentiate<3, n_junction_dofs>(
-      dofs,
-      [&](const auto &u) {
-        return junction_strains(u, reference_segments, simple, spin);
+    const JunctionSegments      reference_segments(reference);
+    const JunctionCharts        charts(dofs);
+    constexpr int               n = reduced_junction::n_variables;
+    Eigen::Matrix<double, 3, n> reduced_gradient;
+    std::array<Eigen::Matrix<double, n, n>, 3> reduced_hessian;
+    differentiate<3, n>(
+      charts.variables(),
+      [&](const auto &y) {
+        return charts.strains(y, reference_segments, simple, spin);
       },
       result.kappa,
-      result.gradient,
-      with_hessian ? &result.hessian : nullptr);
+      reduced_gradient,
+      with_hessian ? &reduced_hessian : nullptr);
+
+    // The chain rule through y(u).
+    const reduced_junction::Jacobian jacobian = charts.jacobian();
+    result.gradient.noalias()                 = reduced_gradient * jacobian;
+    if (!with_hessian)
+      return;
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        result.hessian[c].noalias() =
+          jacobian.transpose() * reduced_hessian[c] * jacobian;
+        result.hessian[c] +=
+          charts.weighted_second_derivative(reduced_gradient.row(c));
+      }
   }
 
 

@@ -81,7 +81,10 @@ namespace rodnet
    * - "classic": L&K eqs. 11 and 12, as ClassicHinge, with w~ as the twist
    *   increment of the ghost segment.
    *
-   * Derivatives come from forward automatic differentiation (Sacado). The
+   * Derivatives come from forward automatic differentiation (Sacado) in
+   * six reduced variables, the central-chart coordinates
+   * (elements/central_chart.h) of the unit tangent and of the unit
+   * rotation, and the twist, carried back to the 11 DoFs in closed form. The
    * class is stateless and thread-safe.
    */
   class JunctionKernel
