@@ -1,6 +1,7 @@
 #include <elements/central_chart.h>
 #include <elements/frame_algebra.h>
 #include <elements/junction_kernel.h>
+#include <elements/simple_junction.h>
 
 #include <stdexcept>
 
@@ -254,6 +255,8 @@ namespace rodnet
                           const JunctionReference &reference) const
   {
     check_input(dofs);
+    if (closed_form())
+      return simple_junction::strains(dofs, reference);
     const Vector3 tangent = (dofs.segment<3>(junction_dofs::second_vertex) -
                              dofs.segment<3>(junction_dofs::first_vertex))
                               .normalized();
@@ -277,6 +280,8 @@ namespace rodnet
                            const bool               with_hessian) const
   {
     check_input(dofs);
+    if (closed_form())
+      return simple_junction::evaluate(dofs, reference, result, with_hessian);
     const JunctionSegments      reference_segments(reference);
     const JunctionCharts        charts(dofs);
     constexpr int               n = reduced_junction::n_variables;
@@ -303,6 +308,45 @@ namespace rodnet
         result.hessian[c] +=
           charts.weighted_second_derivative(reduced_gradient.row(c));
       }
+  }
+
+
+  void
+  JunctionKernel::evaluate_weighted(const JunctionVector    &dofs,
+                                    const JunctionReference &reference,
+                                    const StrainWeights     &weights,
+                                    JunctionStrains         &result,
+                                    HingeMatrix             &weighted) const
+  {
+    if (!closed_form())
+      return weighted_from_hessians(*this,
+                                    dofs,
+                                    reference,
+                                    weights,
+                                    result,
+                                    weighted);
+    check_input(dofs);
+    simple_junction::evaluate_weighted(dofs,
+                                       reference,
+                                       weights,
+                                       result,
+                                       weighted);
+  }
+
+
+  Vector3
+  JunctionKernel::weighted_gradient(const JunctionVector    &dofs,
+                                    const JunctionReference &reference,
+                                    const StrainWeights     &weights,
+                                    HingeVector             &weighted) const
+  {
+    if (!closed_form())
+      return gradient_from_jacobian(*this, dofs, reference, weights, weighted);
+    check_input(dofs);
+    return simple_junction::weighted_gradient(dofs,
+                                              reference,
+                                              weights,
+                                              weighted);
   }
 
 

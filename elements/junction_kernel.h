@@ -81,11 +81,12 @@ namespace rodnet
    * - "classic": L&K eqs. 11 and 12, as ClassicHinge, with w~ as the twist
    *   increment of the ghost segment.
    *
-   * Derivatives come from forward automatic differentiation (Sacado) in
-   * six reduced variables, the central-chart coordinates
-   * (elements/central_chart.h) of the unit tangent and of the unit
-   * rotation, and the twist, carried back to the 11 DoFs in closed form. The
-   * class is stateless and thread-safe.
+   * The simple measure with the exact spin is differentiated in closed form
+   * (elements/simple_junction.h). The others come from forward automatic
+   * differentiation (Sacado) in six reduced variables, the central-chart
+   * coordinates (elements/central_chart.h) of the unit tangent and of the
+   * unit rotation, and the twist, carried back to the 11 DoFs in closed
+   * form. The class is stateless and thread-safe.
    */
   class JunctionKernel
   {
@@ -123,22 +124,23 @@ namespace rodnet
                       const JunctionReference &reference,
                       const StrainWeights     &weights,
                       JunctionStrains         &result,
-                      HingeMatrix             &weighted) const
-    {
-      weighted_from_hessians(*this, dofs, reference, weights, result, weighted);
-    }
+                      HingeMatrix             &weighted) const;
 
     /// As HingeKernel::weighted_gradient().
     Vector3
     weighted_gradient(const JunctionVector    &dofs,
                       const JunctionReference &reference,
                       const StrainWeights     &weights,
-                      HingeVector             &weighted) const
-    {
-      return gradient_from_jacobian(*this, dofs, reference, weights, weighted);
-    }
+                      HingeVector             &weighted) const;
 
   private:
+    /// The simple measure with the exact spin, in closed form.
+    bool
+    closed_form() const
+    {
+      return simple && spin == GhostSpin::exact;
+    }
+
     bool      simple;
     GhostSpin spin;
   };

@@ -24,6 +24,7 @@
 #include <elements/stretch_kernel.h>
 
 #include "common/relative_error.h"
+#include "common/weighted_sums.h"
 #include "hinge_configurations.h"
 #include <Sacado.hpp>
 #include <algorithm>
@@ -84,20 +85,6 @@ namespace
       }
   }
 
-  /// Fixed weights, and the strains they were asked at.
-  struct RecordingWeights : StrainWeights
-  {
-    Vector3
-    at(const Vector3 &kappa) const override
-    {
-      asked_at = kappa;
-      return weights;
-    }
-    Vector3 weights{0.3, -1.2, 0.7};
-    // Far from any strain: an error if at() was never asked.
-    mutable Vector3 asked_at = Vector3::Constant(1e30);
-  };
-
   void
   check_hinge_kernel(const std::string &name)
   {
@@ -130,37 +117,13 @@ namespace
                 (2 * hinge_step);
           }
 
-        const RecordingWeights weights;
-        HingeStrains           s_weighted;
-        HingeMatrix            weighted;
-        kernel->evaluate_weighted(c.dofs,
-                                  c.reference,
-                                  weights,
-                                  s_weighted,
-                                  weighted);
-        HingeMatrix fd_weighted = HingeMatrix::Zero();
-        for (unsigned int k = 0; k < 3; ++k)
-          fd_weighted += weights.weights[k] * fd_hessian[k];
-        errors.weighted =
-          std::max({errors.weighted,
-                    relative_error(weighted, fd_weighted),
-                    relative_error(s_weighted.gradient, s.gradient),
-                    relative_error(weights.asked_at, s.kappa)});
-
-        // weighted_gradient(): the weighted sum of the strains' gradients.
-        const RecordingWeights gradient_weights;
-        HingeVector            weighted_gradient;
-        const Vector3          kappa = kernel->weighted_gradient(c.dofs,
-                                                        c.reference,
-                                                        gradient_weights,
-                                                        weighted_gradient);
-        errors.weighted =
-          std::max({errors.weighted,
-                    relative_error(weighted_gradient,
-                                   HingeVector(fd_gradient.transpose() *
-                                               gradient_weights.weights)),
-                    relative_error(kappa, s.kappa),
-                    relative_error(gradient_weights.asked_at, s.kappa)});
+        errors.weighted = std::max(errors.weighted,
+                                   weighted_sums_error(*kernel,
+                                                       c.dofs,
+                                                       c.reference,
+                                                       s,
+                                                       fd_gradient,
+                                                       fd_hessian));
 
         errors.value = std::max(errors.value,
                                 (s.kappa - kernel->strains(c.dofs, c.reference))

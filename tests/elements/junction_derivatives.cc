@@ -6,14 +6,19 @@
 //
 // Error norm: max_ij |analytic_ij - fd_ij| / max(1, max_ij |analytic_ij|),
 // per strain component, maximized over all configurations. The gradient is
-// differenced from strains() with h = 1e-6, the Hessian from the AD
+// differenced from strains() with h = 1e-6, the Hessian from the kernel's
 // gradient with h = 1e-6: truncation O(h^2) and round-off O(eps / h) are
-// both far below the 1e-6 tolerance at this step.
+// both far below the 1e-6 tolerance at this step. evaluate_weighted() and
+// weighted_gradient() must give the weighted sums of the differenced
+// Hessians and gradients to the same tolerance. The simple measure with the
+// exact spin is the closed form of elements/simple_junction.h, the others
+// are automatic derivatives in the central charts.
 
 #include <elements/junction_kernel.h>
 #include <elements/junction_moment.h>
 
 #include "common/relative_error.h"
+#include "common/weighted_sums.h"
 #include "junction_configurations.h"
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -98,7 +103,7 @@ namespace
     const JunctionKernel kernel(measure, spin);
     std::mt19937         rng(11);
     double max_gradient = 0, max_hessian = 0, max_symmetry = 0, max_value = 0;
-    double max_kappa = 0;
+    double max_kappa = 0, max_weighted = 0;
 
     for (unsigned int n = 0; n < n_junctions; ++n)
       {
@@ -125,6 +130,16 @@ namespace
                 (2 * junction_step);
           }
 
+        // evaluate_weighted() and weighted_gradient(): the weighted sums
+        // of the strains' Hessians and gradients.
+        max_weighted = std::max(max_weighted,
+                                weighted_sums_error(kernel,
+                                                    c.dofs,
+                                                    c.reference,
+                                                    s,
+                                                    fd_gradient,
+                                                    fd_hessian));
+
         max_value = std::max(max_value,
                              (s.kappa - kernel.strains(c.dofs, c.reference))
                                .cwiseAbs()
@@ -149,11 +164,13 @@ namespace
     std::cout << measure << " junction, " << spin_name(spin)
               << " ghost spin: max relative FD error gradient " << max_gradient
               << ", Hessian " << max_hessian << "; Hessian asymmetry "
-              << max_symmetry << "; evaluate() vs strains() " << max_value
-              << "; max |strain| " << max_kappa << std::endl;
+              << max_symmetry << "; weighted sums " << max_weighted
+              << "; evaluate() vs strains() " << max_value << "; max |strain| "
+              << max_kappa << std::endl;
     EXPECT_LT(max_gradient, junction_tolerance);
     EXPECT_LT(max_hessian, junction_tolerance);
     EXPECT_LT(max_symmetry, junction_symmetry_tolerance);
+    EXPECT_LT(max_weighted, junction_tolerance);
     EXPECT_LT(max_value, 1e-13 * std::max(1.0, max_kappa));
   }
 
