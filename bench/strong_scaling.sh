@@ -2,14 +2,17 @@
 # Strong scaling of whole rodnet-run processes on the welded square lattice
 # of issue 37 (beams of 0.1 m in 10 segments, EA = 1e5, EI1 = 400,
 # EI2 = 100, GJ = 67, pinned at its four corners, gravity on 0.05 kg/m in 2
-# load steps, Line search = energy, MUMPS, no VTU) at CELLS x CELLS cells,
-# on the machine's two cores three ways, taking turns, REPEATS runs each:
+# load steps, Line search = energy, Predictor = false, MUMPS, no VTU) at
+# CELLS x CELLS cells, on the machine's two cores three ways, taking turns,
+# REPEATS runs each:
 #   1 x 1   one process, one thread;
 #   1 x 2   one process, two threads (--threads 2: the assembly);
 #   2 x 1   two processes under mpirun, one thread each.
 # The energy line search: with full steps the first step of the 112 x 112
 # lattice diverges and converges only from its buckling mode (266 s on one
-# process, doc/performance.md).
+# process, doc/performance.md). No predictor: on this stiffening lattice
+# Newton starts better from the last equilibrium (doc/performance.md, "The
+# predictor where the response stiffens").
 # Prints a markdown table (configuration, median wall time, speed-up over
 # 1 x 1) per lattice and draws doc/strong_scaling.png: the speed-ups against
 # the DoFs, with the issue's goal of 1.7x.
@@ -28,7 +31,8 @@ mpirun=(mpirun --oversubscribe -np 2)
 
 : > "$work/speedups.dat"
 for n in "${cells[@]}"; do
-  welded_lattice_scene "$n" $'  set Line search = energy\n  set Linear solver = mumps' \
+  welded_lattice_scene "$n" \
+    $'  set Line search = energy\n  set Linear solver = mumps\n  set Predictor = false' \
     > "$work/lattice.prm"
   one=() threads=() processes=()
   for ((k = 0; k < repeats; ++k)); do
