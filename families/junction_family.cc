@@ -12,7 +12,14 @@ namespace rodnet
     const std::vector<std::shared_ptr<const RodMaterial>> &materials)
       : BendingFamily<JunctionStencils>(layout, kernels, materials)
       , network(network)
+      , cost(1.0)
   {
+    if (kernels.empty())
+      return;
+    double sum = 0;
+    for (const auto &kernel : kernels)
+      sum += kernel->relative_cost();
+    cost = sum / kernels.size();
   }
 
   std::vector<DeclaredDof>
