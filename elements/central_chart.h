@@ -13,9 +13,9 @@ namespace rodnet
    * are an orthonormal basis of the plane orthogonal to p.
    *
    * A function of the direction of v alone (a unit tangent e / |e|, a unit
-   * quaternion q / |q|) is then a function of d - 1 variables, so its
-   * automatic derivatives cost (d / (d - 1))^2 times less per operation at
-   * second order, and the chain rule back to v is in closed form:
+   * quaternion q / |q|) is then a function of d - 1 variables, so a
+   * second-order forward derivative carries d^2 numbers per operation
+   * instead of (d + 1)^2, and the chain rule back to v is in closed form:
    * y_k(v) = b_k . v / p . v, which at v itself gives
    * - dy_k / dv = b_k / |v|,
    * - d^2 y_k / dv^2 = -(b_k p^T + p b_k^T) / |v|^2,
