@@ -3,6 +3,7 @@
 #include <app/interrupt.h>
 #include <app/method_runs.h>
 #include <app/scene_runner.h>
+#include <base/phase_times.h>
 #include <io/mode_shapes.h>
 #include <io/problem_size.h>
 
@@ -77,7 +78,10 @@ namespace rodnet
       dealii::Timer timer;
       if (report)
         *log << "building the model ..." << std::endl;
-      auto model = build();
+      auto model = [&] {
+        const phase_times::Scope phase(phase_times::Phase::model_build);
+        return build();
+      }();
       if (report)
         *log << "  built in " << timer.wall_time() << " s" << std::endl;
       throw_if_stop_requested();

@@ -3,6 +3,7 @@
 
 #include <app/interrupt.h>
 #include <app/scene_runner.h>
+#include <base/phase_times.h>
 #include <core/model.h>
 #include <io/network_picture.h>
 #include <io/probe_plot.h>
@@ -94,6 +95,7 @@ namespace rodnet
            const State               &state,
            const std::vector<double> &checks = {})
     {
+      const phase_times::Scope phase(phase_times::Phase::outputs);
       // The outputs read DoFs anywhere (collective on several processes).
       const EveryEntryOf<State> every_entry(state);
       const State              &u = *every_entry;
@@ -127,6 +129,7 @@ namespace rodnet
            const std::optional<std::pair<double, double>> &x_range =
              std::nullopt) const
     {
+      const phase_times::Scope phase(phase_times::Phase::outputs);
       // Titled by the folder, which names the run ("elastica").
       ProbePlotOptions options;
       options.title        = "rodnet probes: " + run_name(output_directory);

@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <base/phase_times.h>
 #include <core/direct_scatter.h>
 #include <core/every_entry.h>
 #include <core/rod_model.h>
@@ -146,7 +147,7 @@ namespace rodnet
     const bool in_colors = concurrent_copier &&
                            dealii::MultithreadInfo::n_threads() > 1 &&
                            stencil_blocks.size() == families.size();
-    const StencilState state{u,
+    const StencilState state{values_of(u),
                              *configuration_,
                              history,
                              step_length,
@@ -261,6 +262,11 @@ namespace rodnet
                      const bool        apply_constraints,
                      const VectorType *extra_force) const
   {
+    using phase_times::Phase;
+    const phase_times::Scope phase(
+      tangent != nullptr  ? Phase::hessian_assembly :
+      residual != nullptr ? Phase::gradient_assembly :
+                            Phase::energy_assembly);
     if (residual != nullptr)
       *residual = 0;
     const DirectScatter::Numbering numbering   = scatter_numbering();
@@ -306,6 +312,7 @@ namespace rodnet
     if (tangent != nullptr)
       {
         scatter.finish();
+        const phase_times::Scope phase(phase_times::Phase::exchange);
         tangent->compress(dealii::VectorOperation::add);
       }
     return energy;
@@ -418,13 +425,15 @@ namespace rodnet
     // The natural shape at the load factor, the loads off: the families'
     // energy at a stencil load factor 0 (no applied-moment potential, even
     // for fixed loads) and without add_dead_loads().
+    const phase_times::Scope phase(phase_times::Phase::energy_assembly);
     follow_natural_shape(load_factor);
-    const StencilState state{own_stencils.empty() ? u : with_ghosts(u),
+    const StencilState state{values_of(own_stencils.empty() ? u :
+                                                              with_ghosts(u)),
                              *configuration_,
                              history,
                              step_length,
                              0.0};
-    double energy = 0;
+    double             energy = 0;
     for (unsigned int f = 0; f < families.size(); ++f)
       assemble_family(
         f,

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parallel.h>
 
+#include <base/phase_times.h>
 #include <core/direct_scatter.h>
 
 #include <algorithm>
@@ -95,6 +96,7 @@ namespace rodnet
   {
     if (foreign == nullptr)
       return;
+    const phase_times::Scope phase(phase_times::Phase::exchange);
     foreign->exchange([this](const ForeignRows::Row &row) {
       if (values != nullptr)
         values[row.dof - numbering.first] += row.vector_value;

@@ -5,6 +5,7 @@
 // sends the others to their owners (ForeignRows); the energies are summed
 // over the processes.
 #include <base/first_problem.h>
+#include <base/phase_times.h>
 #include <core/every_entry.h>
 #include <core/rod_model.h>
 
@@ -19,6 +20,7 @@ namespace rodnet
     // A state with every entry (a replica) holds the ghosts already.
     if (!EveryEntry::distributed(u))
       return u;
+    const phase_times::Scope phase(phase_times::Phase::exchange);
     if (!u.trilinos_vector().Map().SameAs(ghost_import->SourceMap()))
       ghosted_state = u; // another partition: deal.II imports it
     else if (ghosted_state.trilinos_vector().Import(u.trilinos_vector(),
@@ -27,6 +29,13 @@ namespace rodnet
       throw std::runtime_error("the import of the ghost entries of the "
                                "state failed (Epetra_Import)");
     return ghosted_state;
+  }
+
+
+  DofValues
+  RodModel::values_of(const VectorType &u) const
+  {
+    return &u == &ghosted_state ? DofValues(u, ghost_places) : DofValues(u);
   }
 
 
@@ -44,6 +53,7 @@ namespace rodnet
       {
         failure = e.what();
       }
+    const phase_times::Scope phase(phase_times::Phase::exchange);
     // A stencil that failed on one process fails the assembly on all.
     failure = first_problem(failure, mpi_communicator);
     if (!failure.empty())

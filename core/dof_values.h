@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rodnet
 {
@@ -39,6 +40,23 @@ namespace rodnet
         find_middle_run();
     }
 
+    /**
+     * As above, with @p places the place in @p u's storage of each global
+     * DoF (-1 where @p u holds none), read for the entries outside the run:
+     * one more load instead of Epetra's hash lookup. A network's junctions
+     * give the rods' end vertices the DoFs of their junction's vertex,
+     * numbered with another rod, often on another process: 8 % of each
+     * process's assembly time went to these lookups on the welded lattice
+     * of 1.1e6 DoFs (doc/performance.md). @p places must outlive the reader.
+     */
+    DofValues(const dealii::TrilinosWrappers::MPI::Vector &u,
+              const std::vector<int>                      &places)
+        : DofValues(u)
+    {
+      if (values == nullptr)
+        this->places = places.data();
+    }
+
     /// The entry of global DoF @p i (locally owned or ghost). Throws
     /// std::logic_error where this process holds no entry @p i (a vector
     /// without the ghosts a stencil reads): deal.II's Release library
@@ -51,8 +69,11 @@ namespace rodnet
       // Unsigned: an index below the run wraps past its size.
       if (i - run_begin < run_size)
         return run_values[i - run_begin];
-      const int local = u->trilinos_vector().Map().LID(
-        static_cast<dealii::TrilinosWrappers::types::int_type>(i));
+      const int local =
+        places != nullptr ?
+          places[i] :
+          u->trilinos_vector().Map().LID(
+            static_cast<dealii::TrilinosWrappers::types::int_type>(i));
       if (local < 0)
         throw std::logic_error(
           "DoF " + std::to_string(i) +
@@ -129,6 +150,8 @@ namespace rodnet
     dealii::types::global_dof_index run_begin  = 0;
     dealii::types::global_dof_index run_size   = 0;
     const double                   *run_values = nullptr;
+    /// The places of the global DoFs in the storage, or null.
+    const int *places = nullptr;
   };
 } // namespace rodnet
 

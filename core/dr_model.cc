@@ -1,3 +1,4 @@
+#include <base/phase_times.h>
 #include <core/dr_model.h>
 #include <core/require_positive.h>
 #include <materials/dr_beam_energy.h>
@@ -555,6 +556,7 @@ namespace rodnet
   {
     if (!finalized)
       throw std::logic_error("DrModel::residual before finalize()");
+    const phase_times::Scope phase(phase_times::Phase::gradient_assembly);
     r.reinit(n_dofs());
     DrElementVector gradient;
     for (const Element &e : own_elements())
@@ -579,7 +581,8 @@ namespace rodnet
   {
     if (!finalized)
       throw std::logic_error("DrModel::energy before finalize()");
-    double total = 0;
+    const phase_times::Scope phase(phase_times::Phase::energy_assembly);
+    double                   total = 0;
     for (const Element &e : own_elements())
       total += dr_beam_energy(
         stiffness[e.rod],

@@ -218,8 +218,15 @@ namespace rodnet
   void
   RodModel::make_sparsity_pattern()
   {
-    dealii::DynamicSparsityPattern pattern(layout_->n_dofs());
-    add_sparsity_pattern(pattern, SystemBlock::at_offset(layout_->n_dofs(), 0));
+    // On several processes only the own rows are kept (the pattern ignores
+    // entries of other rows): their sorted insertions were half of the
+    // set-up of the welded lattice of 1.1e6 DoFs on each process.
+    const global_dof_index         n = layout_->n_dofs();
+    dealii::DynamicSparsityPattern pattern =
+      owned_dofs.n_elements() == n ?
+        dealii::DynamicSparsityPattern(n) :
+        dealii::DynamicSparsityPattern(n, n, owned_dofs);
+    add_sparsity_pattern(pattern, SystemBlock::at_offset(n, 0));
     // reinit() with the partition: copy_from() would make the pattern of
     // one process, every row on each.
     sparsity.reinit(owned_dofs, owned_dofs, pattern, mpi_communicator);
@@ -301,6 +308,10 @@ namespace rodnet
         ghost_import = std::make_unique<Epetra_Import>(
           ghosted_state.trilinos_vector().Map(),
           create_vector().trilinos_vector().Map());
+        const Epetra_BlockMap &held = ghosted_state.trilinos_vector().Map();
+        ghost_places.assign(layout_->n_dofs(), -1);
+        for (int k = 0; k < held.NumMyElements(); ++k)
+          ghost_places[held.GID64(k)] = k;
       }
     finalized = true;
   }

@@ -14,6 +14,7 @@
 #include <core/dead_loads.h>
 #include <core/direct_scatter.h>
 #include <core/dof_layout.h>
+#include <core/dof_values.h>
 #include <core/element_family.h>
 #include <core/internal_variables.h>
 #include <core/model.h>
@@ -898,6 +899,11 @@ namespace rodnet
     const VectorType &
     with_ghosts(const VectorType &u) const;
 
+    /// The reader of @p u's entries that the stencils get: with the places
+    /// of ghosted_state's entries where @p u is ghosted_state.
+    DofValues
+    values_of(const VectorType &u) const;
+
     /// The homogeneous constraints of the fixed DoFs and the junction
     /// copies, and the mask of the DoFs they constrain.
     void
@@ -978,6 +984,9 @@ namespace rodnet
     std::vector<global_dof_index> share_starts;
     /// The state with the ghost entries own_stencils read (with_ghosts()).
     mutable VectorType ghosted_state;
+    /// Per global DoF, its place in ghosted_state's storage, -1 where it
+    /// holds none (DofValues): 4 bytes a DoF on each process.
+    std::vector<int> ghost_places;
     /// The import of the ghost entries into ghosted_state from a vector
     /// of the model's partition, made once at finalize() (deal.II's
     /// assignment makes one per call).

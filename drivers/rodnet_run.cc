@@ -6,6 +6,8 @@
  *   rodnet-run SCENE.prm|SCENE.json [--output DIR]
  *   rodnet-run SCENE... [--output DIR]           several scenes, one process
  *   rodnet-run SCENE --sweep Section/Entry=VALUES [--output DIR]
+ *   ... --threads N          assembly on N threads
+ *   ... --timings            a table of where the time went, at the end
  *   rodnet-run --help       usage, exit codes and every scene entry
  *   rodnet-run --version    the versions of rodnet and deal.II
  *
@@ -16,11 +18,13 @@
 #include <deal.II/base/config.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/timer.h>
 
 #include <app/interrupt.h>
 #include <app/scene_runner.h>
 #include <app/scene_study.h>
 #include <base/mpi_session.h>
+#include <base/phase_times.h>
 #include <io/output_directory.h>
 #include <io/scene.h>
 #include <io/scene_help.h>
@@ -38,11 +42,12 @@ namespace
   usage(std::ostream &out)
   {
     out << "usage: rodnet-run SCENE.prm|SCENE.json [--output DIR] "
-           "[--threads N]\n"
-           "       rodnet-run SCENE... [--output DIR] [--threads N]\n"
+           "[--threads N] [--timings]\n"
+           "       rodnet-run SCENE... [--output DIR] [--threads N] "
+           "[--timings]\n"
            "       rodnet-run SCENE --sweep Section/Entry=VALUES [--output "
            "DIR]\n"
-           "                  [--threads N]\n"
+           "                  [--threads N] [--timings]\n"
            "       rodnet-run --help | --version\n";
   }
 
@@ -63,6 +68,10 @@ namespace
            "--threads N assembles on N threads (default 1); the results differ "
            "from "
            "one\nthread's by the order of the additions only.\n"
+           "--timings ends with a table of where the wall time went: model "
+           "build,\nassembly, factorizations, solves, checks, outputs, "
+           "each the least and the\nmost over the processes "
+           "(doc/performance.md, \"Where a run's time goes\").\n"
            "Several scenes, or a sweep of one entry (VALUES: FROM:TO:COUNT "
            "or a list split\nby ',' or ';'), run in one process into "
            "DIR/<k>_<label>/, with DIR/summary.csv\nand .png (the probes "
@@ -138,6 +147,7 @@ namespace
     bool                     output_given = false;
     std::string              sweep;
     unsigned int             threads = 1;
+    bool                     timings = false;
   };
 
   /// The number of threads of "--threads @p text": a whole number from 1
@@ -278,6 +288,8 @@ namespace
                 "--threads needs a whole number of threads from 1 to 1024, "
                 "e.g. --threads 2");
           }
+        else if (arg == "--timings")
+          arguments.timings = true;
         else if (!arg.empty() && arg[0] != '-')
           arguments.scene_files.push_back(arg);
         else
@@ -315,9 +327,17 @@ rodnet_run_main(int argc, char **argv)
               << dealii::MultithreadInfo::n_cores() << " cores)" << std::endl;
   // After MPI_Init, which installs handlers of its own.
   rodnet::stop_cleanly_on_signals();
-  if (arguments.scene_files.size() == 1 && arguments.sweep.empty())
-    return run_one_scene(arguments.scene_files[0],
-                         arguments.output,
-                         arguments.output_given);
-  return run_many(arguments);
+  const dealii::Timer run_time;
+  const int           exit_code =
+    arguments.scene_files.size() == 1 && arguments.sweep.empty() ?
+                run_one_scene(arguments.scene_files[0],
+                    arguments.output,
+                    arguments.output_given) :
+                run_many(arguments);
+  // Not after bad input, which every process refuses before running.
+  if (arguments.timings && exit_code != 1)
+    rodnet::phase_times::write_table(std::cout,
+                                     run_time.wall_time(),
+                                     MPI_COMM_WORLD);
+  return exit_code;
 }

@@ -1,3 +1,4 @@
+#include <base/phase_times.h>
 #include <core/every_entry.h>
 #include <solvers/checks/equilibrium_check.h>
 #include <solvers/checks/equilibrium_factorization.h>
@@ -160,7 +161,8 @@ namespace rodnet
                     const double               uncertainty_limit,
                     TangentFactorizationCache *factorizations)
   {
-    VectorType r = model.create_vector();
+    const phase_times::Scope phase(phase_times::Phase::checks);
+    VectorType               r = model.create_vector();
     model.assemble(u, load_factor, &r, &tangent, true);
     const auto factorization =
       EquilibriumFactorization::create(model, tangent, factorizations);

@@ -1,3 +1,4 @@
+#include <base/phase_times.h>
 #include <core/every_entry.h>
 #include <elements/stretch_kernel.h>
 #include <solvers/checks/strain_range.h>
@@ -35,10 +36,11 @@ namespace rodnet
   StrainRange
   StrainMonitor::evaluate(const VectorType &state) const
   {
-    const EveryEntry     every_entry(state);
-    const VectorType    &u             = *every_entry;
-    const Configuration &configuration = model.configuration();
-    StrainRange          range;
+    const phase_times::Scope phase(phase_times::Phase::checks);
+    const EveryEntry         every_entry(state);
+    const VectorType        &u             = *every_entry;
+    const Configuration     &configuration = model.configuration();
+    StrainRange              range;
     for (const SegmentStencil &s : model.layout().segments())
       {
         StretchStrain stretch;

@@ -1,6 +1,5 @@
 #include <deal.II/base/mpi.h>
 
-#include <solvers/newton/epetra_entries.h>
 #include <solvers/newton/mumps_factorization.h>
 
 #include <dmumps_c.h>
@@ -132,18 +131,27 @@ namespace rodnet
         }
     }
 
-    /// Calls @p f(row, column, value), global indices from 0, for each
+    /// Calls @p f(row, column, place), global indices from 0, for each
     /// stored entry of the lower triangle in the rows of @p m that this
-    /// process owns, in the order of its compressed rows.
+    /// process owns, in the order of its compressed rows; place is the
+    /// entry's index among all entries of these rows in that order.
     template <class Function>
     void
     for_each_lower_entry(const Epetra_CrsMatrix &m, const Function &f)
     {
-      for_each_entry(m, [&](const int row, const int column, const double v) {
-        const int global_row = m.GRID(row);
-        if (column <= global_row)
-          f(global_row, column, v);
-      });
+      std::size_t place = 0;
+      for (int row = 0; row < m.NumMyRows(); ++row)
+        {
+          int     n;
+          int    *local_columns;
+          double *row_values;
+          m.ExtractMyRowView(row, n, row_values, local_columns);
+          const int global_row = m.GRID(row);
+          for (int k = 0; k < n; ++k, ++place)
+            if (const int column = m.GCID(local_columns[k]);
+                column <= global_row)
+              f(global_row, column, place);
+        }
     }
   } // namespace
 
@@ -155,10 +163,14 @@ namespace rodnet
       , host(matrix.trilinos_matrix().RowMap(), communicator)
   {
     for_each_lower_entry(matrix.trilinos_matrix(),
-                         [&](const int row, const int column, double) {
+                         [&](const int         row,
+                             const int         column,
+                             const std::size_t place) {
                            rows.push_back(row + 1);
                            columns.push_back(column + 1);
+                           places.push_back(place);
                          });
+    n_stored = matrix.trilinos_matrix().NumMyNonzeros();
     values.resize(rows.size());
 
     DMUMPS_STRUC_C &id = mumps->id;
@@ -199,21 +211,32 @@ namespace rodnet
   }
 
 
+  bool
+  MumpsFactorization::copy_values()
+  {
+    const Epetra_CrsMatrix &m       = matrix.trilinos_matrix();
+    int                    *offsets = nullptr, *local_columns = nullptr;
+    double                 *stored = nullptr;
+    // deal.II's matrices keep their rows in one array once compressed.
+    if (m.NumMyNonzeros() != n_stored ||
+        m.ExtractCrsDataPointers(offsets, local_columns, stored) != 0 ||
+        stored == nullptr)
+      return false;
+    for (std::size_t k = 0; k < values.size(); ++k)
+      values[k] = stored[places[k]];
+    return true;
+  }
+
+
   void
   MumpsFactorization::factorize()
   {
-    std::size_t k = 0;
-    for_each_lower_entry(matrix.trilinos_matrix(),
-                         [&](int, int, const double value) {
-                           if (k < values.size())
-                             values[k] = value;
-                           ++k;
-                         });
     // Agreed by all processes: one that threw alone would leave the others
     // waiting in MUMPS.
-    if (dealii::Utilities::MPI::logical_or(k != values.size(), communicator))
+    if (dealii::Utilities::MPI::logical_or(!copy_values(), communicator))
       throw std::logic_error(
-        "the tangent's pattern changed after MUMPS's analysis of it");
+        "the tangent's pattern changed after MUMPS's analysis of it (or "
+        "its rows are not compressed into one array)");
     factorized         = false;
     DMUMPS_STRUC_C &id = mumps->id;
     id.job             = 2;

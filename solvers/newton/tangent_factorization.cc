@@ -1,11 +1,13 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/patterns.h>
 
+#include <base/phase_times.h>
 #include <core/scatter_positions.h>
 #include <solvers/newton/band_lu.h>
 #include <solvers/newton/epetra_entries.h>
 #include <solvers/newton/klu_factorization.h>
 #include <solvers/newton/mumps_factorization.h>
+#include <solvers/newton/phase_timed_factorization.h>
 #include <solvers/newton/tangent_factorization.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -220,6 +222,15 @@ namespace rodnet
                                const std::string &kind)
   {
     check_kind(kind);
+    const phase_times::Scope phase(phase_times::Phase::factorization_analysis);
+    return phase_timed(make_factorization(matrix, kind));
+  }
+
+
+  std::unique_ptr<TangentFactorization>
+  TangentFactorization::make_factorization(const MatrixType  &matrix,
+                                           const std::string &kind)
+  {
     const unsigned int n_processes =
       dealii::Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator());
     if (n_processes > 1 && (kind == "klu" || kind == "band"))

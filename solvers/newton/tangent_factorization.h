@@ -73,9 +73,10 @@ namespace rodnet
     /**
      * A factorization of the matrices of @p matrix's pattern (its values
      * are read at each factorize()): @p kind "klu", "band", "mumps" or
-     * "auto". Throws std::invalid_argument for another kind, and for
-     * "klu" and "band" on more than one process (naming "mumps", which
-     * runs there).
+     * "auto". Its construction (the symbolic analysis), factorize() and
+     * solves are timed as phases of base/phase_times.h. Throws
+     * std::invalid_argument for another kind, and for "klu" and "band" on more
+     * than one process (naming "mumps", which runs there).
      */
     static std::unique_ptr<TangentFactorization>
     create(const MatrixType &matrix, const std::string &kind);
@@ -131,6 +132,12 @@ namespace rodnet
     {
       return std::nullopt;
     }
+
+  private:
+    /// The factorization create() returns, before it is wrapped to time
+    /// its phases (base/phase_times.h); @p kind is checked.
+    static std::unique_ptr<TangentFactorization>
+    make_factorization(const MatrixType &matrix, const std::string &kind);
   };
 
   /**

@@ -1,3 +1,4 @@
+#include <base/phase_times.h>
 #include <solvers/solver_failure.h>
 #include <solvers/stability/lowest_eigenpairs.h>
 #include <solvers/stability/stability.h>
@@ -412,7 +413,8 @@ namespace rodnet
                     const std::vector<global_dof_index>          &multipliers,
                     const double                                  tolerance)
   {
-    const unsigned int n_free =
+    const phase_times::Scope phase(phase_times::Phase::checks);
+    const unsigned int       n_free =
       eigenspace_size(tangent, constraints, multipliers);
     if (n_free == 0)
       throw std::invalid_argument("every DoF is constrained: no eigenpair");

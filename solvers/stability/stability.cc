@@ -1,4 +1,4 @@
-
+#include <base/phase_times.h>
 #include <solvers/stability/stability.h>
 
 #include <Eigen/SparseCholesky>
@@ -174,6 +174,7 @@ namespace rodnet
     const std::vector<global_dof_index>          &multipliers)
       : data(std::make_unique<Data>())
   {
+    const phase_times::Scope phase(phase_times::Phase::numeric_factorization);
     data->block = sparse_free_block(tangent, constraints, multipliers, shift);
     data->n_multipliers = data->block.global.size() - data->block.space.size();
     if (!data->block.global.empty())

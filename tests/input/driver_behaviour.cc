@@ -15,6 +15,8 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -312,6 +314,55 @@ namespace
         else
           EXPECT_NEAR(rows_two[r][c], rows_one[r][c], 1e-8 * deflection)
             << "row " << r << ", column " << c;
+  }
+
+  // --timings: a table of the phases that took time, each the least and
+  // the most over the processes (one here: the same), the rest as "other",
+  // adding up to the run's time; the assembly and the factorizations of a
+  // Newton solve are among them.
+  TEST(Driver, TimingsAddUpToTheRun)
+  {
+    std::ofstream("timings.prm")
+      << "subsection Geometry\n  set Generator = square lattice\n"
+         "  set Cells = 10, 10\n  set Beam length = 0.1\n  set Segments = 10\n"
+         "end\nsubsection Supports\n  set Pinned vertices = @n_0_0, "
+         "@n_10_0, @n_0_10, @n_10_10\nend\nsubsection Material\n"
+         "  subsection linear elastic\n    set Stiffness input = direct\n"
+         "    set EA = 1e5\n    set EI1 = 4\n    set EI2 = 1\n"
+         "    set GJ = 0.67\n  end\nend\nsubsection Loads\n  set Steps = 2\n"
+         "  set Gravity = 0, 0, -9.81\n  set Mass per length = 0.05\nend\n"
+         "subsection Output\n  set Write VTU = false\n  set Plot = false\n"
+         "end\n";
+    const rodnet::testing::DriverOutcome o = rodnet::testing::run_driver_with(
+      "timings.prm --output out_timings --timings");
+    ASSERT_EQ(o.exit_code, 0) << o.output;
+    const std::size_t table = o.output.find("where the time went");
+    ASSERT_NE(table, std::string::npos) << o.output;
+    const std::regex total_pattern(R"(of ([0-9.e+-]+) s\):)");
+    std::smatch      total;
+    ASSERT_TRUE(std::regex_search(o.output, total, total_pattern)) << o.output;
+    const std::regex row(
+      R"(\n  ([A-Za-z ]+[a-z]) +([0-9.]+) +([0-9.]+) +[0-9.]+ %)");
+    std::map<std::string, double> seconds;
+    double                        sum = 0;
+    for (auto it =
+           std::sregex_iterator(o.output.begin() + table, o.output.end(), row);
+         it != std::sregex_iterator();
+         ++it)
+      {
+        EXPECT_EQ((*it)[2], (*it)[3]) << "one process: least = most";
+        seconds[(*it)[1]] = std::stod((*it)[3]);
+        sum += std::stod((*it)[3]);
+      }
+    for (const char *phase : {"model build",
+                              "Hessian assembly",
+                              "numeric factorization",
+                              "linear solves",
+                              "other"})
+      EXPECT_EQ(seconds.count(phase), 1u) << phase << "\n" << o.output;
+    // The rows and the total are rounded to 1 ms each.
+    EXPECT_NEAR(sum, std::stod(total[1]), 1e-3 * (seconds.size() + 1))
+      << o.output;
   }
 
   TEST(Driver, ThreadCountsThatAreNotOneToManyAreRefused)
