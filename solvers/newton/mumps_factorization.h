@@ -119,6 +119,11 @@ namespace rodnet
     solve_columns(const std::vector<const VectorType *> &right_hand_sides,
                   const std::vector<VectorType *>       &solutions);
 
+    /// Copies the matrix's values into values; false where the number of
+    /// this process's lower-triangle entries changed since the analysis.
+    bool
+    copy_values();
+
     /// MUMPS's instance (dmumps_c's structure, kept out of this header).
     struct Instance;
     std::unique_ptr<Instance> mumps;
@@ -132,20 +137,7 @@ namespace rodnet
     /// 1, as MUMPS reads it, and its values, copied at each factorize().
     std::vector<int>    rows, columns;
     std::vector<double> values;
-    /// Where each entry of values is in the matrix's compressed rows (the
-    /// array of ExtractCrsDataPointers()), and how many entries those hold:
-    /// factorize() copies the values by these places instead of finding
-    /// each entry's global row and column again (two Epetra map lookups an
-    /// entry, 3 % of each process's time on the welded lattice of 1.1e6
-    /// DoFs, doc/performance.md).
-    std::vector<std::size_t> places;
-    int                      n_stored = 0;
 
-    /// Copies the matrix's values into values; false where the number of
-    /// this process's entries changed since the analysis, or its rows are
-    /// not in one array (a matrix not compressed).
-    bool
-    copy_values();
     /// The right-hand sides, which MUMPS overwrites with the solutions, in
     /// columns of all rows on the host (empty elsewhere).
     std::vector<double> rhs;
