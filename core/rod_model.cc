@@ -9,6 +9,7 @@
 #include <core/stencil_coloring.h>
 
 #include <Epetra_BlockMap.h>
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -204,9 +205,13 @@ namespace rodnet
         {
           family->get_dofs(s, dofs);
           block.map(dofs);
+          // A row's columns in one sorted range, not entry by entry: the
+          // pattern merges a range at once (and ignores rows it does not
+          // keep, see make_sparsity_pattern()).
+          std::sort(dofs.begin(), dofs.end());
+          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
           for (const global_dof_index i : dofs)
-            for (const global_dof_index j : dofs)
-              pattern.add(i, j);
+            pattern.add_entries(i, dofs.begin(), dofs.end(), true);
         }
     // DoFs that no stencil sees (the twist of a one-segment rod, the
     // junction copies) still need their diagonal entry.
