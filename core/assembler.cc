@@ -67,6 +67,21 @@ namespace rodnet
           1);
     }
 
+    /// The phase of base/phase_times.h an assembly of @p derivatives is
+    /// charged to.
+    phase_times::Phase
+    assembly_phase(const Derivatives derivatives)
+    {
+      switch (derivatives)
+        {
+          case Derivatives::hessian:
+            return phase_times::Phase::hessian_assembly;
+          case Derivatives::gradient:
+            return phase_times::Phase::gradient_assembly;
+          default:
+            return phase_times::Phase::energy_assembly;
+        }
+    }
   } // namespace
 
   void
@@ -262,11 +277,8 @@ namespace rodnet
                      const bool        apply_constraints,
                      const VectorType *extra_force) const
   {
-    using phase_times::Phase;
     const phase_times::Scope phase(
-      tangent != nullptr  ? Phase::hessian_assembly :
-      residual != nullptr ? Phase::gradient_assembly :
-                            Phase::energy_assembly);
+      assembly_phase(derivatives_for(residual, tangent)));
     if (residual != nullptr)
       *residual = 0;
     const DirectScatter::Numbering numbering   = scatter_numbering();

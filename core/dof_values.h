@@ -45,9 +45,9 @@ namespace rodnet
      * DoF (-1 where @p u holds none), read for the entries outside the run:
      * one more load instead of Epetra's hash lookup. A network's junctions
      * give the rods' end vertices the DoFs of their junction's vertex,
-     * numbered with another rod, often on another process: 8 % of each
-     * process's assembly time went to these lookups on the welded lattice
-     * of 1.1e6 DoFs (doc/performance.md). @p places must outlive the reader.
+     * numbered with another rod, often on another process: these lookups
+     * took 2.6 % of each process's time on the welded lattice of 1.1e6 DoFs
+     * (doc/performance.md). @p places must outlive the reader.
      */
     DofValues(const dealii::TrilinosWrappers::MPI::Vector &u,
               const std::vector<int>                      &places)

@@ -334,8 +334,10 @@ rodnet_run_main(int argc, char **argv)
                     arguments.output,
                     arguments.output_given) :
                 run_many(arguments);
-  // Not after bad input, which every process refuses before running.
-  if (arguments.timings && exit_code != 1)
+  // Not after bad input (refused before running); the processes agree on
+  // that first, since the table is made by all of them together.
+  if (arguments.timings &&
+      !dealii::Utilities::MPI::logical_or(exit_code == 1, MPI_COMM_WORLD))
     rodnet::phase_times::write_table(std::cout,
                                      run_time.wall_time(),
                                      MPI_COMM_WORLD);
