@@ -1,8 +1,10 @@
-#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
 
 #include <base/phase_times.h>
 
+#include <algorithm>
 #include <iomanip>
+#include <vector>
 
 namespace rodnet
 {
@@ -91,39 +93,72 @@ namespace rodnet
     }
 
 
+    namespace
+    {
+      /// One row of the table: the least and the most seconds over the
+      /// processes and the rank of a process that took the most.
+      struct Spread
+      {
+        double       least   = 0;
+        double       most    = 0;
+        unsigned int slowest = 0;
+      };
+
+      /// The spread over the processes of each of @p own's entries (this
+      /// process's), on rank 0 of @p communicator (empty elsewhere).
+      std::vector<Spread>
+      spread_over_processes(const std::vector<double> &own,
+                            const MPI_Comm             communicator)
+      {
+        const std::vector<std::vector<double>> all =
+          dealii::Utilities::MPI::gather(communicator, own, 0);
+        std::vector<Spread> spreads;
+        for (std::size_t k = 0; k < own.size() && !all.empty(); ++k)
+          {
+            Spread spread{all[0][k], all[0][k], 0};
+            for (unsigned int rank = 1; rank < all.size(); ++rank)
+              {
+                spread.least = std::min(spread.least, all[rank][k]);
+                if (all[rank][k] > spread.most)
+                  spread = {spread.least, all[rank][k], rank};
+              }
+            spreads.push_back(spread);
+          }
+        return spreads;
+      }
+    } // namespace
+
+
     void
     write_table(std::ostream  &out,
                 const double   total_seconds,
                 const MPI_Comm communicator)
     {
-      const std::array<double, n_phases>    own = seconds();
-      std::array<double, n_phases>          least{};
-      std::array<double, n_phases>          most{};
-      const dealii::ArrayView<const double> own_view(own.data(), n_phases);
-      dealii::Utilities::MPI::min(own_view,
-                                  communicator,
-                                  dealii::ArrayView<double>(least.data(),
-                                                            n_phases));
-      dealii::Utilities::MPI::max(own_view,
-                                  communicator,
-                                  dealii::ArrayView<double>(most.data(),
-                                                            n_phases));
-      double charged = 0;
-      for (const double s : own)
+      // Each phase's seconds, then the rest of the run.
+      const std::array<double, n_phases> phases = seconds();
+      std::vector<double>                own(phases.begin(), phases.end());
+      double                             charged = 0;
+      for (const double s : phases)
         charged += s;
-      const double rest_least =
-        dealii::Utilities::MPI::min(total_seconds - charged, communicator);
-      const double rest_most =
-        dealii::Utilities::MPI::max(total_seconds - charged, communicator);
-      if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+      own.push_back(total_seconds - charged);
+      const std::vector<Spread> spreads =
+        spread_over_processes(own, communicator);
+      if (spreads.empty())
         return;
 
-      const auto row = [&](const char *label, double low, double high) {
+      // The slowest process's rank only where there are several.
+      const bool several =
+        dealii::Utilities::MPI::n_mpi_processes(communicator) > 1;
+      const auto row = [&](const char *label, const Spread &spread) {
         out << "  " << std::left << std::setw(24) << label << std::right
-            << std::fixed << std::setprecision(3) << std::setw(10) << low
-            << std::setw(10) << high << std::setprecision(1) << std::setw(8)
-            << (total_seconds > 0 ? 100 * high / total_seconds : 0.) << " %"
-            << std::defaultfloat << '\n';
+            << std::fixed << std::setprecision(3) << std::setw(10)
+            << spread.least << std::setw(10) << spread.most
+            << std::setprecision(1) << std::setw(8)
+            << (total_seconds > 0 ? 100 * spread.most / total_seconds : 0.)
+            << " %" << std::defaultfloat;
+        if (several)
+          out << std::setw(9) << spread.slowest;
+        out << '\n';
       };
       out << "where the time went (wall seconds, least and most over the "
           << dealii::Utilities::MPI::n_mpi_processes(communicator)
@@ -131,11 +166,11 @@ namespace rodnet
           << total_seconds << std::defaultfloat << " s):\n"
           << "  " << std::left << std::setw(24) << "phase" << std::right
           << std::setw(10) << "least" << std::setw(10) << "most"
-          << std::setw(10) << "share" << '\n';
+          << std::setw(10) << "share" << (several ? "  slowest" : "") << '\n';
       for (std::size_t p = 0; p < n_phases; ++p)
-        if (most[p] >= 5e-4) // not shown as 0.000
-          row(name(static_cast<Phase>(p)), least[p], most[p]);
-      row("other", rest_least, rest_most);
+        if (spreads[p].most >= 5e-4) // not shown as 0.000
+          row(name(static_cast<Phase>(p)), spreads[p]);
+      row("other", spreads[n_phases]);
       out << std::flush;
     }
   } // namespace phase_times

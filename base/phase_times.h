@@ -85,8 +85,10 @@ namespace rodnet
      * Writes to @p out, on rank 0 of @p communicator only, a table of the
      * phases that took 0.5 ms or more on some process: for each, the least
      * and the most seconds over the processes and the most as a share of
-     * @p total_seconds (the run's wall time); then "other", the rest of the
-     * run. Collective: every process of @p communicator calls it.
+     * @p total_seconds (the run's wall time), and where there are several
+     * processes the rank of one that took the most (which process the
+     * others wait for); then "other", the rest of the run. Collective:
+     * every process of @p communicator calls it.
      */
     void
     write_table(std::ostream &out, double total_seconds, MPI_Comm communicator);
